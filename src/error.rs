@@ -12,6 +12,9 @@ pub enum ErrorKind {
     /// Nothing was given where a number was expected.
     #[error("empty number")]
     Empty,
+    /// A required input was not given at all.
+    #[error("required, but not given")]
+    Missing,
     /// The text is not a number of any accepted form; the string says what was found.
     #[error("not a number: {0}")]
     Malformed(String),
@@ -36,6 +39,9 @@ pub enum ErrorKind {
     /// The value breaks a physical constraint; the string states the constraint and the value.
     #[error("{0}")]
     OutOfRange(String),
+    /// The value is not one of the accepted forms; the string lists them.
+    #[error("{0}")]
+    Invalid(String),
     /// Two inputs contradict each other (for example `--a` together with `--from-end`).
     #[error("{0}")]
     Conflict(String),

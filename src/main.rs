@@ -1,1 +1,216 @@
-fn main(){}
+//! The `rodimpact` command line: parse, call the library, print.
+//!
+//! Exit codes: 0 success, 1 a check or claim failed, 2 bad input or usage (one line on stderr
+//! naming the field and the reason).
+
+use clap::{Args, Parser, Subcommand};
+use rodimpact::Error;
+use rodimpact::report::Solution;
+use rodimpact::scene::SceneInput;
+use std::process::ExitCode;
+
+/// Exact verifier for the impact of a projectile on a rod (Lemos, "Failure of intuition in
+/// elementary rigid body dynamics").
+#[derive(Parser, Debug)]
+#[command(name = "rodimpact", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Solve one scene exactly: velocities, energies, residuals and the optimal impact point.
+    Solve(SolveArgs),
+}
+
+/// Scene flags shared by the commands that take one scene. Numbers are exact: "2", "0.25",
+/// "3/7", "1.5e-3", "75/9.8".
+#[derive(Args, Debug)]
+struct SceneFlags {
+    /// Projectile mass m (> 0).
+    #[arg(long = "m", value_name = "Q", allow_hyphen_values = true)]
+    m: Option<String>,
+    /// Rod mass M (> 0).
+    #[arg(long = "M", value_name = "Q", allow_hyphen_values = true)]
+    rod_mass: Option<String>,
+    /// Half-length l of the rod (the rod is 2l long) [default: 1].
+    #[arg(long = "l", value_name = "Q", allow_hyphen_values = true)]
+    l: Option<String>,
+    /// Full length L = 2l of the rod, instead of --l.
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    length: Option<String>,
+    /// Signed impact distance a from the rod's centre, |a| <= l [default: l, the end].
+    #[arg(long = "a", value_name = "Q", allow_hyphen_values = true)]
+    a: Option<String>,
+    /// Impact distance d from the end, instead of --a (a = l - d).
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    from_end: Option<String>,
+    /// Projectile speed v0 (> 0) [default: 1].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    v0: Option<String>,
+    /// Mass distribution: uniform, dumbbell, rg=<radius of gyration> or I=<moment of inertia>
+    /// [default: uniform].
+    #[arg(long, value_name = "KIND")]
+    rod: Option<String>,
+    /// Coefficient of restitution, 0 <= e <= 1 [default: 1].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, group = "law")]
+    e: Option<String>,
+    /// Elastic impact, e = 1 (the default).
+    #[arg(long, group = "law")]
+    elastic: bool,
+    /// Totally inelastic impact, e = 0: the projectile sticks to the rod.
+    #[arg(long, group = "law")]
+    inelastic: bool,
+    /// Put the rod on a fixed frictionless pivot at signed position p, |p| <= l.
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pivot: Option<String>,
+}
+
+impl SceneFlags {
+    fn input(&self) -> SceneInput {
+        let e = if self.elastic {
+            Some("1".to_string())
+        } else if self.inelastic {
+            Some("0".to_string())
+        } else {
+            self.e.clone()
+        };
+        SceneInput {
+            m: self.m.clone(),
+            rod_mass: self.rod_mass.clone(),
+            l: self.l.clone(),
+            length: self.length.clone(),
+            a: self.a.clone(),
+            from_end: self.from_end.clone(),
+            v0: self.v0.clone(),
+            rod: self.rod.clone(),
+            e,
+            pivot: self.pivot.clone(),
+        }
+    }
+}
+
+#[derive(Args, Debug)]
+struct SolveArgs {
+    #[command(flatten)]
+    scene: SceneFlags,
+    /// Print one JSON object (the contract of DESIGN.md §3) instead of the text report.
+    #[arg(long)]
+    json: bool,
+    /// Significant digits of the printed decimals and of the a* bounds [default: 30 in JSON,
+    /// 15 in the text report].
+    #[arg(long, value_name = "N")]
+    digits: Option<String>,
+}
+
+/// How a command ended, mapped to the process exit code.
+enum Failure {
+    /// Bad input: exit 2 with one line on stderr.
+    Input(Error),
+    /// A check failed: exit 1 (the report was already printed).
+    Check,
+}
+
+impl From<Error> for Failure {
+    fn from(e: Error) -> Self {
+        Failure::Input(e)
+    }
+}
+
+/// The largest `--digits` accepted: beyond it the decimals are refused, not computed for ever.
+const MAX_DIGITS_OUT: usize = 10_000;
+
+fn parse_digits(text: Option<&str>, default: usize) -> Result<usize, Error> {
+    let Some(text) = text else {
+        return Ok(default);
+    };
+    match text.trim().parse::<usize>() {
+        Ok(n) if (1..=MAX_DIGITS_OUT).contains(&n) => Ok(n),
+        _ => Err(Error::out_of_range(
+            "digits",
+            format!(
+                "must be a whole number from 1 to {MAX_DIGITS_OUT}, got '{}'",
+                text.chars().take(40).collect::<String>()
+            ),
+        )),
+    }
+}
+
+fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
+    let scene = args.scene.input().build()?;
+    let solution = Solution::of(&scene);
+    if args.json {
+        let digits = parse_digits(args.digits.as_deref(), 30)?;
+        let json = solution.to_json(digits);
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&json).expect("JSON of strings and bools")
+        );
+    } else {
+        let digits = parse_digits(args.digits.as_deref(), 15)?;
+        print!("{}", solution.to_text(digits));
+    }
+    if solution.outcome.residuals.all_zero() {
+        Ok(())
+    } else {
+        Err(Failure::Check)
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(err) => {
+            use clap::error::ErrorKind as K;
+            if matches!(
+                err.kind(),
+                K::DisplayHelp | K::DisplayVersion | K::DisplayHelpOnMissingArgumentOrSubcommand
+            ) {
+                let _ = err.print();
+                return ExitCode::from(
+                    if err.kind() == K::DisplayHelpOnMissingArgumentOrSubcommand {
+                        2
+                    } else {
+                        0
+                    },
+                );
+            }
+            let rendered = err.to_string();
+            let first = rendered.lines().next().unwrap_or("usage error");
+            eprintln!("{first} (try --help)");
+            return ExitCode::from(2);
+        }
+    };
+    let result = match &cli.command {
+        Command::Solve(args) => run_solve(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Check) => ExitCode::from(1),
+        Err(Failure::Input(e)) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn cli_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn digits_are_bounded() {
+        assert_eq!(parse_digits(None, 30).unwrap(), 30);
+        assert_eq!(parse_digits(Some("12"), 30).unwrap(), 12);
+        assert!(parse_digits(Some("0"), 30).is_err());
+        assert!(parse_digits(Some("100001"), 30).is_err());
+        assert!(parse_digits(Some("x"), 30).is_err());
+    }
+}

@@ -1,0 +1,36 @@
+//! Claims C19-C46: the optimum, the inelastic case, intuition, and the inhomogeneous rod.
+
+use super::model::*;
+use super::{Certificate, Claim, Decision, Entry, Group, Paper, PosExpr};
+use crate::field::Sym;
+
+/// The registered claims of this part of the paper.
+pub(super) const ENTRIES: &[Entry] = &[Entry { id: "C23", build: c23 }];
+
+fn c23(paper: &Paper) -> Claim {
+    // Independent derivation: a*^2 = I (M + m)/(m M) with I = M l^2/3.
+    let expr = a_star_squared(&uniform_inertia()) - &(sym("l") * &sym("l"));
+    let threshold_mass = paper.threshold.clone() * &sym("m") + &sym("q");
+    Claim {
+        id: "C23",
+        location: "§optimum ¶2",
+        group: Group::Optimum,
+        statement: "M > 2m implies a* > l (unphysical)",
+        formal: "Uniform rod (I = M l^2/3), m, l > 0: if M > 2m then a*^2 - l^2 > 0, i.e. the stationary \
+                 point a* = sqrt((M + m)/(3m)) l lies beyond the end of the rod."
+            .into(),
+        reason: "with M = 2m + q (q > 0), a*^2 - l^2 = q l^2/(3m) > 0".into(),
+        decision: Decision::Proved(vec![Certificate::Positive {
+            title: "a*^2 - l^2 > 0 for M = 2m + q, q > 0".into(),
+            expr,
+            strict: true,
+            substitutions: vec![(Sym::new("M"), threshold_mass)],
+            positive: vec![Sym::new("m"), Sym::new("q"), Sym::new("l")],
+            nonnegative: vec![],
+            form: PosExpr::quotient(
+                PosExpr::product([PosExpr::sym("q"), PosExpr::sym("l"), PosExpr::sym("l")]),
+                PosExpr::product([PosExpr::constant(3, 1), PosExpr::sym("m")]),
+            ),
+        }]),
+    }
+}

@@ -1,0 +1,24 @@
+//! Output: the forms in which results leave the library (JSON, text, and later Markdown, LaTeX,
+//! CSV and SVG).
+
+mod solution;
+
+pub use solution::Solution;
+
+use crate::field::Q;
+use crate::number;
+use serde_json::{Value, json};
+
+/// The JSON value form of an exact number: `{"exact": "p/q", "decimal": "..."}`, the decimal
+/// correctly rounded to `digits` significant digits.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::value_json, field::q};
+/// let v = value_json(&q(-1, 5), 3);
+/// assert_eq!(v["exact"], "-1/5");
+/// assert_eq!(v["decimal"], "-0.200");
+/// ```
+pub fn value_json(x: &Q, digits: usize) -> Value {
+    json!({ "exact": x.to_string(), "decimal": number::decimal(x, digits) })
+}

@@ -1,0 +1,699 @@
+//! Scenes: the projectile, the rod, the impact point, the collision law and the support.
+//!
+//! A [`Scene`] is exact (every number in [`Q`]) and valid by construction: it is built only by
+//! [`Scene::new`] or [`SceneInput::build`], which check the physical constraints and name the
+//! offending field. [`Scene::params`] lifts it into any [`Field`] for the solver.
+
+use crate::error::{Error, ErrorKind};
+use crate::field::{Field, Q};
+use crate::number;
+use num_traits::{One, Signed, Zero};
+use std::fmt;
+
+/// How the rod's mass is distributed (always symmetric about its centre).
+#[derive(Debug, Clone, PartialEq)]
+pub enum RodInertia {
+    /// A uniform rod: I = M l^2 / 3.
+    Uniform,
+    /// An ideal dumbbell, all the mass at the two ends: I = M l^2.
+    Dumbbell,
+    /// Given radius of gyration r_G: I = M r_G^2, with 0 < r_G <= l.
+    Gyration(Q),
+    /// Given moment of inertia about the centre: 0 < I <= M l^2.
+    Moment(Q),
+}
+
+impl RodInertia {
+    /// The moment of inertia about the rod's centre for rod mass `mass` and half-length `l`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::RodInertia;
+    /// use rodimpact::field::q;
+    /// assert_eq!(RodInertia::Uniform.moment(&q(3, 1), &q(2, 1)), q(4, 1));
+    /// assert_eq!(RodInertia::Gyration(q(1, 2)).moment(&q(3, 1), &q(2, 1)), q(3, 4));
+    /// ```
+    pub fn moment(&self, mass: &Q, l: &Q) -> Q {
+        match self {
+            RodInertia::Uniform => mass * l * l / Q::from_integer(3.into()),
+            RodInertia::Dumbbell => mass * l * l,
+            RodInertia::Gyration(r) => mass * r * r,
+            RodInertia::Moment(i) => i.clone(),
+        }
+    }
+
+    /// Parses the `--rod` forms `uniform`, `dumbbell`, `rg=Q`, `I=Q`.
+    ///
+    /// # Errors
+    /// `rod: ...` naming the accepted forms, or the number's own parse error.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::RodInertia;
+    /// use rodimpact::field::q;
+    /// assert_eq!(RodInertia::parse("rg=1/2").unwrap(), RodInertia::Gyration(q(1, 2)));
+    /// assert!(RodInertia::parse("steel").is_err());
+    /// ```
+    pub fn parse(text: &str) -> Result<Self, Error> {
+        let text = text.trim();
+        let number = |s: &str| number::parse(s).map_err(|kind| Error::new("rod", kind));
+        match text {
+            "uniform" => Ok(RodInertia::Uniform),
+            "dumbbell" => Ok(RodInertia::Dumbbell),
+            _ => {
+                if let Some(r) = text.strip_prefix("rg=") {
+                    Ok(RodInertia::Gyration(number(r)?))
+                } else if let Some(i) = text.strip_prefix("I=") {
+                    Ok(RodInertia::Moment(number(i)?))
+                } else {
+                    Err(Error::new(
+                        "rod",
+                        ErrorKind::Invalid(format!(
+                            "expected uniform, dumbbell, rg=<radius> or I=<inertia>, got '{}'",
+                            truncate(text)
+                        )),
+                    ))
+                }
+            }
+        }
+    }
+}
+
+impl fmt::Display for RodInertia {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RodInertia::Uniform => write!(f, "uniform"),
+            RodInertia::Dumbbell => write!(f, "dumbbell"),
+            RodInertia::Gyration(r) => write!(f, "rg={r}"),
+            RodInertia::Moment(i) => write!(f, "I={i}"),
+        }
+    }
+}
+
+/// How the rod is held.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Support<F = Q> {
+    /// Free on the frictionless table (the paper's case).
+    Free,
+    /// On a fixed frictionless pivot at signed position `p` along the rod (|p| <= l).
+    Pivot(F),
+}
+
+/// A validated, exact scene.
+///
+/// Conventions (DESIGN.md §1): the projectile moves along +x with speed `v0` and hits the rod,
+/// which lies along y with its centre at the origin, at signed distance `a` from the centre.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    m: Q,
+    rod_mass: Q,
+    half_length: Q,
+    rod: RodInertia,
+    a: Q,
+    v0: Q,
+    e: Q,
+    support: Support,
+}
+
+/// The numbers the solver needs, lifted into a field `F`.
+///
+/// Built from a validated [`Scene`] by [`Scene::params`], or directly (for example with symbolic
+/// entries over [`crate::field::RatFn`]) when a proof needs all parameter values at once.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Params<F> {
+    /// Projectile mass m.
+    pub m: F,
+    /// Rod mass M.
+    pub rod_mass: F,
+    /// Rod half-length l.
+    pub half_length: F,
+    /// Moment of inertia I about the rod's centre.
+    pub inertia: F,
+    /// Signed impact distance a from the rod's centre.
+    pub a: F,
+    /// Projectile speed before the impact.
+    pub v0: F,
+    /// Coefficient of restitution e.
+    pub e: F,
+    /// Free rod or pivot position.
+    pub support: Support<F>,
+}
+
+impl<F: Field> Params<F> {
+    /// The moment of inertia about the point the angular-momentum balance is taken about: the
+    /// centre (I) for a free rod, the pivot (I + M p^2) for a pivoted one.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Scene;
+    /// use rodimpact::field::{q, Q};
+    /// let s = Scene::builder(q(1, 1), q(3, 1)).pivot(q(-1, 1)).build().unwrap();
+    /// assert_eq!(s.params::<Q>().inertia_about_axis(), q(4, 1)); // 1 + 3*1^2
+    /// ```
+    pub fn inertia_about_axis(&self) -> F {
+        match &self.support {
+            Support::Free => self.inertia.clone(),
+            Support::Pivot(p) => self.inertia.clone() + &(self.rod_mass.clone() * p * p),
+        }
+    }
+
+    /// The reference point of the angular-momentum balance: 0 (the centre) or the pivot p.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Scene;
+    /// use rodimpact::field::{q, Q};
+    /// let s = Scene::builder(q(1, 1), q(3, 1)).pivot(q(-1, 2)).build().unwrap();
+    /// assert_eq!(s.params::<Q>().axis(), q(-1, 2));
+    /// ```
+    pub fn axis(&self) -> F {
+        match &self.support {
+            Support::Free => F::zero(),
+            Support::Pivot(p) => p.clone(),
+        }
+    }
+}
+
+impl Scene {
+    /// Starts a scene with projectile mass `m` and rod mass `rod_mass`; everything else takes
+    /// the defaults of `rodimpact solve` (l = 1, v0 = 1, uniform rod, elastic, free, a = l).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Scene;
+    /// use rodimpact::field::q;
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build().unwrap();
+    /// assert_eq!(s.a(), &q(1, 2));
+    /// assert_eq!(s.inertia(), q(1, 3));
+    /// ```
+    pub fn builder(m: Q, rod_mass: Q) -> SceneBuilder {
+        SceneBuilder {
+            m,
+            rod_mass,
+            half_length: Q::one(),
+            rod: RodInertia::Uniform,
+            a: None,
+            v0: Q::one(),
+            e: Q::one(),
+            support: Support::Free,
+        }
+    }
+
+    /// Projectile mass m.
+    pub fn m(&self) -> &Q {
+        &self.m
+    }
+    /// Rod mass M.
+    pub fn rod_mass(&self) -> &Q {
+        &self.rod_mass
+    }
+    /// Rod half-length l (the rod is 2l long).
+    pub fn half_length(&self) -> &Q {
+        &self.half_length
+    }
+    /// The rod's mass distribution.
+    pub fn rod(&self) -> &RodInertia {
+        &self.rod
+    }
+    /// Signed impact distance from the rod's centre.
+    pub fn a(&self) -> &Q {
+        &self.a
+    }
+    /// Projectile speed before the impact.
+    pub fn v0(&self) -> &Q {
+        &self.v0
+    }
+    /// Coefficient of restitution.
+    pub fn e(&self) -> &Q {
+        &self.e
+    }
+    /// Free rod or pivot.
+    pub fn support(&self) -> &Support {
+        &self.support
+    }
+    /// Moment of inertia about the rod's centre.
+    pub fn inertia(&self) -> Q {
+        self.rod.moment(&self.rod_mass, &self.half_length)
+    }
+
+    /// The same scene hit at another point `a` (validated).
+    ///
+    /// # Errors
+    /// `a: ...` when |a| > l.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Scene;
+    /// use rodimpact::field::q;
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+    /// assert_eq!(s.with_a(q(1, 4)).unwrap().a(), &q(1, 4));
+    /// assert!(s.with_a(q(2, 1)).is_err());
+    /// ```
+    pub fn with_a(&self, a: Q) -> Result<Scene, Error> {
+        check_on_rod("a", &a, &self.half_length)?;
+        Ok(Scene { a, ..self.clone() })
+    }
+
+    /// Lifts the scene's numbers into the field `F` for the solver.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Scene;
+    /// use rodimpact::field::q;
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+    /// let p = s.params::<f64>();
+    /// assert!((p.inertia - 1.0 / 3.0).abs() < 1e-16);
+    /// ```
+    pub fn params<F: Field>(&self) -> Params<F> {
+        let lift = F::from_rational;
+        Params {
+            m: lift(&self.m),
+            rod_mass: lift(&self.rod_mass),
+            half_length: lift(&self.half_length),
+            inertia: lift(&self.inertia()),
+            a: lift(&self.a),
+            v0: lift(&self.v0),
+            e: lift(&self.e),
+            support: match &self.support {
+                Support::Free => Support::Free,
+                Support::Pivot(p) => Support::Pivot(lift(p)),
+            },
+        }
+    }
+}
+
+/// Builds a [`Scene`] from exact numbers, validating on [`SceneBuilder::build`].
+#[derive(Debug, Clone)]
+pub struct SceneBuilder {
+    m: Q,
+    rod_mass: Q,
+    half_length: Q,
+    rod: RodInertia,
+    a: Option<Q>,
+    v0: Q,
+    e: Q,
+    support: Support,
+}
+
+impl SceneBuilder {
+    /// Rod half-length l.
+    pub fn half_length(mut self, l: Q) -> Self {
+        self.half_length = l;
+        self
+    }
+    /// Mass distribution of the rod.
+    pub fn rod(mut self, rod: RodInertia) -> Self {
+        self.rod = rod;
+        self
+    }
+    /// Signed impact distance from the centre (default: l, the end).
+    pub fn a(mut self, a: Q) -> Self {
+        self.a = Some(a);
+        self
+    }
+    /// Projectile speed before the impact.
+    pub fn v0(mut self, v0: Q) -> Self {
+        self.v0 = v0;
+        self
+    }
+    /// Coefficient of restitution (1 elastic, 0 sticking).
+    pub fn e(mut self, e: Q) -> Self {
+        self.e = e;
+        self
+    }
+    /// A fixed pivot at signed position p along the rod.
+    pub fn pivot(mut self, p: Q) -> Self {
+        self.support = Support::Pivot(p);
+        self
+    }
+
+    /// Checks every constraint and returns the scene.
+    ///
+    /// # Errors
+    /// The first violated constraint, naming its field: m, M, l, v0 > 0; 0 < r_G <= l (`rod`);
+    /// 0 < I <= M l^2 (`rod`); |a| <= l (`a`); 0 <= e <= 1 (`e`); |p| <= l (`pivot`).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Scene;
+    /// use rodimpact::field::q;
+    /// let err = Scene::builder(q(-1, 1), q(1, 1)).build().unwrap_err();
+    /// assert_eq!(err.to_string(), "m: must be > 0, got -1");
+    /// ```
+    pub fn build(self) -> Result<Scene, Error> {
+        check_positive("m", &self.m)?;
+        check_positive("M", &self.rod_mass)?;
+        check_positive("l", &self.half_length)?;
+        check_positive("v0", &self.v0)?;
+        let l = &self.half_length;
+        match &self.rod {
+            RodInertia::Gyration(r) => {
+                if !r.is_positive() || r > l {
+                    return Err(Error::out_of_range(
+                        "rod",
+                        format!("radius of gyration must satisfy 0 < r_G <= l = {l}, got {r}"),
+                    ));
+                }
+            }
+            RodInertia::Moment(i) => {
+                let max = &self.rod_mass * l * l;
+                if !i.is_positive() || *i > max {
+                    return Err(Error::out_of_range(
+                        "rod",
+                        format!("moment of inertia must satisfy 0 < I <= M l^2 = {max}, got {i}"),
+                    ));
+                }
+            }
+            RodInertia::Uniform | RodInertia::Dumbbell => {}
+        }
+        let a = self.a.unwrap_or_else(|| l.clone());
+        check_on_rod("a", &a, l)?;
+        if self.e.is_negative() || self.e > Q::one() {
+            return Err(Error::out_of_range(
+                "e",
+                format!(
+                    "coefficient of restitution must lie in [0, 1], got {}",
+                    self.e
+                ),
+            ));
+        }
+        if let Support::Pivot(p) = &self.support {
+            check_on_rod("pivot", p, l)?;
+        }
+        Ok(Scene {
+            m: self.m,
+            rod_mass: self.rod_mass,
+            half_length: self.half_length,
+            rod: self.rod,
+            a,
+            v0: self.v0,
+            e: self.e,
+            support: self.support,
+        })
+    }
+}
+
+/// A scene as the user typed it: every number still a string, each parsed with its field name.
+///
+/// This is what the command line and scene files fill in; [`SceneInput::build`] turns it into a
+/// [`Scene`] or one error naming the field.
+#[derive(Debug, Clone, Default)]
+pub struct SceneInput {
+    /// Projectile mass (required).
+    pub m: Option<String>,
+    /// Rod mass (required).
+    pub rod_mass: Option<String>,
+    /// Half-length l (default 1).
+    pub l: Option<String>,
+    /// Full length L = 2l, the textbook alternative to `l`.
+    pub length: Option<String>,
+    /// Impact distance from the centre (default l).
+    pub a: Option<String>,
+    /// Impact distance from the nearer end, a = l - d, the textbook alternative to `a`.
+    pub from_end: Option<String>,
+    /// Projectile speed (default 1).
+    pub v0: Option<String>,
+    /// `uniform`, `dumbbell`, `rg=Q` or `I=Q` (default uniform).
+    pub rod: Option<String>,
+    /// Coefficient of restitution (default 1).
+    pub e: Option<String>,
+    /// Pivot position, if the rod is pivoted.
+    pub pivot: Option<String>,
+}
+
+impl SceneInput {
+    /// Parses and validates every field.
+    ///
+    /// # Errors
+    /// The first bad field: missing `m`/`M`, a number that does not parse, conflicting
+    /// alternatives (`l` with `length`, `a` with `from-end`), or a violated constraint.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::SceneInput;
+    /// use rodimpact::field::q;
+    /// let input = SceneInput {
+    ///     m: Some("0.25".into()),
+    ///     rod_mass: Some("3/4".into()),
+    ///     length: Some("2".into()),
+    ///     from_end: Some("1/2".into()),
+    ///     ..Default::default()
+    /// };
+    /// let s = input.build().unwrap();
+    /// assert_eq!((s.m(), s.half_length(), s.a()), (&q(1, 4), &q(1, 1), &q(1, 2)));
+    /// let bad = SceneInput { m: Some("1/0".into()), rod_mass: Some("1".into()), ..Default::default() };
+    /// assert_eq!(bad.build().unwrap_err().to_string(), "m: division by zero");
+    /// ```
+    pub fn build(&self) -> Result<Scene, Error> {
+        let m = required("m", &self.m)?;
+        let rod_mass = required("M", &self.rod_mass)?;
+        let mut builder = Scene::builder(m, rod_mass);
+        let half_length = match (&self.l, &self.length) {
+            (Some(_), Some(_)) => {
+                return Err(conflict("length", "give either --l or --length, not both"));
+            }
+            (Some(l), None) => parse_field("l", l)?,
+            (None, Some(len)) => {
+                let len = parse_field("length", len)?;
+                if !len.is_positive() {
+                    return Err(Error::out_of_range(
+                        "length",
+                        format!("must be > 0, got {len}"),
+                    ));
+                }
+                len / Q::from_integer(2.into())
+            }
+            (None, None) => Q::one(),
+        };
+        builder = builder.half_length(half_length.clone());
+        match (&self.a, &self.from_end) {
+            (Some(_), Some(_)) => {
+                return Err(conflict(
+                    "from-end",
+                    "give either --a or --from-end, not both",
+                ));
+            }
+            (Some(a), None) => builder = builder.a(parse_field("a", a)?),
+            (None, Some(d)) => {
+                let d = parse_field("from-end", d)?;
+                if d.is_negative() || d > &half_length * Q::from_integer(2.into()) {
+                    return Err(Error::out_of_range(
+                        "from-end",
+                        format!(
+                            "distance from the end must lie in [0, 2l] = [0, {}], got {d}",
+                            &half_length * Q::from_integer(2.into())
+                        ),
+                    ));
+                }
+                builder = builder.a(&half_length - d);
+            }
+            (None, None) => {}
+        }
+        if let Some(v0) = &self.v0 {
+            builder = builder.v0(parse_field("v0", v0)?);
+        }
+        if let Some(rod) = &self.rod {
+            builder = builder.rod(RodInertia::parse(rod)?);
+        }
+        if let Some(e) = &self.e {
+            builder = builder.e(parse_field("e", e)?);
+        }
+        if let Some(p) = &self.pivot {
+            builder = builder.pivot(parse_field("pivot", p)?);
+        }
+        builder.build()
+    }
+}
+
+fn required(field: &str, text: &Option<String>) -> Result<Q, Error> {
+    match text {
+        Some(t) => parse_field(field, t),
+        None => Err(Error::new(field, ErrorKind::Missing)),
+    }
+}
+
+/// Parses one number, naming `field` in the error.
+///
+/// # Examples
+/// ```
+/// use rodimpact::scene::parse_field;
+/// assert_eq!(parse_field("a", "0.5").unwrap().to_string(), "1/2");
+/// assert_eq!(parse_field("a", "").unwrap_err().to_string(), "a: empty number");
+/// ```
+pub fn parse_field(field: &str, text: &str) -> Result<Q, Error> {
+    number::parse(text).map_err(|kind| Error::new(field, kind))
+}
+
+fn conflict(field: &str, why: &str) -> Error {
+    Error::new(field, ErrorKind::Conflict(why.into()))
+}
+
+fn check_positive(field: &str, x: &Q) -> Result<(), Error> {
+    if x.is_positive() {
+        Ok(())
+    } else {
+        Err(Error::out_of_range(field, format!("must be > 0, got {x}")))
+    }
+}
+
+fn check_on_rod(field: &str, x: &Q, l: &Q) -> Result<(), Error> {
+    if x.abs() <= *l {
+        Ok(())
+    } else {
+        Err(Error::out_of_range(
+            field,
+            format!("must lie on the rod, |{field}| <= l = {l}, got {x}"),
+        ))
+    }
+}
+
+fn truncate(text: &str) -> String {
+    const MAX: usize = 40;
+    if text.chars().count() <= MAX {
+        text.to_string()
+    } else {
+        format!("{}...", text.chars().take(MAX).collect::<String>())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::q;
+
+    fn input(pairs: &[(&str, &str)]) -> SceneInput {
+        let mut s = SceneInput::default();
+        for (k, v) in pairs {
+            let v = Some(v.to_string());
+            match *k {
+                "m" => s.m = v,
+                "M" => s.rod_mass = v,
+                "l" => s.l = v,
+                "length" => s.length = v,
+                "a" => s.a = v,
+                "from-end" => s.from_end = v,
+                "v0" => s.v0 = v,
+                "rod" => s.rod = v,
+                "e" => s.e = v,
+                "pivot" => s.pivot = v,
+                other => panic!("unknown test key {other}"),
+            }
+        }
+        s
+    }
+
+    #[test]
+    fn inertia_of_each_rod_kind() {
+        let cases = [
+            ("uniform", "3", "2", q(4, 1)),
+            ("dumbbell", "3", "2", q(12, 1)),
+            ("rg=1", "3", "2", q(3, 1)),
+            ("I=5/2", "3", "2", q(5, 2)),
+        ];
+        for (rod, big_m, l, want) in cases {
+            let s = input(&[("m", "1"), ("M", big_m), ("l", l), ("rod", rod)])
+                .build()
+                .unwrap();
+            assert_eq!(s.inertia(), want, "rod {rod}");
+        }
+    }
+
+    #[test]
+    fn bad_inputs_name_their_field() {
+        let cases: &[(&[(&str, &str)], &str)] = &[
+            (&[("M", "1")], "m: required, but not given"),
+            (&[("m", "1")], "M: required, but not given"),
+            (&[("m", "-1"), ("M", "1")], "m: must be > 0, got -1"),
+            (&[("m", "1"), ("M", "0")], "M: must be > 0, got 0"),
+            (
+                &[("m", "1"), ("M", "1"), ("l", "0")],
+                "l: must be > 0, got 0",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("v0", "-2")],
+                "v0: must be > 0, got -2",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("a", "2")],
+                "a: must lie on the rod, |a| <= l = 1, got 2",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("a", "-3/2")],
+                "a: must lie on the rod, |a| <= l = 1, got -3/2",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("e", "3/2")],
+                "e: coefficient of restitution must lie in [0, 1], got 3/2",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("e", "-1")],
+                "e: coefficient of restitution must lie in [0, 1], got -1",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("pivot", "2")],
+                "pivot: must lie on the rod, |pivot| <= l = 1, got 2",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("rod", "rg=2")],
+                "rod: radius of gyration must satisfy 0 < r_G <= l = 1, got 2",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("rod", "rg=0")],
+                "rod: radius of gyration must satisfy 0 < r_G <= l = 1, got 0",
+            ),
+            (
+                &[("m", "1"), ("M", "2"), ("rod", "I=3")],
+                "rod: moment of inertia must satisfy 0 < I <= M l^2 = 2, got 3",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("rod", "wood")],
+                "rod: expected uniform, dumbbell, rg=<radius> or I=<inertia>, got 'wood'",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("l", "1"), ("length", "2")],
+                "length: give either --l or --length, not both",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("a", "1"), ("from-end", "0")],
+                "from-end: give either --a or --from-end, not both",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("from-end", "3")],
+                "from-end: distance from the end must lie in [0, 2l] = [0, 2], got 3",
+            ),
+            (
+                &[("m", "1"), ("M", "1"), ("length", "-2")],
+                "length: must be > 0, got -2",
+            ),
+            (&[("m", "1/0"), ("M", "1")], "m: division by zero"),
+        ];
+        for (pairs, want) in cases {
+            let err = input(pairs).build().unwrap_err();
+            assert_eq!(err.to_string(), *want, "input {pairs:?}");
+        }
+    }
+
+    #[test]
+    fn textbook_conveniences_convert_exactly() {
+        let s = input(&[("m", "1"), ("M", "1"), ("length", "3"), ("from-end", "0.5")])
+            .build()
+            .unwrap();
+        assert_eq!(s.half_length(), &q(3, 2));
+        assert_eq!(s.a(), &q(1, 1));
+        let far = input(&[("m", "1"), ("M", "1"), ("length", "3"), ("from-end", "3")])
+            .build()
+            .unwrap();
+        assert_eq!(far.a(), &q(-3, 2));
+    }
+
+    #[test]
+    fn defaults_are_those_of_solve() {
+        let s = input(&[("m", "1"), ("M", "2")]).build().unwrap();
+        assert_eq!(
+            (s.half_length(), s.a(), s.v0(), s.e()),
+            (&q(1, 1), &q(1, 1), &q(1, 1), &q(1, 1))
+        );
+        assert_eq!(s.rod(), &RodInertia::Uniform);
+        assert_eq!(s.support(), &Support::Free);
+    }
+}

@@ -1,0 +1,139 @@
+//! The `solve` command-line contract: JSON keys and value forms, exit codes, one-line errors.
+
+use serde_json::Value;
+use std::process::Command;
+
+fn rodimpact(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .args(args)
+        .output()
+        .expect("the binary runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn solve_json(args: &[&str]) -> Value {
+    let mut all = vec!["solve", "--json"];
+    all.extend_from_slice(args);
+    let (code, stdout, stderr) = rodimpact(&all);
+    assert_eq!(code, 0, "stderr: {stderr}");
+    serde_json::from_str(&stdout).expect("one JSON object")
+}
+
+#[test]
+fn paper_example_m_equals_m_hit_at_the_end() {
+    let j = solve_json(&["--m", "1", "--M", "1", "--a", "1"]);
+    assert_eq!(j["v"]["exact"], "3/5");
+    assert_eq!(j["V"]["exact"], "2/5");
+    assert_eq!(j["omega"]["exact"], "6/5");
+    assert_eq!(j["v"]["decimal"], "0.600000000000000000000000000000");
+    for law in ["linear_momentum", "angular_momentum", "energy"] {
+        assert_eq!(j["residuals"][law], "0", "{law}");
+    }
+    assert_eq!(j["a_star"]["squared"], "2/3");
+    assert_eq!(j["a_star"]["exact"], "sqrt(2/3)");
+    assert_eq!(j["a_star"]["decimal"], "0.816496580927726032732428024902");
+    assert_eq!(j["a_star"]["within_rod"], true);
+    assert_eq!(j["argmax"], "a_star");
+    assert_eq!(j["omega_max"]["exact"], "1/2*sqrt(6)");
+    assert_eq!(j["omega_max"]["decimal"], "1.22474487139158904909864203735");
+    assert_eq!(j["energy"]["before"]["exact"], "1/2");
+    assert_eq!(j["energy"]["lost"]["exact"], "0");
+    assert!(j.get("pivot_impulse").is_none());
+}
+
+#[test]
+fn a_star_bounds_enclose_and_meet_the_precision() {
+    use rodimpact::number::parse;
+    let j = solve_json(&["--m", "1", "--M", "1", "--digits", "40"]);
+    let lower = parse(j["a_star"]["lower"].as_str().unwrap()).unwrap();
+    let upper = parse(j["a_star"]["upper"].as_str().unwrap()).unwrap();
+    let two_thirds = rodimpact::field::q(2, 3);
+    assert!(&lower * &lower <= two_thirds && two_thirds <= &upper * &upper);
+    // upper - lower <= 10^-40 a*, and a* < 1 here.
+    let tolerance = rodimpact::field::Q::new(1.into(), num_bigint::BigInt::from(10).pow(40));
+    assert!(upper - lower <= tolerance);
+}
+
+#[test]
+fn pivoted_sticking_scene_reports_the_pivot_impulse_not_momentum() {
+    let j = solve_json(&["--m", "1", "--M", "3", "--a", "1", "--pivot", "0", "--inelastic"]);
+    assert_eq!(j["v"]["exact"], "1/2");
+    assert_eq!(j["V"]["exact"], "0");
+    assert_eq!(j["omega"]["exact"], "1/2");
+    assert_eq!(j["pivot_impulse"]["exact"], "-1/2");
+    assert_eq!(j["energy"]["lost"]["exact"], "1/4");
+    let residuals = j["residuals"].as_object().unwrap();
+    assert_eq!(residuals.keys().collect::<Vec<_>>(), ["angular_momentum"]);
+    assert_eq!(j["residuals"]["angular_momentum"], "0");
+    // I_p = I + M p^2 = 1, d*^2 = I_p/m = 1: the optimum is the end (distance 1 from the pivot).
+    assert_eq!(j["a_star"]["squared"], "1");
+    assert_eq!(j["a_star"]["within_rod"], true);
+}
+
+#[test]
+fn heavy_rod_peaks_at_the_end() {
+    let j = solve_json(&["--m", "1", "--M", "3"]);
+    assert_eq!(j["a_star"]["squared"], "4/3");
+    assert_eq!(j["a_star"]["within_rod"], false);
+    assert_eq!(j["argmax"], "end");
+    assert_eq!(j["omega_max"]["exact"], j["omega"]["exact"]);
+}
+
+#[test]
+fn textbook_inputs_convert_exactly() {
+    let j = solve_json(&["--m", "0.05", "--M", "1.2", "--length", "1.5", "--from-end", "0.25", "--v0", "75/9.8", "--e", "1/2", "--rod", "dumbbell"]);
+    assert_eq!(j["scene"]["l"], "3/4");
+    assert_eq!(j["scene"]["a"], "1/2");
+    assert_eq!(j["scene"]["v0"], "375/49");
+    assert_eq!(j["scene"]["I"], "27/40");
+    assert!(j["residuals"].get("energy").is_none(), "no energy residual for e < 1");
+}
+
+#[test]
+fn text_report_is_readable() {
+    let (code, stdout, _) = rodimpact(&["solve", "--m", "1", "--M", "1"]);
+    assert_eq!(code, 0);
+    for needle in ["free rod", "uniform rod", "elastic", "3/5", "6/5", "sqrt(2/3)", "on the rod"] {
+        assert!(stdout.contains(needle), "missing {needle} in\n{stdout}");
+    }
+}
+
+#[test]
+fn bad_inputs_exit_2_with_one_line_naming_the_field() {
+    let long = "1".repeat(20_000);
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["--m", "-1", "--M", "1"], "m: must be > 0"),
+        (vec!["--m", "1/0", "--M", "1"], "m: division by zero"),
+        (vec!["--m", "NaN", "--M", "1"], "m: "),
+        (vec!["--m", "inf", "--M", "1"], "m: "),
+        (vec!["--m", "", "--M", "1"], "m: empty"),
+        (vec!["--m", "abc", "--M", "1"], "m: "),
+        (vec!["--m", "1", "--M", "1", "--a", "2"], "a: must lie on the rod"),
+        (vec!["--m", "1e999999999", "--M", "1"], "m: exponent"),
+        (vec!["--m", long.as_str(), "--M", "1"], "m: more than 10000 digits"),
+        (vec!["--m", "1", "--M", "1", "--e", "2"], "e: "),
+        (vec!["--m", "1", "--M", "1", "--pivot", "3"], "pivot: "),
+        (vec!["--m", "1", "--M", "1", "--rod", "rg=2"], "rod: "),
+        (vec!["--m", "1", "--M", "1", "--rod", "I=7"], "rod: "),
+        (vec!["--m", "1", "--M", "1", "--rod", "glass"], "rod: "),
+        (vec!["--M", "1"], "m: required"),
+        (vec!["--m", "1", "--M", "1", "--digits", "0"], "digits: "),
+        (vec!["--m", "1", "--M", "1", "--l", "1", "--length", "2"], "length: "),
+        (vec!["--m", "1", "--M", "1", "--e", "1", "--inelastic"], "--inelastic"),
+        (vec!["--m", "1", "--M", "1", "--bogus", "1"], "--bogus"),
+    ];
+    for (args, needle) in cases {
+        let mut all = vec!["solve"];
+        all.extend_from_slice(&args);
+        let (code, stdout, stderr) = rodimpact(&all);
+        assert_eq!(code, 2, "exit code for {args:?}; stderr {stderr}");
+        assert!(stdout.is_empty(), "nothing on stdout for {args:?}");
+        assert_eq!(stderr.trim_end().lines().count(), 1, "one line for {args:?}: {stderr}");
+        assert!(stderr.contains(needle), "{needle:?} in {stderr:?} for {args:?}");
+        assert!(!stderr.contains("panicked"), "{args:?}");
+    }
+}

@@ -1,0 +1,87 @@
+//! Shared test helpers: exact numbers from strings, scenes from `key=value` text, and proptest
+//! strategies for random rational scenes.
+#![allow(dead_code)]
+
+use proptest::prelude::*;
+use rodimpact::field::Q;
+use rodimpact::scene::{RodInertia, Scene, SceneInput};
+
+/// An exact rational from its string form (test data only).
+pub fn rat(text: &str) -> Q {
+    rodimpact::number::parse(text).unwrap_or_else(|e| panic!("bad test number {text}: {e}"))
+}
+
+/// A scene from `"m=1 M=1 a=1 e=0 pivot=0 rod=dumbbell"` (keys of `SceneInput`).
+pub fn scene(text: &str) -> Scene {
+    let mut s = SceneInput::default();
+    for pair in text.split_whitespace() {
+        let (k, v) = pair.split_once('=').expect("key=value");
+        let v = Some(v.to_string());
+        match k {
+            "m" => s.m = v,
+            "M" => s.rod_mass = v,
+            "l" => s.l = v,
+            "length" => s.length = v,
+            "a" => s.a = v,
+            "from-end" => s.from_end = v,
+            "v0" => s.v0 = v,
+            "rod" => s.rod = v,
+            "e" => s.e = v,
+            "pivot" => s.pivot = v,
+            other => panic!("unknown key {other}"),
+        }
+    }
+    s.build().unwrap_or_else(|e| panic!("bad test scene {text}: {e}"))
+}
+
+/// A positive rational with numerator and denominator in 1..=1000.
+pub fn positive() -> impl Strategy<Value = Q> {
+    (1i64..=1000, 1i64..=1000).prop_map(|(n, d)| Q::new(n.into(), d.into()))
+}
+
+/// A rational in [0, 1] with denominator in 1..=100.
+pub fn unit_interval() -> impl Strategy<Value = Q> {
+    (1i64..=100).prop_flat_map(|d| (0..=d).prop_map(move |n| Q::new(n.into(), d.into())))
+}
+
+/// A rational in [-1, 1] with denominator in 1..=100.
+pub fn signed_unit() -> impl Strategy<Value = Q> {
+    (1i64..=100).prop_flat_map(|d| (-d..=d).prop_map(move |n| Q::new(n.into(), d.into())))
+}
+
+/// Any valid rod inertia for rod mass `big_m` and half-length `l`, given a fraction in (0, 1].
+pub fn inertia_kind() -> impl Strategy<Value = (u8, Q)> {
+    (0u8..4, (1i64..=100).prop_map(|n| Q::new(n.into(), 100.into())))
+}
+
+/// Any valid scene: random masses, length, speed, impact point, e, inertia, free or pivoted.
+pub fn any_scene() -> impl Strategy<Value = Scene> {
+    (
+        positive(),
+        positive(),
+        positive(),
+        positive(),
+        signed_unit(),
+        unit_interval(),
+        inertia_kind(),
+        proptest::option::of(signed_unit()),
+    )
+        .prop_map(|(m, big_m, l, v0, a_frac, e, (kind, frac), pivot)| {
+            let rod = match kind {
+                0 => RodInertia::Uniform,
+                1 => RodInertia::Dumbbell,
+                2 => RodInertia::Gyration(&l * &frac),
+                _ => RodInertia::Moment(&big_m * &l * &l * &frac),
+            };
+            let mut b = Scene::builder(m, big_m)
+                .half_length(l.clone())
+                .v0(v0)
+                .a(&a_frac * &l)
+                .e(e)
+                .rod(rod);
+            if let Some(p) = pivot {
+                b = b.pivot(&p * &l);
+            }
+            b.build().expect("strategy builds valid scenes")
+        })
+}
