@@ -6,7 +6,6 @@
 //! ulp bound for floats. A failure message prints the operands.
 
 use super::Field;
-use num_traits::{One, Zero};
 
 /// Asserts the field axioms on every pair and triple of `samples`, comparing with `eq`.
 ///

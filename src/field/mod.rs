@@ -21,7 +21,10 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 
 mod float;
 pub mod laws;
+pub mod quadratic;
 mod rational;
+
+pub use quadratic::QSqrt;
 
 /// Exact rational numbers: the reference backend.
 pub type Q = BigRational;
