@@ -25,12 +25,13 @@
 //! # Ok::<(), rodimpact::Error>(())
 //! ```
 
+//pub mod claims;
 pub mod error;
 pub mod field;
 pub mod mechanics;
 pub mod number;
-//pub mod optimum;
-//pub mod report;
+pub mod optimum;
+pub mod report;
 pub mod scene;
 pub mod solve;
 

@@ -326,6 +326,33 @@ fn round_half_even(n: &BigInt, d: &BigInt) -> BigInt {
 /// assert_eq!(decimal(&q(1999, 200), 3), "10.0");
 /// ```
 pub fn decimal(value: &Q, digits: usize) -> String {
+    decimal_rounded(value, digits, Rounding::HalfEven)
+}
+
+/// How [`decimal_rounded`] rounds to the requested number of significant digits.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rounding {
+    /// To nearest, ties to even (correct rounding).
+    HalfEven,
+    /// Toward minus infinity: the printed value is a lower bound.
+    Floor,
+    /// Toward plus infinity: the printed value is an upper bound.
+    Ceiling,
+}
+
+/// `value` rounded to `digits` significant digits in the given direction, printed as
+/// [`decimal`] prints. `Floor` and `Ceiling` give printed bounds that enclose the exact value.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::q;
+/// use rodimpact::number::{decimal_rounded, Rounding};
+/// assert_eq!(decimal_rounded(&q(2, 3), 3, Rounding::Floor), "0.666");
+/// assert_eq!(decimal_rounded(&q(2, 3), 3, Rounding::Ceiling), "0.667");
+/// assert_eq!(decimal_rounded(&q(-2, 3), 3, Rounding::Floor), "-0.667");
+/// assert_eq!(decimal_rounded(&q(1, 2), 3, Rounding::Ceiling), "0.500");
+/// ```
+pub fn decimal_rounded(value: &Q, digits: usize, rounding: Rounding) -> String {
     if value.is_zero() {
         return "0".to_string();
     }
@@ -334,10 +361,26 @@ pub fn decimal(value: &Q, digits: usize) -> String {
     let d = value.denom();
     let mut exp = floor_log10(&n, d);
     let shift = digits as i64 - 1 - exp;
-    let mut m = if shift >= 0 {
-        round_half_even(&(n * pow10(shift.unsigned_abs())), d)
+    let (num, den) = if shift >= 0 {
+        (n * pow10(shift.unsigned_abs()), d.clone())
     } else {
-        round_half_even(&n, &(d * pow10(shift.unsigned_abs())))
+        (n, d * pow10(shift.unsigned_abs()))
+    };
+    let away_from_zero = match rounding {
+        Rounding::HalfEven => None,
+        Rounding::Floor => Some(value.is_negative()),
+        Rounding::Ceiling => Some(value.is_positive()),
+    };
+    let mut m = match away_from_zero {
+        None => round_half_even(&num, &den),
+        Some(away) => {
+            let (quot, rem) = num.div_rem(&den);
+            if away && !rem.is_zero() {
+                quot + 1u8
+            } else {
+                quot
+            }
+        }
     };
     if m == pow10(digits as u64) {
         // 9.995 -> 10.0: the rounding carried into a new digit.

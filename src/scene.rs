@@ -7,7 +7,7 @@
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q};
 use crate::number;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed};
 use std::fmt;
 
 /// How the rod's mass is distributed (always symmetric about its centre).

@@ -60,7 +60,17 @@ fn a_star_bounds_enclose_and_meet_the_precision() {
 
 #[test]
 fn pivoted_sticking_scene_reports_the_pivot_impulse_not_momentum() {
-    let j = solve_json(&["--m", "1", "--M", "3", "--a", "1", "--pivot", "0", "--inelastic"]);
+    let j = solve_json(&[
+        "--m",
+        "1",
+        "--M",
+        "3",
+        "--a",
+        "1",
+        "--pivot",
+        "0",
+        "--inelastic",
+    ]);
     assert_eq!(j["v"]["exact"], "1/2");
     assert_eq!(j["V"]["exact"], "0");
     assert_eq!(j["omega"]["exact"], "1/2");
@@ -85,19 +95,45 @@ fn heavy_rod_peaks_at_the_end() {
 
 #[test]
 fn textbook_inputs_convert_exactly() {
-    let j = solve_json(&["--m", "0.05", "--M", "1.2", "--length", "1.5", "--from-end", "0.25", "--v0", "75/9.8", "--e", "1/2", "--rod", "dumbbell"]);
+    let j = solve_json(&[
+        "--m",
+        "0.05",
+        "--M",
+        "1.2",
+        "--length",
+        "1.5",
+        "--from-end",
+        "0.25",
+        "--v0",
+        "75/9.8",
+        "--e",
+        "1/2",
+        "--rod",
+        "dumbbell",
+    ]);
     assert_eq!(j["scene"]["l"], "3/4");
     assert_eq!(j["scene"]["a"], "1/2");
     assert_eq!(j["scene"]["v0"], "375/49");
     assert_eq!(j["scene"]["I"], "27/40");
-    assert!(j["residuals"].get("energy").is_none(), "no energy residual for e < 1");
+    assert!(
+        j["residuals"].get("energy").is_none(),
+        "no energy residual for e < 1"
+    );
 }
 
 #[test]
 fn text_report_is_readable() {
     let (code, stdout, _) = rodimpact(&["solve", "--m", "1", "--M", "1"]);
     assert_eq!(code, 0);
-    for needle in ["free rod", "uniform rod", "elastic", "3/5", "6/5", "sqrt(2/3)", "on the rod"] {
+    for needle in [
+        "free rod",
+        "uniform rod",
+        "elastic",
+        "3/5",
+        "6/5",
+        "sqrt(2/3)",
+        "on the rod",
+    ] {
         assert!(stdout.contains(needle), "missing {needle} in\n{stdout}");
     }
 }
@@ -112,9 +148,15 @@ fn bad_inputs_exit_2_with_one_line_naming_the_field() {
         (vec!["--m", "inf", "--M", "1"], "m: "),
         (vec!["--m", "", "--M", "1"], "m: empty"),
         (vec!["--m", "abc", "--M", "1"], "m: "),
-        (vec!["--m", "1", "--M", "1", "--a", "2"], "a: must lie on the rod"),
+        (
+            vec!["--m", "1", "--M", "1", "--a", "2"],
+            "a: must lie on the rod",
+        ),
         (vec!["--m", "1e999999999", "--M", "1"], "m: exponent"),
-        (vec!["--m", long.as_str(), "--M", "1"], "m: more than 10000 digits"),
+        (
+            vec!["--m", long.as_str(), "--M", "1"],
+            "m: more than 10000 digits",
+        ),
         (vec!["--m", "1", "--M", "1", "--e", "2"], "e: "),
         (vec!["--m", "1", "--M", "1", "--pivot", "3"], "pivot: "),
         (vec!["--m", "1", "--M", "1", "--rod", "rg=2"], "rod: "),
@@ -122,8 +164,14 @@ fn bad_inputs_exit_2_with_one_line_naming_the_field() {
         (vec!["--m", "1", "--M", "1", "--rod", "glass"], "rod: "),
         (vec!["--M", "1"], "m: required"),
         (vec!["--m", "1", "--M", "1", "--digits", "0"], "digits: "),
-        (vec!["--m", "1", "--M", "1", "--l", "1", "--length", "2"], "length: "),
-        (vec!["--m", "1", "--M", "1", "--e", "1", "--inelastic"], "--inelastic"),
+        (
+            vec!["--m", "1", "--M", "1", "--l", "1", "--length", "2"],
+            "length: ",
+        ),
+        (
+            vec!["--m", "1", "--M", "1", "--e", "1", "--inelastic"],
+            "--inelastic",
+        ),
         (vec!["--m", "1", "--M", "1", "--bogus", "1"], "--bogus"),
     ];
     for (args, needle) in cases {
@@ -132,8 +180,15 @@ fn bad_inputs_exit_2_with_one_line_naming_the_field() {
         let (code, stdout, stderr) = rodimpact(&all);
         assert_eq!(code, 2, "exit code for {args:?}; stderr {stderr}");
         assert!(stdout.is_empty(), "nothing on stdout for {args:?}");
-        assert_eq!(stderr.trim_end().lines().count(), 1, "one line for {args:?}: {stderr}");
-        assert!(stderr.contains(needle), "{needle:?} in {stderr:?} for {args:?}");
+        assert_eq!(
+            stderr.trim_end().lines().count(),
+            1,
+            "one line for {args:?}: {stderr}"
+        );
+        assert!(
+            stderr.contains(needle),
+            "{needle:?} in {stderr:?} for {args:?}"
+        );
         assert!(!stderr.contains("panicked"), "{args:?}");
     }
 }

@@ -23,7 +23,14 @@ const CASES: &[(&str, &str, &str, &str, &str, &str)] = &[
     // Sticking, M = m: the struck point moves with the projectile, V + omega = v.
     ("m=1 M=1 a=1 e=0", "4/5", "1/5", "3/5", "-", "1/10"),
     // Dumbbell M = 2, hit halfway: I = 2, q = 1/2 + 1/8.
-    ("m=1 M=2 a=1/2 rod=dumbbell", "-3/13", "8/13", "4/13", "-", "0"),
+    (
+        "m=1 M=2 a=1/2 rod=dumbbell",
+        "-3/13",
+        "8/13",
+        "4/13",
+        "-",
+        "0",
+    ),
     // Pivot at the centre, sticking: I_p = 1, omega = m d v0/(I_p + m d^2) = 1/2, pivot takes -1/2.
     ("m=1 M=3 a=1 pivot=0 e=0", "1/2", "0", "1/2", "-1/2", "1/4"),
     // A door (pivot at an end), elastic, hit at the far edge d = 2: I_p = 4, omega = 1/2, v = 0.
@@ -45,7 +52,11 @@ fn hand_worked_scenes_are_reproduced_exactly() {
             p => assert_eq!(out.pivot_impulse, Some(rat(p)), "pivot impulse for {text}"),
         }
         assert_eq!(out.energy.lost, rat(lost), "energy lost for {text}");
-        assert!(out.residuals.all_zero(), "residuals for {text}: {:?}", out.residuals);
+        assert!(
+            out.residuals.all_zero(),
+            "residuals for {text}: {:?}",
+            out.residuals
+        );
     }
 }
 
@@ -62,7 +73,10 @@ fn only_the_laws_that_apply_are_reported() {
 
 #[test]
 fn reference_batch_is_reproduced_exactly() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/bench-textbook.csv");
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../shared/data/bench-textbook.csv"
+    );
     let text = std::fs::read_to_string(path).expect("shared/data beside the project");
     let mut rows = 0;
     for line in text.lines().skip(1) {

@@ -3,7 +3,7 @@
 
 use super::value_json;
 use crate::field::{Q, QSqrt};
-use crate::number;
+use crate::number::{self, Rounding};
 use crate::optimum::{Argmax, Optimum, optimum};
 use crate::scene::{RodInertia, Scene, Support};
 use crate::solve::{Outcome, solve};
@@ -82,15 +82,17 @@ impl Solution {
             .collect();
         out.insert("residuals".into(), Value::Object(residuals));
         let o = &self.optimum;
-        let (lower, upper) = number::sqrt_bounds(&o.squared, digits);
+        // Bounds one digit tighter than asked, printed outward with two more digits, so the
+        // printed interval still encloses a* and is at most 10^-digits a* wide.
+        let (lower, upper) = number::sqrt_bounds(&o.squared, digits + 1);
         out.insert(
             "a_star".into(),
             json!({
                 "squared": o.squared.to_string(),
                 "exact": number::surd(&o.squared),
                 "decimal": number::decimal_sqrt(&o.squared, decimal_digits),
-                "lower": number::decimal(&lower, digits + 2),
-                "upper": number::decimal(&upper, digits + 2),
+                "lower": number::decimal_rounded(&lower, digits + 2, Rounding::Floor),
+                "upper": number::decimal_rounded(&upper, digits + 2, Rounding::Ceiling),
                 "within_rod": o.within_rod,
             }),
         );
@@ -125,13 +127,38 @@ impl Solution {
         ));
         let dec = |x: &Q| number::decimal(x, digits);
         t.section("After the impact");
-        t.row("v", "projectile velocity", after.v.to_string(), dec(&after.v));
-        t.row("V", "rod centre velocity", after.rod_v.to_string(), dec(&after.rod_v));
-        t.row("omega", "rod angular velocity", after.omega.to_string(), dec(&after.omega));
+        t.row(
+            "v",
+            "projectile velocity",
+            after.v.to_string(),
+            dec(&after.v),
+        );
+        t.row(
+            "V",
+            "rod centre velocity",
+            after.rod_v.to_string(),
+            dec(&after.rod_v),
+        );
+        t.row(
+            "omega",
+            "rod angular velocity",
+            after.omega.to_string(),
+            dec(&after.omega),
+        );
         let impulse = self.outcome.impulse(&s.params::<Q>());
-        t.row("J", "impulse on the rod, m (v0 - v)", impulse.to_string(), dec(&impulse));
+        t.row(
+            "J",
+            "impulse on the rod, m (v0 - v)",
+            impulse.to_string(),
+            dec(&impulse),
+        );
         if let Some(p) = &self.outcome.pivot_impulse {
-            t.row("P", "impulse of the pivot on the rod", p.to_string(), dec(p));
+            t.row(
+                "P",
+                "impulse of the pivot on the rod",
+                p.to_string(),
+                dec(p),
+            );
         }
         t.section("Kinetic energy");
         let e = &self.outcome.energy;

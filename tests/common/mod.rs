@@ -31,7 +31,8 @@ pub fn scene(text: &str) -> Scene {
             other => panic!("unknown key {other}"),
         }
     }
-    s.build().unwrap_or_else(|e| panic!("bad test scene {text}: {e}"))
+    s.build()
+        .unwrap_or_else(|e| panic!("bad test scene {text}: {e}"))
 }
 
 /// A positive rational with numerator and denominator in 1..=1000.
@@ -51,7 +52,10 @@ pub fn signed_unit() -> impl Strategy<Value = Q> {
 
 /// Any valid rod inertia for rod mass `big_m` and half-length `l`, given a fraction in (0, 1].
 pub fn inertia_kind() -> impl Strategy<Value = (u8, Q)> {
-    (0u8..4, (1i64..=100).prop_map(|n| Q::new(n.into(), 100.into())))
+    (
+        0u8..4,
+        (1i64..=100).prop_map(|n| Q::new(n.into(), 100.into())),
+    )
 }
 
 /// Any valid scene: random masses, length, speed, impact point, e, inertia, free or pivoted.
