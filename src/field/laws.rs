@@ -6,7 +6,6 @@
 //! ulp bound for floats. A failure message prints the operands.
 
 use super::Field;
-use num_traits::{One, Zero};
 
 /// Asserts the field axioms on every pair and triple of `samples`, comparing with `eq`.
 ///
@@ -27,7 +26,11 @@ pub fn check_field<F: Field>(samples: &[F], eq: impl Fn(&F, &F) -> bool) {
     for a in samples {
         law(eq(&(a.clone() + &zero), a), "a + 0 = a", &[a]);
         law(eq(&(a.clone() * &one), a), "a * 1 = a", &[a]);
-        law(eq(&(a.clone() + &(-a.clone())), &zero), "a + (-a) = 0", &[a]);
+        law(
+            eq(&(a.clone() + &(-a.clone())), &zero),
+            "a + (-a) = 0",
+            &[a],
+        );
         law(eq(&(a.clone() - a), &zero), "a - a = 0", &[a]);
         law(eq(&(a.clone() * &zero), &zero), "a * 0 = 0", &[a]);
         if !a.is_zero() {
@@ -38,8 +41,16 @@ pub fn check_field<F: Field>(samples: &[F], eq: impl Fn(&F, &F) -> bool) {
             law(one.checked_div(a).is_none(), "1 / 0 undefined", &[a]);
         }
         for b in samples {
-            law(eq(&(a.clone() + b), &(b.clone() + a)), "a + b = b + a", &[a, b]);
-            law(eq(&(a.clone() * b), &(b.clone() * a)), "a * b = b * a", &[a, b]);
+            law(
+                eq(&(a.clone() + b), &(b.clone() + a)),
+                "a + b = b + a",
+                &[a, b],
+            );
+            law(
+                eq(&(a.clone() * b), &(b.clone() * a)),
+                "a * b = b * a",
+                &[a, b],
+            );
             law(
                 eq(&(a.clone() - b), &(a.clone() + &(-b.clone()))),
                 "a - b = a + (-b)",
@@ -60,7 +71,10 @@ pub fn check_field<F: Field>(samples: &[F], eq: impl Fn(&F, &F) -> bool) {
                     &[a, b, c],
                 );
                 law(
-                    eq(&(a.clone() * &(b.clone() + c)), &(a.clone() * b + &(a.clone() * c))),
+                    eq(
+                        &(a.clone() * &(b.clone() + c)),
+                        &(a.clone() * b + &(a.clone() * c)),
+                    ),
                     "a * (b + c) = a*b + a*c",
                     &[a, b, c],
                 );

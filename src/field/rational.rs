@@ -1,7 +1,6 @@
 //! [`Field`] for exact rationals ([`Q`] = `BigRational`).
 
 use super::{Field, Q, TrySqrt};
-use num_integer::Roots;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
 
