@@ -21,7 +21,12 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 
 mod float;
 pub mod laws;
+pub mod poly;
+pub mod ratfunc;
 mod rational;
+
+pub use poly::{Poly, Sym};
+pub use ratfunc::RatFn;
 
 /// Exact rational numbers: the reference backend.
 pub type Q = BigRational;
