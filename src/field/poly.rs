@@ -768,7 +768,7 @@ impl Poly {
     }
 
     /// Exact division: `Some(q)` with `q * divisor == self`, or `None` when `divisor` does not
-    /// divide `self` in Q[symbols].
+    /// divide `self` in Q\[symbols\].
     ///
     /// # Panics
     /// When `divisor` is the zero polynomial (a programming error).
@@ -812,7 +812,7 @@ impl Poly {
         Some(Poly { terms: quot })
     }
 
-    /// The greatest common divisor in Q[symbols], normalised by [`Poly::primitive`] (coprime
+    /// The greatest common divisor in Q\[symbols\], normalised by [`Poly::primitive`] (coprime
     /// integer coefficients, positive leading coefficient); `gcd(0, 0) = 0`.
     ///
     /// # Examples
@@ -1128,6 +1128,7 @@ impl fmt::Debug for Poly {
 mod tests {
     use super::*;
     use crate::field::q;
+    use proptest::prelude::*;
 
     fn v(name: &str) -> Poly {
         Poly::var(Sym::new(name))
@@ -1227,6 +1228,79 @@ mod tests {
         let h = p.subs_homogeneous(&[(Sym::new("x"), &y, &k(2), 3)]);
         // 8 * (y^3/8 * y + y + 5) = y^4 + 8y + 40
         assert_eq!(h.to_string(), "y^4 + 8*y + 40");
+    }
+
+    /// A polynomial in x, y, z from `(exponents, coefficient)` terms.
+    fn from_terms(terms: &[(u32, u32, u32, i64)]) -> Poly {
+        let (x, y, z) = (Sym::new("x"), Sym::new("y"), Sym::new("z"));
+        let mut p = Poly::zero();
+        for &(i, j, l, c) in terms {
+            let m = Monomial::var(x, i)
+                .mul(&Monomial::var(y, j))
+                .mul(&Monomial::var(z, l));
+            p = p + &Poly::monomial(q(c, 1), m);
+        }
+        p
+    }
+
+    fn small_poly() -> impl Strategy<Value = Poly> {
+        prop::collection::vec((0u32..3, 0u32..3, 0u32..3, -4i64..=4), 1..5)
+            .prop_map(|t| from_terms(&t))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 128, ..ProptestConfig::default() })]
+
+        /// gcd(f h, g h) is a common divisor of both products and a multiple of h.
+        #[test]
+        fn gcd_is_a_common_divisor_containing_the_shared_factor(
+            f in small_poly(), g in small_poly(), h in small_poly()
+        ) {
+            let (a, b) = (f * &h, g * &h);
+            let d = Poly::gcd(&a, &b);
+            if a.is_zero() && b.is_zero() {
+                prop_assert!(d.is_zero());
+            } else {
+                prop_assert!(a.div_exact(&d).is_some(), "{d} does not divide {a}");
+                prop_assert!(b.div_exact(&d).is_some(), "{d} does not divide {b}");
+                if !h.is_zero() {
+                    prop_assert!(d.div_exact(&h).is_some(), "{h} does not divide {d}");
+                }
+                prop_assert_eq!(d.primitive(), d.clone());
+            }
+        }
+
+        /// (f g) / g = f, and f g + 1 is not a multiple of a non-constant g.
+        #[test]
+        fn div_exact_inverts_multiplication(f in small_poly(), g in small_poly()) {
+            if !g.is_zero() {
+                prop_assert_eq!((f.clone() * &g).div_exact(&g), Some(f.clone()));
+                if g.as_constant().is_none() {
+                    prop_assert_eq!((f * &g + &Poly::one()).div_exact(&g), None);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn gcd_of_larger_inputs() {
+        // Eight symbols, total degree up to 12: the size the claims need.
+        let names = ["I", "M", "a", "e", "l", "m", "r", "v0"];
+        let vs: Vec<Poly> = names.iter().map(|n| v(n)).collect();
+        let d = vs[1].clone() * &vs[6].pow(2) + &(vs[5].clone() * &vs[2].pow(2)) + &vs[0];
+        let f = vs[3].clone() * &vs[7] - &(vs[4].pow(2) * &vs[5]) + &k(3);
+        let g = vs[2].pow(3) + &(vs[1].clone() * &vs[3] * &vs[7]) - &vs[6];
+        let a = d.pow(3) * &f.pow(2);
+        let b = d.pow(2) * &g * &f;
+        let start = std::time::Instant::now();
+        let h = Poly::gcd(&a, &b);
+        println!(
+            "gcd of degree {} and {} in 8 symbols: {:?}",
+            a.total_degree(),
+            b.total_degree(),
+            start.elapsed()
+        );
+        assert_eq!(h, (d.pow(2) * &f).primitive());
     }
 
     #[test]

@@ -586,6 +586,7 @@ mod tests {
     use super::*;
     use crate::field::{laws, q};
     use num_bigint::BigInt;
+    use proptest::prelude::*;
 
     fn s(name: &str) -> RatFn {
         RatFn::symbol(name)
@@ -760,6 +761,48 @@ mod tests {
         );
         assert_eq!(k(0).leading_term(big_m, Point::Zero), None);
         assert_eq!(k(0).limit(big_m, Point::Zero), Limit::Finite(k(0)));
+    }
+
+    /// A polynomial in x, y from `(exponents, coefficient)` terms.
+    fn poly_from(terms: &[(u32, u32, i64)]) -> Poly {
+        use crate::field::poly::Monomial;
+        let (x, y) = (Sym::new("x"), Sym::new("y"));
+        let mut p = Poly::zero();
+        for &(i, j, c) in terms {
+            let m = Monomial::var(x, i).mul(&Monomial::var(y, j));
+            p = p + &Poly::monomial(q(c, 1), m);
+        }
+        p
+    }
+
+    fn ratfn() -> impl Strategy<Value = RatFn> {
+        let poly = || {
+            prop::collection::vec((0u32..3, 0u32..3, -3i64..=3), 1..4).prop_map(|t| poly_from(&t))
+        };
+        (poly(), poly()).prop_map(|(n, d)| RatFn::new(n, d).unwrap_or_else(RatFn::zero))
+    }
+
+    /// The normal form: coprime, primitive denominator with positive leading coefficient.
+    fn is_normal(f: &RatFn) -> bool {
+        Poly::gcd(f.num(), f.den()).is_one() && f.den().primitive() == *f.den()
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 128, ..ProptestConfig::default() })]
+
+        /// Every result is in normal form, and == agrees with cross-multiplication.
+        #[test]
+        fn results_are_normal_and_equality_is_cross_multiplication(a in ratfn(), b in ratfn()) {
+            let sum = a.clone() + &b;
+            let product = a.clone() * &b;
+            prop_assert!(is_normal(&a) && is_normal(&sum) && is_normal(&product));
+            let cross = (a.num() * b.den() - &(b.num() * a.den())).is_zero();
+            prop_assert_eq!(a == b, cross);
+            prop_assert_eq!(sum - &b, a.clone());
+            if !b.is_zero() {
+                prop_assert_eq!(product / &b, a);
+            }
+        }
     }
 
     /// Solves `A x = b` over any field by Gaussian elimination (first nonzero pivot).
