@@ -463,7 +463,7 @@ impl<'a> Add<&'a RatFn> for RatFn {
 impl<'a> Sub<&'a RatFn> for RatFn {
     type Output = RatFn;
     fn sub(self, rhs: &'a RatFn) -> RatFn {
-        add_ref(&self, &-rhs.clone())
+        add_ref(&self, &-rhs)
     }
 }
 
@@ -510,6 +510,43 @@ impl Div for RatFn {
     /// When `rhs` is zero (a programming error; use [`Field::checked_div`]).
     fn div(self, rhs: RatFn) -> RatFn {
         self / &rhs
+    }
+}
+
+impl<'a> Add<&'a RatFn> for &RatFn {
+    type Output = RatFn;
+    fn add(self, rhs: &'a RatFn) -> RatFn {
+        add_ref(self, rhs)
+    }
+}
+
+impl<'a> Sub<&'a RatFn> for &RatFn {
+    type Output = RatFn;
+    fn sub(self, rhs: &'a RatFn) -> RatFn {
+        add_ref(self, &-rhs)
+    }
+}
+
+impl<'a> Mul<&'a RatFn> for &RatFn {
+    type Output = RatFn;
+    fn mul(self, rhs: &'a RatFn) -> RatFn {
+        mul_ref(self, rhs)
+    }
+}
+
+impl<'a> Div<&'a RatFn> for &RatFn {
+    type Output = RatFn;
+    /// # Panics
+    /// When `rhs` is zero (a programming error; use [`Field::checked_div`]).
+    fn div(self, rhs: &'a RatFn) -> RatFn {
+        mul_ref(self, &rhs.recip())
+    }
+}
+
+impl Neg for &RatFn {
+    type Output = RatFn;
+    fn neg(self) -> RatFn {
+        -self.clone()
     }
 }
 
@@ -655,6 +692,13 @@ mod tests {
         assert_eq!(RatFn::constant(q(1, 4)).nearest_f64(), 0.25);
         assert!(s("m").nearest_f64().is_nan());
         assert!(k(1).checked_div(&k(0)).is_none());
+        // Every operator form agrees.
+        let (a, b) = (s("m") + &k(1), s("M") / &s("m"));
+        assert_eq!(&a + &b, a.clone() + b.clone());
+        assert_eq!(&a - &b, a.clone() - b.clone());
+        assert_eq!(&a * &b, a.clone() * b.clone());
+        assert_eq!(&a / &b, a.clone() / b.clone());
+        assert_eq!(-&a, -a.clone());
     }
 
     #[test]
