@@ -862,9 +862,107 @@ impl Poly {
         let (fa, fb) = (a.to_univariate(x), b.to_univariate(x));
         let (ca, cb) = (content_of(&fa), content_of(&fb));
         let c = Poly::gcd(&ca, &cb);
+        if coprime_in_main_symbol(a, b, x) {
+            return c;
+        }
         let g = primitive_prs(divide_all(fa, &ca), divide_all(fb, &cb));
         (Poly::from_univariate(x, &g) * &c).primitive()
     }
+}
+
+/// The prime modulus of [`coprime_in_main_symbol`]: 2^31 - 1, so products fit in a `u64`.
+const PRIME: u64 = 2_147_483_647;
+
+/// A sufficient test that no common divisor of `a` and `b` involves the symbol `x`, so that
+/// their gcd is the gcd of their contents in `x` and the remainder sequence can be skipped (the
+/// usual case in [`RatFn`](super::RatFn) arithmetic: most gcds are 1).
+///
+/// The primitive (integer) forms of `a` and `b` are specialised at a fixed point for the other
+/// symbols and reduced modulo a prime `p`, at a point where the leading coefficient of `a` in
+/// `x` does not vanish mod `p`. By Gauss's lemma a common divisor `h` of degree `k > 0` in `x`
+/// can be taken primitive with `a = h g` over Z, so its leading coefficient divides that of `a`
+/// and `h` specialises to a common divisor of degree `k` mod `p`. A constant gcd mod `p`
+/// therefore proves that there is no such `h`. A positive-degree gcd mod `p` proves nothing (an
+/// unlucky point or a real common factor): the caller then runs the full algorithm.
+fn coprime_in_main_symbol(a: &Poly, b: &Poly, x: Sym) -> bool {
+    let (a, b) = (a.primitive(), b.primitive());
+    let symbols: Vec<Sym> = a.symbols().union(&b.symbols()).copied().collect();
+    let deg_a = a.degree_in(x) as usize;
+    for attempt in 0..2u64 {
+        // Fixed, spread-out residues: deterministic, and unlucky only with tiny probability.
+        let point: Vec<u64> = (0..symbols.len() as u64)
+            .map(|i| (i + 1 + 17 * attempt).wrapping_mul(2_654_435_761) % PRIME)
+            .collect();
+        let specialise = |p: &Poly| {
+            let mut v = vec![0u64; p.degree_in(x) as usize + 1];
+            for (m, c) in &p.terms {
+                let mut t = residue(c);
+                let mut k = 0;
+                for &(s, e) in &m.0 {
+                    if s == x {
+                        k = e as usize;
+                    } else {
+                        let i = symbols.binary_search(&s).unwrap_or(0);
+                        t = t * pow_mod(point[i], u64::from(e)) % PRIME;
+                    }
+                }
+                v[k] = (v[k] + t) % PRIME;
+            }
+            v
+        };
+        let (ua, ub) = (specialise(&a), specialise(&b));
+        if ua[deg_a] != 0 && gcd_degree_mod_p(ua, ub) == 0 {
+            return true;
+        }
+    }
+    false
+}
+
+/// An integer (the coefficients of a primitive polynomial) modulo [`PRIME`].
+fn residue(c: &Q) -> u64 {
+    let r = c.numer().mod_floor(&BigInt::from(PRIME));
+    u64::try_from(r).unwrap_or_else(|_| unreachable!("a residue mod p fits in u64"))
+}
+
+/// `base^exp` modulo [`PRIME`].
+fn pow_mod(mut base: u64, mut exp: u64) -> u64 {
+    let mut acc = 1u64;
+    base %= PRIME;
+    while exp > 0 {
+        if exp & 1 == 1 {
+            acc = acc * base % PRIME;
+        }
+        base = base * base % PRIME;
+        exp >>= 1;
+    }
+    acc
+}
+
+/// The degree of the gcd of two univariate polynomials over Z/p (coefficients from degree 0
+/// up), by Euclid's algorithm; 0 also when both are zero.
+fn gcd_degree_mod_p(mut f: Vec<u64>, mut g: Vec<u64>) -> usize {
+    let trim_p = |v: &mut Vec<u64>| {
+        while v.last() == Some(&0) {
+            v.pop();
+        }
+    };
+    trim_p(&mut f);
+    trim_p(&mut g);
+    while !g.is_empty() {
+        // f := f mod g
+        let dg = g.len() - 1;
+        let inv = pow_mod(g[dg], PRIME - 2);
+        while f.len() > dg {
+            let df = f.len() - 1;
+            let factor = f[df] * inv % PRIME;
+            for (fi, gj) in f[df - dg..].iter_mut().zip(&g) {
+                *fi = (*fi + PRIME - factor * gj % PRIME) % PRIME;
+            }
+            trim_p(&mut f);
+        }
+        std::mem::swap(&mut f, &mut g);
+    }
+    f.len().saturating_sub(1)
 }
 
 /// gcd when `t` is a single term: the monomial dividing `t` and every term of `other`.
@@ -1301,6 +1399,29 @@ mod tests {
             start.elapsed()
         );
         assert_eq!(h, (d.pow(2) * &f).primitive());
+        // Coprime, where a remainder sequence would swell: the modular test answers it.
+        let (a, b) = (d.pow(4) + &g.pow(2), f.pow(3) + &d);
+        let start = std::time::Instant::now();
+        assert!(Poly::gcd(&a, &b).is_one());
+        println!("coprime gcd of degree 12 and 9: {:?}", start.elapsed());
+    }
+
+    #[test]
+    fn modular_coprimality_test_never_claims_a_shared_factor_away() {
+        let (x, y, z) = (v("x"), v("y"), v("z"));
+        let h = x.clone() * &y + &z.pow(2) + &k(7);
+        let a = h.clone() * &(x.pow(3) - &y);
+        let b = h.clone() * &(z.clone() * &x + &k(1));
+        for s in ["x", "y", "z"] {
+            assert!(!coprime_in_main_symbol(&a, &b, Sym::new(s)));
+        }
+        assert!(coprime_in_main_symbol(
+            &(x.clone() + &y),
+            &(x.clone() - &y),
+            Sym::new("x")
+        ));
+        assert_eq!(gcd_degree_mod_p(vec![1, 0, 1], vec![PRIME - 1, 0, 1]), 0);
+        assert_eq!(gcd_degree_mod_p(vec![PRIME - 1, 0, 1], vec![1, 1]), 1);
     }
 
     #[test]
