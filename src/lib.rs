@@ -25,7 +25,7 @@
 //! # Ok::<(), rodimpact::Error>(())
 //! ```
 
-//pub mod claims;
+pub mod claims;
 pub mod error;
 pub mod field;
 pub mod mechanics;
@@ -36,3 +36,8 @@ pub mod scene;
 pub mod solve;
 
 pub use error::{Error, ErrorKind};
+
+/// The README's Rust examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -129,13 +129,17 @@ impl PosExpr {
             },
             PosExpr::Square(_) => Some(NonNegative),
             PosExpr::Sum(ts) => {
-                let classes: Option<Vec<_>> =
-                    ts.iter().map(|t| t.sign_class(positive, nonnegative)).collect();
+                let classes: Option<Vec<_>> = ts
+                    .iter()
+                    .map(|t| t.sign_class(positive, nonnegative))
+                    .collect();
                 classes?.into_iter().max()
             }
             PosExpr::Product(fs) => {
-                let classes: Option<Vec<_>> =
-                    fs.iter().map(|f| f.sign_class(positive, nonnegative)).collect();
+                let classes: Option<Vec<_>> = fs
+                    .iter()
+                    .map(|f| f.sign_class(positive, nonnegative))
+                    .collect();
                 Some(classes?.into_iter().min().unwrap_or(Positive))
             }
             PosExpr::Quotient(n, d) => match d.sign_class(positive, nonnegative)? {
@@ -336,7 +340,13 @@ impl Certificate {
     }
 
     /// A finite-limit certificate.
-    pub fn limit(title: impl Into<String>, expr: RatFn, sym: &str, at: Point, expected: RatFn) -> Certificate {
+    pub fn limit(
+        title: impl Into<String>,
+        expr: RatFn,
+        sym: &str,
+        at: Point,
+        expected: RatFn,
+    ) -> Certificate {
         Certificate::Limit {
             title: title.into(),
             expr,
@@ -397,7 +407,9 @@ impl Certificate {
                     .ok_or("a substitution makes a denominator vanish")?;
                 let diff = target.clone() - &form.value();
                 if !diff.is_identically_zero() {
-                    return Err(format!("expression after substitution minus the form = {diff}, not 0"));
+                    return Err(format!(
+                        "expression after substitution minus the form = {diff}, not 0"
+                    ));
                 }
                 let leftover: BTreeSet<Sym> = form
                     .value()
@@ -439,7 +451,10 @@ impl Certificate {
                 if ok {
                     Ok(())
                 } else {
-                    Err(format!("the limit is {}", describe_limit(&found, *sym, *at)))
+                    Err(format!(
+                        "the limit is {}",
+                        describe_limit(&found, *sym, *at)
+                    ))
                 }
             }
             Certificate::Witness {
@@ -456,14 +471,26 @@ impl Certificate {
                 if radicands.len() > 1 {
                     return Err(format!("instance mixes square roots of {radicands:?}"));
                 }
-                let value_of = |s: Sym| instance.iter().find(|(k, _)| *k == s).map(|(_, v)| v.clone());
-                let l = lhs.eval(&value_of).ok_or("lhs is undefined at the instance")?;
-                let r = rhs.eval(&value_of).ok_or("rhs is undefined at the instance")?;
+                let value_of = |s: Sym| {
+                    instance
+                        .iter()
+                        .find(|(k, _)| *k == s)
+                        .map(|(_, v)| v.clone())
+                };
+                let l = lhs
+                    .eval(&value_of)
+                    .ok_or("lhs is undefined at the instance")?;
+                let r = rhs
+                    .eval(&value_of)
+                    .ok_or("rhs is undefined at the instance")?;
                 let order = (l.clone() - &r).sign().ok_or("the sign is undecided")?;
                 if relation.holds(order) {
                     Ok(())
                 } else {
-                    Err(format!("at the instance lhs = {l}, rhs = {r}: {} fails", relation.symbol()))
+                    Err(format!(
+                        "at the instance lhs = {l}, rhs = {r}: {} fails",
+                        relation.symbol()
+                    ))
                 }
             }
             Certificate::Integral {
@@ -534,7 +561,9 @@ impl Certificate {
             } => {
                 let target = match expected {
                     Expected::Finite(x) => x.to_string(),
-                    Expected::Infinite { coefficient, order } => format!("~ ({coefficient}) * {sym}^{order}"),
+                    Expected::Infinite { coefficient, order } => {
+                        format!("~ ({coefficient}) * {sym}^{order}")
+                    }
                 };
                 format!(
                     "**Limit** — {title}\n\n```text\nexpression = {expr}\n{sym} -> {}\nlimit      = {target}\n```\n\nChecked: exact leading terms in {sym} of numerator and denominator.\n",
@@ -553,7 +582,12 @@ impl Certificate {
                     .map(|(s, v)| format!("{s} = {v}"))
                     .collect::<Vec<_>>()
                     .join(", ");
-                let value_of = |s: Sym| instance.iter().find(|(k, _)| *k == s).map(|(_, v)| v.clone());
+                let value_of = |s: Sym| {
+                    instance
+                        .iter()
+                        .find(|(k, _)| *k == s)
+                        .map(|(_, v)| v.clone())
+                };
                 let show = |x: &RatFn| {
                     x.eval(&value_of)
                         .map(|v| format!("{v} (~ {})", v.decimal(12)))
@@ -582,7 +616,13 @@ impl Certificate {
 }
 
 /// `integral_{lower}^{upper} density(var) * var^power d var`, for a density polynomial in `var`.
-fn integrate(density: &RatFn, var: Sym, power: u32, lower: &RatFn, upper: &RatFn) -> Result<RatFn, String> {
+fn integrate(
+    density: &RatFn,
+    var: Sym,
+    power: u32,
+    lower: &RatFn,
+    upper: &RatFn,
+) -> Result<RatFn, String> {
     if density.den().degree_in(var) > 0 {
         return Err(format!("the density is not a polynomial in {var}"));
     }
@@ -596,7 +636,11 @@ fn integrate(density: &RatFn, var: Sym, power: u32, lower: &RatFn, upper: &RatFn
         let term = coefficient * &pow(&x, exponent) / RatFn::from(i64::from(exponent));
         antiderivative = antiderivative + &term;
     }
-    let at = |value: &RatFn| antiderivative.subs(var, value).ok_or("the limits make a denominator vanish");
+    let at = |value: &RatFn| {
+        antiderivative
+            .subs(var, value)
+            .ok_or("the limits make a denominator vanish")
+    };
     Ok((at(upper)? - &at(lower)?) / den)
 }
 
@@ -615,7 +659,10 @@ fn describe_limit(l: &Limit, sym: Sym, at: Point) -> String {
     match l {
         Limit::Finite(x) => format!("{x} as {sym} -> {}", point_name(at)),
         Limit::Infinite { coefficient, order } => {
-            format!("infinite, ~ ({coefficient}) * {sym}^{order} as {sym} -> {}", point_name(at))
+            format!(
+                "infinite, ~ ({coefficient}) * {sym}^{order} as {sym} -> {}",
+                point_name(at)
+            )
         }
     }
 }

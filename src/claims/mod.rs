@@ -11,12 +11,12 @@
 //! The paper's printed formulas enter as data ([`Paper`]), independent of the solver; a test
 //! replaces one of them by a wrong one and the claims that depend on it must then fail.
 
+mod beyond_impulse;
+mod beyond_motion;
 mod certificate;
 pub mod model;
 mod paper_equations;
 mod paper_optimum;
-mod beyond_impulse;
-mod beyond_motion;
 
 pub use certificate::{Certificate, Expected, PosExpr, Relation, SignClass};
 
@@ -234,12 +234,21 @@ impl Paper {
     /// assert_eq!(Paper::as_printed().threshold.to_string(), "2");
     /// ```
     pub fn as_printed() -> Paper {
-        let (m, big_m, inertia, a, v0, l, r) =
-            (sym("m"), sym("M"), sym("I"), sym("a"), sym("v0"), sym("l"), sym("r_G"));
+        let (m, big_m, inertia, a, v0, l, r) = (
+            sym("m"),
+            sym("M"),
+            sym("I"),
+            sym("a"),
+            sym("v0"),
+            sym("l"),
+            sym("r_G"),
+        );
         let one = k(1, 1);
         let d = model::paper_d(&inertia);
         Paper {
-            v: -((one.clone() - &(m.clone() / big_m.clone()) - &(m.clone() * &a * &a / inertia.clone()))
+            v: -((one.clone()
+                - &(m.clone() / big_m.clone())
+                - &(m.clone() * &a * &a / inertia.clone()))
                 / d.clone())
                 * &v0,
             big_v: (k(2, 1) * &m / big_m.clone()) / d.clone() * &v0,

@@ -47,7 +47,10 @@ pub fn rational(n: i64, d: i64) -> QSqrt {
 
 /// `(symbol, value)` pairs for a witness instance.
 pub fn at(pairs: &[(&str, QSqrt)]) -> Vec<(Sym, QSqrt)> {
-    pairs.iter().map(|(s, v)| (Sym::new(s), v.clone())).collect()
+    pairs
+        .iter()
+        .map(|(s, v)| (Sym::new(s), v.clone()))
+        .collect()
 }
 
 /// Substitutes `(name, value)` pairs into `x` (the substitution must keep denominators nonzero,
@@ -59,7 +62,10 @@ pub fn at(pairs: &[(&str, QSqrt)]) -> Vec<(Sym, QSqrt)> {
 /// assert_eq!(subs(&(sym("a") * &sym("m")), &[("a", k(0, 1))]).to_string(), "0");
 /// ```
 pub fn subs(x: &RatFn, pairs: &[(&str, RatFn)]) -> RatFn {
-    let pairs: Vec<(Sym, RatFn)> = pairs.iter().map(|(s, v)| (Sym::new(s), v.clone())).collect();
+    let pairs: Vec<(Sym, RatFn)> = pairs
+        .iter()
+        .map(|(s, v)| (Sym::new(s), v.clone()))
+        .collect();
     x.subs_all(&pairs)
         .expect("a claim's substitution keeps denominators nonzero")
 }

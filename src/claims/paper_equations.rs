@@ -5,8 +5,14 @@ use super::{Certificate, Claim, Decision, Entry, Group, Paper, PosExpr};
 
 /// The registered claims of this part of the paper.
 pub(super) const ENTRIES: &[Entry] = &[
-    Entry { id: "C5", build: c5 },
-    Entry { id: "C15", build: c15 },
+    Entry {
+        id: "C5",
+        build: c5,
+    },
+    Entry {
+        id: "C15",
+        build: c15,
+    },
 ];
 
 fn c5(_paper: &Paper) -> Claim {
@@ -40,7 +46,11 @@ fn c15(paper: &Paper) -> Claim {
         expr: paper_d(&inertia),
         strict: true,
         substitutions: vec![],
-        positive: vec![crate::field::Sym::new("m"), crate::field::Sym::new("M"), crate::field::Sym::new("I")],
+        positive: vec![
+            crate::field::Sym::new("m"),
+            crate::field::Sym::new("M"),
+            crate::field::Sym::new("I"),
+        ],
         nonnegative: vec![],
         form: PosExpr::sum([
             PosExpr::constant(1, 1),

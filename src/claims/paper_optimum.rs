@@ -5,7 +5,10 @@ use super::{Certificate, Claim, Decision, Entry, Group, Paper, PosExpr};
 use crate::field::Sym;
 
 /// The registered claims of this part of the paper.
-pub(super) const ENTRIES: &[Entry] = &[Entry { id: "C23", build: c23 }];
+pub(super) const ENTRIES: &[Entry] = &[Entry {
+    id: "C23",
+    build: c23,
+}];
 
 fn c23(paper: &Paper) -> Claim {
     // Independent derivation: a*^2 = I (M + m)/(m M) with I = M l^2/3.

@@ -21,10 +21,14 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 
 mod float;
 pub mod laws;
+pub mod poly;
 pub mod quadratic;
+pub mod ratfunc;
 mod rational;
 
+pub use poly::{Poly, Sym};
 pub use quadratic::QSqrt;
+pub use ratfunc::RatFn;
 
 /// Exact rational numbers: the reference backend.
 pub type Q = BigRational;
