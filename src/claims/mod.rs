@@ -16,6 +16,7 @@ mod beyond_motion;
 mod certificate;
 pub mod model;
 mod paper_equations;
+mod paper_intuition;
 mod paper_optimum;
 
 pub use certificate::{Certificate, Expected, PosExpr, Relation, SignClass};
@@ -285,6 +286,7 @@ pub fn registry() -> Vec<Entry> {
     let mut all = Vec::new();
     all.extend_from_slice(paper_equations::ENTRIES);
     all.extend_from_slice(paper_optimum::ENTRIES);
+    all.extend_from_slice(paper_intuition::ENTRIES);
     all.extend_from_slice(beyond_impulse::ENTRIES);
     all.extend_from_slice(beyond_motion::ENTRIES);
     all

@@ -1,4 +1,4 @@
-//! Claims C19-C46: the optimum, the inelastic case, intuition, and the inhomogeneous rod.
+//! Claims C19-C31: the optimum and the totally inelastic case.
 
 use super::model::*;
 use super::{Certificate, Claim, Decision, Entry, Group, Paper, PosExpr};
