@@ -42,6 +42,9 @@ pub enum ErrorKind {
     /// The value is not one of the accepted forms; the string lists them.
     #[error("{0}")]
     Invalid(String),
+    /// A file could not be read or written; the string says which and why.
+    #[error("{0}")]
+    Io(String),
     /// Two inputs contradict each other (for example `--a` together with `--from-end`).
     #[error("{0}")]
     Conflict(String),

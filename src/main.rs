@@ -4,9 +4,11 @@
 //! naming the field and the reason).
 
 use clap::{Args, Parser, Subcommand};
-use rodimpact::Error;
-use rodimpact::report::Solution;
+use rodimpact::claims::{self, Decided, Paper};
+use rodimpact::report::{self, Solution};
 use rodimpact::scene::SceneInput;
+use rodimpact::{Error, ErrorKind};
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// Exact verifier for the impact of a projectile on a rod (Lemos, "Failure of intuition in
@@ -21,7 +23,32 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Solve one scene exactly: velocities, energies, residuals and the optimal impact point.
-    Solve(SolveArgs),
+    Solve(Box<SolveArgs>),
+    /// Decide claims of the paper (C1-C46) and beyond (X1-X26) by exact computation.
+    Prove(ProveArgs),
+    /// The main job: verify every claim of the paper and print the report.
+    Paper(PaperArgs),
+}
+
+#[derive(Args, Debug)]
+struct ProveArgs {
+    /// Claim ids (C1-C46, X1-X26) [default: all].
+    #[arg(value_name = "ID")]
+    ids: Vec<String>,
+    /// Write one Markdown certificate per claim into DIR (and the index README.md when all
+    /// claims are decided).
+    #[arg(long, value_name = "DIR")]
+    write: Option<PathBuf>,
+    /// Print a JSON list instead of one line per claim.
+    #[arg(long)]
+    json: bool,
+}
+
+#[derive(Args, Debug)]
+struct PaperArgs {
+    /// Also write the report as Markdown (report.md) with every certificate into DIR.
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
 }
 
 /// Scene flags shared by the commands that take one scene. Numbers are exact: "2", "0.25",
@@ -158,6 +185,101 @@ fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
     }
 }
 
+/// The registered entries for the requested ids (all of them when none is given).
+fn select_claims(ids: &[String]) -> Result<Vec<claims::Entry>, Error> {
+    let registry = claims::registry();
+    if ids.is_empty() {
+        return Ok(registry);
+    }
+    ids.iter()
+        .map(|id| {
+            registry
+                .iter()
+                .find(|e| e.id.eq_ignore_ascii_case(id.trim()))
+                .copied()
+                .ok_or_else(|| {
+                    Error::new(
+                        "id",
+                        ErrorKind::Invalid(format!(
+                            "unknown claim '{}'; the ids are C1-C46 and X1-X26",
+                            id.chars().take(40).collect::<String>()
+                        )),
+                    )
+                })
+        })
+        .collect()
+}
+
+/// Writes one certificate per decided claim into `dir`, and the index when `complete`.
+fn write_certificates(
+    field: &str,
+    dir: &Path,
+    decided: &[Decided],
+    complete: bool,
+) -> Result<(), Error> {
+    report::create_output_dir(field, dir)?;
+    for d in decided {
+        let path = dir.join(format!("{}.md", d.claim.id));
+        report::write_atomic(field, &path, &report::claim_markdown(d))?;
+    }
+    if complete {
+        report::write_atomic(
+            field,
+            &dir.join("README.md"),
+            &report::index_markdown(decided),
+        )?;
+    }
+    Ok(())
+}
+
+fn all_checked(decided: &[Decided]) -> Result<(), Failure> {
+    if decided.iter().all(|d| d.verdict.is_ok()) {
+        Ok(())
+    } else {
+        Err(Failure::Check)
+    }
+}
+
+fn run_prove(args: &ProveArgs) -> Result<(), Failure> {
+    let entries = select_claims(&args.ids)?;
+    let paper = Paper::as_printed();
+    let decided: Vec<Decided> = entries
+        .iter()
+        .map(|e| claims::decide_entry(e, &paper))
+        .collect();
+    if args.json {
+        let list: Vec<_> = decided.iter().map(report::prove_json).collect();
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&list).expect("JSON of strings and numbers")
+        );
+    } else {
+        for d in &decided {
+            println!("{}", report::prove_line(d));
+        }
+        println!("{}", report::summary_line(&decided));
+    }
+    if let Some(dir) = &args.write {
+        write_certificates("write", dir, &decided, args.ids.is_empty())?;
+    }
+    all_checked(&decided)
+}
+
+fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
+    let paper = Paper::as_printed();
+    let decided = claims::decide_all(&paper);
+    print!("{}", report::paper_report(&decided, false));
+    if let Some(dir) = &args.out {
+        write_certificates("out", dir, &decided, true)?;
+        report::write_atomic(
+            "out",
+            &dir.join("report.md"),
+            &report::paper_report(&decided, true),
+        )?;
+    }
+    all_checked(&decided)
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
@@ -184,6 +306,8 @@ fn main() -> ExitCode {
     };
     let result = match &cli.command {
         Command::Solve(args) => run_solve(args),
+        Command::Prove(args) => run_prove(args),
+        Command::Paper(args) => run_paper(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

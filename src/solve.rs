@@ -133,9 +133,9 @@ pub fn solve_linear<F: Field>(mut a: Vec<Vec<F>>, mut b: Vec<F>) -> Option<Vec<F
                 continue;
             }
             let factor = a[row][col].clone() / &a[col][col];
-            for k in col..n {
-                let delta = factor.clone() * &a[col][k];
-                a[row][k] = a[row][k].clone() - &delta;
+            let (upper, lower) = a.split_at_mut(row);
+            for (target, pivot_entry) in lower[0][col..].iter_mut().zip(&upper[col][col..]) {
+                *target = target.clone() - &(factor.clone() * pivot_entry);
             }
             let delta = factor * &b[col];
             b[row] = b[row].clone() - &delta;

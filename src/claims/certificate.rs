@@ -150,25 +150,56 @@ impl PosExpr {
     }
 }
 
+impl PosExpr {
+    /// True for shapes that print without parentheses inside a product or quotient.
+    fn is_atom(&self) -> bool {
+        match self {
+            PosExpr::Sym(_) | PosExpr::Square(_) => true,
+            PosExpr::Const(c) => c.is_integer(),
+            PosExpr::Sum(ts) => ts.len() == 1 && ts[0].is_atom(),
+            PosExpr::Product(fs) => fs.len() == 1 && fs[0].is_atom(),
+            PosExpr::Quotient(..) => false,
+        }
+    }
+
+    fn factor(&self) -> String {
+        if self.is_atom() || matches!(self, PosExpr::Product(_)) {
+            self.to_string()
+        } else {
+            format!("({self})")
+        }
+    }
+}
+
 impl fmt::Display for PosExpr {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let join = |items: &[PosExpr], sep: &str| {
-            items
-                .iter()
-                .map(|x| match x {
-                    PosExpr::Sum(_) | PosExpr::Quotient(..) if sep == " * " => format!("({x})"),
-                    _ => x.to_string(),
-                })
-                .collect::<Vec<_>>()
-                .join(sep)
-        };
         match self {
             PosExpr::Sym(s) => write!(f, "{s}"),
             PosExpr::Const(c) => write!(f, "{c}"),
-            PosExpr::Sum(ts) => write!(f, "{}", join(ts, " + ")),
-            PosExpr::Product(fs) => write!(f, "{}", join(fs, " * ")),
-            PosExpr::Quotient(n, d) => write!(f, "({n}) / ({d})"),
-            PosExpr::Square(x) => write!(f, "({x})^2"),
+            PosExpr::Sum(ts) => {
+                let terms: Vec<String> = ts.iter().map(|t| t.to_string()).collect();
+                write!(f, "{}", terms.join(" + "))
+            }
+            PosExpr::Product(fs) => {
+                let factors: Vec<String> = fs.iter().map(|x| x.factor()).collect();
+                write!(f, "{}", factors.join("*"))
+            }
+            PosExpr::Quotient(n, d) => {
+                let den = if d.is_atom() {
+                    d.to_string()
+                } else {
+                    format!("({d})")
+                };
+                write!(f, "{}/{den}", n.factor())
+            }
+            PosExpr::Square(x) => {
+                let inner = x.to_string();
+                if inner.chars().all(|c| c.is_alphanumeric() || c == '_') {
+                    write!(f, "{inner}^2")
+                } else {
+                    write!(f, "({inner})^2")
+                }
+            }
         }
     }
 }
@@ -516,17 +547,17 @@ impl Certificate {
     /// The certificate in Markdown: what it says, its data, and what the checker verified.
     pub fn to_markdown(&self) -> String {
         match self {
-            Certificate::Identity { title, lhs, rhs } => format!(
-                "**Identity** — {title}\n\n```text\nlhs = {lhs}\nrhs = {rhs}\n```\n\nChecked: the numerator of lhs - rhs expands to the zero polynomial.\n"
+            Certificate::Identity { lhs, rhs, .. } => format!(
+                "*Identity certificate.*\n\n```text\nlhs = {lhs}\nrhs = {rhs}\n```\n\nChecked: the numerator of lhs - rhs expands to the zero polynomial.\n"
             ),
             Certificate::Positive {
-                title,
                 expr,
                 strict,
                 substitutions,
                 positive,
                 nonnegative,
                 form,
+                ..
             } => {
                 let subs = if substitutions.is_empty() {
                     "(none)".to_string()
@@ -545,7 +576,7 @@ impl Certificate {
                     }
                 };
                 format!(
-                    "**Positivity** — {title}\n\n```text\nexpression   = {expr}\nclaim        = expression {} 0\ndomain       : positive {}; nonnegative {}\nsubstitution : {subs}\nform         = {form}\n```\n\nChecked: after the substitution the expression equals the form identically, and the form is built only from positive symbols and constants, sums, products, quotients by positive terms and squares, so it is {}.\n",
+                    "*Positivity certificate.*\n\n```text\nexpression   = {expr}\nclaim        = expression {} 0\ndomain       : positive {}; nonnegative {}\nsubstitution : {subs}\nform         = {form}\n```\n\nChecked: after the substitution the expression equals the form identically, and the form is built only from positive symbols and constants, sums, products, quotients by positive terms and squares, so it is {}.\n",
                     if *strict { ">" } else { ">=" },
                     names(positive),
                     names(nonnegative),
@@ -553,11 +584,11 @@ impl Certificate {
                 )
             }
             Certificate::Limit {
-                title,
                 expr,
                 sym,
                 at,
                 expected,
+                ..
             } => {
                 let target = match expected {
                     Expected::Finite(x) => x.to_string(),
@@ -566,16 +597,16 @@ impl Certificate {
                     }
                 };
                 format!(
-                    "**Limit** — {title}\n\n```text\nexpression = {expr}\n{sym} -> {}\nlimit      = {target}\n```\n\nChecked: exact leading terms in {sym} of numerator and denominator.\n",
+                    "*Limit certificate.*\n\n```text\nexpression = {expr}\n{sym} -> {}\nlimit      = {target}\n```\n\nChecked: exact leading terms in {sym} of numerator and denominator.\n",
                     point_name(*at)
                 )
             }
             Certificate::Witness {
-                title,
                 instance,
                 lhs,
                 relation,
                 rhs,
+                ..
             } => {
                 let inst = instance
                     .iter()
@@ -594,22 +625,22 @@ impl Certificate {
                         .unwrap_or_else(|| "undefined".into())
                 };
                 format!(
-                    "**Witness** — {title}\n\n```text\ninstance : {inst}\nlhs      = {lhs}\n         = {}\nrhs      = {rhs}\n         = {}\nrelation : lhs {} rhs\n```\n\nChecked: both sides evaluated exactly in Q(sqrt d); the sign of lhs - rhs decided exactly.\n",
+                    "*Witness certificate.*\n\n```text\ninstance : {inst}\nlhs      = {lhs}\n         = {}\nrhs      = {rhs}\n         = {}\nrelation : lhs {} rhs\n```\n\nChecked: both sides evaluated exactly in Q(sqrt d); the sign of lhs - rhs decided exactly.\n",
                     show(lhs),
                     show(rhs),
                     relation.symbol()
                 )
             }
             Certificate::Integral {
-                title,
                 density,
                 var,
                 power,
                 lower,
                 upper,
                 expected,
+                ..
             } => format!(
-                "**Integral** — {title}\n\n```text\nintegral from {lower} to {upper} of ({density}) * {var}^{power} d{var}\n  = {expected}\n```\n\nChecked: exact polynomial antiderivative in {var}, evaluated at the limits.\n"
+                "*Integral certificate.*\n\n```text\nintegral from {lower} to {upper} of ({density}) * {var}^{power} d{var}\n  = {expected}\n```\n\nChecked: exact polynomial antiderivative in {var}, evaluated at the limits.\n"
             ),
         }
     }

@@ -1,8 +1,15 @@
 //! Output: the forms in which results leave the library (JSON, text, and later Markdown, LaTeX,
 //! CSV and SVG).
 
+mod files;
+mod proofs;
 mod solution;
 
+pub use files::{create_output_dir, write_atomic};
+pub use proofs::{
+    claim_markdown, index_markdown, paper_report, prove_json, prove_line, summary_line,
+    verdict_label,
+};
 pub use solution::Solution;
 
 use crate::field::Q;
