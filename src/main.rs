@@ -5,8 +5,8 @@
 
 use clap::{Args, Parser, Subcommand};
 use rodimpact::claims::{self, Decided, Paper};
-use rodimpact::report::{self, Solution};
-use rodimpact::scene::SceneInput;
+use rodimpact::report::{self, Format, Solution, TableOptions};
+use rodimpact::scene::{RodInertia, SceneInput, parse_field};
 use rodimpact::{Error, ErrorKind};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -28,6 +28,36 @@ enum Command {
     Prove(ProveArgs),
     /// The main job: verify every claim of the paper and print the report.
     Paper(PaperArgs),
+    /// Exact tables of the paper's results (T1-T5) in Markdown, LaTeX or CSV.
+    Table(TableArgs),
+}
+
+#[derive(Args, Debug)]
+struct TableArgs {
+    /// Mass ratios M/m for T1 and T5, comma separated [default: 1/100,1/10,1/2,1,3/2,2,3,10,100].
+    #[arg(long, value_name = "Q,Q,...")]
+    ratios: Option<String>,
+    /// The mass ratio M/m of T2 and T3 [default: 1].
+    #[arg(long, value_name = "Q")]
+    ratio: Option<String>,
+    /// Mass distribution, in units of l and M l^2: uniform, dumbbell, rg=R, I=X [default: uniform].
+    #[arg(long, value_name = "KIND")]
+    rod: Option<String>,
+    /// Coefficient of restitution for T1, T2 and T5 [default: 1].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    e: Option<String>,
+    /// A pivot at p (in units of l) for T1.
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pivot: Option<String>,
+    /// Output format: md, latex or csv [default: md].
+    #[arg(long, value_name = "FORMAT", default_value = "md")]
+    format: String,
+    /// Only these tables (T1-T5), comma separated [default: all].
+    #[arg(long, value_name = "T1,T2,...")]
+    only: Option<String>,
+    /// Write to FILE (atomically) instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    out: Option<PathBuf>,
 }
 
 #[derive(Args, Debug)]
@@ -280,6 +310,84 @@ fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     all_checked(&decided)
 }
 
+fn table_options(args: &TableArgs) -> Result<TableOptions, Error> {
+    let mut opts = TableOptions::default();
+    let positive = |field: &str, text: &str| {
+        let x = parse_field(field, text)?;
+        if x > rodimpact::field::Q::from_integer(0.into()) {
+            Ok(x)
+        } else {
+            Err(Error::out_of_range(
+                field,
+                format!("mass ratios must be > 0, got {x}"),
+            ))
+        }
+    };
+    if let Some(list) = &args.ratios {
+        opts.ratios = list
+            .split(',')
+            .map(|r| positive("ratios", r))
+            .collect::<Result<_, _>>()?;
+    }
+    if let Some(r) = &args.ratio {
+        opts.ratio = positive("ratio", r)?;
+    }
+    if let Some(rod) = &args.rod {
+        opts.rod = RodInertia::parse(rod)?;
+    }
+    if let Some(e) = &args.e {
+        opts.e = parse_field("e", e)?;
+    }
+    if let Some(p) = &args.pivot {
+        opts.pivot = Some(parse_field("pivot", p)?);
+    }
+    Ok(opts)
+}
+
+fn parse_format(text: &str) -> Result<Format, Error> {
+    Format::parse(text).ok_or_else(|| {
+        Error::new(
+            "format",
+            ErrorKind::Invalid(format!(
+                "expected md, latex or csv, got '{}'",
+                text.chars().take(40).collect::<String>()
+            )),
+        )
+    })
+}
+
+fn run_table(args: &TableArgs) -> Result<(), Failure> {
+    let format = parse_format(&args.format)?;
+    let opts = table_options(args)?;
+    let mut tables = report::all_tables(&opts)?;
+    if let Some(only) = &args.only {
+        let wanted: Vec<String> = only
+            .split(',')
+            .map(|t| t.trim().to_ascii_uppercase())
+            .collect();
+        if let Some(bad) = wanted
+            .iter()
+            .find(|w| !tables.iter().any(|t| t.id == w.as_str()))
+        {
+            return Err(Error::new(
+                "only",
+                ErrorKind::Invalid(format!(
+                    "unknown table '{}'; the tables are T1-T5",
+                    bad.chars().take(40).collect::<String>()
+                )),
+            )
+            .into());
+        }
+        tables.retain(|t| wanted.iter().any(|w| w == t.id));
+    }
+    let text = report::render_document(&tables, format);
+    match &args.out {
+        Some(path) => report::write_atomic("out", path, &text)?,
+        None => print!("{text}"),
+    }
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
@@ -308,6 +416,7 @@ fn main() -> ExitCode {
         Command::Solve(args) => run_solve(args),
         Command::Prove(args) => run_prove(args),
         Command::Paper(args) => run_paper(args),
+        Command::Table(args) => run_table(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -6,9 +6,11 @@
 //! in the distance d = |a - p| from the pivot, with `d*^2 = I_p / m`, `I_p = I + M p^2`.
 //! On the rod, the maximum is at a* when a* lies on the rod and at the end otherwise.
 
-use crate::field::{Q, QSqrt};
-use crate::scene::{Scene, Support};
+use crate::field::{Field, Q, QSqrt, RatFn};
+use crate::scene::{Params, Scene, Support};
+use crate::solve::solve;
 use num_traits::{One, Signed, Zero};
+use std::cmp::Ordering;
 
 /// Where omega is largest over the impact points on the struck side.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -35,6 +37,34 @@ impl Argmax {
     }
 }
 
+/// Where a* lies relative to the end of the struck arm, decided exactly.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Placement {
+    /// a* < arm: the fastest spin comes from an interior point (the paper's surprise).
+    Inside,
+    /// a* = arm exactly (the uniform free rod at M = 2m).
+    AtEnd,
+    /// a* > arm: unphysical; omega increases all the way to the end.
+    Beyond,
+}
+
+impl Placement {
+    /// `inside`, `at the end` or `beyond the end`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::optimum::Placement;
+    /// assert_eq!(Placement::AtEnd.as_str(), "at the end");
+    /// ```
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Placement::Inside => "inside",
+            Placement::AtEnd => "at the end",
+            Placement::Beyond => "beyond the end",
+        }
+    }
+}
+
 /// The optimum of a scene: a*^2, whether a* is on the rod, and the exact maximum of omega.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Optimum {
@@ -49,6 +79,107 @@ pub struct Optimum {
     pub argmax: Argmax,
     /// That maximum, exactly: `(1 + e) v0 / (2 a*)` at a*, or omega at the end.
     pub omega_max: QSqrt,
+    /// a* against the end of the arm: inside, exactly at the end, or beyond it.
+    pub placement: Placement,
+    /// |omega| when the end of the arm is struck.
+    pub omega_end: Q,
+    /// The rod mass at which a* reaches the end, the mass distribution (I/M) and everything
+    /// else fixed: a* is on the rod iff M <= this. `None` for a dumbbell-like free rod
+    /// (r_G = l), whose a* is beyond the end for every mass.
+    pub threshold_mass: Option<Q>,
+}
+
+impl Optimum {
+    /// `omega(end)/omega_max`, exactly (1 when the maximum is at the end).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{scene::Scene, optimum::optimum, field::q};
+    /// let o = optimum(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap());
+    /// assert_eq!(o.end_to_max().to_string(), "2/5*sqrt(6)");
+    /// ```
+    pub fn end_to_max(&self) -> QSqrt {
+        QSqrt::rational(self.omega_end.clone()) / &self.omega_max
+    }
+
+    /// The gain from aiming at a* instead of the end: `omega_max/omega(end) - 1`, exactly.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{scene::Scene, optimum::optimum, field::q};
+    /// let o = optimum(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap());
+    /// assert_eq!(o.gain().to_string(), "-1 + 5/12*sqrt(6)"); // about 2.06 %
+    /// ```
+    pub fn gain(&self) -> QSqrt {
+        self.omega_max.clone() / &QSqrt::rational(self.omega_end.clone()) - &QSqrt::one()
+    }
+}
+
+/// The paper's argument made explicit: `omega(x) = K f(x)` with `f(x) = x/(b^2 + c^2 x^2)`,
+/// x the distance of the impact from the centre (free rod) or from the pivot, so the maximum
+/// over x > 0 is at x = b/c = a*.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PaperForm {
+    /// The constant K = (1 + e) v0.
+    pub k: Q,
+    /// b^2 = I (1/m + 1/M) for a free rod, I_p/m for a pivoted one.
+    pub b_squared: Q,
+    /// c = 1.
+    pub c: Q,
+}
+
+impl PaperForm {
+    /// The form of `scene`'s omega.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{scene::Scene, optimum::PaperForm, field::q};
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+    /// let f = PaperForm::of(&s);
+    /// assert_eq!((f.k, f.b_squared, f.c), (q(2, 1), q(2, 3), q(1, 1)));
+    /// assert!(f.verify(&s));
+    /// ```
+    pub fn of(scene: &Scene) -> PaperForm {
+        PaperForm {
+            k: (Q::one() + scene.e()) * scene.v0(),
+            b_squared: a_star_squared(scene),
+            c: Q::one(),
+        }
+    }
+
+    /// Checks `omega(a) = K f(a - p)` as an identity in the impact point `a` (a symbol; every
+    /// other parameter the scene's exact value), with omega from the generic solver over
+    /// rational functions.
+    pub fn verify(&self, scene: &Scene) -> bool {
+        let lifted: Params<RatFn> = scene.params();
+        let a = RatFn::symbol("a");
+        let params = Params {
+            a: a.clone(),
+            ..lifted
+        };
+        let Some(out) = solve(&params) else {
+            return false;
+        };
+        let x = a - &params.axis();
+        let c = RatFn::from_rational(&self.c);
+        let f = x.clone() / (RatFn::from_rational(&self.b_squared) + &(c.square() * &x * &x));
+        (out.after.omega - &(RatFn::from_rational(&self.k) * &f)).is_identically_zero()
+    }
+
+    /// `b/c`, the argmax of f on x > 0, as an exact square root.
+    pub fn argmax(&self) -> QSqrt {
+        QSqrt::sqrt_of(&(&self.b_squared / (&self.c * &self.c)))
+    }
+}
+
+/// a*^2 (free rod, from the centre) or d*^2 (pivot, from the pivot).
+fn a_star_squared(scene: &Scene) -> Q {
+    let (m, big_m) = (scene.m(), scene.rod_mass());
+    let inertia = scene.inertia();
+    match scene.support() {
+        Support::Free => &inertia * (big_m + m) / (m * big_m),
+        Support::Pivot(p) => (&inertia + big_m * p * p) / m,
+    }
 }
 
 /// Computes the optimum of `scene` exactly: no float, no approximate square root.
@@ -64,26 +195,36 @@ pub struct Optimum {
 /// assert_eq!(o.omega_max.to_string(), "1/2*sqrt(6)");
 /// ```
 pub fn optimum(scene: &Scene) -> Optimum {
-    let m = scene.m();
-    let big_m = scene.rod_mass();
+    let (m, big_m) = (scene.m(), scene.rod_mass());
     let l = scene.half_length();
-    let inertia = scene.inertia();
-    let (squared, arm) = match scene.support() {
-        Support::Free => (&inertia * (big_m + m) / (m * big_m), l.clone()),
+    let squared = a_star_squared(scene);
+    let gyration_squared = scene.inertia() / big_m;
+    let (arm, threshold_mass) = match scene.support() {
+        Support::Free => {
+            let excess = l * l - &gyration_squared;
+            let threshold = excess.is_positive().then(|| m * excess / &gyration_squared);
+            (l.clone(), threshold)
+        }
         Support::Pivot(p) => {
-            let inertia_p = &inertia + big_m * p * p;
-            (inertia_p / m, struck_arm(scene.a(), p, l))
+            let arm = struck_arm(scene.a(), p, l);
+            let threshold = m * &arm * &arm / (gyration_squared + p * p);
+            (arm, Some(threshold))
         }
     };
-    let within_rod = squared <= &arm * &arm;
+    let placement = match squared.cmp(&(&arm * &arm)) {
+        Ordering::Less => Placement::Inside,
+        Ordering::Equal => Placement::AtEnd,
+        Ordering::Greater => Placement::Beyond,
+    };
+    let within_rod = placement != Placement::Beyond;
     let scale = (Q::one() + scene.e()) * scene.v0();
+    let omega_end = &scale * &arm / (&squared + &arm * &arm);
     let (argmax, omega_max) = if within_rod {
         let half = &scale / Q::from_integer(2.into());
         let inverse_root = QSqrt::sqrt_of(&(Q::one() / &squared));
         (Argmax::AStar, inverse_root * &QSqrt::rational(half))
     } else {
-        let at_end = scale * &arm / (&squared + &arm * &arm);
-        (Argmax::End, QSqrt::rational(at_end))
+        (Argmax::End, QSqrt::rational(omega_end.clone()))
     };
     Optimum {
         squared,
@@ -91,6 +232,9 @@ pub fn optimum(scene: &Scene) -> Optimum {
         within_rod,
         argmax,
         omega_max,
+        placement,
+        omega_end,
+        threshold_mass,
     }
 }
 
@@ -155,6 +299,54 @@ mod tests {
         assert!(o.within_rod); // d* = 2 = the whole rod: a door is best hit at its edge iff M >= 3m
         let s = scene(q(2, 1), q(3, 1)).pivot(q(-1, 1)).build().unwrap();
         assert_eq!(optimum(&s).squared, q(2, 1));
+    }
+
+    #[test]
+    fn thresholds_are_where_a_star_reaches_the_end() {
+        // Uniform free rod: M = 2m; dumbbell: never inside; door (pivot at an end): M = 3m.
+        let o = optimum(&scene(q(1, 1), q(5, 1)).build().unwrap());
+        assert_eq!(o.threshold_mass, Some(q(2, 1)));
+        let o = optimum(
+            &scene(q(1, 1), q(5, 1))
+                .rod(crate::scene::RodInertia::Dumbbell)
+                .build()
+                .unwrap(),
+        );
+        assert_eq!(o.threshold_mass, None);
+        assert_eq!(o.placement, Placement::Beyond);
+        let o = optimum(&scene(q(1, 1), q(5, 1)).pivot(q(-1, 1)).build().unwrap());
+        assert_eq!(o.threshold_mass, Some(q(3, 1)));
+        // At the threshold itself a* is exactly at the end.
+        let o = optimum(&scene(q(1, 1), q(2, 1)).build().unwrap());
+        assert_eq!(o.placement, Placement::AtEnd);
+        assert_eq!(o.end_to_max(), QSqrt::one());
+    }
+
+    #[test]
+    fn paper_form_matches_the_solver_for_every_kind_of_scene() {
+        let scenes = [
+            scene(q(1, 1), q(1, 1)).build().unwrap(),
+            scene(q(2, 3), q(5, 7))
+                .e(q(1, 3))
+                .rod(crate::scene::RodInertia::Gyration(q(1, 2)))
+                .build()
+                .unwrap(),
+            scene(q(1, 1), q(3, 1))
+                .pivot(q(-1, 2))
+                .e(q(0, 1))
+                .build()
+                .unwrap(),
+        ];
+        for s in scenes {
+            let form = PaperForm::of(&s);
+            assert!(form.verify(&s), "{s:?}");
+            assert_eq!(form.argmax(), QSqrt::sqrt_of(&optimum(&s).squared));
+            let wrong = PaperForm {
+                b_squared: &form.b_squared * q(2, 1),
+                ..form
+            };
+            assert!(!wrong.verify(&s), "a wrong b must not verify");
+        }
     }
 
     #[test]

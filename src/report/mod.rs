@@ -2,15 +2,19 @@
 //! CSV and SVG).
 
 mod files;
+mod paper_tables;
 mod proofs;
 mod solution;
+mod table;
 
 pub use files::{create_output_dir, write_atomic};
+pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
 pub use proofs::{
     claim_markdown, index_markdown, paper_report, prove_json, prove_line, summary_line,
     verdict_label,
 };
 pub use solution::Solution;
+pub use table::{Cell, Format, Header, Table, render_document};
 
 use crate::field::Q;
 use crate::number;
