@@ -448,12 +448,12 @@ fn c7(_paper: &Paper) -> Claim {
                  0 <= e < 1 (v0 != 0) energy is strictly lost, so conservation is exactly the elastic \
                  case, not a consequence of the momentum laws."
             .into(),
-        reason: "for e = 1 the solver's energy loss is identically 0; for 0 <= e < 1 it is (1 - e^2) m M I v0^2/(2(MI + mI + mMa^2)) > 0".into(),
+        reason: "for e = 1 the solver's kinetic energy after the impact is m v0^2/2 identically; for 0 <= e < 1 it is (1 - e^2) m M I v0^2/(2(MI + mI + mMa^2)) > 0".into(),
         decision: Decision::Proved(vec![
             Certificate::identity(
-                "energy lost in the impact (generic solver, e = 1) is 0",
-                lost(k(1, 1)),
-                k(0, 1),
+                "kinetic energy after the impact (generic solver, e = 1) equals m v0^2/2",
+                solved(&rod(k(1, 1))).energy.after,
+                sym("m") * &sym("v0") * &sym("v0") / k(2, 1),
             ),
             positive_on(
                 "energy lost for 0 <= e < 1 (e = s/(s + t), s >= 0, t > 0) is > 0: conservation singles out e = 1",
