@@ -512,30 +512,33 @@ fn i_p_at(h: &RatFn) -> RatFn {
     sym("I") + &(sym("M") * h * h)
 }
 
-/// Door: d*^2 - L^2 with M = 3m + q (`outside`, > 0) or L^2 - d*^2 with M = 3m - q (> 0).
+/// Door, d*^2 = I_p/m against L^2 = (2l)^2: with M = 3m + q, q >= 0, d*^2 - L^2 >= 0 (`outside`:
+/// not inside); with M = 3m - q, q > 0, L^2 - d*^2 > 0 (inside). Both equal 4 l^2 q/(3m).
 fn door_cert(door_i_p: &RatFn, outside: bool) -> Certificate {
     let (m, l, q) = (sym("m"), sym("l"), sym("q"));
     let width2 = k(4, 1) * &l * &l;
     let excess = door_i_p.clone() / m.clone() - &width2;
-    let (title, expr, mass) = if outside {
+    let (title, expr, mass, domain): (_, _, _, (&[&str], &[&str])) = if outside {
         (
-            "door, M = 3m + q, q > 0: d*^2 - L^2 = I_p/m - (2l)^2 = 4 l^2 q/(3m) > 0 (d* outside)",
+            "door, M = 3m + q, q >= 0: d*^2 - L^2 = I_p/m - (2l)^2 = 4 l^2 q/(3m) >= 0 (d* not inside)",
             excess,
             k(3, 1) * &m + &q,
+            (&["m", "l"], &["q"]),
         )
     } else {
         (
             "door, M = 3m - q, q > 0: L^2 - d*^2 = 4 l^2 q/(3m) > 0 (d* inside)",
             -excess,
             k(3, 1) * &m - &q,
+            (&["m", "l", "q"], &[]),
         )
     };
     positive(
         title,
         expr,
-        true,
+        !outside,
         &[("M", mass)],
-        (&["m", "l", "q"], &[]),
+        domain,
         PosExpr::quotient(
             PosExpr::product([pc(4, 1), ps("l"), ps("l"), ps("q")]),
             PosExpr::product([pc(3, 1), ps("m")]),
