@@ -220,13 +220,19 @@ struct Peak {
 }
 
 impl Peak {
-    fn c_form(&self) -> PosExpr {
-        self.c.map_or(pc(1), ps)
+    fn c_value(&self) -> RatFn {
+        self.c.map_or(k(1, 1), sym)
+    }
+
+    /// `factors` times c^`power` (nothing when c = 1), as a product.
+    fn times_c(&self, mut factors: Vec<PosExpr>, power: usize) -> PosExpr {
+        factors.extend(self.c.iter().cycle().take(power).map(|c| ps(c)));
+        PosExpr::Product(factors)
     }
 
     /// f(b/c) - f(x).
     fn gap(&self) -> RatFn {
-        let peak = sym(self.b) / self.c_form().value();
+        let peak = sym(self.b) / self.c_value();
         subs(&self.f, &[(self.x, peak)]) - &self.f
     }
 
@@ -257,22 +263,27 @@ impl Peak {
         )
     }
 
+    /// k c^2 t^2/(2 b c (b^2 + (c x)^2)) with the given b and c x (both visibly signed).
+    fn gap_form(&self, numerator: PosExpr, b: PosExpr, cx: PosExpr) -> PosExpr {
+        PosExpr::quotient(
+            numerator,
+            self.times_c(vec![pc(2), b.clone(), add([prod([b.clone(), b]), cx])], 1),
+        )
+    }
+
     /// k (c x - b)^2/(2 b c (b^2 + c^2 x^2)) >= 0 for every x.
     fn everywhere(&self) -> Certificate {
-        let (b, c, x) = (ps(self.b), self.c_form(), sym(self.x));
-        let cx = c.value() * &x;
-        let form = PosExpr::quotient(
-            prod([self.k.clone(), PosExpr::Square(cx.clone() - &b.value())]),
-            prod([
-                pc(2),
-                b.clone(),
-                c,
-                add([prod([b.clone(), b]), PosExpr::Square(cx)]),
-            ]),
+        let cx = self.c_value() * &sym(self.x);
+        let form = self.gap_form(
+            prod([self.k.clone(), PosExpr::Square(cx.clone() - &sym(self.b))]),
+            ps(self.b),
+            PosExpr::Square(cx),
         );
         let (n, x, p) = (self.name, self.x, self.peak_name);
         self.certificate(
-            format!("{n}({p}) - {n}({x}) = k ({x} - {p})^2/(positive) >= 0 for every {x}"),
+            format!(
+                "{n}({p}) - {n}({x}) = a square over a positive denominator: >= 0 for every {x}"
+            ),
             false,
             &[],
             (&[], &[]),
@@ -282,17 +293,12 @@ impl Peak {
 
     /// Right of the peak, x = b/c + t: k c^2 t^2/(2 b c (b^2 + (b + c t)^2)) > 0.
     fn above(&self) -> Certificate {
-        let (b, c, t) = (ps(self.b), self.c_form(), ps("t"));
-        let x = sym(self.b) / c.value() + &sym("t");
-        let shifted = add([b.clone(), prod([c.clone(), t.clone()])]);
-        let form = PosExpr::quotient(
-            prod([self.k.clone(), c.clone(), c.clone(), t.clone(), t]),
-            prod([
-                pc(2),
-                b.clone(),
-                c,
-                add([prod([b.clone(), b]), prod([shifted.clone(), shifted])]),
-            ]),
+        let x = sym(self.b) / self.c_value() + &sym("t");
+        let shifted = add([ps(self.b), self.times_c(vec![ps("t")], 1)]);
+        let form = self.gap_form(
+            self.times_c(vec![self.k.clone(), ps("t"), ps("t")], 2),
+            ps(self.b),
+            prod([shifted.clone(), shifted]),
         );
         let (n, x_name, p) = (self.name, self.x, self.peak_name);
         self.certificate(
@@ -307,21 +313,13 @@ impl Peak {
     /// Left of the peak, 0 <= x < b/c, i.e. b = c (x + t): k c^2 t^2/(2 B c (B^2 + c^2 x^2)) > 0
     /// with B = c (x + t).
     fn below(&self) -> Certificate {
-        let (c, t, x) = (self.c_form(), ps("t"), ps(self.x));
-        let big_b = prod([c.clone(), add([x.clone(), t.clone()])]);
-        let form = PosExpr::quotient(
-            prod([self.k.clone(), c.clone(), c.clone(), t.clone(), t]),
-            prod([
-                pc(2),
-                big_b.clone(),
-                c.clone(),
-                add([
-                    prod([big_b.clone(), big_b]),
-                    prod([c.clone(), c, x.clone(), x]),
-                ]),
-            ]),
+        let big_b = self.times_c(vec![add([ps(self.x), ps("t")])], 1);
+        let form = self.gap_form(
+            self.times_c(vec![self.k.clone(), ps("t"), ps("t")], 2),
+            big_b,
+            self.times_c(vec![ps(self.x), ps(self.x)], 2),
         );
-        let b = self.c_form().value() * &(sym(self.x) + &sym("t"));
+        let b = self.c_value() * &(sym(self.x) + &sym("t"));
         let (n, x_name, p) = (self.name, self.x, self.peak_name);
         self.certificate(
             format!(
@@ -720,7 +718,7 @@ fn c27(paper: &Paper) -> Claim {
         "omega(a*) - omega(l) > 0 when a* < l: l = A + t, t > 0",
         subs(&omega, &[("a", sym("A"))]) - &at_end,
         true,
-        &compose(&[model.clone()], &[("l", sym("A") + &sym("t"))]),
+        &compose(std::slice::from_ref(&model), &[("l", sym("A") + &sym("t"))]),
         (&["m", "v0", "A", "t"], &[]),
         PosExpr::quotient(
             prod([pc(2), ps("v0"), ps("t"), ps("t")]),
@@ -1079,6 +1077,38 @@ mod tests {
             }
         });
         assert!(naive.is_err());
+    }
+
+    #[test]
+    fn a_wrong_peak_or_a_wrong_strictness_fails() {
+        // f = x/(b^2 + c^2 x^2) does not peak at c/b: every peak certificate fails.
+        let (b, c, x) = (sym("b"), sym("c"), sym("x"));
+        let wrong = Peak {
+            name: "f",
+            f: x.clone() / (square(&b) + &(square(&c) * &square(&x))),
+            x: "x",
+            peak_name: "c/b",
+            b: "c",
+            c: Some("b"),
+            k: PosExpr::constant(1, 1),
+            model: vec![],
+            positive: vec![],
+        };
+        assert!(wrong.certificates().iter().all(|c| c.check().is_err()));
+        // The gap is only >= 0 everywhere (it vanishes at the peak): claiming > 0 fails.
+        let strict = tampered("C20", |c| {
+            if let Certificate::Positive { strict, .. } = c {
+                *strict = true;
+            }
+        });
+        assert!(strict.is_ok(), "C20's first certificate is an identity");
+        let mut c20 = decide("C20", &Paper::as_printed()).unwrap().claim;
+        if let Decision::Proved(certs) = &mut c20.decision
+            && let Certificate::Positive { strict, .. } = &mut certs[2]
+        {
+            *strict = true;
+        }
+        assert!(c20.check().is_err());
     }
 
     #[test]
