@@ -112,10 +112,7 @@ struct Domain {
 fn domain(subs: &[(&str, RatFn)], positive: &[&str], nonnegative: &[&str]) -> Domain {
     let names = |list: &[&str]| list.iter().map(|n| Sym::new(n)).collect();
     Domain {
-        subs: subs
-            .iter()
-            .map(|(s, v)| (Sym::new(s), v.clone()))
-            .collect(),
+        subs: subs.iter().map(|(s, v)| (Sym::new(s), v.clone())).collect(),
         positive: names(positive),
         nonnegative: names(nonnegative),
     }
@@ -241,11 +238,7 @@ fn gyration_interior_optimal(paper: &Paper) -> Certificate {
         "Eq. (maximal-a-gyration): l^2 - a*^2 > 0 when M < m (l^2/r_G^2 - 1) (l = r_G + u, m = (M r_G^2 + q)/(u (2 r_G + u)); u, q > 0)",
         sq(&sym("l")) - &paper.a_star_gyration_squared,
         true,
-        domain(
-            &[("l", rg + &u), ("m", m)],
-            &["M", "r_G", "u", "q"],
-            &[],
-        ),
+        domain(&[("l", rg + &u), ("m", m)], &["M", "r_G", "u", "q"], &[]),
         div(
             mul([ps("q"), ps("u"), two_r_plus_u]),
             add([mul([ps("M"), ps("r_G"), ps("r_G")]), ps("q")]),
@@ -397,7 +390,10 @@ fn c32(_paper: &Paper) -> Claim {
             below,
             true,
             domain(
-                &[("I", m.clone() * &(sq(&(x.clone() + &t)) + &sym("s")) - &big_m_p2)],
+                &[(
+                    "I",
+                    m.clone() * &(sq(&(x.clone() + &t)) + &sym("s")) - &big_m_p2,
+                )],
                 &["m", "v0", "t"],
                 &["x", "s", "e"],
             ),
@@ -409,7 +405,11 @@ fn c32(_paper: &Paper) -> Claim {
                     add([mul([xt.clone(), ps("t")]), ps("s")]),
                 ]),
                 mul([
-                    add([mul([xt.clone(), xt.clone()]), mul([ps("x"), ps("x")]), ps("s")]),
+                    add([
+                        mul([xt.clone(), xt.clone()]),
+                        mul([ps("x"), ps("x")]),
+                        ps("s"),
+                    ]),
                     add([mul([pc(2, 1), xt.clone(), xt]), ps("s")]),
                 ]),
             ),
@@ -430,10 +430,7 @@ fn c32(_paper: &Paper) -> Claim {
                     ps("t"),
                     add([
                         mul([ps("w"), ps("t")]),
-                        mul([
-                            ps("x"),
-                            add([mul([pc(2, 1), ps("w")]), ps("x"), ps("t")]),
-                        ]),
+                        mul([ps("x"), add([mul([pc(2, 1), ps("w")]), ps("x"), ps("t")])]),
                     ]),
                 ]),
                 mul([
@@ -732,10 +729,7 @@ fn c39(paper: &Paper) -> Claim {
             one_plus_e(),
             ps("v0"),
             ps("s"),
-            add([
-                mul([pc(3, 1), ps("m"), ps("s")]),
-                mul([ps("q"), l.clone()]),
-            ]),
+            add([mul([pc(3, 1), ps("m"), ps("s")]), mul([ps("q"), l.clone()])]),
         ]),
         mul([
             l.clone(),
@@ -777,7 +771,8 @@ fn c40(_paper: &Paper) -> Claim {
     let (l, h) = (sym("l"), sym("h"));
     // Uniform density c on the two end segments of width h.
     let end_mass = sym("c") * &h;
-    let end_inertia = sym("c") * &(l2.clone() * &h - &(l.clone() * &sq(&h)) + &(pow(&h, 3) / k(3, 1)));
+    let end_inertia =
+        sym("c") * &(l2.clone() * &h - &(l.clone() * &sq(&h)) + &(pow(&h, 3) / k(3, 1)));
     let right = (l.clone() - &h, l.clone());
     let left = (-l.clone(), h.clone() - &l);
     let end_rg2 = end_inertia.clone() / end_mass.clone();
@@ -1132,7 +1127,8 @@ mod tests {
     fn a_wrong_gyration_optimum_is_caught() {
         let mut paper = Paper::as_printed();
         // (M + m)/M instead of (M + m)/m.
-        paper.a_star_gyration_squared = (sym("M") + &sym("m")) / sym("M") * &sym("r_G") * &sym("r_G");
+        paper.a_star_gyration_squared =
+            (sym("M") + &sym("m")) / sym("M") * &sym("r_G") * &sym("r_G");
         assert_eq!(failing(&paper), ["C41", "C42", "C43", "C44", "C45"]);
     }
 
@@ -1190,12 +1186,14 @@ mod tests {
     fn a_sign_flipped_form_is_rejected() {
         let paper = Paper::as_printed();
         let mut claim = c39(&paper);
-        if let Decision::Proved(certs) = &mut claim.decision {
-            if let Certificate::Positive { form, .. } = &mut certs[0] {
-                // The same value, but a negative constant in the shape: no visible sign.
-                *form = add([form.clone(), pc(1, 1), pc(-1, 1)]);
-            }
-        }
+        let Decision::Proved(certs) = &mut claim.decision else {
+            panic!("C39 is proved");
+        };
+        let Certificate::Positive { form, .. } = &mut certs[0] else {
+            panic!("C39 is a positivity certificate");
+        };
+        // The same value, but a negative constant in the shape: no visible sign.
+        *form = add([form.clone(), pc(1, 1), pc(-1, 1)]);
         assert!(claim.check().is_err());
     }
 
