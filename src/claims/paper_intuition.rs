@@ -1196,18 +1196,4 @@ mod tests {
         *form = add([form.clone(), pc(1, 1), pc(-1, 1)]);
         assert!(claim.check().is_err());
     }
-
-    #[test]
-    fn print_markdown() {
-        if std::env::var("RODIMPACT_PRINT").is_ok() {
-            let paper = Paper::as_printed();
-            for e in ENTRIES {
-                let claim = (e.build)(&paper);
-                println!("## {} — {}\n{}\n", claim.id, claim.statement, claim.formal);
-                for c in claim.certificates() {
-                    println!("{}", c.to_markdown());
-                }
-            }
-        }
-    }
 }
