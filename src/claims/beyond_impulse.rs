@@ -1104,7 +1104,15 @@ fn x12_stop_point() -> Vec<Certificate> {
             form,
         )
     };
-    let l2s = |c: i64, den: PosExpr| quot(prod([pc(c, 1), ps("l"), ps("l"), ps("s")]), den);
+    let l2s = |c: i64, den: PosExpr| {
+        let lls = [ps("l"), ps("l"), ps("s")];
+        let num = if c == 1 {
+            prod(lls)
+        } else {
+            prod([pc(c, 1), prod(lls)])
+        };
+        quot(num, den)
+    };
     vec![
         id(
             "uniform rod, e = 1: v (solver) at a^2 = a0^2 = l^2 (M - m)/(3m) is 0",
@@ -1282,6 +1290,132 @@ mod tests {
         let ids: Vec<_> = ENTRIES.iter().map(|e| e.id).collect();
         let expected: Vec<String> = (1..=13).map(|n| format!("X{n}")).collect();
         assert_eq!(ids, expected);
+    }
+
+    /// The paper with one formula replaced.
+    fn mutated(change: impl FnOnce(&mut Paper)) -> Paper {
+        let mut p = Paper::as_printed();
+        change(&mut p);
+        p
+    }
+
+    fn assert_fail(paper: &Paper, ids: &[&str]) {
+        for id in ids {
+            assert!(verdict(id, paper).is_err(), "{id} should fail");
+        }
+    }
+
+    #[test]
+    fn wrong_elastic_formulas_are_caught() {
+        let (m, big_m) = (sym("m"), sym("M"));
+        // Eq. (omega) without the m/M term of D.
+        let bad = mutated(|p| {
+            p.omega = p.omega.clone() * &paper_d(&sym("I")) / (paper_d(&sym("I")) - &(m / big_m))
+        });
+        assert_fail(&bad, &["X2", "X4"]);
+        let bad = mutated(|p| p.v = -p.v.clone());
+        assert_fail(&bad, &["X2"]);
+        let bad = mutated(|p| p.big_v = p.big_v.clone() * &k(2, 1));
+        assert_fail(&bad, &["X2"]);
+    }
+
+    #[test]
+    fn wrong_a_star_is_caught() {
+        // a*^2 = 2 I (M + m)/(m M): still linear in I, but wrong.
+        let bad = mutated(|p| p.a_star_squared = p.a_star_squared.clone() * &k(2, 1));
+        assert_fail(&bad, &["X5", "X6", "X7", "X9", "X10", "X11"]);
+        // a*^2 = (M + m) l^2/(2m) for the uniform rod.
+        let bad =
+            mutated(|p| p.a_star_uniform_squared = p.a_star_uniform_squared.clone() * &k(3, 2));
+        assert_fail(&bad, &["X6", "X8"]);
+        // a*^2 = (M + 2m) r_G^2/m.
+        let bad = mutated(|p| {
+            p.a_star_gyration_squared =
+                p.a_star_gyration_squared.clone() + &(sym("r_G") * &sym("r_G"))
+        });
+        assert_fail(&bad, &["X8", "X12"]);
+        assert_eq!(
+            verdict("X1", &bad),
+            Ok(Verdict::Proved),
+            "X1 does not use a*"
+        );
+    }
+
+    /// The certificate with its claim altered: another right-hand side, a shifted form, the
+    /// opposite relation, another limit.
+    fn corrupted(c: &Certificate) -> Certificate {
+        let mut c = c.clone();
+        match &mut c {
+            Certificate::Identity { rhs, .. } => *rhs = rhs.clone() + &sym("m"),
+            Certificate::Positive { form, .. } => {
+                *form = PosExpr::sum([form.clone(), PosExpr::constant(1, 1)])
+            }
+            Certificate::Witness { relation, .. } => {
+                *relation = match relation {
+                    Relation::Eq => Relation::Ne,
+                    Relation::Ne => Relation::Eq,
+                    Relation::Lt => Relation::Ge,
+                    Relation::Ge => Relation::Lt,
+                    Relation::Gt => Relation::Le,
+                    Relation::Le => Relation::Gt,
+                }
+            }
+            Certificate::Limit { expected, .. } => {
+                *expected = match expected {
+                    Expected::Finite(x) => Expected::Finite(x.clone() + &one()),
+                    Expected::Infinite { coefficient, order } => Expected::Infinite {
+                        coefficient: coefficient.clone(),
+                        order: *order - 1,
+                    },
+                }
+            }
+            Certificate::Integral { expected, .. } => *expected = expected.clone() + &one(),
+        }
+        c
+    }
+
+    #[test]
+    fn every_certificate_can_fail() {
+        let paper = Paper::as_printed();
+        for e in ENTRIES {
+            let claim = (e.build)(&paper);
+            for cert in claim.certificates() {
+                assert!(cert.check().is_ok(), "{}: {}", e.id, cert.title());
+                assert!(
+                    corrupted(cert).check().is_err(),
+                    "{}: {} cannot fail",
+                    e.id,
+                    cert.title()
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_wrong_sign_shape_is_rejected() {
+        // X8's 3/4 bound with the slack s declared of unknown sign: the shape shows no sign.
+        let claim = x8(&Paper::as_printed());
+        let Decision::Proved(mut certs) = claim.decision else {
+            panic!("X8 is proved")
+        };
+        let cert = certs
+            .iter_mut()
+            .find(|c| c.title().starts_with("ratio^2 - 3/4"))
+            .expect("the 3/4 certificate");
+        if let Certificate::Positive { nonnegative, .. } = cert {
+            nonnegative.clear();
+        }
+        assert!(cert.check().is_err());
+    }
+
+    #[test]
+    fn fast() {
+        let paper = Paper::as_printed();
+        let start = std::time::Instant::now();
+        for e in ENTRIES {
+            assert!(decide(e.id, &paper).expect("registered").verdict.is_ok());
+        }
+        assert!(start.elapsed().as_secs_f64() < 2.0);
     }
 
     #[test]
