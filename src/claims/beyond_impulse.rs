@@ -504,7 +504,7 @@ fn x4(paper: &Paper) -> Claim {
         "X4",
         "omega_e(a) = (1+e)/2 omega_el(a) for every a; omega_el = 2 omega_inel",
         "For m, M, I > 0, any a, v0 and any e: the solver's omega for restitution e equals (1+e)/2 \
-         times Eq. (omega) (the elastic omega), and Eq. (omega) is twice the solver's e = 0 omega.",
+         times Eq. (omega) (the elastic omega), and Eq. (omega) is twice the solver's e = 0 omega, which is the sticking body's omega mu a v0/(I + mu a^2) (X3).",
         "omega is linear in (1+e): the solver's omega_e = (1+e)/2 Eq. (omega) identically",
         vec![
             id(
@@ -516,6 +516,11 @@ fn x4(paper: &Paper) -> Claim {
                 "Eq. (omega) = 2 * omega of the solver's e = 0 solution",
                 paper.omega.clone(),
                 k(2, 1) * &after(&i, k(0, 1)).omega,
+            ),
+            id(
+                "Eq. (omega) = 2 * omega of the sticking body, mu a v0/(I + mu a^2) (X3)",
+                paper.omega.clone(),
+                k(2, 1) * &mu() * &sym("a") * &sym("v0") / (i.clone() + &(mu() * &sq(&sym("a")))),
             ),
         ],
     )
