@@ -136,7 +136,7 @@ impl PaperForm {
     /// use rodimpact::{scene::Scene, optimum::PaperForm, field::q};
     /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
     /// let f = PaperForm::of(&s);
-    /// assert_eq!((f.k, f.b_squared, f.c), (q(2, 1), q(2, 3), q(1, 1)));
+    /// assert_eq!((&f.k, &f.b_squared, &f.c), (&q(2, 1), &q(2, 3), &q(1, 1)));
     /// assert!(f.verify(&s));
     /// ```
     pub fn of(scene: &Scene) -> PaperForm {

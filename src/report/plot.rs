@@ -65,7 +65,14 @@ fn svg(
 pub fn plot_omega(ratios: &[Q], rod: &RodInertia) -> Result<String, Error> {
     let scenes: Vec<(Q, Scene)> = ratios
         .iter()
-        .map(|r| Ok((r.clone(), Scene::builder(Q::one(), r.clone()).rod(rod.clone()).build()?)))
+        .map(|r| {
+            Ok((
+                r.clone(),
+                Scene::builder(Q::one(), r.clone())
+                    .rod(rod.clone())
+                    .build()?,
+            ))
+        })
         .collect::<Result<_, Error>>()?;
     let x_max = q(6, 5);
     svg(
@@ -126,15 +133,26 @@ pub fn plot_omega(ratios: &[Q], rod: &RodInertia) -> Result<String, Error> {
                     .draw_series(LineSeries::new(curve(0, SAMPLES), color.stroke_width(3)))
                     .map_err(drawing_error)?
                     .label(format!("M/m = {ratio}"))
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(3)));
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(3))
+                    });
                 chart
-                    .draw_series(DashedLineSeries::new(curve(SAMPLES, x_end), 5, 5, color.stroke_width(2)))
+                    .draw_series(DashedLineSeries::new(
+                        curve(SAMPLES, x_end),
+                        5,
+                        5,
+                        color.stroke_width(2),
+                    ))
                     .map_err(drawing_error)?;
                 let a_star_f = a_star.nearest_f64();
                 if a_star_f <= f(&x_max) {
                     let y = 1.0 / scale;
                     chart
-                        .draw_series(std::iter::once(Circle::new((a_star_f, y), 6, color.filled())))
+                        .draw_series(std::iter::once(Circle::new(
+                            (a_star_f, y),
+                            6,
+                            color.filled(),
+                        )))
                         .map_err(drawing_error)?;
                     chart
                         .draw_series(std::iter::once(Text::new(
@@ -159,4 +177,3 @@ pub fn plot_omega(ratios: &[Q], rod: &RodInertia) -> Result<String, Error> {
         SIZE,
     )
 }
-
