@@ -24,7 +24,10 @@ fn a_wrong_omega_is_caught() {
     paper.omega = paper.omega.clone() * &k(1, 2); // the classic halved omega
     let failed = failing(&paper);
     assert!(failed.contains(&"C15"), "{failed:?}");
-    assert!(!failed.contains(&"C21"), "an unrelated claim still checks: {failed:?}");
+    assert!(
+        !failed.contains(&"C21"),
+        "an unrelated claim still checks: {failed:?}"
+    );
 }
 
 #[test]

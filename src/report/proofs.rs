@@ -178,21 +178,28 @@ pub fn paper_report(all: &[Decided], markdown: bool) -> String {
         }
         for d in all.iter().filter(|d| d.claim.group == group) {
             let c = &d.claim;
-            let mut reason = c.reason.clone();
+            let mut notes = vec![("", c.reason.clone())];
             if let Some(q) = c.qualification() {
-                reason = format!("{reason} Qualification: {q}");
+                notes.push(("qualified: ", q.to_string()));
             }
             if let Err(why) = &d.verdict {
-                reason = format!("{reason} CHECK FAILED: {why}");
+                notes.push(("CHECK FAILED: ", why.clone()));
             }
             if markdown {
+                let reason: Vec<String> = notes
+                    .iter()
+                    .map(|(label, text)| match *label {
+                        "qualified: " => format!("*Qualified:* {text}"),
+                        _ => format!("{label}{text}"),
+                    })
+                    .collect();
                 let _ = writeln!(
                     out,
                     "| [{id}]({id}.md) | {} | **{}** | {} | {} |",
                     escape_cell(c.location),
                     verdict_label(d),
                     escape_cell(c.statement),
-                    escape_cell(&reason),
+                    escape_cell(&reason.join(". ")),
                     id = c.id
                 );
             } else {
@@ -203,7 +210,9 @@ pub fn paper_report(all: &[Decided], markdown: bool) -> String {
                     verdict_label(d),
                     c.statement
                 );
-                let _ = writeln!(out, "  {:<4} {:<9}  -> {}", "", "", reason);
+                for (label, text) in &notes {
+                    let _ = writeln!(out, "  {:<4} {:<9}  -> {label}{text}", "", "");
+                }
             }
         }
         out.push('\n');
