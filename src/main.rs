@@ -30,6 +30,33 @@ enum Command {
     Paper(PaperArgs),
     /// Exact tables of the paper's results (T1-T5) in Markdown, LaTeX or CSV.
     Table(TableArgs),
+    /// Figures as SVG: omega against a, a* against M/m, or the paper's Figure 1.
+    Plot(Box<PlotArgs>),
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+enum Figure {
+    /// omega(a)/omega_max against a/l for several mass ratios, a* and the rod's end marked.
+    Omega,
+    /// a*/l against M/m (log axis), with the threshold and the light-rod asymptote.
+    Optimum,
+    /// The paper's missing Figure 1, drawn to scale for the scene flags (m = M = 1 by default).
+    Figure1,
+}
+
+#[derive(Args, Debug)]
+struct PlotArgs {
+    /// Which figure.
+    #[arg(value_enum)]
+    figure: Figure,
+    /// The SVG file to write (atomically).
+    #[arg(long, value_name = "FILE.svg")]
+    out: PathBuf,
+    /// Mass ratios M/m of the curves of `omega` [default: 1/2,1,2,3,10].
+    #[arg(long, value_name = "Q,Q,...")]
+    ratios: Option<String>,
+    #[command(flatten)]
+    scene: SceneFlags,
 }
 
 #[derive(Args, Debug)]
@@ -298,39 +325,54 @@ fn run_prove(args: &ProveArgs) -> Result<(), Failure> {
 fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     let paper = Paper::as_printed();
     let decided = claims::decide_all(&paper);
+    let tables = report::all_tables(&TableOptions::default())?;
     print!("{}", report::paper_report(&decided, false));
+    println!("Tables (exact; m = l = v0 = 1)\n");
+    print!(
+        "{}",
+        report::render_document(&tables[..3], Format::Markdown)
+    );
     if let Some(dir) = &args.out {
         write_certificates("out", dir, &decided, true)?;
-        report::write_atomic(
-            "out",
-            &dir.join("report.md"),
-            &report::paper_report(&decided, true),
-        )?;
+        let report_md = report::paper_report(&decided, true);
+        report::write_atomic("out", &dir.join("report.md"), &report_md)?;
+        for format in [Format::Markdown, Format::Latex, Format::Csv] {
+            let path = dir.join(format!("tables.{}", format.extension()));
+            report::write_atomic("out", &path, &report::render_document(&tables, format))?;
+        }
+        for (name, svg) in paper_figures()? {
+            report::write_atomic("out", &dir.join(name), &svg)?;
+        }
     }
     all_checked(&decided)
 }
 
+/// The figures `paper --out` writes: omega(a), a*(M/m) and Figure 1 (M = m, a = l/2).
+fn paper_figures() -> Result<[(&'static str, String); 3], Error> {
+    let ratios = parse_ratios("ratios", "1/2,1,2,3,10")?;
+    let example = SceneInput {
+        m: Some("1".into()),
+        rod_mass: Some("1".into()),
+        a: Some("1/2".into()),
+        ..Default::default()
+    };
+    Ok([
+        (
+            "omega.svg",
+            report::plot_omega(&ratios, &RodInertia::Uniform)?,
+        ),
+        ("optimum.svg", report::plot_optimum(&RodInertia::Uniform)?),
+        ("figure1.svg", report::plot_figure1(&example.build()?)?),
+    ])
+}
+
 fn table_options(args: &TableArgs) -> Result<TableOptions, Error> {
     let mut opts = TableOptions::default();
-    let positive = |field: &str, text: &str| {
-        let x = parse_field(field, text)?;
-        if x > rodimpact::field::Q::from_integer(0.into()) {
-            Ok(x)
-        } else {
-            Err(Error::out_of_range(
-                field,
-                format!("mass ratios must be > 0, got {x}"),
-            ))
-        }
-    };
     if let Some(list) = &args.ratios {
-        opts.ratios = list
-            .split(',')
-            .map(|r| positive("ratios", r))
-            .collect::<Result<_, _>>()?;
+        opts.ratios = parse_ratios("ratios", list)?;
     }
     if let Some(r) = &args.ratio {
-        opts.ratio = positive("ratio", r)?;
+        opts.ratio = parse_ratios("ratio", r)?.remove(0);
     }
     if let Some(rod) = &args.rod {
         opts.rod = RodInertia::parse(rod)?;
@@ -388,6 +430,44 @@ fn run_table(args: &TableArgs) -> Result<(), Failure> {
     Ok(())
 }
 
+fn parse_ratios(field: &str, list: &str) -> Result<Vec<rodimpact::field::Q>, Error> {
+    list.split(',')
+        .map(|text| {
+            let x = parse_field(field, text)?;
+            if x > rodimpact::field::Q::from_integer(0.into()) {
+                Ok(x)
+            } else {
+                Err(Error::out_of_range(
+                    field,
+                    format!("mass ratios must be > 0, got {x}"),
+                ))
+            }
+        })
+        .collect()
+}
+
+fn run_plot(args: &PlotArgs) -> Result<(), Failure> {
+    let rod = match &args.scene.rod {
+        Some(text) => RodInertia::parse(text)?,
+        None => RodInertia::Uniform,
+    };
+    let svg = match args.figure {
+        Figure::Omega => {
+            let ratios = parse_ratios("ratios", args.ratios.as_deref().unwrap_or("1/2,1,2,3,10"))?;
+            report::plot_omega(&ratios, &rod)?
+        }
+        Figure::Optimum => report::plot_optimum(&rod)?,
+        Figure::Figure1 => {
+            let mut input = args.scene.input();
+            input.m.get_or_insert_with(|| "1".into());
+            input.rod_mass.get_or_insert_with(|| "1".into());
+            report::plot_figure1(&input.build()?)?
+        }
+    };
+    report::write_atomic("out", &args.out, &svg)?;
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
@@ -417,6 +497,7 @@ fn main() -> ExitCode {
         Command::Prove(args) => run_prove(args),
         Command::Paper(args) => run_paper(args),
         Command::Table(args) => run_table(args),
+        Command::Plot(args) => run_plot(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

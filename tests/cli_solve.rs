@@ -192,3 +192,40 @@ fn bad_inputs_exit_2_with_one_line_naming_the_field() {
         assert!(!stderr.contains("panicked"), "{args:?}");
     }
 }
+
+#[test]
+fn table_csv_gives_the_paper_case_exactly() {
+    let (code, stdout, stderr) = rodimpact(&["table", "--format", "csv", "--only", "T1", "--ratios", "1"]);
+    assert_eq!(code, 0, "{stderr}");
+    let row = stdout.lines().find(|l| l.starts_with("1,")).expect("the M/m = 1 row");
+    let cells: Vec<&str> = row.split(',').collect();
+    assert_eq!(cells[1], "2/3", "a*^2/l^2");
+    assert_eq!(cells[4], "inside");
+    assert_eq!(cells[5], "2/5*sqrt(6)", "omega(l)/omega_max");
+}
+
+#[test]
+fn a_star_bounds_are_fifty_digits_tight_when_asked() {
+    let j = solve_json(&["--m", "1", "--M", "1", "--digits", "50"]);
+    let lower = j["a_star"]["lower"].as_str().unwrap();
+    let upper = j["a_star"]["upper"].as_str().unwrap();
+    // sqrt(2/3) = 0.81649658092772603273242802490196379732198249355222337614423...
+    assert!(lower.starts_with("0.8164965809277260327324280249019637973219824935522"), "{lower}");
+    assert!(upper.starts_with("0.8164965809277260327324280249019637973219824935522"), "{upper}");
+}
+
+#[test]
+fn plots_are_written_and_bad_figures_refused() {
+    let dir = std::env::temp_dir().join(format!("rodimpact-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for figure in ["omega", "optimum", "figure1"] {
+        let out = dir.join(format!("{figure}.svg"));
+        let (code, _, stderr) = rodimpact(&["plot", figure, "--out", out.to_str().unwrap()]);
+        assert_eq!(code, 0, "{stderr}");
+        assert!(std::fs::read_to_string(&out).unwrap().starts_with("<svg"));
+    }
+    let (code, _, stderr) = rodimpact(&["plot", "omega", "--ratios", "1,-2", "--out", "x.svg"]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("ratios: "), "{stderr}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
