@@ -195,9 +195,13 @@ fn bad_inputs_exit_2_with_one_line_naming_the_field() {
 
 #[test]
 fn table_csv_gives_the_paper_case_exactly() {
-    let (code, stdout, stderr) = rodimpact(&["table", "--format", "csv", "--only", "T1", "--ratios", "1"]);
+    let (code, stdout, stderr) =
+        rodimpact(&["table", "--format", "csv", "--only", "T1", "--ratios", "1"]);
     assert_eq!(code, 0, "{stderr}");
-    let row = stdout.lines().find(|l| l.starts_with("1,")).expect("the M/m = 1 row");
+    let row = stdout
+        .lines()
+        .find(|l| l.starts_with("1,"))
+        .expect("the M/m = 1 row");
     let cells: Vec<&str> = row.split(',').collect();
     assert_eq!(cells[1], "2/3", "a*^2/l^2");
     assert_eq!(cells[4], "inside");
@@ -210,8 +214,14 @@ fn a_star_bounds_are_fifty_digits_tight_when_asked() {
     let lower = j["a_star"]["lower"].as_str().unwrap();
     let upper = j["a_star"]["upper"].as_str().unwrap();
     // sqrt(2/3) = 0.81649658092772603273242802490196379732198249355222337614423...
-    assert!(lower.starts_with("0.8164965809277260327324280249019637973219824935522"), "{lower}");
-    assert!(upper.starts_with("0.8164965809277260327324280249019637973219824935522"), "{upper}");
+    assert!(
+        lower.starts_with("0.8164965809277260327324280249019637973219824935522"),
+        "{lower}"
+    );
+    assert!(
+        upper.starts_with("0.8164965809277260327324280249019637973219824935522"),
+        "{upper}"
+    );
 }
 
 #[test]

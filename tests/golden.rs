@@ -75,7 +75,9 @@ fn committed_certificates_match_the_regenerated_ones() {
 }
 
 fn golden(name: &str) -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden").join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/golden")
+        .join(name)
 }
 
 fn assert_all(problems: Vec<String>) {
@@ -104,7 +106,10 @@ fn figures_match_the_committed_svgs() {
     let ratios = [q(1, 2), q(1, 1), q(2, 1), q(3, 1), q(10, 1)];
     let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build().unwrap();
     let figures = [
-        ("omega.svg", plot_omega(&ratios, &RodInertia::Uniform).unwrap()),
+        (
+            "omega.svg",
+            plot_omega(&ratios, &RodInertia::Uniform).unwrap(),
+        ),
         ("optimum.svg", plot_optimum(&RodInertia::Uniform).unwrap()),
         ("figure1.svg", plot_figure1(&scene).unwrap()),
     ];
