@@ -1,0 +1,127 @@
+//! The subcommands: each file parses its flags and calls the library; this module holds what
+//! they share (scene flags, number lists, the failure kinds that become exit codes).
+
+pub(crate) mod claims;
+pub(crate) mod plot;
+pub(crate) mod solve;
+pub(crate) mod table;
+
+use clap::Args;
+use rodimpact::Error;
+use rodimpact::scene::{SceneInput, parse_field};
+
+/// Scene flags shared by the commands that take one scene. Numbers are exact: "2", "0.25",
+/// "3/7", "1.5e-3", "75/9.8".
+#[derive(Args, Debug)]
+pub(crate) struct SceneFlags {
+    /// Projectile mass m (> 0).
+    #[arg(long = "m", value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) m: Option<String>,
+    /// Rod mass M (> 0).
+    #[arg(long = "M", value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) rod_mass: Option<String>,
+    /// Half-length l of the rod (the rod is 2l long) [default: 1].
+    #[arg(long = "l", value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) l: Option<String>,
+    /// Full length L = 2l of the rod, instead of --l.
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) length: Option<String>,
+    /// Signed impact distance a from the rod's centre, |a| <= l [default: l, the end].
+    #[arg(long = "a", value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) a: Option<String>,
+    /// Impact distance d from the end, instead of --a (a = l - d).
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) from_end: Option<String>,
+    /// Projectile speed v0 (> 0) [default: 1].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) v0: Option<String>,
+    /// Mass distribution: uniform, dumbbell, rg=<radius of gyration> or I=<moment of inertia>
+    /// [default: uniform].
+    #[arg(long, value_name = "KIND")]
+    pub(crate) rod: Option<String>,
+    /// Coefficient of restitution, 0 <= e <= 1 [default: 1].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, group = "law")]
+    pub(crate) e: Option<String>,
+    /// Elastic impact, e = 1 (the default).
+    #[arg(long, group = "law")]
+    pub(crate) elastic: bool,
+    /// Totally inelastic impact, e = 0: the projectile sticks to the rod.
+    #[arg(long, group = "law")]
+    pub(crate) inelastic: bool,
+    /// Put the rod on a fixed frictionless pivot at signed position p, |p| <= l.
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) pivot: Option<String>,
+}
+
+impl SceneFlags {
+    pub(crate) fn input(&self) -> SceneInput {
+        let e = if self.elastic {
+            Some("1".to_string())
+        } else if self.inelastic {
+            Some("0".to_string())
+        } else {
+            self.e.clone()
+        };
+        SceneInput {
+            m: self.m.clone(),
+            rod_mass: self.rod_mass.clone(),
+            l: self.l.clone(),
+            length: self.length.clone(),
+            a: self.a.clone(),
+            from_end: self.from_end.clone(),
+            v0: self.v0.clone(),
+            rod: self.rod.clone(),
+            e,
+            pivot: self.pivot.clone(),
+        }
+    }
+}
+
+/// How a command ended, mapped to the process exit code.
+pub(crate) enum Failure {
+    /// Bad input: exit 2 with one line on stderr.
+    Input(Error),
+    /// A check failed: exit 1 (the report was already printed).
+    Check,
+}
+
+impl From<Error> for Failure {
+    fn from(e: Error) -> Self {
+        Failure::Input(e)
+    }
+}
+
+/// The largest `--digits` accepted: beyond it the decimals are refused, not computed for ever.
+pub(crate) const MAX_DIGITS_OUT: usize = 10_000;
+
+pub(crate) fn parse_digits(text: Option<&str>, default: usize) -> Result<usize, Error> {
+    let Some(text) = text else {
+        return Ok(default);
+    };
+    match text.trim().parse::<usize>() {
+        Ok(n) if (1..=MAX_DIGITS_OUT).contains(&n) => Ok(n),
+        _ => Err(Error::out_of_range(
+            "digits",
+            format!(
+                "must be a whole number from 1 to {MAX_DIGITS_OUT}, got '{}'",
+                text.chars().take(40).collect::<String>()
+            ),
+        )),
+    }
+}
+
+pub(crate) fn parse_ratios(field: &str, list: &str) -> Result<Vec<rodimpact::field::Q>, Error> {
+    list.split(',')
+        .map(|text| {
+            let x = parse_field(field, text)?;
+            if x > rodimpact::field::Q::from_integer(0.into()) {
+                Ok(x)
+            } else {
+                Err(Error::out_of_range(
+                    field,
+                    format!("mass ratios must be > 0, got {x}"),
+                ))
+            }
+        })
+        .collect()
+}

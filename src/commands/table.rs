@@ -1,0 +1,100 @@
+//! `rodimpact table`: the exact tables T1-T5.
+
+use super::{Failure, parse_ratios};
+use clap::Args;
+use rodimpact::report::{self, Format, TableOptions};
+use rodimpact::scene::{RodInertia, parse_field};
+use rodimpact::{Error, ErrorKind};
+use std::path::PathBuf;
+
+#[derive(Args, Debug)]
+pub(crate) struct TableArgs {
+    /// Mass ratios M/m for T1 and T5, comma separated [default: 1/100,1/10,1/2,1,3/2,2,3,10,100].
+    #[arg(long, value_name = "Q,Q,...")]
+    pub(crate) ratios: Option<String>,
+    /// The mass ratio M/m of T2 and T3 [default: 1].
+    #[arg(long, value_name = "Q")]
+    pub(crate) ratio: Option<String>,
+    /// Mass distribution, in units of l and M l^2: uniform, dumbbell, rg=R, I=X [default: uniform].
+    #[arg(long, value_name = "KIND")]
+    pub(crate) rod: Option<String>,
+    /// Coefficient of restitution for T1, T2 and T5 [default: 1].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) e: Option<String>,
+    /// A pivot at p (in units of l) for T1.
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) pivot: Option<String>,
+    /// Output format: md, latex or csv [default: md].
+    #[arg(long, value_name = "FORMAT", default_value = "md")]
+    pub(crate) format: String,
+    /// Only these tables (T1-T5), comma separated [default: all].
+    #[arg(long, value_name = "T1,T2,...")]
+    pub(crate) only: Option<String>,
+    /// Write to FILE (atomically) instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) out: Option<PathBuf>,
+}
+
+fn table_options(args: &TableArgs) -> Result<TableOptions, Error> {
+    let mut opts = TableOptions::default();
+    if let Some(list) = &args.ratios {
+        opts.ratios = parse_ratios("ratios", list)?;
+    }
+    if let Some(r) = &args.ratio {
+        opts.ratio = parse_ratios("ratio", r)?.remove(0);
+    }
+    if let Some(rod) = &args.rod {
+        opts.rod = RodInertia::parse(rod)?;
+    }
+    if let Some(e) = &args.e {
+        opts.e = parse_field("e", e)?;
+    }
+    if let Some(p) = &args.pivot {
+        opts.pivot = Some(parse_field("pivot", p)?);
+    }
+    Ok(opts)
+}
+
+fn parse_format(text: &str) -> Result<Format, Error> {
+    Format::parse(text).ok_or_else(|| {
+        Error::new(
+            "format",
+            ErrorKind::Invalid(format!(
+                "expected md, latex or csv, got '{}'",
+                text.chars().take(40).collect::<String>()
+            )),
+        )
+    })
+}
+
+pub(crate) fn run_table(args: &TableArgs) -> Result<(), Failure> {
+    let format = parse_format(&args.format)?;
+    let opts = table_options(args)?;
+    let mut tables = report::all_tables(&opts)?;
+    if let Some(only) = &args.only {
+        let wanted: Vec<String> = only
+            .split(',')
+            .map(|t| t.trim().to_ascii_uppercase())
+            .collect();
+        if let Some(bad) = wanted
+            .iter()
+            .find(|w| !tables.iter().any(|t| t.id == w.as_str()))
+        {
+            return Err(Error::new(
+                "only",
+                ErrorKind::Invalid(format!(
+                    "unknown table '{}'; the tables are T1-T5",
+                    bad.chars().take(40).collect::<String>()
+                )),
+            )
+            .into());
+        }
+        tables.retain(|t| wanted.iter().any(|w| w == t.id));
+    }
+    let text = report::render_document(&tables, format);
+    match &args.out {
+        Some(path) => report::write_atomic("out", path, &text)?,
+        None => print!("{text}"),
+    }
+    Ok(())
+}
