@@ -1,6 +1,6 @@
 //! `rodimpact prove` and `rodimpact paper`: the claims, their certificates and the report.
 
-use super::{Failure, parse_ratios};
+use super::{Failure, parse_ratios, print_out};
 use clap::Args;
 use rodimpact::claims::{self, Decided, Paper};
 use rodimpact::report::{self, Format, TableOptions};
@@ -93,15 +93,13 @@ pub(crate) fn run_prove(args: &ProveArgs) -> Result<(), Failure> {
         .collect();
     if args.json {
         let list: Vec<_> = decided.iter().map(report::prove_json).collect();
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&list).expect("JSON of strings and numbers")
-        );
+        let json = serde_json::to_string_pretty(&list).expect("JSON of strings and numbers");
+        print_out(&format!("{json}\n"));
     } else {
         for d in &decided {
-            println!("{}", report::prove_line(d));
+            print_out(&format!("{}\n", report::prove_line(d)));
         }
-        println!("{}", report::summary_line(&decided));
+        print_out(&format!("{}\n", report::summary_line(&decided)));
     }
     if let Some(dir) = &args.write {
         write_certificates("write", dir, &decided, args.ids.is_empty())?;
@@ -113,12 +111,9 @@ pub(crate) fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     let paper = Paper::as_printed();
     let decided = claims::decide_all(&paper);
     let tables = report::all_tables(&TableOptions::default())?;
-    print!("{}", report::paper_report(&decided, false));
-    println!("Tables (exact; m = l = v0 = 1)\n");
-    print!(
-        "{}",
-        report::render_document(&tables[..3], Format::Markdown)
-    );
+    print_out(&report::paper_report(&decided, false));
+    print_out("Tables (exact; m = l = v0 = 1)\n\n");
+    print_out(&report::render_document(&tables[..3], Format::Markdown));
     if let Some(dir) = &args.out {
         write_certificates("out", dir, &decided, true)?;
         let report_md = report::paper_report(&decided, true);

@@ -125,3 +125,17 @@ pub(crate) fn parse_ratios(field: &str, list: &str) -> Result<Vec<rodimpact::fie
         })
         .collect()
 }
+
+/// Writes `text` to standard output. When the reader has gone (`rodimpact paper | head`), the
+/// program ends quietly instead of panicking on the broken pipe.
+pub(crate) fn print_out(text: &str) {
+    use std::io::Write;
+    let mut stdout = std::io::stdout().lock();
+    if stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+        .is_err()
+    {
+        std::process::exit(0);
+    }
+}

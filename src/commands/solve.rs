@@ -1,6 +1,6 @@
 //! `rodimpact solve`: one scene, exactly.
 
-use super::{Failure, SceneFlags, parse_digits};
+use super::{Failure, SceneFlags, parse_digits, print_out};
 use clap::Args;
 use rodimpact::report::Solution;
 
@@ -23,13 +23,11 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
     if args.json {
         let digits = parse_digits(args.digits.as_deref(), 30)?;
         let json = solution.to_json(digits);
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&json).expect("JSON of strings and bools")
-        );
+        let json = serde_json::to_string_pretty(&json).expect("JSON of strings and bools");
+        print_out(&format!("{json}\n"));
     } else {
         let digits = parse_digits(args.digits.as_deref(), 15)?;
-        print!("{}", solution.to_text(digits));
+        print_out(&solution.to_text(digits));
     }
     if solution.outcome.residuals.all_zero() {
         Ok(())

@@ -1,6 +1,6 @@
 //! `rodimpact table`: the exact tables T1-T5.
 
-use super::{Failure, parse_ratios};
+use super::{Failure, parse_ratios, print_out};
 use clap::Args;
 use rodimpact::report::{self, Format, TableOptions};
 use rodimpact::scene::{RodInertia, parse_field};
@@ -94,7 +94,7 @@ pub(crate) fn run_table(args: &TableArgs) -> Result<(), Failure> {
     let text = report::render_document(&tables, format);
     match &args.out {
         Some(path) => report::write_atomic("out", path, &text)?,
-        None => print!("{text}"),
+        None => print_out(&text),
     }
     Ok(())
 }
