@@ -1,19 +1,9 @@
 //! The `solve` command-line contract: JSON keys and value forms, exit codes, one-line errors.
 
-use serde_json::Value;
-use std::process::Command;
+mod common;
 
-fn rodimpact(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .args(args)
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use common::rodimpact;
+use serde_json::Value;
 
 fn solve_json(args: &[&str]) -> Value {
     let mut all = vec!["solve", "--json"];

@@ -7,7 +7,7 @@ use common::{any_scene, rat, scene};
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
 use rodimpact::field::Q;
-use rodimpact::scene::Support;
+use rodimpact::scene::{Scene, Support};
 use rodimpact::solve::{closed_form, solve};
 
 /// (scene, v, V, omega, pivot impulse or "-", energy lost), each worked by hand.
@@ -71,22 +71,31 @@ fn only_the_laws_that_apply_are_reported() {
     assert!(pivot_sticking.pivot_impulse.is_some());
 }
 
+/// The first `limit` rows of a reference batch of `../shared/data/`: the line, its scene
+/// (columns m, M, l, a, v0) and every column as an exact number.
+fn reference_rows(file: &str, limit: usize) -> Vec<(String, Scene, Vec<Q>)> {
+    let path = format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).expect("shared/data beside the project");
+    text.lines()
+        .skip(1)
+        .take(limit)
+        .map(|line| {
+            let f: Vec<Q> = line.split(',').map(rat).collect();
+            let s = Scene::builder(f[0].clone(), f[1].clone())
+                .half_length(f[2].clone())
+                .a(f[3].clone())
+                .v0(f[4].clone())
+                .build()
+                .expect("reference scenes are valid");
+            (line.to_string(), s, f)
+        })
+        .collect()
+}
+
 #[test]
 fn reference_batch_is_reproduced_exactly() {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../shared/data/bench-textbook.csv"
-    );
-    let text = std::fs::read_to_string(path).expect("shared/data beside the project");
     let mut rows = 0;
-    for line in text.lines().skip(1) {
-        let f: Vec<Q> = line.split(',').map(rat).collect();
-        let s = rodimpact::scene::Scene::builder(f[0].clone(), f[1].clone())
-            .half_length(f[2].clone())
-            .a(f[3].clone())
-            .v0(f[4].clone())
-            .build()
-            .unwrap();
+    for (line, s, f) in reference_rows("bench-textbook.csv", usize::MAX) {
         let out = solve(&s.params::<Q>()).unwrap();
         assert_eq!(
             (&out.after.v, &out.after.rod_v, &out.after.omega),
@@ -103,16 +112,7 @@ fn reference_batch_is_reproduced_exactly() {
 fn f64_agrees_with_q_on_ordinary_scenes() {
     // Bound: 1e-12 relative to the natural scale of each output (v0 for v and V, v0/l for
     // omega); measured worst case on the reference batches is about 1e-15 on this scale.
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/bench-1e6.csv");
-    let text = std::fs::read_to_string(path).expect("shared/data beside the project");
-    for line in text.lines().skip(1).take(2000) {
-        let f: Vec<Q> = line.split(',').map(rat).collect();
-        let s = rodimpact::scene::Scene::builder(f[0].clone(), f[1].clone())
-            .half_length(f[2].clone())
-            .a(f[3].clone())
-            .v0(f[4].clone())
-            .build()
-            .unwrap();
+    for (line, s, f) in reference_rows("bench-1e6.csv", 2000) {
         let exact = solve(&s.params::<Q>()).unwrap().after;
         let float = solve(&s.params::<f64>()).unwrap().after;
         let v0 = rodimpact::field::Field::nearest_f64(&f[4]);

@@ -89,3 +89,16 @@ pub fn any_scene() -> impl Strategy<Value = Scene> {
             b.build().expect("strategy builds valid scenes")
         })
 }
+
+/// Runs the `rodimpact` binary with `args`: (exit code, stdout, stderr).
+pub fn rodimpact(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .args(args)
+        .output()
+        .expect("the binary runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
