@@ -31,7 +31,11 @@ fn prove_json_lists_all_72_claims_in_order_with_the_contract_keys() {
         let verdict = c["verdict"].as_str().unwrap();
         assert!(["PROVED", "REFUTED", "QUALIFIED"].contains(&verdict), "{c}");
         assert!(c["statement"].is_string() && c["method"].is_string() && c["seconds"].is_number());
-        assert_eq!(c.get("qualification").is_some(), verdict == "QUALIFIED", "{c}");
+        assert_eq!(
+            c.get("qualification").is_some(),
+            verdict == "QUALIFIED",
+            "{c}"
+        );
     }
 }
 
@@ -45,7 +49,9 @@ fn paper_prints_every_decision_and_exits_0() {
         .filter(|l| {
             let t = l.trim_start();
             (t.starts_with('C') || t.starts_with('X'))
-                && ["PROVED", "REFUTED", "QUALIFIED"].iter().any(|v| t.contains(v))
+                && ["PROVED", "REFUTED", "QUALIFIED"]
+                    .iter()
+                    .any(|v| t.contains(v))
         })
         .count();
     assert_eq!(decisions, 72);
@@ -62,7 +68,11 @@ fn prove_write_reproduces_the_committed_certificates() {
     for entry in std::fs::read_dir(&committed).unwrap() {
         let name = entry.unwrap().file_name();
         let written = std::fs::read_to_string(dir.join(&name)).expect("written");
-        assert_eq!(written, std::fs::read_to_string(committed.join(&name)).unwrap(), "{name:?}");
+        assert_eq!(
+            written,
+            std::fs::read_to_string(committed.join(&name)).unwrap(),
+            "{name:?}"
+        );
         count += 1;
     }
     assert_eq!(count, 73);
@@ -73,10 +83,16 @@ fn prove_write_reproduces_the_committed_certificates() {
 fn unknown_claims_and_unwritable_directories_exit_2() {
     let (code, stdout, stderr) = rodimpact(&["prove", "C99"]);
     assert_eq!((code, stdout.as_str()), (2, ""));
-    assert_eq!(stderr.trim(), "error: id: unknown claim 'C99'; the ids are C1-C46 and X1-X26");
+    assert_eq!(
+        stderr.trim(),
+        "error: id: unknown claim 'C99'; the ids are C1-C46 and X1-X26"
+    );
     let (code, _, stderr) = rodimpact(&["prove", "C1", "--write", "/proc/rodimpact-cannot-write"]);
     assert_eq!(code, 2);
-    assert!(stderr.starts_with("error: write: cannot create"), "{stderr}");
+    assert!(
+        stderr.starts_with("error: write: cannot create"),
+        "{stderr}"
+    );
     assert_eq!(stderr.trim_end().lines().count(), 1);
 }
 
