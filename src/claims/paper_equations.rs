@@ -8,7 +8,7 @@ use super::build::*;
 use super::model::*;
 use super::{Certificate, Claim, Decision, Entry, Expected, Group, Paper, PosExpr, Relation};
 use crate::field::ratfunc::Point;
-use crate::field::{QSqrt, RatFn, Sym};
+use crate::field::{RatFn, Sym};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
 
 /// The registered claims of this part of the paper.
@@ -145,19 +145,17 @@ fn kinetic_divided(v: &RatFn) -> RatFn {
     m.clone() * &(v0.clone() + v) - &(m.clone() * &compliance_ratio() * &(v0 - v))
 }
 
-fn instance(pairs: &[(&str, i64, i64)]) -> Vec<(Sym, QSqrt)> {
-    pairs
-        .iter()
-        .map(|(n, p, q)| (Sym::new(n), rational(*p, *q)))
-        .collect()
-}
-
 /// Uniform rod, M = m (= l = v0 = 1): omega at a* = sqrt(2/3) l exceeds omega at the end.
 fn equal_masses_beat_the_end() -> Vec<Certificate> {
     let omega = uniform_omega();
     let at_end = subs(&omega, &[("a", sym("l"))]);
-    let mut at_star = instance(&[("m", 1, 1), ("M", 1, 1), ("l", 1, 1), ("v0", 1, 1)]);
-    at_star.push((Sym::new("a"), sqrt(&crate::field::q(2, 3))));
+    let at_star = at(&[
+        ("m", rational(1, 1)),
+        ("M", rational(1, 1)),
+        ("l", rational(1, 1)),
+        ("v0", rational(1, 1)),
+        ("a", sqrt(&crate::field::q(2, 3))),
+    ]);
     vec![
         Certificate::witness(
             "uniform rod, M = m: the impact point a = sqrt(2/3) l lies on the rod (a < l)",
@@ -236,7 +234,12 @@ fn c3(_paper: &Paper) -> Claim {
     let slope_at_end = subs(&slope, &[("a", sym("l"))]);
     let mut counterexample = vec![Certificate::witness(
         "uniform rod, M = m = l = v0 = 1: d omega/da at the end a = l is negative, so omega decreases towards the end",
-        instance(&[("m", 1, 1), ("M", 1, 1), ("l", 1, 1), ("v0", 1, 1)]),
+        at(&[
+            ("m", rational(1, 1)),
+            ("M", rational(1, 1)),
+            ("l", rational(1, 1)),
+            ("v0", rational(1, 1)),
+        ]),
         slope_at_end,
         Relation::Lt,
         k(0, 1),
@@ -399,12 +402,12 @@ fn c7(_paper: &Paper) -> Claim {
 fn c8(paper: &Paper) -> Claim {
     let after = elastic();
     let bounce = || {
-        instance(&[
-            ("m", 1, 1),
-            ("M", 3, 1),
-            ("I", 1, 1),
-            ("a", 0, 1),
-            ("v0", 1, 1),
+        at(&[
+            ("m", rational(1, 1)),
+            ("M", rational(3, 1)),
+            ("I", rational(1, 1)),
+            ("a", rational(0, 1)),
+            ("v0", rational(1, 1)),
         ])
     };
     Claim {
