@@ -5,13 +5,14 @@
 //! `I := A^2 I / a*^2` (with the paper's a*^2, which is linear in I, so this is
 //! `I = A^2 m M/(M + m)`) and then `a := A`.
 
+use super::build::*;
 use super::model::*;
 use super::{Certificate, Claim, Decision, Entry, Expected, Group, Paper, PosExpr, Relation};
 use crate::field::ratfunc::Point;
 use crate::field::{RatFn, Sym};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
 use crate::solve::impulse_equations;
-use num_traits::{One, Zero};
+use num_traits::Zero;
 
 /// The registered claims of this part.
 pub(super) const ENTRIES: &[Entry] = &[
@@ -74,63 +75,8 @@ const WHERE: &str = "beyond the paper";
 // ---------------------------------------------------------------------------------------------
 // Small builders shared by the claims.
 
-fn syms(names: &[&str]) -> Vec<Sym> {
-    names.iter().map(|n| Sym::new(n)).collect()
-}
-
-fn ps(name: &str) -> PosExpr {
-    PosExpr::sym(name)
-}
-
-fn pc(n: i64, d: i64) -> PosExpr {
-    PosExpr::constant(n, d)
-}
-
-fn prod<const N: usize>(f: [PosExpr; N]) -> PosExpr {
-    PosExpr::product(f)
-}
-
-fn sum<const N: usize>(t: [PosExpr; N]) -> PosExpr {
-    PosExpr::sum(t)
-}
-
-fn quot(n: PosExpr, d: PosExpr) -> PosExpr {
-    PosExpr::quotient(n, d)
-}
-
-/// The domain of a positivity certificate: substitutions, positive and nonnegative symbols.
-struct Domain<'a> {
-    subs: &'a [(&'a str, RatFn)],
-    positive: &'a [&'a str],
-    nonnegative: &'a [&'a str],
-}
-
-fn positive(title: &str, expr: RatFn, strict: bool, dom: &Domain, form: PosExpr) -> Certificate {
-    Certificate::Positive {
-        title: title.into(),
-        expr,
-        strict,
-        substitutions: dom
-            .subs
-            .iter()
-            .map(|(s, v)| (Sym::new(s), v.clone()))
-            .collect(),
-        positive: syms(dom.positive),
-        nonnegative: syms(dom.nonnegative),
-        form,
-    }
-}
-
 fn id(title: &str, lhs: RatFn, rhs: RatFn) -> Certificate {
     Certificate::identity(title, lhs, rhs)
-}
-
-fn one() -> RatFn {
-    RatFn::one()
-}
-
-fn sq(x: &RatFn) -> RatFn {
-    x.clone() * x
 }
 
 /// `mu = m M/(M + m)`.
@@ -141,15 +87,6 @@ fn mu() -> RatFn {
 /// `m_eff = 1/(1/m + 1/M + a^2/I)`.
 fn m_eff(inertia: &RatFn) -> RatFn {
     one() / (one() / sym("m") + &(one() / sym("M")) + &(sq(&sym("a")) / inertia.clone()))
-}
-
-/// The visibly positive form of `m_eff` for a symbolic I: `m M I/(M I + m I + m M a^2)`.
-fn m_eff_den_form() -> PosExpr {
-    sum([
-        prod([ps("M"), ps("I")]),
-        prod([ps("m"), ps("I")]),
-        prod([ps("m"), ps("M"), PosExpr::Square(sym("a"))]),
-    ])
 }
 
 /// `1 + e`.
@@ -248,11 +185,9 @@ fn omega_monotonicity(paper: &Paper) -> Vec<Certificate> {
             "d omega/da > 0 for 0 <= a < a* (A = a + s, s > 0; any e >= 0, v0 > 0)",
             slope.clone(),
             true,
-            &Domain {
-                subs: &[("A", sym("a") + &sym("s"))],
-                positive: &["s", "v0"],
-                nonnegative: &["a", "e"],
-            },
+            &[("A", sym("a") + &sym("s"))],
+            &["s", "v0"],
+            &["a", "e"],
             quot(
                 prod([
                     e1.clone(),
@@ -267,11 +202,9 @@ fn omega_monotonicity(paper: &Paper) -> Vec<Certificate> {
             "-d omega/da > 0 for a > a* (a = A + s, s > 0; any e >= 0, v0 > 0)",
             -slope,
             true,
-            &Domain {
-                subs: &[("a", sym("A") + &sym("s"))],
-                positive: &["s", "v0", "A"],
-                nonnegative: &["e"],
-            },
+            &[("a", sym("A") + &sym("s"))],
+            &["s", "v0", "A"],
+            &["e"],
             quot(
                 prod([
                     e1,
@@ -344,11 +277,9 @@ fn x1(_paper: &Paper) -> Claim {
                 "mI + MI + Mma^2 > 0 for m, M, I > 0 and any a",
                 gram,
                 true,
-                &Domain {
-                    subs: &[],
-                    positive: &["m", "M", "I"],
-                    nonnegative: &[],
-                },
+                &[],
+                &["m", "M", "I"],
+                &[],
                 sum([
                     prod([ps("m"), ps("I")]),
                     prod([ps("M"), ps("I")]),
@@ -388,7 +319,7 @@ fn x2(paper: &Paper) -> Claim {
             pc(2, 1),
             sum([pc(1, 1), ps("t")]),
             sum([pc(1, 1), ps("t")]),
-            m_eff_den_form(),
+            m_i_d_form(),
         ]),
     );
     proved(
@@ -425,11 +356,9 @@ fn x2(paper: &Paper) -> Claim {
                 "energy lost > 0 for e in [0,1): e = t/(1+t), t >= 0",
                 energy_lost(&i, sym("e")),
                 true,
-                &Domain {
-                    subs: &[("e", t.clone() / (one() + &t))],
-                    positive: &["m", "M", "I", "v0"],
-                    nonnegative: &["t"],
-                },
+                &[("e", t.clone() / (one() + &t))],
+                &["m", "M", "I", "v0"],
+                &["t"],
                 lost_form,
             ),
         ],
@@ -650,11 +579,7 @@ fn x8(paper: &Paper) -> Claim {
     let kk = big_m.clone() / m.clone();
     let claimed = k(12, 1) * &(one() + &kk) / sq(&(k(4, 1) + &kk));
     let half_m = (big_m.clone() / k(2, 1) + &sym("s"), "M/2 + s");
-    let dom = Domain {
-        subs: &[("m", half_m.0)],
-        positive: &["M"],
-        nonnegative: &["s"],
-    };
+    let light = [("m", half_m.0)];
     let four_m = sum([prod([pc(4, 1), ps("m")]), ps("M")]);
     let s3m4s = sum([prod([pc(3, 1), ps("M")]), prod([pc(4, 1), ps("s")])]);
     let mut certs = vec![
@@ -667,21 +592,21 @@ fn x8(paper: &Paper) -> Claim {
             "1 - ratio^2 = (M - 2m)^2/(M + 4m)^2 >= 0 (so ratio <= 1, = 1 only at M = 2m)",
             one() - &ratio,
             false,
-            &Domain {
-                subs: &[],
-                positive: &["m", "M"],
-                nonnegative: &[],
-            },
+            &[],
+            &["m", "M"],
+            &[],
             quot(
                 PosExpr::Square(big_m.clone() - &(k(2, 1) * &m)),
                 prod([four_m.clone(), four_m]),
             ),
         ),
         positive(
-            &format!("ratio^2 - 3/4 > 0 for M <= 2m (m = {})", half_m.1),
+            format!("ratio^2 - 3/4 > 0 for M <= 2m (m = {})", half_m.1),
             ratio.clone() - &k(3, 4),
             true,
-            &dom,
+            &light,
+            &["M"],
+            &["s"],
             quot(
                 prod([
                     pc(3, 1),
@@ -706,13 +631,15 @@ fn x8(paper: &Paper) -> Claim {
             k(3, 4),
         ),
         positive(
-            &format!(
+            format!(
                 "gain: (omega_max/omega(l))^2 < 4/3 = (2/sqrt3)^2 for M <= 2m (m = {}), i.e. the gain < 2/sqrt3 - 1",
                 half_m.1
             ),
             k(4, 3) - &(one() / ratio),
             true,
-            &dom,
+            &light,
+            &["M"],
+            &["s"],
             quot(
                 prod([
                     ps("M"),
@@ -875,11 +802,9 @@ fn x9(paper: &Paper) -> Claim {
                 "v0^2/a*^2 - omega^2 >= 0 for every a (a*^2 = Eq. (maximal-a-general) squared)",
                 sq(&v0) / paper.a_star_squared.clone() - &sq(&el.omega),
                 false,
-                &Domain {
-                    subs: &[],
-                    positive: &["m", "M", "I"],
-                    nonnegative: &[],
-                },
+                &[],
+                &["m", "M", "I"],
+                &[],
                 bound_form,
             ),
         ],
@@ -931,7 +856,7 @@ fn x11(paper: &Paper) -> Claim {
             ps("v0"),
             ps("v0"),
         ]),
-        prod([pc(2, 1), one_u2.clone(), one_u2, m_eff_den_form()]),
+        prod([pc(2, 1), one_u2.clone(), one_u2, m_i_d_form()]),
     );
     proved(
         "X11",
@@ -946,11 +871,9 @@ fn x11(paper: &Paper) -> Claim {
                 "energy lost >= 0 for e in [0,1] (e = 2u/(1+u^2), u >= 0)",
                 energy_lost(&i, e.clone()),
                 false,
-                &Domain {
-                    subs: &[("e", e_of_u)],
-                    positive: &["m", "M", "I", "v0"],
-                    nonnegative: &["u"],
-                },
+                &[("e", e_of_u)],
+                &["m", "M", "I", "v0"],
+                &["u"],
                 loss_form,
             ),
             id(
@@ -989,11 +912,9 @@ fn x12(paper: &Paper) -> Claim {
             "v0/(m + M_eff) > 0, so sign(v) = sign(m - e M_eff)",
             v0.clone() / (m.clone() + &m_eff_g),
             true,
-            &Domain {
-                subs: &[],
-                positive: &["m", "M", "r_G", "v0"],
-                nonnegative: &[],
-            },
+            &[],
+            &["m", "M", "r_G", "v0"],
+            &[],
             quot(
                 prod([
                     ps("v0"),
@@ -1050,22 +971,18 @@ fn x12_uniform_range() -> Vec<Certificate> {
             "uniform rod: M - M_eff = 3 M a^2/(l^2 + 3a^2) >= 0",
             sym("M") - &meff,
             false,
-            &Domain {
-                subs: &[],
-                positive: &["M", "l"],
-                nonnegative: &[],
-            },
+            &[],
+            &["M", "l"],
+            &[],
             quot(prod([pc(3, 1), ps("M"), PosExpr::Square(sym("a"))]), l2_3a2),
         ),
         positive(
             "uniform rod: M_eff - M/4 > 0 for 0 <= a < l (l = a + s, s > 0)",
             meff - &(sym("M") / k(4, 1)),
             true,
-            &Domain {
-                subs: &[("l", sym("a") + &sym("s"))],
-                positive: &["M", "s"],
-                nonnegative: &["a"],
-            },
+            &[("l", sym("a") + &sym("s"))],
+            &["M", "s"],
+            &["a"],
             quot(
                 prod([
                     pc(3, 1),
@@ -1097,17 +1014,7 @@ fn x12_stop_point() -> Vec<Certificate> {
             .into_iter()
             .filter(|x| *x != subs[0].0 && !nonneg.contains(x))
             .collect();
-        positive(
-            title,
-            expr,
-            strict,
-            &Domain {
-                subs: &subs,
-                positive: &positive_syms,
-                nonnegative: nonneg,
-            },
-            form,
-        )
+        positive(title, expr, strict, &subs, &positive_syms, nonneg, form)
     };
     let l2s = |c: i64, den: PosExpr| {
         let lls = [ps("l"), ps("l"), ps("s")];
@@ -1162,18 +1069,16 @@ fn x12_stop_point() -> Vec<Certificate> {
 /// The projectile goes on for e = 0 (any a), and for e = 1 at a*.
 fn x12_goes_on(paper: &Paper) -> Vec<Certificate> {
     let gyr = gyration_inertia();
-    let dom = Domain {
-        subs: &[],
-        positive: &["m", "M", "r_G", "v0"],
-        nonnegative: &[],
-    };
+    let masses = ["m", "M", "r_G", "v0"];
     let r2_a2 = sum([prod([ps("r_G"), ps("r_G")]), PosExpr::Square(sym("a"))]);
     vec![
         positive(
             "e = 0: v (solver, I = M r_G^2) = v0 m/(m + M_eff) > 0 for every a",
             after(&gyr, k(0, 1)).v,
             true,
-            &dom,
+            &[],
+            &masses,
+            &[],
             quot(
                 prod([ps("v0"), ps("m"), r2_a2.clone()]),
                 sum([
@@ -1186,7 +1091,9 @@ fn x12_goes_on(paper: &Paper) -> Vec<Certificate> {
             "e = 1 at a* (a^2 = Eq. (maximal-a-gyration) squared): v (solver) = m v0/(M + m) > 0",
             even_at(&after(&gyr, k(1, 1)).v, &paper.a_star_gyration_squared),
             true,
-            &dom,
+            &[],
+            &masses,
+            &[],
             quot(prod([ps("m"), ps("v0")]), sum([ps("m"), ps("M")])),
         ),
     ]
@@ -1220,11 +1127,9 @@ fn x13(_paper: &Paper) -> Claim {
                 "omega > 0 for a > 0 (so the point at rest is unique)",
                 mo.omega,
                 true,
-                &Domain {
-                    subs: &[],
-                    positive: &["m", "M", "r_G", "v0", "a"],
-                    nonnegative: &["e"],
-                },
+                &[],
+                &["m", "M", "r_G", "v0", "a"],
+                &["e"],
                 quot(
                     prod([sum([pc(1, 1), ps("e")]), ps("v0"), ps("a"), ps("m")]),
                     sum([
@@ -1238,11 +1143,9 @@ fn x13(_paper: &Paper) -> Claim {
                 "uniform rod: l - |y0| >= 0 for a >= l/3 (a = l/3 + s, s >= 0)",
                 l.clone() - &depth,
                 false,
-                &Domain {
-                    subs: &[("a", l.clone() / k(3, 1) + &sym("s"))],
-                    positive: &["l"],
-                    nonnegative: &["s"],
-                },
+                &[("a", l.clone() / k(3, 1) + &sym("s"))],
+                &["l"],
+                &["s"],
                 quot(
                     prod([pc(3, 1), ps("l"), ps("s")]),
                     sum([ps("l"), prod([pc(3, 1), ps("s")])]),
@@ -1252,11 +1155,9 @@ fn x13(_paper: &Paper) -> Claim {
                 "uniform rod: |y0| - l > 0 for 0 < a < l/3 (l = 3a + s, s > 0)",
                 depth - &l,
                 true,
-                &Domain {
-                    subs: &[("l", k(3, 1) * &a + &sym("s"))],
-                    positive: &["a", "s"],
-                    nonnegative: &[],
-                },
+                &[("l", k(3, 1) * &a + &sym("s"))],
+                &["a", "s"],
+                &[],
                 quot(
                     prod([sum([prod([pc(3, 1), ps("a")]), ps("s")]), ps("s")]),
                     prod([pc(3, 1), ps("a")]),

@@ -1,10 +1,11 @@
 //! Results beyond the paper, X14-X26: the motion after the impact (far end, energy shares,
 //! limits, fixed axis, second impact, asymmetric rod).
 
+use super::build::*;
 use super::model::*;
 use super::{Certificate, Claim, Decision, Entry, Group, Paper, PosExpr, Relation};
+use crate::field::RatFn;
 use crate::field::ratfunc::Point;
-use crate::field::{RatFn, Sym};
 use crate::mechanics::{Motion, angular_momentum};
 use crate::solve::solve_linear;
 
@@ -68,55 +69,6 @@ const WHERE: &str = "beyond the paper";
 
 // ---------------------------------------------------------------------------------------------
 // Shared builders.
-
-fn syms(names: &[&str]) -> Vec<Sym> {
-    names.iter().map(|n| Sym::new(n)).collect()
-}
-
-/// A positivity certificate: `expr` (> 0 if `strict`, else >= 0) after `substitutions`, equal to
-/// the visibly signed `form`.
-fn positive(
-    title: &str,
-    expr: RatFn,
-    strict: bool,
-    substitutions: &[(&str, RatFn)],
-    (pos, nonneg): (&[&str], &[&str]),
-    form: PosExpr,
-) -> Certificate {
-    Certificate::Positive {
-        title: title.into(),
-        expr,
-        strict,
-        substitutions: substitutions
-            .iter()
-            .map(|(s, v)| (Sym::new(s), v.clone()))
-            .collect(),
-        positive: syms(pos),
-        nonnegative: syms(nonneg),
-        form,
-    }
-}
-
-fn ps(name: &str) -> PosExpr {
-    PosExpr::sym(name)
-}
-
-fn pc(n: i64, d: i64) -> PosExpr {
-    PosExpr::constant(n, d)
-}
-
-fn one_plus_e() -> PosExpr {
-    PosExpr::sum([pc(1, 1), ps("e")])
-}
-
-/// `D(x) = 1 + m/M + m x^2/I` as a visibly positive form.
-fn d_form(x: RatFn) -> PosExpr {
-    PosExpr::sum([
-        pc(1, 1),
-        PosExpr::quotient(ps("m"), ps("M")),
-        PosExpr::quotient(PosExpr::product([ps("m"), PosExpr::Square(x)]), ps("I")),
-    ])
-}
 
 /// `r_G^2`.
 fn r2() -> RatFn {
@@ -191,7 +143,8 @@ fn x14(paper: &Paper) -> Claim {
             -far.clone(),
             true,
             &[("a", beyond.clone())],
-            domain,
+            domain.0,
+            domain.1,
             PosExpr::quotient(numerator.clone(), denominator(beyond)),
         ),
         positive(
@@ -199,7 +152,8 @@ fn x14(paper: &Paper) -> Claim {
             far,
             false,
             &[("a", before.clone())],
-            (&["m", "M", "r_G", "l", "v0"], &["e", "s"]),
+            &["m", "M", "r_G", "l", "v0"],
+            &["e", "s"],
             PosExpr::quotient(numerator, denominator(before)),
         ),
         positive(
@@ -207,7 +161,8 @@ fn x14(paper: &Paper) -> Claim {
             -uniform_far,
             true,
             &[("a", uniform_beyond.clone())],
-            (&["m", "M", "l", "v0", "s"], &["e"]),
+            &["m", "M", "l", "v0", "s"],
+            &["e"],
             PosExpr::quotient(
                 PosExpr::product([one_plus_e(), ps("v0"), ps("m"), ps("s"), ps("l")]),
                 PosExpr::sum([
@@ -279,7 +234,8 @@ fn x15(paper: &Paper) -> Claim {
             k0 - &rod_energy,
             true,
             &[("M", mass_at_a_star)],
-            (&["m", "v0", "l", "a"], &[]),
+            &["m", "v0", "l", "a"],
+            &[],
             PosExpr::quotient(
                 PosExpr::product([
                     ps("m"),
@@ -457,7 +413,8 @@ fn x18(paper: &Paper) -> Claim {
             omega_at(u.clone()) - &omega_at(dd.clone()),
             false,
             &[("I", m.clone() * &u * &u - &(big_m.clone() * &p * &p))],
-            (&["u", "v0"], &["e"]),
+            &["u", "v0"],
+            &["e"],
             PosExpr::quotient(
                 PosExpr::product([one_plus_e(), ps("v0"), PosExpr::Square(u - &dd)]),
                 PosExpr::product([
@@ -538,7 +495,8 @@ fn door_cert(door_i_p: &RatFn, outside: bool) -> Certificate {
         expr,
         !outside,
         &[("M", mass)],
-        domain,
+        domain.0,
+        domain.1,
         PosExpr::quotient(
             PosExpr::product([pc(4, 1), ps("l"), ps("l"), ps("q")]),
             PosExpr::product([pc(3, 1), ps("m")]),
@@ -618,7 +576,8 @@ fn x20(_paper: &Paper) -> Claim {
             share - &shifted,
             true,
             &[],
-            (&["m", "M", "I", "t"], &["a", "e"]),
+            &["m", "M", "I", "t"],
+            &["a", "e"],
             PosExpr::quotient(
                 PosExpr::product([
                     one_plus_e(),
@@ -680,7 +639,8 @@ fn x21(_paper: &Paper) -> Claim {
             shifted - &struck,
             true,
             &[],
-            (&["m", "M", "r_G", "v0", "t"], &["a", "e"]),
+            &["m", "M", "r_G", "v0", "t"],
+            &["a", "e"],
             PosExpr::quotient(
                 PosExpr::product([
                     one_plus_e(),
@@ -988,7 +948,8 @@ fn x26(paper: &Paper) -> Claim {
             int(1) - &kappa,
             false,
             &[],
-            (&["m", "M", "I", "a"], &["e"]),
+            &["m", "M", "I", "a"],
+            &["e"],
             PosExpr::quotient(
                 PosExpr::product([ps("e"), PosExpr::sum([pc(1, 1), s2_form()])]),
                 PosExpr::product([one_plus_e(), s2_form()]),

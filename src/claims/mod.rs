@@ -13,6 +13,7 @@
 
 mod beyond_impulse;
 mod beyond_motion;
+mod build;
 mod certificate;
 pub mod model;
 mod paper_equations;

@@ -40,6 +40,22 @@ pub fn pow(x: &RatFn, n: u32) -> RatFn {
     (0..n).fold(RatFn::one(), |acc, _| acc * x)
 }
 
+/// The constant 1.
+pub fn one() -> RatFn {
+    RatFn::one()
+}
+
+/// `x^2` (as `x * x`).
+///
+/// # Examples
+/// ```
+/// use rodimpact::claims::model::{sq, sym};
+/// assert_eq!(sq(&sym("a")).to_string(), "a^2");
+/// ```
+pub fn sq(x: &RatFn) -> RatFn {
+    x.clone() * x
+}
+
 /// An exact instance value in Q(sqrt d) from a rational.
 pub fn rational(n: i64, d: i64) -> QSqrt {
     QSqrt::rational(crate::field::q(n, d))
@@ -147,11 +163,6 @@ pub fn sqrt(x: &Q) -> QSqrt {
 pub fn paper_d(inertia: &RatFn) -> RatFn {
     let (m, big_m, a) = (sym("m"), sym("M"), sym("a"));
     RatFn::one() + &(m.clone() / big_m) + &(m * &a * &a / inertia.clone())
-}
-
-/// Whether `x` is identically zero (helper for builders that branch on a computation).
-pub fn is_zero(x: &RatFn) -> bool {
-    x.is_identically_zero()
 }
 
 /// The reduced value of a constant rational function, if it is one.

@@ -4,10 +4,11 @@
 //! ([`motion`]): its v, V, omega are compared with the paper's printed formulas ([`Paper`]) and
 //! with the algebraic steps the paper takes between Eq. (linear) and Eq. (omega).
 
+use super::build::*;
 use super::model::*;
 use super::{Certificate, Claim, Decision, Entry, Expected, Group, Paper, PosExpr, Relation};
 use crate::field::ratfunc::Point;
-use crate::field::{QSqrt, RatFn, Sym};
+use crate::field::{RatFn, Sym};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
 
 /// The registered claims of this part of the paper.
@@ -89,22 +90,6 @@ pub(super) const ENTRIES: &[Entry] = &[
 // ---------------------------------------------------------------------------------------------
 // Shared pieces of the derivation.
 
-fn syms(names: &[&str]) -> Vec<Sym> {
-    names.iter().map(|n| Sym::new(n)).collect()
-}
-
-fn product(factors: &[PosExpr]) -> PosExpr {
-    PosExpr::product(factors.iter().cloned())
-}
-
-fn s(name: &str) -> PosExpr {
-    PosExpr::sym(name)
-}
-
-fn c(n: i64, d: i64) -> PosExpr {
-    PosExpr::constant(n, d)
-}
-
 /// The free rod with a symbolic I.
 fn rod(e: RatFn) -> crate::scene::Params<RatFn> {
     free_rod(sym("I"), e)
@@ -120,53 +105,16 @@ fn uniform_omega() -> RatFn {
     motion(&free_rod(uniform_inertia(), k(1, 1))).omega
 }
 
-/// `M I + m I + m M a^2 = M I D`, visibly positive (a may be any real).
-fn m_i_d_form() -> PosExpr {
-    PosExpr::sum([
-        product(&[s("M"), s("I")]),
-        product(&[s("m"), s("I")]),
-        product(&[s("m"), s("M"), PosExpr::Square(sym("a"))]),
-    ])
-}
-
-/// A positivity certificate with no substitution.
-fn positive(title: &str, expr: RatFn, strict: bool, pos: &[&str], form: PosExpr) -> Certificate {
-    positive_on(title, expr, strict, vec![], pos, &[], form)
-}
-
-/// A positivity certificate on a domain parametrised by `substitutions`.
-fn positive_on(
-    title: &str,
-    expr: RatFn,
-    strict: bool,
-    substitutions: Vec<(Sym, RatFn)>,
-    pos: &[&str],
-    nonneg: &[&str],
-    form: PosExpr,
-) -> Certificate {
-    Certificate::Positive {
-        title: title.into(),
-        expr,
-        strict,
-        substitutions,
-        positive: syms(pos),
-        nonnegative: syms(nonneg),
-        form,
-    }
-}
-
 /// D = 1 + m/M + m a^2/I > 0.
 fn d_positive() -> Certificate {
     positive(
         "D = 1 + m/M + m a^2/I > 0 (m, M, I > 0, a any real)",
         paper_d(&sym("I")),
         true,
+        &[],
         &["m", "M", "I"],
-        PosExpr::sum([
-            c(1, 1),
-            PosExpr::quotient(s("m"), s("M")),
-            PosExpr::quotient(product(&[s("m"), PosExpr::Square(sym("a"))]), s("I")),
-        ]),
+        &[],
+        d_form(sym("a")),
     )
 }
 
@@ -197,19 +145,17 @@ fn kinetic_divided(v: &RatFn) -> RatFn {
     m.clone() * &(v0.clone() + v) - &(m.clone() * &compliance_ratio() * &(v0 - v))
 }
 
-fn instance(pairs: &[(&str, i64, i64)]) -> Vec<(Sym, QSqrt)> {
-    pairs
-        .iter()
-        .map(|(n, p, q)| (Sym::new(n), rational(*p, *q)))
-        .collect()
-}
-
 /// Uniform rod, M = m (= l = v0 = 1): omega at a* = sqrt(2/3) l exceeds omega at the end.
 fn equal_masses_beat_the_end() -> Vec<Certificate> {
     let omega = uniform_omega();
     let at_end = subs(&omega, &[("a", sym("l"))]);
-    let mut at_star = instance(&[("m", 1, 1), ("M", 1, 1), ("l", 1, 1), ("v0", 1, 1)]);
-    at_star.push((Sym::new("a"), sqrt(&crate::field::q(2, 3))));
+    let at_star = at(&[
+        ("m", rational(1, 1)),
+        ("M", rational(1, 1)),
+        ("l", rational(1, 1)),
+        ("v0", rational(1, 1)),
+        ("a", sqrt(&crate::field::q(2, 3))),
+    ]);
     vec![
         Certificate::witness(
             "uniform rod, M = m: the impact point a = sqrt(2/3) l lies on the rod (a < l)",
@@ -275,16 +221,10 @@ fn c2(_paper: &Paper) -> Claim {
                 big_v.clone(),
                 expected,
             ),
-            positive(
-                "V at a = 0 is > 0",
-                big_v,
-                true,
-                &["m", "M", "v0"],
-                PosExpr::quotient(
-                    product(&[c(2, 1), s("m"), s("v0")]),
-                    PosExpr::sum([s("M"), s("m")]),
-                ),
-            ),
+            positive("V at a = 0 is > 0", big_v, true, &[], &["m", "M", "v0"], &[], PosExpr::quotient(
+                    prod([pc(2, 1), ps("m"), ps("v0")]),
+                    PosExpr::sum([ps("M"), ps("m")]),
+                )),
         ]),
     }
 }
@@ -294,7 +234,12 @@ fn c3(_paper: &Paper) -> Claim {
     let slope_at_end = subs(&slope, &[("a", sym("l"))]);
     let mut counterexample = vec![Certificate::witness(
         "uniform rod, M = m = l = v0 = 1: d omega/da at the end a = l is negative, so omega decreases towards the end",
-        instance(&[("m", 1, 1), ("M", 1, 1), ("l", 1, 1), ("v0", 1, 1)]),
+        at(&[
+            ("m", rational(1, 1)),
+            ("M", rational(1, 1)),
+            ("l", rational(1, 1)),
+            ("v0", rational(1, 1)),
+        ]),
         slope_at_end,
         Relation::Lt,
         k(0, 1),
@@ -317,7 +262,7 @@ fn c3(_paper: &Paper) -> Claim {
 
 fn c4(paper: &Paper) -> Claim {
     // "Light": M < 2m, parametrised as m = (M + q)/2 with M, q > 0.
-    let light = || vec![(Sym::new("m"), (sym("M") + &sym("q")) / k(2, 1))];
+    let light = || [("m", (sym("M") + &sym("q")) / k(2, 1))];
     let l = sym("l");
     let gap = l.clone() * &l - &paper.a_star_uniform_squared;
     // omega = 6 m a v0/((M + m) l^2 + 3 m a^2), so omega'(l) = 6 m v0 (M - 2m)/(l^2 (M + 4m)^2).
@@ -325,8 +270,7 @@ fn c4(paper: &Paper) -> Claim {
         &uniform_omega().derivative(Sym::new("a")),
         &[("a", l.clone())],
     );
-    let three_m_plus_two_q =
-        PosExpr::sum([product(&[c(3, 1), s("M")]), product(&[c(2, 1), s("q")])]);
+    let three_m_plus_two_q = PosExpr::sum([prod([pc(3, 1), ps("M")]), prod([pc(2, 1), ps("q")])]);
     Claim {
         id: "C4",
         location: "intro ¶2",
@@ -342,30 +286,14 @@ fn c4(paper: &Paper) -> Claim {
             .into(),
         reason: "with m = (M + q)/2, l^2 - a*^2 = 2 q l^2/(3(M + q)) > 0 and -omega'(l) = 3 q (M + q) v0/(l^2 (3M + 2q)^2) > 0".into(),
         decision: Decision::Proved(vec![
-            positive_on(
-                "l^2 - a*^2 > 0 for M < 2m (a*^2 of Eq. (maximal-a-homogeneous), m = (M + q)/2)",
-                gap,
-                true,
-                light(),
-                &["M", "q", "l"],
-                &[],
-                PosExpr::quotient(
-                    product(&[c(2, 1), s("q"), s("l"), s("l")]),
-                    product(&[c(3, 1), PosExpr::sum([s("M"), s("q")])]),
-                ),
-            ),
-            positive_on(
-                "-d omega/da at a = l is > 0 for M < 2m (uniform rod, solver's omega, m = (M + q)/2): omega decreases at the end",
-                -slope_at_end,
-                true,
-                light(),
-                &["M", "q", "l", "v0"],
-                &[],
-                PosExpr::quotient(
-                    product(&[c(3, 1), s("q"), PosExpr::sum([s("M"), s("q")]), s("v0")]),
-                    product(&[s("l"), s("l"), three_m_plus_two_q.clone(), three_m_plus_two_q]),
-                ),
-            ),
+            positive("l^2 - a*^2 > 0 for M < 2m (a*^2 of Eq. (maximal-a-homogeneous), m = (M + q)/2)", gap, true, &light(), &["M", "q", "l"], &[], PosExpr::quotient(
+                    prod([pc(2, 1), ps("q"), ps("l"), ps("l")]),
+                    prod([pc(3, 1), PosExpr::sum([ps("M"), ps("q")])]),
+                )),
+            positive("-d omega/da at a = l is > 0 for M < 2m (uniform rod, solver's omega, m = (M + q)/2): omega decreases at the end", -slope_at_end, true, &light(), &["M", "q", "l", "v0"], &[], PosExpr::quotient(
+                    prod([pc(3, 1), ps("q"), PosExpr::sum([ps("M"), ps("q")]), ps("v0")]),
+                    prod([ps("l"), ps("l"), three_m_plus_two_q.clone(), three_m_plus_two_q]),
+                )),
         ]),
     }
 }
@@ -435,8 +363,8 @@ fn c6(_paper: &Paper) -> Claim {
 fn c7(_paper: &Paper) -> Claim {
     let lost = |e: RatFn| solved(&rod(e)).energy.lost;
     // 0 <= e < 1 parametrised as e = s/(s + t) with s >= 0, t > 0.
-    let inelastic = vec![(Sym::new("e"), sym("s") / (sym("s") + &sym("t")))];
-    let s_plus_t = PosExpr::sum([s("s"), s("t")]);
+    let inelastic = [("e", sym("s") / (sym("s") + &sym("t")))];
+    let s_plus_t = PosExpr::sum([ps("s"), ps("t")]);
     Claim {
         id: "C7",
         location: "Eq. (kinetic)",
@@ -455,26 +383,18 @@ fn c7(_paper: &Paper) -> Claim {
                 solved(&rod(k(1, 1))).energy.after,
                 sym("m") * &sym("v0") * &sym("v0") / k(2, 1),
             ),
-            positive_on(
-                "energy lost for 0 <= e < 1 (e = s/(s + t), s >= 0, t > 0) is > 0: conservation singles out e = 1",
-                lost(sym("e")),
-                true,
-                inelastic,
-                &["t", "m", "M", "I", "v0"],
-                &["s"],
-                PosExpr::quotient(
-                    product(&[
-                        s("t"),
-                        PosExpr::sum([product(&[c(2, 1), s("s")]), s("t")]),
-                        s("m"),
-                        s("M"),
-                        s("I"),
-                        s("v0"),
-                        s("v0"),
+            positive("energy lost for 0 <= e < 1 (e = s/(s + t), s >= 0, t > 0) is > 0: conservation singles out e = 1", lost(sym("e")), true, &inelastic, &["t", "m", "M", "I", "v0"], &["s"], PosExpr::quotient(
+                    prod([
+                        ps("t"),
+                        PosExpr::sum([prod([pc(2, 1), ps("s")]), ps("t")]),
+                        ps("m"),
+                        ps("M"),
+                        ps("I"),
+                        ps("v0"),
+                        ps("v0"),
                     ]),
-                    product(&[c(2, 1), s_plus_t.clone(), s_plus_t, m_i_d_form()]),
-                ),
-            ),
+                    prod([pc(2, 1), s_plus_t.clone(), s_plus_t, m_i_d_form()]),
+                )),
         ]),
     }
 }
@@ -482,12 +402,12 @@ fn c7(_paper: &Paper) -> Claim {
 fn c8(paper: &Paper) -> Claim {
     let after = elastic();
     let bounce = || {
-        instance(&[
-            ("m", 1, 1),
-            ("M", 3, 1),
-            ("I", 1, 1),
-            ("a", 0, 1),
-            ("v0", 1, 1),
+        at(&[
+            ("m", rational(1, 1)),
+            ("M", rational(3, 1)),
+            ("I", rational(1, 1)),
+            ("a", rational(0, 1)),
+            ("v0", rational(1, 1)),
         ])
     };
     Claim {
@@ -525,28 +445,14 @@ fn c8(paper: &Paper) -> Claim {
                 ),
             ],
             proof: vec![
-                positive(
-                    "V > 0 (generic solver, e = 1): V = 2 m v0 I/(MI + mI + mMa^2)",
-                    after.rod_v,
-                    true,
-                    &["m", "M", "I", "v0"],
-                    PosExpr::quotient(
-                        product(&[c(2, 1), s("m"), s("v0"), s("I")]),
+                positive("V > 0 (generic solver, e = 1): V = 2 m v0 I/(MI + mI + mMa^2)", after.rod_v, true, &[], &["m", "M", "I", "v0"], &[], PosExpr::quotient(
+                        prod([pc(2, 1), ps("m"), ps("v0"), ps("I")]),
                         m_i_d_form(),
-                    ),
-                ),
-                positive_on(
-                    "omega >= 0 for a >= 0 (generic solver, e = 1): omega = 2 m M a v0/(MI + mI + mMa^2)",
-                    after.omega,
-                    false,
-                    vec![],
-                    &["m", "M", "I", "v0"],
-                    &["a"],
-                    PosExpr::quotient(
-                        product(&[c(2, 1), s("m"), s("M"), s("a"), s("v0")]),
+                    )),
+                positive("omega >= 0 for a >= 0 (generic solver, e = 1): omega = 2 m M a v0/(MI + mI + mMa^2)", after.omega, false, &[], &["m", "M", "I", "v0"], &["a"], PosExpr::quotient(
+                        prod([pc(2, 1), ps("m"), ps("M"), ps("a"), ps("v0")]),
                         m_i_d_form(),
-                    ),
-                ),
+                    )),
             ],
         },
     }
@@ -664,13 +570,7 @@ fn c11(paper: &Paper) -> Claim {
                 factored,
             ),
             d_positive(),
-            positive(
-                "the two roots differ: v0 - v (Eq. (v)) = 2 v0/D > 0",
-                v0.clone() - &paper.v,
-                true,
-                &["m", "M", "I", "v0"],
-                PosExpr::quotient(product(&[c(2, 1), s("v0"), s("M"), s("I")]), m_i_d_form()),
-            ),
+            positive("the two roots differ: v0 - v (Eq. (v)) = 2 v0/D > 0", v0.clone() - &paper.v, true, &[], &["m", "M", "I", "v0"], &[], PosExpr::quotient(prod([pc(2, 1), ps("v0"), ps("M"), ps("I")]), m_i_d_form())),
             Certificate::identity("v = v0 in Eq. (linear-angular) gives V = 0", big_v, k(0, 1)),
             Certificate::identity(
                 "v = v0 in Eq. (linear-angular) gives omega = 0",
@@ -708,13 +608,7 @@ fn c12(paper: &Paper) -> Claim {
                 linear,
             ),
             d_positive(),
-            positive(
-                "at v = v0, lhs - rhs of Eq. (kinetic-divided) is 2 m v0 > 0: the division drops only the root v0",
-                kinetic_divided(&v0),
-                true,
-                &["m", "v0"],
-                product(&[c(2, 1), s("m"), s("v0")]),
-            ),
+            positive("at v = v0, lhs - rhs of Eq. (kinetic-divided) is 2 m v0 > 0: the division drops only the root v0", kinetic_divided(&v0), true, &[], &["m", "v0"], &[], prod([pc(2, 1), ps("m"), ps("v0")])),
         ]),
     }
 }

@@ -1,5 +1,6 @@
 //! Claims C32-C46: why intuition fails (fixed axes, impulses) and the inhomogeneous rod.
 
+use super::build::*;
 use super::model::*;
 use super::{Certificate, Claim, Decision, Entry, Group, Paper, PosExpr, Relation};
 use crate::field::ratfunc::Point;
@@ -70,72 +71,11 @@ pub(super) const ENTRIES: &[Entry] = &[
 ];
 
 // ---------------------------------------------------------------------------------------------
-// Small builders: visibly signed forms, domains, the solver's quantities.
-
-fn ps(name: &str) -> PosExpr {
-    PosExpr::sym(name)
-}
-
-fn pc(n: i64, d: i64) -> PosExpr {
-    PosExpr::constant(n, d)
-}
-
-fn add<const N: usize>(terms: [PosExpr; N]) -> PosExpr {
-    PosExpr::sum(terms)
-}
-
-fn mul<const N: usize>(factors: [PosExpr; N]) -> PosExpr {
-    PosExpr::product(factors)
-}
-
-fn div(num: PosExpr, den: PosExpr) -> PosExpr {
-    PosExpr::quotient(num, den)
-}
-
-/// `1 + e`, positive for a restitution e >= 0.
-fn one_plus_e() -> PosExpr {
-    add([pc(1, 1), ps("e")])
-}
+// Small builders: the solver's quantities.
 
 /// `x + y` for two symbols.
 fn plus(x: &str, y: &str) -> PosExpr {
-    add([ps(x), ps(y)])
-}
-
-/// The domain of a positivity certificate.
-struct Domain {
-    subs: Vec<(Sym, RatFn)>,
-    positive: Vec<Sym>,
-    nonnegative: Vec<Sym>,
-}
-
-fn domain(subs: &[(&str, RatFn)], positive: &[&str], nonnegative: &[&str]) -> Domain {
-    let names = |list: &[&str]| list.iter().map(|n| Sym::new(n)).collect();
-    Domain {
-        subs: subs.iter().map(|(s, v)| (Sym::new(s), v.clone())).collect(),
-        positive: names(positive),
-        nonnegative: names(nonnegative),
-    }
-}
-
-fn positive(title: &str, expr: RatFn, strict: bool, dom: Domain, form: PosExpr) -> Certificate {
-    Certificate::Positive {
-        title: title.into(),
-        expr,
-        strict,
-        substitutions: dom.subs,
-        positive: dom.positive,
-        nonnegative: dom.nonnegative,
-        form,
-    }
-}
-
-fn one() -> RatFn {
-    k(1, 1)
-}
-
-fn sq(x: &RatFn) -> RatFn {
-    x.clone() * x
+    sum([ps(x), ps(y)])
 }
 
 fn at_a(x: &RatFn, value: RatFn) -> RatFn {
@@ -153,15 +93,6 @@ fn free_impulse(inertia: RatFn) -> RatFn {
     solved(&p).impulse(&p)
 }
 
-/// A witness instance: `(symbol, value)` pairs.
-fn instance(pairs: &[(&str, QSqrt)]) -> Vec<(Sym, QSqrt)> {
-    at(pairs)
-}
-
-fn r(n: i64, d: i64) -> QSqrt {
-    rational(n, d)
-}
-
 // ---------------------------------------------------------------------------------------------
 // Certificates shared by several claims.
 
@@ -171,14 +102,14 @@ fn impulse_decreasing() -> Certificate {
     let expr = j.clone() - &at_a(&j, sym("a") + &sym("t"));
     // J = (1+e) v0 m M I/(MI + mI + mM a^2); the difference of the denominators is mM t(2a + t).
     let den = |x: PosExpr| {
-        add([
-            mul([ps("M"), ps("I")]),
-            mul([ps("m"), ps("I")]),
-            mul([ps("m"), ps("M"), x.clone(), x]),
+        sum([
+            prod([ps("M"), ps("I")]),
+            prod([ps("m"), ps("I")]),
+            prod([ps("m"), ps("M"), x.clone(), x]),
         ])
     };
-    let form = div(
-        mul([
+    let form = quot(
+        prod([
             one_plus_e(),
             ps("v0"),
             ps("m"),
@@ -187,26 +118,37 @@ fn impulse_decreasing() -> Certificate {
             ps("M"),
             ps("I"),
             ps("t"),
-            add([mul([pc(2, 1), ps("a")]), ps("t")]),
+            sum([prod([pc(2, 1), ps("a")]), ps("t")]),
         ]),
-        mul([den(ps("a")), den(plus("a", "t"))]),
+        prod([den(ps("a")), den(plus("a", "t"))]),
     );
     positive(
         "the impulse J(a) = m (v0 - v) from the solver falls strictly: J(a) - J(a + t) > 0 for a >= 0, t > 0 (any I, any e >= 0)",
         expr,
         true,
-        domain(&[], &["m", "M", "I", "v0", "t"], &["a", "e"]),
+        &[],
+        &["m", "M", "I", "v0", "t"],
+        &["a", "e"],
         form,
     )
 }
 
 /// omega(l) - omega(a) > 0 for 0 <= a < l (l = a + s, s > 0), omega from the solver with the
-/// given inertia; `dom` carries the other substitutions (the mass domain).
-fn end_beats_interior(title: &str, inertia: RatFn, mut dom: Domain, form: PosExpr) -> Certificate {
+/// given inertia; `mass_subs`, `pos` and `nonneg` give the
+/// mass domain.
+fn end_beats_interior(
+    title: &str,
+    inertia: RatFn,
+    mass_subs: &[(&str, RatFn)],
+    pos: &[&str],
+    nonneg: &[&str],
+    form: PosExpr,
+) -> Certificate {
     let omega = free_omega(inertia);
     let expr = at_a(&omega, sym("l")) - &omega;
-    dom.subs.push((Sym::new("l"), sym("a") + &sym("s")));
-    positive(title, expr, true, dom, form)
+    let mut substitutions = mass_subs.to_vec();
+    substitutions.push(("l", sym("a") + &sym("s")));
+    positive(title, expr, true, &substitutions, pos, nonneg, form)
 }
 
 /// a* >= l whenever M >= m (l^2/r_G^2 - 1): with l = r_G + u and
@@ -218,12 +160,10 @@ fn gyration_end_optimal(paper: &Paper) -> Certificate {
         "Eq. (maximal-a-gyration): a*^2 - l^2 >= 0 when M >= m (l^2/r_G^2 - 1) (l = r_G + u, M = m u (2 r_G + u)/r_G^2 + q; u, q >= 0)",
         paper.a_star_gyration_squared.clone() - &sq(&sym("l")),
         false,
-        domain(
-            &[("l", rg.clone() + &u), ("M", big_m)],
-            &["m", "r_G"],
-            &["u", "q"],
-        ),
-        div(mul([ps("q"), ps("r_G"), ps("r_G")]), ps("m")),
+        &[("l", rg.clone() + &u), ("M", big_m)],
+        &["m", "r_G"],
+        &["u", "q"],
+        quot(prod([ps("q"), ps("r_G"), ps("r_G")]), ps("m")),
     )
 }
 
@@ -233,15 +173,17 @@ fn gyration_interior_optimal(paper: &Paper) -> Certificate {
     let (big_m, rg, u) = (sym("M"), sym("r_G"), sym("u"));
     let two_r_u = k(2, 1) * &rg + &u;
     let m = (big_m * &sq(&rg) + &sym("q")) / (u.clone() * &two_r_u);
-    let two_r_plus_u = add([mul([pc(2, 1), ps("r_G")]), ps("u")]);
+    let two_r_plus_u = sum([prod([pc(2, 1), ps("r_G")]), ps("u")]);
     positive(
         "Eq. (maximal-a-gyration): l^2 - a*^2 > 0 when M < m (l^2/r_G^2 - 1) (l = r_G + u, m = (M r_G^2 + q)/(u (2 r_G + u)); u, q > 0)",
         sq(&sym("l")) - &paper.a_star_gyration_squared,
         true,
-        domain(&[("l", rg + &u), ("m", m)], &["M", "r_G", "u", "q"], &[]),
-        div(
-            mul([ps("q"), ps("u"), two_r_plus_u]),
-            add([mul([ps("M"), ps("r_G"), ps("r_G")]), ps("q")]),
+        &[("l", rg + &u), ("m", m)],
+        &["M", "r_G", "u", "q"],
+        &[],
+        quot(
+            prod([ps("q"), ps("u"), two_r_plus_u]),
+            sum([prod([ps("M"), ps("r_G"), ps("r_G")]), ps("q")]),
         ),
     )
 }
@@ -258,17 +200,15 @@ fn optimum_beats_end() -> Certificate {
         "omega(a*) - omega(l) > 0 whenever a* < l (I = m M a*^2/(M + m) with a* = w, l = w + s, s > 0; omega from the solver)",
         expr,
         true,
-        domain(
-            &[("I", inertia_of_w), ("l", w + &sym("s"))],
-            &["m", "M", "v0", "w", "s"],
-            &["e"],
-        ),
-        div(
-            mul([one_plus_e(), ps("v0"), ps("s"), ps("s")]),
-            mul([
+        &[("I", inertia_of_w), ("l", w + &sym("s"))],
+        &["m", "M", "v0", "w", "s"],
+        &["e"],
+        quot(
+            prod([one_plus_e(), ps("v0"), ps("s"), ps("s")]),
+            prod([
                 pc(2, 1),
                 ps("w"),
-                add([mul([ps("w"), ps("w")]), mul([ws.clone(), ws])]),
+                sum([prod([ps("w"), ps("w")]), prod([ws.clone(), ws])]),
             ]),
         ),
     )
@@ -281,8 +221,10 @@ fn dumbbell_a_star(paper: &Paper) -> Certificate {
         "dumbbell (r_G = l): Eq. (maximal-a-gyration) gives a*^2 - l^2 = M l^2/m > 0 for all m, M > 0",
         a_star_sq - &sq(&sym("l")),
         true,
-        domain(&[], &["m", "M", "l"], &[]),
-        div(mul([ps("M"), ps("l"), ps("l")]), ps("m")),
+        &[],
+        &["m", "M", "l"],
+        &[],
+        quot(prod([ps("M"), ps("l"), ps("l")]), ps("m")),
     )
 }
 
@@ -290,27 +232,29 @@ fn dumbbell_a_star(paper: &Paper) -> Certificate {
 fn dumbbell_end_wins() -> Certificate {
     let inertia = subs(&gyration_inertia(), &[("r_G", sym("l"))]);
     let l = plus("a", "s");
-    let form = div(
-        mul([
+    let form = quot(
+        prod([
             one_plus_e(),
             ps("v0"),
             ps("s"),
             ps("m"),
-            add([mul([ps("M"), l.clone()]), mul([ps("m"), ps("s")])]),
+            sum([prod([ps("M"), l.clone()]), prod([ps("m"), ps("s")])]),
         ]),
-        mul([
-            add([ps("M"), mul([pc(2, 1), ps("m")])]),
+        prod([
+            sum([ps("M"), prod([pc(2, 1), ps("m")])]),
             l.clone(),
-            add([
-                mul([plus("M", "m"), l.clone(), l]),
-                mul([ps("m"), ps("a"), ps("a")]),
+            sum([
+                prod([plus("M", "m"), l.clone(), l]),
+                prod([ps("m"), ps("a"), ps("a")]),
             ]),
         ]),
     );
     end_beats_interior(
         "dumbbell (I = M l^2): omega(l) - omega(a) > 0 for 0 <= a < l (l = a + s, s > 0), all m, M > 0, e >= 0; omega from the solver",
         inertia,
-        domain(&[], &["m", "M", "v0", "s"], &["a", "e"]),
+        &[],
+        &["m", "M", "v0", "s"],
+        &["a", "e"],
         form,
     )
 }
@@ -375,7 +319,7 @@ fn c32(_paper: &Paper) -> Claim {
     let big_m_p2 = sym("M") * &sq(&p);
     let xt = plus("x", "t");
     let wx = plus("w", "x");
-    let wxt = add([ps("w"), ps("x"), ps("t")]);
+    let wxt = sum([ps("w"), ps("x"), ps("t")]);
     let door = pivoted_rod(uniform_inertia(), sym("e"));
     let door_omega = motion(&door).omega;
     let given = sym("J") * &arm / i_p.clone();
@@ -389,28 +333,26 @@ fn c32(_paper: &Paper) -> Claim {
             "omega grows with the arm up to d* = sqrt(I_p/m): omega(d + t) - omega(d) > 0 for 0 <= d < d + t <= d* (I_p = m ((d + t)^2 + s), d = x)",
             below,
             true,
-            domain(
-                &[(
-                    "I",
-                    m.clone() * &(sq(&(x.clone() + &t)) + &sym("s")) - &big_m_p2,
-                )],
-                &["m", "v0", "t"],
-                &["x", "s", "e"],
-            ),
-            div(
-                mul([
+            &[(
+                "I",
+                m.clone() * &(sq(&(x.clone() + &t)) + &sym("s")) - &big_m_p2,
+            )],
+            &["m", "v0", "t"],
+            &["x", "s", "e"],
+            quot(
+                prod([
                     one_plus_e(),
                     ps("v0"),
                     ps("t"),
-                    add([mul([xt.clone(), ps("t")]), ps("s")]),
+                    sum([prod([xt.clone(), ps("t")]), ps("s")]),
                 ]),
-                mul([
-                    add([
-                        mul([xt.clone(), xt.clone()]),
-                        mul([ps("x"), ps("x")]),
+                prod([
+                    sum([
+                        prod([xt.clone(), xt.clone()]),
+                        prod([ps("x"), ps("x")]),
                         ps("s"),
                     ]),
-                    add([mul([pc(2, 1), xt.clone(), xt]), ps("s")]),
+                    sum([prod([pc(2, 1), xt.clone(), xt]), ps("s")]),
                 ]),
             ),
         ),
@@ -418,24 +360,22 @@ fn c32(_paper: &Paper) -> Claim {
             "omega falls with the arm beyond d*: omega(d) - omega(d + t) > 0 for d* <= d (I_p = m d*^2, d* = w, d = w + x)",
             beyond,
             true,
-            domain(
-                &[("I", m.clone() * &sq(&w) - &big_m_p2)],
-                &["m", "v0", "t", "w"],
-                &["x", "e"],
-            ),
-            div(
-                mul([
+            &[("I", m.clone() * &sq(&w) - &big_m_p2)],
+            &["m", "v0", "t", "w"],
+            &["x", "e"],
+            quot(
+                prod([
                     one_plus_e(),
                     ps("v0"),
                     ps("t"),
-                    add([
-                        mul([ps("w"), ps("t")]),
-                        mul([ps("x"), add([mul([pc(2, 1), ps("w")]), ps("x"), ps("t")])]),
+                    sum([
+                        prod([ps("w"), ps("t")]),
+                        prod([ps("x"), sum([prod([pc(2, 1), ps("w")]), ps("x"), ps("t")])]),
                     ]),
                 ]),
-                mul([
-                    add([mul([ps("w"), ps("w")]), mul([wx.clone(), wx])]),
-                    add([mul([ps("w"), ps("w")]), mul([wxt.clone(), wxt])]),
+                prod([
+                    sum([prod([ps("w"), ps("w")]), prod([wx.clone(), wx])]),
+                    sum([prod([ps("w"), ps("w")]), prod([wxt.clone(), wxt])]),
                 ]),
             ),
         ),
@@ -443,14 +383,12 @@ fn c32(_paper: &Paper) -> Claim {
             "door (uniform rod hinged at its end, p = -l, arms up to 2l): d*^2 - (2l)^2 = I_p/m - 4 l^2 >= 0 when M = 3m + q, q >= 0",
             door.inertia_about_axis() / m.clone() - &(k(4, 1) * &sq(&sym("l"))),
             false,
-            domain(
-                &[("p", -sym("l")), ("M", k(3, 1) * &m + &sym("q"))],
-                &["m", "l"],
-                &["q"],
-            ),
-            div(
-                mul([pc(4, 1), ps("q"), ps("l"), ps("l")]),
-                mul([pc(3, 1), ps("m")]),
+            &[("p", -sym("l")), ("M", k(3, 1) * &m + &sym("q"))],
+            &["m", "l"],
+            &["q"],
+            quot(
+                prod([pc(4, 1), ps("q"), ps("l"), ps("l")]),
+                prod([pc(3, 1), ps("m")]),
             ),
         ),
         Certificate::identity(
@@ -462,23 +400,25 @@ fn c32(_paper: &Paper) -> Claim {
             "for a given impulse J > 0, omega = J d/I_p grows with the arm: d omega/da = J/(I + M p^2) > 0",
             given.derivative(Sym::new("a")),
             true,
-            domain(&[], &["J", "I", "M"], &[]),
-            div(
+            &[],
+            &["J", "I", "M"],
+            &[],
+            quot(
                 ps("J"),
-                add([ps("I"), mul([ps("M"), PosExpr::Square(p.clone())])]),
+                sum([ps("I"), prod([ps("M"), PosExpr::Square(p.clone())])]),
             ),
         ),
     ];
-    let d_star = sqrt(&q(4, 3)) - &r(1, 1);
+    let d_star = sqrt(&q(4, 3)) - &rational(1, 1);
     let counterexample = vec![Certificate::witness(
         "door hinged at one end (p = -l, I = M l^2/3) with M = m: striking at the arm d* = 2l/sqrt3 (a = d* - l) beats striking the far end (a = l)",
-        instance(&[
-            ("m", r(1, 1)),
-            ("M", r(1, 1)),
-            ("l", r(1, 1)),
-            ("p", r(-1, 1)),
-            ("v0", r(1, 1)),
-            ("e", r(1, 1)),
+        at(&[
+            ("m", rational(1, 1)),
+            ("M", rational(1, 1)),
+            ("l", rational(1, 1)),
+            ("p", rational(-1, 1)),
+            ("v0", rational(1, 1)),
+            ("e", rational(1, 1)),
             ("a", d_star),
         ]),
         door_omega.clone(),
@@ -529,13 +469,7 @@ fn c33(_paper: &Paper) -> Claim {
                 out.after.omega.clone(),
                 out.impulse(&p) * &a / inertia,
             ),
-            positive(
-                "a given impulse J > 0: omega(l) - omega(a) = J (l - a)/I > 0 for a < l (l = a + s, s > 0)",
-                at_a(&given, sym("l")) - &given,
-                true,
-                domain(&[("l", a + &sym("s"))], &["J", "I", "s"], &[]),
-                div(mul([ps("J"), ps("s")]), ps("I")),
-            ),
+            positive("a given impulse J > 0: omega(l) - omega(a) = J (l - a)/I > 0 for a < l (l = a + s, s > 0)", at_a(&given, sym("l")) - &given, true, &[("l", a + &sym("s"))], &["J", "I", "s"], &[], quot(prod([ps("J"), ps("s")]), ps("I"))),
         ]),
     }
 }
@@ -597,14 +531,14 @@ fn c36(paper: &Paper) -> Claim {
     let lin = &paper.impulse_linear;
     let expr = lin.clone() - &at_a(lin, sym("a") + &sym("t"));
     let den = |x: PosExpr| {
-        add([
-            mul([ps("M"), ps("l"), ps("l")]),
-            mul([ps("m"), ps("l"), ps("l")]),
-            mul([pc(3, 1), ps("m"), x.clone(), x]),
+        sum([
+            prod([ps("M"), ps("l"), ps("l")]),
+            prod([ps("m"), ps("l"), ps("l")]),
+            prod([pc(3, 1), ps("m"), x.clone(), x]),
         ])
     };
-    let form = div(
-        mul([
+    let form = quot(
+        prod([
             pc(6, 1),
             ps("m"),
             ps("m"),
@@ -613,9 +547,9 @@ fn c36(paper: &Paper) -> Claim {
             ps("l"),
             ps("v0"),
             ps("t"),
-            add([mul([pc(2, 1), ps("a")]), ps("t")]),
+            sum([prod([pc(2, 1), ps("a")]), ps("t")]),
         ]),
-        mul([den(ps("a")), den(plus("a", "t"))]),
+        prod([den(ps("a")), den(plus("a", "t"))]),
     );
     Claim {
         id: "C36",
@@ -628,13 +562,7 @@ fn c36(paper: &Paper) -> Claim {
             .into(),
         reason: "I_lin(a) - I_lin(a + t) = 6 m^2 M l^2 v0 t (2a + t)/(D1 D2) > 0 with D1, D2 visibly positive".into(),
         decision: Decision::Proved(vec![
-            positive(
-                "Eq. (impulse-linear): I_lin(a) - I_lin(a + t) > 0 for a >= 0, t > 0",
-                expr,
-                true,
-                domain(&[], &["m", "M", "l", "v0", "t"], &["a"]),
-                form,
-            ),
+            positive("Eq. (impulse-linear): I_lin(a) - I_lin(a + t) > 0 for a >= 0, t > 0", expr, true, &[], &["m", "M", "l", "v0", "t"], &["a"], form),
             impulse_decreasing(),
         ]),
     }
@@ -674,12 +602,12 @@ fn c38(_paper: &Paper) -> Claim {
     let uniform = free_omega(uniform_inertia());
     let slope = uniform.derivative(Sym::new("a"));
     let at_m_equal_big_m = |a: QSqrt| {
-        instance(&[
-            ("m", r(1, 1)),
-            ("M", r(1, 1)),
-            ("l", r(1, 1)),
-            ("v0", r(1, 1)),
-            ("e", r(1, 1)),
+        at(&[
+            ("m", rational(1, 1)),
+            ("M", rational(1, 1)),
+            ("l", rational(1, 1)),
+            ("v0", rational(1, 1)),
+            ("e", rational(1, 1)),
             ("a", a),
         ])
     };
@@ -703,14 +631,14 @@ fn c38(_paper: &Paper) -> Claim {
             impulse_decreasing(),
             Certificate::witness(
                 "uniform rod, M = m, e = 1: at a = 0 the growing arm wins (d omega/da > 0)",
-                at_m_equal_big_m(r(0, 1)),
+                at_m_equal_big_m(rational(0, 1)),
                 slope.clone(),
                 Relation::Gt,
                 k(0, 1),
             ),
             Certificate::witness(
                 "uniform rod, M = m, e = 1: at a = l the falling impulse wins (d omega/da < 0)",
-                at_m_equal_big_m(r(1, 1)),
+                at_m_equal_big_m(rational(1, 1)),
                 slope,
                 Relation::Lt,
                 k(0, 1),
@@ -722,21 +650,24 @@ fn c38(_paper: &Paper) -> Claim {
 fn c39(paper: &Paper) -> Claim {
     let big_m = paper.threshold.clone() * &sym("m") + &sym("q");
     let l = plus("a", "s");
-    let form = div(
-        mul([
+    let form = quot(
+        prod([
             pc(3, 1),
             ps("m"),
             one_plus_e(),
             ps("v0"),
             ps("s"),
-            add([mul([pc(3, 1), ps("m"), ps("s")]), mul([ps("q"), l.clone()])]),
+            sum([
+                prod([pc(3, 1), ps("m"), ps("s")]),
+                prod([ps("q"), l.clone()]),
+            ]),
         ]),
-        mul([
+        prod([
             l.clone(),
-            add([mul([pc(6, 1), ps("m")]), ps("q")]),
-            add([
-                mul([add([mul([pc(3, 1), ps("m")]), ps("q")]), l.clone(), l]),
-                mul([pc(3, 1), ps("m"), ps("a"), ps("a")]),
+            sum([prod([pc(6, 1), ps("m")]), ps("q")]),
+            sum([
+                prod([sum([prod([pc(3, 1), ps("m")]), ps("q")]), l.clone(), l]),
+                prod([pc(3, 1), ps("m"), ps("a"), ps("a")]),
             ]),
         ]),
     );
@@ -750,12 +681,7 @@ fn c39(paper: &Paper) -> Claim {
                  uniquely. The threshold is sharp (for M < 2m the maximum is inside, C27)."
             .into(),
         reason: "with M = 2m + q (q >= 0) and l = a + s (s > 0), omega(l) - omega(a) is a visibly positive fraction".into(),
-        decision: Decision::Proved(vec![end_beats_interior(
-            "uniform rod, M = 2m + q (q >= 0, the paper's threshold): omega(l) - omega(a) > 0 for 0 <= a < l (l = a + s); omega from the solver",
-            uniform_inertia(),
-            domain(&[("M", big_m)], &["m", "v0", "s"], &["a", "q", "e"]),
-            form,
-        )]),
+        decision: Decision::Proved(vec![end_beats_interior("uniform rod, M = 2m + q (q >= 0, the paper's threshold): omega(l) - omega(a) > 0 for 0 <= a < l (l = a + s); omega from the solver", uniform_inertia(), &[("M", big_m)], &["m", "v0", "s"], &["a", "q", "e"], form)]),
     }
 }
 
@@ -814,16 +740,10 @@ fn c40(_paper: &Paper) -> Claim {
                 whole_rod(),
                 l2.clone() * &mass - &inertia,
             ),
-            positive(
-                "polynomial density (c_i >= 0): (5/7) l^2 M - I >= 0, i.e. M l^2 - I >= (2/7) M l^2 > 0, so r_G^2 <= (5/7) l^2 < l^2",
-                k(5, 7) * &l2 * &mass - &inertia,
-                false,
-                domain(&[], &["l"], &["c0", "c2", "c4"]),
-                add([
-                    mul([pc(16, 21), ps("c0"), ps("l"), ps("l"), ps("l")]),
-                    mul([pc(8, 105), ps("c2"), ps("l"), ps("l"), ps("l"), ps("l"), ps("l")]),
-                ]),
-            ),
+            positive("polynomial density (c_i >= 0): (5/7) l^2 M - I >= 0, i.e. M l^2 - I >= (2/7) M l^2 > 0, so r_G^2 <= (5/7) l^2 < l^2", k(5, 7) * &l2 * &mass - &inertia, false, &[], &["l"], &["c0", "c2", "c4"], sum([
+                    prod([pc(16, 21), ps("c0"), ps("l"), ps("l"), ps("l")]),
+                    prod([pc(8, 105), ps("c2"), ps("l"), ps("l"), ps("l"), ps("l"), ps("l")]),
+                ])),
             integral(
                 "end-loaded rod (density c on [l - h, l]): mass of the right segment",
                 sym("c"),
@@ -852,13 +772,7 @@ fn c40(_paper: &Paper) -> Claim {
                 left,
                 end_inertia,
             ),
-            positive(
-                "end-loaded rod, 0 < h <= l: l^2 - r_G^2 = l h - h^2/3 > 0 (l = h + s, s >= 0)",
-                l2.clone() - &end_rg2,
-                true,
-                domain(&[("l", h.clone() + &sym("s"))], &["c", "h"], &["s"]),
-                add([mul([pc(2, 3), ps("h"), ps("h")]), mul([ps("h"), ps("s")])]),
-            ),
+            positive("end-loaded rod, 0 < h <= l: l^2 - r_G^2 = l h - h^2/3 > 0 (l = h + s, s >= 0)", l2.clone() - &end_rg2, true, &[("l", h.clone() + &sym("s"))], &["c", "h"], &["s"], sum([prod([pc(2, 3), ps("h"), ps("h")]), prod([ps("h"), ps("s")])])),
             Certificate::limit(
                 "end-loaded rod: r_G^2 -> l^2 as the end segments shrink (h -> 0+), the dumbbell limit",
                 end_rg2,
@@ -914,13 +828,13 @@ fn c42(paper: &Paper) -> Claim {
         gyration_end_optimal(paper),
         Certificate::witness(
             "M = 100 m, r_G = l/20: a* = sqrt(101) l/20 < l, and omega(a*) > omega(l) (solver, e = 1)",
-            instance(&[
-                ("m", r(1, 1)),
-                ("M", r(100, 1)),
-                ("r_G", r(1, 20)),
-                ("l", r(1, 1)),
-                ("v0", r(1, 1)),
-                ("e", r(1, 1)),
+            at(&[
+                ("m", rational(1, 1)),
+                ("M", rational(100, 1)),
+                ("r_G", rational(1, 20)),
+                ("l", rational(1, 1)),
+                ("v0", rational(1, 1)),
+                ("e", rational(1, 1)),
                 ("a", sqrt(&q(101, 400))),
             ]),
             omega.clone(),
@@ -930,11 +844,11 @@ fn c42(paper: &Paper) -> Claim {
     ];
     let counterexample = vec![Certificate::witness(
         "r_G = l/20 (mass near the middle) but M = 1000 m: Eq. (maximal-a-gyration) gives a*^2 = (1001/400) l^2 > l^2, so a = l is the optimum",
-        instance(&[
-            ("m", r(1, 1)),
-            ("M", r(1000, 1)),
-            ("r_G", r(1, 20)),
-            ("l", r(1, 1)),
+        at(&[
+            ("m", rational(1, 1)),
+            ("M", rational(1000, 1)),
+            ("r_G", rational(1, 20)),
+            ("l", rational(1, 1)),
         ]),
         paper.a_star_gyration_squared.clone(),
         Relation::Gt,
@@ -1152,7 +1066,7 @@ mod tests {
         let mut c = c.clone();
         match &mut c {
             Certificate::Identity { rhs, .. } => *rhs = rhs.clone() + &one(),
-            Certificate::Positive { form, .. } => *form = add([form.clone(), pc(1, 1)]),
+            Certificate::Positive { form, .. } => *form = sum([form.clone(), pc(1, 1)]),
             Certificate::Limit { expected, .. } => {
                 if let Expected::Finite(x) = expected {
                     *x = x.clone() + &one();
@@ -1193,7 +1107,7 @@ mod tests {
             panic!("C39 is a positivity certificate");
         };
         // The same value, but a negative constant in the shape: no visible sign.
-        *form = add([form.clone(), pc(1, 1), pc(-1, 1)]);
+        *form = sum([form.clone(), pc(1, 1), pc(-1, 1)]);
         assert!(claim.check().is_err());
     }
 }

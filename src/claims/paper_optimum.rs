@@ -5,6 +5,7 @@
 //! function of that shape into three certificates: the gap to the peak is a square over a
 //! positive denominator (>= 0 everywhere), and it is strictly positive on either side.
 
+use super::build::*;
 use super::model::*;
 use super::{Certificate, Claim, Decision, Entry, Group, Paper, PosExpr, Relation};
 use crate::field::{RatFn, Sym};
@@ -69,53 +70,6 @@ pub(super) const ENTRIES: &[Entry] = &[
 // ---------------------------------------------------------------------------------------------
 // Small builders.
 
-fn syms(names: &[&str]) -> Vec<Sym> {
-    names.iter().map(|n| Sym::new(n)).collect()
-}
-
-fn ps(name: &str) -> PosExpr {
-    PosExpr::sym(name)
-}
-
-fn pc(n: i64) -> PosExpr {
-    PosExpr::constant(n, 1)
-}
-
-fn prod<const N: usize>(factors: [PosExpr; N]) -> PosExpr {
-    PosExpr::product(factors)
-}
-
-fn add<const N: usize>(terms: [PosExpr; N]) -> PosExpr {
-    PosExpr::sum(terms)
-}
-
-fn square(x: &RatFn) -> RatFn {
-    x.clone() * x
-}
-
-/// A positivity certificate on a domain given by `substitutions`.
-fn positive(
-    title: impl Into<String>,
-    expr: RatFn,
-    strict: bool,
-    substitutions: &[(&str, RatFn)],
-    domain: (&[&str], &[&str]),
-    form: PosExpr,
-) -> Certificate {
-    Certificate::Positive {
-        title: title.into(),
-        expr,
-        strict,
-        substitutions: substitutions
-            .iter()
-            .map(|(s, v)| (Sym::new(s), v.clone()))
-            .collect(),
-        positive: syms(domain.0),
-        nonnegative: syms(domain.1),
-        form,
-    }
-}
-
 /// `model` with `domain` substituted into its values, followed by `domain`: the single
 /// simultaneous substitution that applies `model` first and then `domain`.
 fn compose<'a>(model: &[(&'a str, RatFn)], domain: &[(&'a str, RatFn)]) -> Vec<(&'a str, RatFn)> {
@@ -140,14 +94,14 @@ fn uniform_omega() -> RatFn {
 /// `I = A^2 m M/(M + m)`: the general rod written through A, a positive symbol for a*.
 fn inertia_through_a_star() -> RatFn {
     let (m, big_m) = (sym("m"), sym("M"));
-    square(&sym("A")) * &m * &big_m / (big_m.clone() + &m)
+    sq(&sym("A")) * &m * &big_m / (big_m.clone() + &m)
 }
 
 /// `M = 3 m A^2/l^2 - m`: the uniform rod's mass written through A, a positive symbol for a*.
 /// Every m, M, l > 0 is reached, with A = sqrt((M + m)/(3m)) l.
 fn mass_through_a_star() -> RatFn {
     let (m, l) = (sym("m"), sym("l"));
-    k(3, 1) * &m * &square(&sym("A")) / square(&l) - &m
+    k(3, 1) * &m * &sq(&sym("A")) / sq(&l) - &m
 }
 
 /// The claim `printed = A^2` once the model is written through A: A is the paper's a*.
@@ -156,7 +110,7 @@ fn a_star_link(what: &str, printed: &RatFn, model: (&str, RatFn)) -> Certificate
     Certificate::identity(
         format!("the printed {what} equals A^2 when {name} = {value}, so A is the paper's a*"),
         subs(printed, &[(name, value.clone())]),
-        square(&sym("A")),
+        sq(&sym("A")),
     )
 }
 
@@ -180,7 +134,7 @@ fn sticking(inertia: RatFn) -> Sticking {
     let y_c = m.clone() * &a / total.clone();
     let before = Motion::before(sym("v0"));
     let v_c = linear_momentum(&p, &before) / total;
-    let i_c = inertia + &(big_m * &square(&y_c)) + &(m * &square(&(a - &y_c)));
+    let i_c = inertia + &(big_m * &sq(&y_c)) + &(m * &sq(&(a - &y_c)));
     let omega = angular_momentum(&p, &before, &y_c) / i_c.clone();
     Sticking {
         y_c,
@@ -258,7 +212,8 @@ impl Peak {
             self.gap(),
             strict,
             &substitutions,
-            (&self.domain(signs.0), signs.1),
+            &self.domain(signs.0),
+            signs.1,
             form,
         )
     }
@@ -267,7 +222,10 @@ impl Peak {
     fn gap_form(&self, numerator: PosExpr, b: PosExpr, cx: PosExpr) -> PosExpr {
         PosExpr::quotient(
             numerator,
-            self.times_c(vec![pc(2), b.clone(), add([prod([b.clone(), b]), cx])], 1),
+            self.times_c(
+                vec![pc(2, 1), b.clone(), sum([prod([b.clone(), b]), cx])],
+                1,
+            ),
         )
     }
 
@@ -294,7 +252,7 @@ impl Peak {
     /// Right of the peak, x = b/c + t: k c^2 t^2/(2 b c (b^2 + (b + c t)^2)) > 0.
     fn above(&self) -> Certificate {
         let x = sym(self.b) / self.c_value() + &sym("t");
-        let shifted = add([ps(self.b), self.times_c(vec![ps("t")], 1)]);
+        let shifted = sum([ps(self.b), self.times_c(vec![ps("t")], 1)]);
         let form = self.gap_form(
             self.times_c(vec![self.k.clone(), ps("t"), ps("t")], 2),
             ps(self.b),
@@ -313,7 +271,7 @@ impl Peak {
     /// Left of the peak, 0 <= x < b/c, i.e. b = c (x + t): k c^2 t^2/(2 B c (B^2 + c^2 x^2)) > 0
     /// with B = c (x + t).
     fn below(&self) -> Certificate {
-        let big_b = self.times_c(vec![add([ps(self.x), ps("t")])], 1);
+        let big_b = self.times_c(vec![sum([ps(self.x), ps("t")])], 1);
         let form = self.gap_form(
             self.times_c(vec![self.k.clone(), ps("t"), ps("t")], 2),
             big_b,
@@ -360,33 +318,33 @@ fn omega_peak(omega: RatFn, k: PosExpr) -> Peak {
 fn increasing_on_rod(paper: &Paper, omega: &RatFn, scale: i64, what: &str) -> Certificate {
     let (a, t, s) = (sym("a"), sym("t"), sym("s"));
     let expr = subs(omega, &[("a", a.clone() + &t)]) - omega;
-    let l = add([ps("a"), ps("t"), ps("s")]);
-    let three_m = prod([pc(3), ps("m")]);
-    let slack = add([
+    let l = sum([ps("a"), ps("t"), ps("s")]);
+    let three_m = prod([pc(3, 1), ps("m")]);
+    let slack = sum([
         prod([ps("t"), ps("t")]),
         prod([ps("s"), ps("s")]),
         prod([ps("a"), ps("t")]),
-        prod([pc(2), ps("a"), ps("s")]),
-        prod([pc(2), ps("t"), ps("s")]),
+        prod([pc(2, 1), ps("a"), ps("s")]),
+        prod([pc(2, 1), ps("t"), ps("s")]),
     ]);
     let denominator = |x: PosExpr| {
-        add([
-            prod([add([three_m.clone(), ps("q")]), l.clone(), l.clone()]),
+        sum([
+            prod([sum([three_m.clone(), ps("q")]), l.clone(), l.clone()]),
             prod([three_m.clone(), x.clone(), x]),
         ])
     };
     let form = PosExpr::quotient(
         prod([
-            pc(scale),
+            pc(scale, 1),
             ps("m"),
             ps("v0"),
             ps("t"),
-            add([
+            sum([
                 prod([three_m.clone(), slack]),
                 prod([ps("q"), l.clone(), l.clone()]),
             ]),
         ]),
-        prod([denominator(ps("a")), denominator(add([ps("a"), ps("t")]))]),
+        prod([denominator(ps("a")), denominator(sum([ps("a"), ps("t")]))]),
     );
     positive(
         format!(
@@ -399,7 +357,8 @@ fn increasing_on_rod(paper: &Paper, omega: &RatFn, scale: i64, what: &str) -> Ce
             ("l", a + &t + &s),
             ("M", paper.threshold.clone() * &sym("m") + &sym("q")),
         ],
-        (&["m", "q", "t", "v0"], &["a", "s"]),
+        &["m", "q", "t", "v0"],
+        &["a", "s"],
         form,
     )
 }
@@ -407,11 +366,11 @@ fn increasing_on_rod(paper: &Paper, omega: &RatFn, scale: i64, what: &str) -> Ce
 /// l^2 - a*^2 (uniform rod) for M <= 2m written as 2m = M + q, i.e. m = (M + q)/threshold:
 /// it equals 2 q l^2/(3 (M + q)), >= 0 for q >= 0 and > 0 for q > 0 (`strict`).
 fn room_at_the_end(paper: &Paper, strict: bool) -> Certificate {
-    let expr = square(&sym("l")) - &a_star_squared(&uniform_inertia());
+    let expr = sq(&sym("l")) - &a_star_squared(&uniform_inertia());
     let m = (sym("M") + &sym("q")) / paper.threshold.clone();
     let form = PosExpr::quotient(
-        prod([pc(2), ps("q"), ps("l"), ps("l")]),
-        prod([pc(3), add([ps("M"), ps("q")])]),
+        prod([pc(2, 1), ps("q"), ps("l"), ps("l")]),
+        prod([pc(3, 1), sum([ps("M"), ps("q")])]),
     );
     let (relation, q_sign, domain): (&str, &str, (&[&str], &[&str])) = if strict {
         ("> 0", "q > 0", (&["M", "l", "q"], &[]))
@@ -423,15 +382,16 @@ fn room_at_the_end(paper: &Paper, strict: bool) -> Certificate {
         expr,
         strict,
         &[("m", m)],
-        domain,
+        domain.0,
+        domain.1,
         form,
     )
 }
 
 /// `2 v0 (X - a^2)/(X + a^2)^2`: the slope of 2 v0 a/(X + a^2), which vanishes at a^2 = X.
 fn slope_with_peak_at(x2: &RatFn) -> RatFn {
-    let a2 = square(&sym("a"));
-    k(2, 1) * &sym("v0") * &(x2.clone() - &a2) / square(&(x2.clone() + &a2))
+    let a2 = sq(&sym("a"));
+    k(2, 1) * &sym("v0") * &(x2.clone() - &a2) / sq(&(x2.clone() + &a2))
 }
 
 /// d omega/da of the elastic uniform rod (generic solver) with M = `mass`.
@@ -456,7 +416,7 @@ fn stationary_at(mass: &RatFn, mass_name: &str, x2: &RatFn) -> Certificate {
 
 fn c19(_paper: &Paper) -> Claim {
     let (b, c, x) = (sym("b"), sym("c"), sym("x"));
-    let f = x.clone() / (square(&b) + &(square(&c) * &square(&x)));
+    let f = x.clone() / (sq(&b) + &(sq(&c) * &sq(&x)));
     let peak = Peak {
         name: "f",
         f: f.clone(),
@@ -464,7 +424,7 @@ fn c19(_paper: &Paper) -> Claim {
         peak_name: "b/c",
         b: "b",
         c: Some("c"),
-        k: pc(1),
+        k: pc(1, 1),
         model: vec![],
         positive: vec![],
     };
@@ -494,7 +454,7 @@ fn c19(_paper: &Paper) -> Claim {
 
 fn c20(paper: &Paper) -> Claim {
     let (a, v0) = (sym("a"), sym("v0"));
-    let shape = k(2, 1) * &v0 * &a / (paper.a_star_squared.clone() + &square(&a));
+    let shape = k(2, 1) * &v0 * &a / (paper.a_star_squared.clone() + &sq(&a));
     let rewritten = Certificate::identity(
         "Eq. (omega) as printed equals 2 v0 a/(a*^2 + a^2) with the printed a*^2 = (M + m) I/(m M)",
         paper.omega.clone(),
@@ -505,7 +465,7 @@ fn c20(paper: &Paper) -> Claim {
         &paper.a_star_squared,
         ("I", inertia_through_a_star()),
     );
-    let peak = omega_peak(elastic_omega(sym("I")), prod([pc(2), ps("v0")]));
+    let peak = omega_peak(elastic_omega(sym("I")), prod([pc(2, 1), ps("v0")]));
     let mut certs = vec![rewritten, link];
     certs.extend(peak.certificates());
     Claim {
@@ -559,7 +519,7 @@ fn c21(paper: &Paper) -> Claim {
             Certificate::identity(
                 "the printed M (2l)^2/12 equals M l^2/3",
                 paper.uniform_inertia.clone(),
-                big_m * &square(&l) / k(3, 1),
+                big_m * &sq(&l) / k(3, 1),
             ),
         ]),
     }
@@ -571,7 +531,7 @@ fn c22(paper: &Paper) -> Claim {
         &paper.a_star_squared,
         &[("I", paper.uniform_inertia.clone())],
     );
-    let shape = k(2, 1) * &sym("v0") * &a / (paper.a_star_uniform_squared.clone() + &square(&a));
+    let shape = k(2, 1) * &sym("v0") * &a / (paper.a_star_uniform_squared.clone() + &sq(&a));
     Claim {
         id: "C22",
         location: "Eq. (maximal-a-homogeneous)",
@@ -658,10 +618,11 @@ fn c25(paper: &Paper) -> Claim {
         a2,
         true,
         &[],
-        (&["m", "M", "l"], &[]),
+        &["m", "M", "l"],
+        &[],
         PosExpr::quotient(
-            prod([add([ps("M"), ps("m")]), ps("l"), ps("l")]),
-            prod([pc(3), ps("m")]),
+            prod([sum([ps("M"), ps("m")]), ps("l"), ps("l")]),
+            prod([pc(3, 1), ps("m")]),
         ),
     );
     Claim {
@@ -680,7 +641,7 @@ fn c25(paper: &Paper) -> Claim {
 
 fn c26(paper: &Paper) -> Claim {
     let mass = paper.threshold.clone() * &sym("m");
-    let l2 = square(&sym("l"));
+    let l2 = sq(&sym("l"));
     Claim {
         id: "C26",
         location: "§optimum ¶2",
@@ -710,7 +671,7 @@ fn c27(paper: &Paper) -> Claim {
     let peak = Peak {
         model: vec![model.clone()],
         positive: vec!["m", "v0"],
-        ..omega_peak(omega.clone(), prod([pc(2), ps("v0")]))
+        ..omega_peak(omega.clone(), prod([pc(2, 1), ps("v0")]))
     };
     // omega(a*) - omega(l) with l = A + t: the right-of-peak form at a = l.
     let at_end = subs(&omega, &[("a", sym("l"))]);
@@ -719,15 +680,16 @@ fn c27(paper: &Paper) -> Claim {
         subs(&omega, &[("a", sym("A"))]) - &at_end,
         true,
         &compose(std::slice::from_ref(&model), &[("l", sym("A") + &sym("t"))]),
-        (&["m", "v0", "A", "t"], &[]),
+        &["m", "v0", "A", "t"],
+        &[],
         PosExpr::quotient(
-            prod([pc(2), ps("v0"), ps("t"), ps("t")]),
+            prod([pc(2, 1), ps("v0"), ps("t"), ps("t")]),
             prod([
-                pc(2),
+                pc(2, 1),
                 ps("A"),
-                add([
+                sum([
                     prod([ps("A"), ps("A")]),
-                    prod([add([ps("A"), ps("t")]), add([ps("A"), ps("t")])]),
+                    prod([sum([ps("A"), ps("t")]), sum([ps("A"), ps("t")])]),
                 ]),
             ]),
         ),
@@ -774,7 +736,7 @@ fn c27(paper: &Paper) -> Claim {
 
 fn c28(paper: &Paper) -> Claim {
     let m = sym("m");
-    let target = k(2, 3) * &square(&sym("l"));
+    let target = k(2, 3) * &sq(&sym("l"));
     Claim {
         id: "C28",
         location: "§optimum ¶2",
@@ -797,15 +759,16 @@ fn c28(paper: &Paper) -> Claim {
 }
 
 fn c29(paper: &Paper) -> Claim {
-    let l2 = square(&sym("l"));
+    let l2 = sq(&sym("l"));
     let third = l2.clone() / k(3, 1);
     let excess = positive(
         "a*^2 - l^2/3 = (M/m) l^2/3 > 0: a* > l/sqrt3 always, with relative excess M/m in a*^2",
         paper.a_star_uniform_squared.clone() - &third,
         true,
         &[],
-        (&["m", "M", "l"], &[]),
-        PosExpr::quotient(prod([ps("M"), ps("l"), ps("l")]), prod([pc(3), ps("m")])),
+        &["m", "M", "l"],
+        &[],
+        PosExpr::quotient(prod([ps("M"), ps("l"), ps("l")]), prod([pc(3, 1), ps("m")])),
     );
     Claim {
         id: "C29",
@@ -897,7 +860,7 @@ fn c31(_paper: &Paper) -> Claim {
     let parallel_axes = Certificate::identity(
         "the composite's moment of inertia about y_c = m a/(M + m) is I_c = I + mu a^2, mu = m M/(M + m)",
         stuck.i_c.clone(),
-        inertia + &(reduced_mass() * &square(&sym("a"))),
+        inertia + &(reduced_mass() * &sq(&sym("a"))),
     );
     let cm_moves_uniformly = Certificate::identity(
         "after the impact the rod point at y_c moves with V + omega y_c = V_c = m v0/(M + m): the stuck \
@@ -909,8 +872,8 @@ fn c31(_paper: &Paper) -> Claim {
         "kinetic energy after the impact (rod and projectile) = (M + m) V_c^2/2 + I_c omega^2/2: I_c is \
          the stuck pair's rotational inertia",
         kinetic_energy(&p, &after),
-        (sym("M") + &sym("m")) * &square(&stuck.v_c) / k(2, 1)
-            + &(stuck.i_c * &square(&after.omega) / k(2, 1)),
+        (sym("M") + &sym("m")) * &sq(&stuck.v_c) / k(2, 1)
+            + &(stuck.i_c * &sq(&after.omega) / k(2, 1)),
     );
     Claim {
         id: "C31",
@@ -1072,7 +1035,7 @@ mod tests {
         // C31: the identity against the composite body with the naive I + m a^2 must fail.
         let naive = tampered("C31", |c| {
             if let Certificate::Identity { rhs, .. } = c {
-                let i_naive = sym("I") + &(sym("m") * &square(&sym("a")));
+                let i_naive = sym("I") + &(sym("m") * &sq(&sym("a")));
                 *rhs = sym("m") * &sym("v0") * &sym("a") / i_naive;
             }
         });
@@ -1085,7 +1048,7 @@ mod tests {
         let (b, c, x) = (sym("b"), sym("c"), sym("x"));
         let wrong = Peak {
             name: "f",
-            f: x.clone() / (square(&b) + &(square(&c) * &square(&x))),
+            f: x.clone() / (sq(&b) + &(sq(&c) * &sq(&x))),
             x: "x",
             peak_name: "c/b",
             b: "c",

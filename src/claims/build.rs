@@ -1,0 +1,85 @@
+//! Small builders of certificates and visibly signed forms ([`PosExpr`]), shared by the claim
+//! files.
+
+use super::{Certificate, PosExpr};
+use crate::field::{RatFn, Sym};
+
+/// The symbols with the given names.
+pub fn syms(names: &[&str]) -> Vec<Sym> {
+    names.iter().map(|n| Sym::new(n)).collect()
+}
+
+/// The positive (or nonnegative) symbol `name` as a [`PosExpr`].
+pub fn ps(name: &str) -> PosExpr {
+    PosExpr::sym(name)
+}
+
+/// The constant `n/d` as a [`PosExpr`].
+pub fn pc(n: i64, d: i64) -> PosExpr {
+    PosExpr::constant(n, d)
+}
+
+/// The product of the factors.
+pub fn prod(factors: impl IntoIterator<Item = PosExpr>) -> PosExpr {
+    PosExpr::product(factors)
+}
+
+/// The sum of the terms.
+pub fn sum(terms: impl IntoIterator<Item = PosExpr>) -> PosExpr {
+    PosExpr::sum(terms)
+}
+
+/// The quotient `num / den`.
+pub fn quot(num: PosExpr, den: PosExpr) -> PosExpr {
+    PosExpr::quotient(num, den)
+}
+
+/// `1 + e`, positive for a restitution e >= 0.
+pub fn one_plus_e() -> PosExpr {
+    sum([pc(1, 1), ps("e")])
+}
+
+/// `D(x) = 1 + m/M + m x^2/I` as a visibly positive form (x may be any real).
+pub fn d_form(x: RatFn) -> PosExpr {
+    sum([
+        pc(1, 1),
+        quot(ps("m"), ps("M")),
+        quot(prod([ps("m"), PosExpr::Square(x)]), ps("I")),
+    ])
+}
+
+/// `M I + m I + m M a^2` (= M I D, and m M I/m_eff) as a visibly positive form (a may be any
+/// real).
+pub fn m_i_d_form() -> PosExpr {
+    sum([
+        prod([ps("M"), ps("I")]),
+        prod([ps("m"), ps("I")]),
+        prod([ps("m"), ps("M"), PosExpr::Square(RatFn::symbol("a"))]),
+    ])
+}
+
+/// A positivity certificate: `expr` (> 0 if `strict`, else >= 0) after the simultaneous
+/// `substitutions` (which parametrise the domain), equal to the visibly signed `form`, with the
+/// symbols `positive` > 0 and `nonnegative` >= 0.
+pub fn positive(
+    title: impl Into<String>,
+    expr: RatFn,
+    strict: bool,
+    substitutions: &[(&str, RatFn)],
+    positive: &[&str],
+    nonnegative: &[&str],
+    form: PosExpr,
+) -> Certificate {
+    Certificate::Positive {
+        title: title.into(),
+        expr,
+        strict,
+        substitutions: substitutions
+            .iter()
+            .map(|(s, v)| (Sym::new(s), v.clone()))
+            .collect(),
+        positive: syms(positive),
+        nonnegative: syms(nonnegative),
+        form,
+    }
+}
