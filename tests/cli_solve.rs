@@ -33,6 +33,13 @@ fn paper_example_m_equals_m_hit_at_the_end() {
     assert_eq!(j["energy"]["before"]["exact"], "1/2");
     assert_eq!(j["energy"]["lost"]["exact"], "0");
     assert!(j.get("pivot_impulse").is_none());
+    // Beyond the contract: placement, threshold, the end-hit ratio and the paper's f(x) form.
+    assert_eq!(j["a_star"]["placement"], "inside");
+    assert_eq!(j["a_star"]["threshold_M"], "2");
+    assert_eq!(j["end_over_max"]["exact"], "2/5*sqrt(6)");
+    assert_eq!(j["gain"]["exact"], "-1 + 5/12*sqrt(6)");
+    assert_eq!(j["paper_form"]["b_squared"], "2/3");
+    assert_eq!(j["paper_form"]["verified"], true);
 }
 
 #[test]

@@ -4,7 +4,7 @@
 use super::value_json;
 use crate::field::{Q, QSqrt};
 use crate::number::{self, Rounding};
-use crate::optimum::{Argmax, Optimum, optimum};
+use crate::optimum::{Argmax, Optimum, PaperForm, Placement, optimum};
 use crate::scene::{RodInertia, Scene, Support};
 use crate::solve::{Outcome, solve};
 use num_traits::{One, Zero};
@@ -41,8 +41,11 @@ impl Solution {
     }
 
     /// The JSON object of `solve --json`: `scene`, `v`, `V`, `omega`, `energy`,
-    /// `pivot_impulse` (pivot only), `residuals` (only the laws that apply), `a_star`,
-    /// `omega_max`, `argmax`. Decimals carry at least 30 significant digits; `a_star`'s
+    /// `pivot_impulse` (pivot only), `residuals` (only the laws that apply), `a_star` (with
+    /// `placement` and `threshold_M`, the rod mass at which a* reaches the end), `omega_max`,
+    /// `argmax`, `omega_end`, `end_over_max` (omega at the end over omega_max), `gain` (what aiming
+    /// at a* gains over the end) and `paper_form` (K, b^2, c of the paper's f(x) argument,
+    /// verified as an identity in a). Decimals carry at least 30 significant digits; `a_star`'s
     /// bounds satisfy upper - lower <= 10^-digits a*.
     ///
     /// # Examples
@@ -94,10 +97,28 @@ impl Solution {
                 "lower": number::decimal_rounded(&lower, digits + 2, Rounding::Floor),
                 "upper": number::decimal_rounded(&upper, digits + 2, Rounding::Ceiling),
                 "within_rod": o.within_rod,
+                "placement": o.placement.as_str(),
+                "threshold_M": o.threshold_mass.as_ref().map(|t| t.to_string()),
             }),
         );
         out.insert("omega_max".into(), surd_json(&o.omega_max, decimal_digits));
         out.insert("argmax".into(), Value::String(o.argmax.as_str().into()));
+        out.insert("omega_end".into(), value(&o.omega_end));
+        out.insert(
+            "end_over_max".into(),
+            surd_json(&o.end_to_max(), decimal_digits),
+        );
+        out.insert("gain".into(), surd_json(&o.gain(), decimal_digits));
+        let form = PaperForm::of(&self.scene);
+        out.insert(
+            "paper_form".into(),
+            json!({
+                "K": form.k.to_string(),
+                "b_squared": form.b_squared.to_string(),
+                "c": form.c.to_string(),
+                "verified": form.verify(&self.scene),
+            }),
+        );
         Value::Object(out)
     }
 
@@ -188,17 +209,43 @@ impl Solution {
             number::surd(&o.squared),
             number::decimal_sqrt(&o.squared, digits),
         );
-        let place = if o.within_rod {
-            format!("yes: {} <= {}", &symbol[..2], o.arm)
-        } else {
-            format!("no: {} > {}", &symbol[..2], o.arm)
+        let star = &symbol[..2];
+        let place = match o.placement {
+            Placement::Inside => format!("inside: {star} < {}", o.arm),
+            Placement::AtEnd => format!("exactly at the end: {star} = {}", o.arm),
+            Placement::Beyond => format!("beyond the end: {star} > {}", o.arm),
         };
         t.row("", "on the rod", place, String::new());
+        let threshold = match &o.threshold_mass {
+            Some(t) => format!("M <= {t}, i.e. M/m <= {}", t / s.m()),
+            None => "never (dumbbell: a* > l for every M)".into(),
+        };
+        t.row("", "on the rod when (this I/M)", threshold, String::new());
         let at = match o.argmax {
             Argmax::AStar => "max |omega|, reached at the optimum",
             Argmax::End => "max |omega|, reached at the end",
         };
         t.row("", at, o.omega_max.to_string(), o.omega_max.decimal(digits));
+        let ratio = o.end_to_max();
+        t.row(
+            "",
+            "omega(end)/omega_max",
+            ratio.to_string(),
+            ratio.decimal(digits),
+        );
+        let form = PaperForm::of(s);
+        let checked = if form.verify(s) {
+            "checked identically in a"
+        } else {
+            "DOES NOT HOLD"
+        };
+        t.row(
+            "",
+            "omega(a) = K x/(b^2 + c^2 x^2)",
+            format!("K = {}, b^2 = {}, c = {}", form.k, form.b_squared, form.c),
+            String::new(),
+        );
+        t.row("", "", checked.to_string(), String::new());
         out.push_str(&t.render());
         out
     }
