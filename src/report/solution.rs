@@ -234,18 +234,27 @@ impl Solution {
             ratio.decimal(digits),
         );
         let form = PaperForm::of(s);
-        let checked = if form.verify(s) {
-            "checked identically in a"
-        } else {
-            "DOES NOT HOLD"
+        let x = match s.support() {
+            Support::Free => "x = a",
+            Support::Pivot(_) => "x = a - p",
         };
         t.row(
-            "",
-            "omega(a) = K x/(b^2 + c^2 x^2)",
-            format!("K = {}, b^2 = {}, c = {}", form.k, form.b_squared, form.c),
+            "K",
+            &format!("omega = K x/(b^2 + c^2 x^2), {x}"),
+            form.k.to_string(),
             String::new(),
         );
-        t.row("", "", checked.to_string(), String::new());
+        let verdict = if form.verify(s) {
+            "identity in x: checked"
+        } else {
+            "identity in x: FAILS"
+        };
+        t.row(
+            "b^2",
+            &format!("c = {}; {verdict}", form.c),
+            form.b_squared.to_string(),
+            String::new(),
+        );
         out.push_str(&t.render());
         out
     }
