@@ -216,6 +216,13 @@ impl Claim {
     ///
     /// # Errors
     /// `claim: ...` for a missing `=` or an unknown name, or the value's own error.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::Claim;
+    /// assert_eq!(Claim::parse("v=2.3 m/s").unwrap().text, "2.3 m/s");
+    /// assert_eq!(Claim::parse("v").unwrap_err().to_string(), "claim: expected NAME=VALUE, got 'v'");
+    /// ```
     pub fn parse(spec: &str) -> Result<Claim, Error> {
         let Some((name, value)) = spec.split_once('=') else {
             return Err(Error::new(
@@ -263,6 +270,13 @@ impl Claim {
     }
 
     /// Whether the value mentions a symbol.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::Claim;
+    /// assert!(!Claim::parse("a_star=sqrt(2/3)").unwrap().is_symbolic());
+    /// assert!(Claim::parse("V=2*m*v0/(M+4*m)").unwrap().is_symbolic());
+    /// ```
     pub fn is_symbolic(&self) -> bool {
         matches!(&self.value, ClaimValue::Formula(r) if r.constant().is_none())
     }
@@ -297,6 +311,14 @@ pub enum Exact {
 ///
 /// # Errors
 /// Bad scene or claim input, naming the field.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::SceneInput, textbook::{check_scene, Claim}};
+/// let s = SceneInput { m: Some("1".into()), rod_mass: Some("1".into()), ..Default::default() };
+/// let r = check_scene(&s, &[Claim::parse("omega=6/5").unwrap()], None).unwrap();
+/// assert!(r.all_agree() && !r.symbolic);
+/// ```
 pub fn check_scene(
     input: &SceneInput,
     claims: &[Claim],

@@ -123,7 +123,7 @@ pub fn parse_problems(label: &str, text: &str) -> Result<Vec<Problem>, Error> {
         let line = e.span().map(|s| {
             format!(
                 "line {}: ",
-                text[..s.start.min(text.len())].lines().count().max(1)
+                text.get(..s.start).unwrap_or(text).matches('\n').count() + 1
             )
         });
         let message = e

@@ -412,23 +412,18 @@ fn printed(d: &mut Decision, m: &Measured, exact: &Exact, omega: bool, sig: Opti
 /// The verdict of a printed value against an exact value known to lie in `[lo, hi]`, or `None`
 /// when the interval is still too wide to decide the rounding.
 fn judge(claim: &Q, p: &Printed, lo: &Q, hi: &Q) -> Option<Verdict> {
-    let round: Box<dyn Fn(&Q, Tie) -> Q> = match &p.precision {
-        Precision::Exact => {
-            return Some(if lo == hi && claim == lo {
-                Verdict::Agrees
-            } else {
-                Verdict::Disagrees
-            });
-        }
-        Precision::ZeroAt { place } => {
-            let place = *place;
-            Box::new(move |x, t| round_at(x, place, t))
-        }
-        Precision::Figures { figures, .. } => {
-            let figures = *figures;
-            Box::new(move |x, t| round_sig(x, figures, t))
-        }
+    let round = |x: &Q, tie: Tie| match &p.precision {
+        Precision::ZeroAt { place } => round_at(x, *place, tie),
+        Precision::Figures { figures, .. } => round_sig(x, *figures, tie),
+        Precision::Exact => x.clone(),
     };
+    if p.precision == Precision::Exact {
+        return Some(if lo == hi && claim == lo {
+            Verdict::Agrees
+        } else {
+            Verdict::Disagrees
+        });
+    }
     let mut accepted = Vec::with_capacity(2);
     for tie in [Tie::Up, Tie::Down] {
         let r = round(lo, tie);
