@@ -43,7 +43,22 @@ pub(crate) fn run_check(args: &CheckArgs) -> Result<(), Failure> {
 
 fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
     let label = path.display().to_string();
-    if !args.claim.is_empty() || args.scene.m.is_some() || args.scene.rod_mass.is_some() {
+    let s = args.scene.input();
+    let scene_given = [
+        &s.m,
+        &s.rod_mass,
+        &s.l,
+        &s.length,
+        &s.a,
+        &s.from_end,
+        &s.v0,
+        &s.rod,
+        &s.e,
+        &s.pivot,
+    ]
+    .iter()
+    .any(|f| f.is_some());
+    if !args.claim.is_empty() || scene_given {
         return Err(Error::new(
             "check",
             ErrorKind::Conflict("give either a problem file or scene flags with --claim".into()),

@@ -78,6 +78,8 @@ pub struct Problem {
     pub id: String,
     /// Citation.
     pub source: String,
+    /// The problem in a sentence, as the source states it.
+    pub statement: Option<String>,
     /// Remarks kept with the problem (what the book did, why an answer is wrong).
     pub note: Option<String>,
     /// Significant figures to use instead of the printed ones.
@@ -147,7 +149,6 @@ pub fn parse_problems(label: &str, text: &str) -> Result<Vec<Problem>, Error> {
 }
 
 fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
-    let _ = &p.statement;
     let id = p.id;
     let at = |field: &str| format!("{label}: problem '{id}': {field}");
     let wrap = |e: Error| Error::new(at(&e.field), e.kind);
@@ -212,6 +213,7 @@ fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
     Ok(Problem {
         id,
         source: p.source,
+        statement: p.statement,
         note: p.note,
         sig: p.sig,
         scene,

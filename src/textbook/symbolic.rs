@@ -105,15 +105,8 @@ fn sym(name: &str) -> Sym {
 }
 
 fn value_of(name: &str, text: &str, dim: Dimension) -> Result<RatFn, Error> {
-    if let Ok(m) = Measured::parse(name, text, dim) {
-        return Ok(RatFn::from_rational(&si_value(name, text, dim).map_err(
-            |_| {
-                Error::new(
-                    name,
-                    ErrorKind::Invalid(format!("bad unit in '{}'", m.printed.value)),
-                )
-            },
-        )?));
+    if Measured::parse(name, text, dim).is_ok() {
+        return Ok(RatFn::from_rational(&si_value(name, text, dim)?));
     }
     let r = expr::parse(name, text)?;
     if !r.is_rational() {
@@ -457,6 +450,7 @@ pub fn check(input: &SceneInput, claims: &[Claim], sig: Option<u32>) -> Result<R
 fn identity(claim: &Claim, c: &Radical, exact: &RatFn, scene: &SymbolicScene) -> Decision {
     let omega = claim.quantity == Quantity::Omega;
     let mut d = Decision::new(claim.quantity.name(), &claim.text, exact.to_string(), None);
+    let mut squares_agree = false;
     if c.is_rational() {
         if (c.coeff.clone() - exact).is_identically_zero() {
             d.verdict = Verdict::Agrees;
@@ -473,6 +467,7 @@ fn identity(claim: &Claim, c: &Radical, exact: &RatFn, scene: &SymbolicScene) ->
     } else if (c.coeff.clone() * &c.coeff * &c.radicand - exact.clone() * exact)
         .is_identically_zero()
     {
+        squares_agree = true;
         d.notes
             .push("the squares agree identically; the sign is taken from a sample scene".into());
     }
@@ -486,7 +481,7 @@ fn identity(claim: &Claim, c: &Radical, exact: &RatFn, scene: &SymbolicScene) ->
             continue;
         }
         let (equal, same_sign) = radical_matches(&cc, &cr, &Exact::Rational(x.clone()));
-        if equal && (same_sign || omega) && !c.is_rational() && d.notes.len() == 1 {
+        if equal && (same_sign || omega) && squares_agree {
             d.verdict = Verdict::Agrees;
             if !same_sign {
                 d.notes.push("opposite sign: compared by magnitude".into());

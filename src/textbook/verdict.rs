@@ -339,21 +339,19 @@ pub fn radical_matches(c: &Q, r: &Q, exact: &Exact) -> (bool, bool) {
             (Some(sq), sign)
         }
         // x + y sqrt(d) with x, y != 0 has an irrational square; c^2 r is rational.
-        Exact::Surd(s) => (None, s.cmp_exact(&QSqrt::rational(Q::zero())).into_sign()),
+        Exact::Surd(s) => (
+            None,
+            ordering_sign(s.cmp_exact(&QSqrt::rational(Q::zero()))),
+        ),
     };
     let equal = exact_sq.is_some_and(|sq| sq == claim_sq);
     let claim_sign = if r.is_zero() { Q::zero() } else { c.signum() };
     (equal, claim_sign == exact_sign || exact_sign.is_zero())
 }
 
-trait IntoSign {
-    fn into_sign(self) -> Q;
-}
-
-impl IntoSign for Ordering {
-    fn into_sign(self) -> Q {
-        Q::from_integer((self as i8).into())
-    }
+/// -1, 0 or 1 for an ordering against zero.
+fn ordering_sign(o: Ordering) -> Q {
+    Q::from_integer((o as i8).into())
 }
 
 fn printed(d: &mut Decision, m: &Measured, exact: &Exact, omega: bool, sig: Option<u32>) {
