@@ -379,7 +379,7 @@ fn printed(d: &mut Decision, m: &Measured, exact: &Exact, omega: bool, sig: Opti
     } else {
         p.value.clone()
     };
-    for digits in [40, 70, 100] {
+    for digits in [40, 100, 400, 1100] {
         let (lo, hi) = enclose(exact, &scale, digits);
         let (lo, hi, negative) = if !omega || !lo.is_negative() {
             (lo, hi, false)
@@ -404,7 +404,7 @@ fn printed(d: &mut Decision, m: &Measured, exact: &Exact, omega: bool, sig: Opti
         return;
     }
     d.notes
-        .push("too close to a rounding tie to decide with 100 decimals of pi".into());
+        .push("not decided: the exact value's bounds (and pi's, to 100 decimals) are too wide for these figures".into());
 }
 
 /// The verdict of a printed value against an exact value known to lie in `[lo, hi]`, or `None`
