@@ -34,6 +34,7 @@ pub mod optimum;
 pub mod report;
 pub mod scene;
 pub mod solve;
+pub mod textbook;
 
 pub use error::{Error, ErrorKind};
 

@@ -30,6 +30,8 @@ enum Command {
     Table(commands::table::TableArgs),
     /// Figures as SVG: omega against a, a* against M/m, or the paper's Figure 1.
     Plot(Box<commands::plot::PlotArgs>),
+    /// Check published answers (printed numbers, fractions, formulas) against the exact ones.
+    Check(Box<commands::check::CheckArgs>),
 }
 
 fn main() -> ExitCode {
@@ -62,6 +64,7 @@ fn main() -> ExitCode {
         Command::Paper(args) => commands::claims::run_paper(args),
         Command::Table(args) => commands::table::run_table(args),
         Command::Plot(args) => commands::plot::run_plot(args),
+        Command::Check(args) => commands::check::run_check(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

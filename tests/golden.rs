@@ -119,3 +119,31 @@ fn figures_match_the_committed_svgs() {
         .collect();
     assert_all(problems);
 }
+
+/// The bundled collection of published problems: every verdict, exact value and note is
+/// committed in `tests/golden/textbook.txt` and `tests/golden/textbook.json`.
+#[test]
+fn textbook_collection_verdicts_match_the_committed_ones() {
+    use rodimpact::textbook::problems::{
+        check_problems, parse_problems, problems_json, problems_text,
+    };
+    let label = "examples/textbook.toml";
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(label);
+    let text = std::fs::read_to_string(path).expect("the bundled collection");
+    let problems = parse_problems(label, &text).expect("the collection parses");
+    assert!(problems.len() >= 12, "at least 12 published problems");
+    let reports = check_problems(label, &problems, None).expect("the collection checks");
+    let json = serde_json::to_string_pretty(&problems_json(&reports)).unwrap() + "\n";
+    let mismatches: Vec<String> = [
+        compare(&golden("textbook.txt"), &problems_text(&reports)),
+        compare(&golden("textbook.json"), &json),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    assert!(
+        mismatches.is_empty(),
+        "{}\n(re-bless with RODIMPACT_BLESS=1 if the change is intended)",
+        mismatches.join("\n")
+    );
+}

@@ -1,0 +1,106 @@
+//! `rodimpact check`: published answers against the exact ones.
+
+use super::{Failure, SceneFlags};
+use clap::Args;
+use rodimpact::textbook::problems::{
+    MAX_CLAIMS, check_problems, parse_problems, problems_json, problems_text,
+};
+use rodimpact::textbook::{Claim, check_scene};
+use rodimpact::{Error, ErrorKind};
+use std::path::PathBuf;
+
+#[derive(Args, Debug)]
+pub(crate) struct CheckArgs {
+    /// A problem collection (TOML) to check instead of one scene.
+    #[arg(value_name = "PROBLEMS.toml")]
+    pub(crate) file: Option<PathBuf>,
+    #[command(flatten)]
+    pub(crate) scene: SceneFlags,
+    /// A claimed answer NAME=VALUE: NAME one of v, V, V_cm, omega, a_star, omega_max,
+    /// energy_before, energy_after, energy_lost, pivot_impulse, impulse; VALUE a number as
+    /// printed (with an optional unit), a fraction, or a formula in m M l L a d v0 e p.
+    #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub(crate) claim: Vec<String>,
+    /// Significant figures to use for every printed claim, instead of the inferred ones.
+    #[arg(long, value_name = "N")]
+    pub(crate) sig: Option<u32>,
+    /// Print JSON instead of the table.
+    #[arg(long)]
+    pub(crate) json: bool,
+}
+
+pub(crate) fn run_check(args: &CheckArgs) -> Result<(), Failure> {
+    let all_agree = match &args.file {
+        Some(path) => check_file(args, path)?,
+        None => check_flags(args)?,
+    };
+    if all_agree {
+        Ok(())
+    } else {
+        Err(Failure::Check)
+    }
+}
+
+fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
+    let label = path.display().to_string();
+    let s = args.scene.input();
+    let scene_given = [
+        &s.m,
+        &s.rod_mass,
+        &s.l,
+        &s.length,
+        &s.a,
+        &s.from_end,
+        &s.v0,
+        &s.rod,
+        &s.e,
+        &s.pivot,
+    ]
+    .iter()
+    .any(|f| f.is_some());
+    if !args.claim.is_empty() || scene_given {
+        return Err(Error::new(
+            "check",
+            ErrorKind::Conflict("give either a problem file or scene flags with --claim".into()),
+        ));
+    }
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Error::new(label.as_str(), ErrorKind::Io(format!("cannot read: {e}"))))?;
+    let problems = parse_problems(&label, &text)?;
+    let reports = check_problems(&label, &problems, args.sig)?;
+    if args.json {
+        println!("{}", pretty(&problems_json(&reports)));
+    } else {
+        print!("{}", problems_text(&reports));
+    }
+    Ok(reports.iter().all(|r| r.report.all_agree()))
+}
+
+fn check_flags(args: &CheckArgs) -> Result<bool, Error> {
+    if args.claim.is_empty() {
+        return Err(Error::new("claim", ErrorKind::Missing));
+    }
+    if args.claim.len() > MAX_CLAIMS {
+        return Err(Error::out_of_range(
+            "claim",
+            format!("more than {MAX_CLAIMS} claims (limit)"),
+        ));
+    }
+    let claims = args
+        .claim
+        .iter()
+        .map(|c| Claim::parse(c))
+        .collect::<Result<Vec<_>, _>>()?;
+    let report = check_scene(&args.scene.input(), &claims, args.sig)?;
+    if args.json {
+        println!("{}", pretty(&report.to_json()));
+    } else {
+        print!("{}", report.to_text());
+        println!("{}", report.summary());
+    }
+    Ok(report.all_agree())
+}
+
+fn pretty(v: &serde_json::Value) -> String {
+    serde_json::to_string_pretty(v).expect("JSON of strings and numbers")
+}

@@ -1,0 +1,489 @@
+//! Symbolic answers: a small expression grammar evaluated exactly into `c * sqrt(r)` with `c`
+//! and `r` rational functions ([`RatFn`]).
+//!
+//! Grammar: `+ - * /`, `^` with an integer exponent, parentheses, `sqrt(...)`, numbers (as
+//! [`crate::number::parse`] reads them) and the symbols `m M l L a d v0 e p`. There is no
+//! implicit multiplication (`2m` is an error; write `2*m`). Inputs longer than [`MAX_LEN`]
+//! characters or nested deeper than [`MAX_DEPTH`] are refused before any deep recursion, and
+//! intermediate results are capped ([`MAX_DEGREE`], [`MAX_TERMS`]) so no input runs for ever.
+
+use crate::error::{Error, ErrorKind};
+use crate::field::{Field, Q, RatFn};
+use crate::number;
+use num_bigint::BigInt;
+use num_traits::{One, Signed, Zero};
+
+/// The longest accepted expression, in characters.
+pub const MAX_LEN: usize = 10_000;
+/// The deepest accepted nesting of parentheses, signs and powers.
+pub const MAX_DEPTH: usize = 200;
+/// The largest accepted |exponent| after `^`.
+pub const MAX_EXPONENT: i64 = 64;
+/// The largest total degree of any intermediate polynomial.
+pub const MAX_DEGREE: u32 = 64;
+/// The most terms of any intermediate polynomial.
+pub const MAX_TERMS: usize = 2_000;
+
+/// The symbols an expression may use.
+pub const SYMBOLS: [&str; 9] = ["m", "M", "l", "L", "a", "d", "v0", "e", "p"];
+
+/// An exact value `coeff * sqrt(radicand)`; rational when `radicand` is 1.
+///
+/// # Examples
+/// ```
+/// use rodimpact::textbook::expr::parse;
+/// let r = parse("claim", "2*sqrt(m/3)").unwrap();
+/// assert_eq!((r.coeff.to_string(), r.radicand.to_string()), ("2".into(), "1/3*m".into()));
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Radical {
+    /// The rational factor.
+    pub coeff: RatFn,
+    /// The radicand (1 for a rational value).
+    pub radicand: RatFn,
+}
+
+impl Radical {
+    /// A rational value.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::expr::Radical;
+    /// use rodimpact::field::RatFn;
+    /// assert!(Radical::rational(RatFn::symbol("m")).is_rational());
+    /// ```
+    pub fn rational(coeff: RatFn) -> Radical {
+        Radical {
+            coeff,
+            radicand: RatFn::one(),
+        }
+    }
+
+    /// Whether the value has no square root left.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::expr::parse;
+    /// assert!(parse("x", "sqrt(4)").unwrap().is_rational());
+    /// assert!(!parse("x", "sqrt(2)").unwrap().is_rational());
+    /// ```
+    pub fn is_rational(&self) -> bool {
+        self.radicand.is_one() || self.coeff.is_zero()
+    }
+
+    /// Applies `f` to both parts (substitution); `None` when a denominator vanishes.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::expr::parse;
+    /// use rodimpact::field::{RatFn, Sym};
+    /// let r = parse("x", "m*sqrt(m)").unwrap();
+    /// let s = r.map(|f| f.subs(Sym::new("m"), &RatFn::from(4))).unwrap();
+    /// assert_eq!(s.coeff.to_string(), "8");
+    /// ```
+    pub fn map(&self, f: impl Fn(&RatFn) -> Option<RatFn>) -> Option<Radical> {
+        Some(simplify(f(&self.coeff)?, f(&self.radicand)?))
+    }
+
+    /// Whether `sym` occurs.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::expr::parse;
+    /// use rodimpact::field::Sym;
+    /// assert!(parse("x", "sqrt(p)").unwrap().mentions(Sym::new("p")));
+    /// ```
+    pub fn mentions(&self, sym: crate::field::Sym) -> bool {
+        self.coeff.symbols().contains(&sym) || self.radicand.symbols().contains(&sym)
+    }
+
+    /// The constant value as `(c, r)` meaning `c * sqrt(r)`, when no symbol is left.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::expr::parse;
+    /// use rodimpact::field::q;
+    /// assert_eq!(parse("x", "sqrt(8)/2").unwrap().constant(), Some((q(1, 1), q(2, 1))));
+    /// ```
+    pub fn constant(&self) -> Option<(Q, Q)> {
+        Some((self.coeff.as_constant()?, self.radicand.as_constant()?))
+    }
+}
+
+impl std::fmt::Display for Radical {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.is_rational() {
+            write!(f, "{}", self.coeff)
+        } else if self.coeff.is_one() {
+            write!(f, "sqrt({})", self.radicand)
+        } else {
+            write!(f, "({})*sqrt({})", self.coeff, self.radicand)
+        }
+    }
+}
+
+/// Parses and evaluates an expression; symbols stay symbols (`L` and `d` included: the caller
+/// knows what they stand for in its scene).
+///
+/// # Errors
+/// `field: ...` for a syntax error (with the position), an unknown symbol, a division by zero,
+/// a sum of different square roots, nested roots, or a resource limit.
+///
+/// # Examples
+/// ```
+/// use rodimpact::textbook::expr::parse;
+/// let r = parse("omega", "12*m*v0/((M+4*m)*L)").unwrap();
+/// assert_eq!(r.to_string(), "12*m*v0/(L*M + 4*L*m)");
+/// assert!(parse("omega", "2m").is_err());
+/// assert!(parse("omega", &"(".repeat(100_000)).is_err());
+/// ```
+pub fn parse(field: &str, text: &str) -> Result<Radical, Error> {
+    if text.chars().count() > MAX_LEN {
+        return Err(invalid(
+            field,
+            format!("expression longer than {MAX_LEN} characters (limit)"),
+        ));
+    }
+    let mut p = Parser {
+        field,
+        chars: text.chars().collect(),
+        pos: 0,
+        depth: 0,
+    };
+    let value = p.expr()?;
+    p.skip_space();
+    if p.pos < p.chars.len() {
+        return Err(p.error("expected an operator"));
+    }
+    Ok(value)
+}
+
+fn invalid(field: &str, why: String) -> Error {
+    Error::new(field, ErrorKind::Invalid(why))
+}
+
+struct Parser<'a> {
+    field: &'a str,
+    chars: Vec<char>,
+    pos: usize,
+    depth: usize,
+}
+
+impl Parser<'_> {
+    fn error(&self, why: &str) -> Error {
+        let found = match self.chars.get(self.pos) {
+            Some(c) => format!("'{c}'"),
+            None => "the end".to_string(),
+        };
+        invalid(
+            self.field,
+            format!(
+                "{why} at character {} (found {found}) in expression",
+                self.pos + 1
+            ),
+        )
+    }
+
+    fn skip_space(&mut self) {
+        while self.chars.get(self.pos).is_some_and(|c| c.is_whitespace()) {
+            self.pos += 1;
+        }
+    }
+
+    fn peek(&mut self) -> Option<char> {
+        self.skip_space();
+        self.chars.get(self.pos).copied()
+    }
+
+    fn enter(&mut self) -> Result<(), Error> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            Err(invalid(
+                self.field,
+                format!("expression nested deeper than {MAX_DEPTH} levels (limit)"),
+            ))
+        } else {
+            Ok(())
+        }
+    }
+
+    fn expr(&mut self) -> Result<Radical, Error> {
+        let mut value = self.term()?;
+        while let Some(op @ ('+' | '-')) = self.peek() {
+            self.pos += 1;
+            let rhs = self.term()?;
+            let rhs = if op == '-' { neg(rhs) } else { rhs };
+            value = self.checked(add(value, rhs))?;
+        }
+        Ok(value)
+    }
+
+    fn term(&mut self) -> Result<Radical, Error> {
+        let mut value = self.unary()?;
+        while let Some(op @ ('*' | '/')) = self.peek() {
+            self.pos += 1;
+            let rhs = self.unary()?;
+            value = if op == '*' {
+                self.checked(Ok(mul(value, rhs)))?
+            } else {
+                if rhs.coeff.is_zero() {
+                    return Err(Error::new(self.field, ErrorKind::DivisionByZero));
+                }
+                self.checked(Ok(mul(value, inverse(rhs))))?
+            };
+        }
+        Ok(value)
+    }
+
+    fn unary(&mut self) -> Result<Radical, Error> {
+        match self.peek() {
+            Some(op @ ('-' | '+')) => {
+                self.pos += 1;
+                self.enter()?;
+                let value = self.unary()?;
+                self.depth -= 1;
+                Ok(if op == '-' { neg(value) } else { value })
+            }
+            _ => self.power(),
+        }
+    }
+
+    fn power(&mut self) -> Result<Radical, Error> {
+        let base = self.atom()?;
+        if self.peek() != Some('^') {
+            return Ok(base);
+        }
+        self.pos += 1;
+        let n = self.exponent()?;
+        if n < 0 && base.coeff.is_zero() {
+            return Err(Error::new(self.field, ErrorKind::DivisionByZero));
+        }
+        let mut result = Radical::rational(RatFn::one());
+        for _ in 0..n.unsigned_abs() {
+            result = self.checked(Ok(mul(result, base.clone())))?;
+        }
+        Ok(if n < 0 { inverse(result) } else { result })
+    }
+
+    /// An integer exponent: `2`, `-1`, `(-1)`.
+    fn exponent(&mut self) -> Result<i64, Error> {
+        let paren = self.peek() == Some('(');
+        if paren {
+            self.pos += 1;
+        }
+        let negative = self.peek() == Some('-');
+        if negative {
+            self.pos += 1;
+        }
+        self.skip_space();
+        let start = self.pos;
+        while self.chars.get(self.pos).is_some_and(char::is_ascii_digit) {
+            self.pos += 1;
+        }
+        let digits: String = self.chars[start..self.pos].iter().collect();
+        let n: i64 = match digits.parse::<i64>() {
+            Ok(n) if n <= MAX_EXPONENT => n,
+            Ok(_) | Err(_) if !digits.is_empty() => {
+                return Err(invalid(
+                    self.field,
+                    format!("exponent beyond +-{MAX_EXPONENT} (limit)"),
+                ));
+            }
+            _ => return Err(self.error("expected an integer exponent")),
+        };
+        if paren {
+            if self.peek() != Some(')') {
+                return Err(self.error("expected ')'"));
+            }
+            self.pos += 1;
+        }
+        Ok(if negative { -n } else { n })
+    }
+
+    fn atom(&mut self) -> Result<Radical, Error> {
+        match self.peek() {
+            Some('(') => {
+                self.pos += 1;
+                self.enter()?;
+                let value = self.expr()?;
+                if self.peek() != Some(')') {
+                    return Err(self.error("expected ')'"));
+                }
+                self.pos += 1;
+                self.depth -= 1;
+                Ok(value)
+            }
+            Some(c) if c.is_ascii_digit() || c == '.' => self.number(),
+            Some(c) if c.is_ascii_alphabetic() => self.name(),
+            _ => Err(self.error("expected a number, a symbol or '('")),
+        }
+    }
+
+    fn number(&mut self) -> Result<Radical, Error> {
+        let start = self.pos;
+        while self
+            .chars
+            .get(self.pos)
+            .is_some_and(|c| c.is_ascii_digit() || *c == '.')
+        {
+            self.pos += 1;
+        }
+        // An exponent only when digits follow: `2e3`, `2e-3`; `2e` is 2 then the symbol e.
+        if matches!(self.chars.get(self.pos), Some('e' | 'E')) {
+            let mut k = self.pos + 1;
+            if matches!(self.chars.get(k), Some('+' | '-')) {
+                k += 1;
+            }
+            if self.chars.get(k).is_some_and(char::is_ascii_digit) {
+                self.pos = k;
+                while self.chars.get(self.pos).is_some_and(char::is_ascii_digit) {
+                    self.pos += 1;
+                }
+            }
+        }
+        let text: String = self.chars[start..self.pos].iter().collect();
+        let value = number::parse(&text).map_err(|kind| Error::new(self.field, kind))?;
+        Ok(Radical::rational(RatFn::from_rational(&value)))
+    }
+
+    fn name(&mut self) -> Result<Radical, Error> {
+        let start = self.pos;
+        while self
+            .chars
+            .get(self.pos)
+            .is_some_and(|c| c.is_ascii_alphanumeric() || *c == '_')
+        {
+            self.pos += 1;
+        }
+        let name: String = self.chars[start..self.pos].iter().collect();
+        if name == "sqrt" {
+            if self.peek() != Some('(') {
+                return Err(self.error("expected '(' after sqrt"));
+            }
+            let arg = self.atom()?;
+            return self.checked(sqrt(arg));
+        }
+        if SYMBOLS.contains(&name.as_str()) {
+            Ok(Radical::rational(RatFn::symbol(&name)))
+        } else {
+            self.pos = start;
+            Err(invalid(
+                self.field,
+                format!(
+                    "unknown symbol '{}' at character {} (symbols: m M l L a d v0 e p, function sqrt)",
+                    name.chars().take(20).collect::<String>(),
+                    start + 1
+                ),
+            ))
+        }
+    }
+
+    fn checked(&self, value: Result<Radical, String>) -> Result<Radical, Error> {
+        let value = value.map_err(|why| invalid(self.field, why))?;
+        let polys = [
+            value.coeff.num(),
+            value.coeff.den(),
+            value.radicand.num(),
+            value.radicand.den(),
+        ];
+        if polys
+            .iter()
+            .any(|p| p.total_degree() > MAX_DEGREE || p.terms().count() > MAX_TERMS)
+        {
+            return Err(invalid(
+                self.field,
+                format!(
+                    "expression too large (a polynomial beyond degree {MAX_DEGREE} or {MAX_TERMS} terms)"
+                ),
+            ));
+        }
+        Ok(value)
+    }
+}
+
+fn neg(x: Radical) -> Radical {
+    Radical {
+        coeff: -x.coeff,
+        radicand: x.radicand,
+    }
+}
+
+fn add(x: Radical, y: Radical) -> Result<Radical, String> {
+    if x.coeff.is_zero() {
+        Ok(y)
+    } else if y.coeff.is_zero() {
+        Ok(x)
+    } else if x.radicand == y.radicand {
+        Ok(simplify(x.coeff + &y.coeff, x.radicand))
+    } else {
+        Err("sums of different square roots are not supported".into())
+    }
+}
+
+fn mul(x: Radical, y: Radical) -> Radical {
+    if x.radicand == y.radicand {
+        Radical::rational(x.coeff * &y.coeff * &x.radicand)
+    } else {
+        simplify(x.coeff * &y.coeff, x.radicand * &y.radicand)
+    }
+}
+
+/// `1 / (c sqrt r) = (1 / (c r)) sqrt r`; the caller has excluded zero.
+fn inverse(x: Radical) -> Radical {
+    let denominator = x.coeff * &x.radicand;
+    Radical {
+        coeff: RatFn::one() / denominator,
+        radicand: x.radicand,
+    }
+}
+
+fn sqrt(x: Radical) -> Result<Radical, String> {
+    if !x.is_rational() {
+        return Err("nested square roots are not supported".into());
+    }
+    if let Some(c) = x.coeff.as_constant()
+        && c.is_negative()
+    {
+        return Err(format!("square root of the negative number {c}"));
+    }
+    Ok(simplify(RatFn::one(), x.coeff))
+}
+
+/// Normal form: zero has radicand 1, and a constant radicand loses its square factors.
+fn simplify(coeff: RatFn, radicand: RatFn) -> Radical {
+    if coeff.is_zero() || radicand.is_one() {
+        return Radical::rational(coeff);
+    }
+    if let Some(r) = radicand.as_constant()
+        && !r.is_negative()
+    {
+        let (n, d) = (r.numer().clone(), r.denom().clone());
+        // sqrt(n/d) = sqrt(n d) / d; pull the largest square factor out of small n d.
+        let nd = n * &d;
+        let root = nd.sqrt();
+        if &root * &root == nd {
+            let value = Q::new(root, d);
+            return Radical::rational(coeff * &RatFn::from_rational(&value));
+        }
+        let (outside, inside) = square_part(nd);
+        let factor = Q::new(outside, d);
+        return Radical {
+            coeff: coeff * &RatFn::from_rational(&factor),
+            radicand: RatFn::from_rational(&Q::from_integer(inside)),
+        };
+    }
+    Radical { coeff, radicand }
+}
+
+/// `n = outside^2 * inside`, taking out the squares of the primes below 1000.
+fn square_part(mut n: BigInt) -> (BigInt, BigInt) {
+    let mut outside = BigInt::one();
+    for k in 2u32..1000 {
+        let k2 = BigInt::from(k * k);
+        while (&n % &k2).is_zero() {
+            n /= &k2;
+            outside *= k;
+        }
+    }
+    (outside, n)
+}

@@ -1,0 +1,323 @@
+//! Problem collections: TOML files of published problems and their printed answers.
+//!
+//! ```toml
+//! [[problem]]
+//! id = "disc-and-stick"
+//! source = "book, edition, chapter, problem number, or the page address"
+//! sig = 3                      # optional: overrides the printed significant figures
+//! [problem.given]
+//! m = "2.0 kg"                 # numbers are strings, so "2.0" keeps its figures
+//! M = "1.0 kg"
+//! length = "4.0 m"             # or l (half-length)
+//! from_end = "0 m"             # or a (from the centre)
+//! v0 = "3.0 m/s"
+//! rod = "uniform"              # dumbbell, rg=..., I=...
+//! collision = "elastic"        # inelastic / sticking, or e = "0.5"
+//! pivot = "-2.0 m"             # optional, signed from the centre
+//! [problem.claims]
+//! v = "2.3 m/s"
+//! ```
+//! Unknown keys are errors naming the key.
+
+use super::{Claim, Report, check_scene};
+use crate::error::{Error, ErrorKind};
+use crate::scene::SceneInput;
+use serde::Deserialize;
+use serde_json::{Value, json};
+use std::fmt::Write as _;
+
+/// The largest accepted problem file, in bytes.
+pub const MAX_FILE_BYTES: usize = 1 << 20;
+/// The most problems in one file.
+pub const MAX_PROBLEMS: usize = 1_000;
+/// The most claims in one problem (or on one command line).
+pub const MAX_CLAIMS: usize = 100;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileDoc {
+    problem: Vec<ProblemDoc>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ProblemDoc {
+    id: String,
+    source: String,
+    #[serde(default)]
+    statement: Option<String>,
+    #[serde(default)]
+    note: Option<String>,
+    #[serde(default)]
+    sig: Option<u32>,
+    given: GivenDoc,
+    claims: toml::Table,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct GivenDoc {
+    m: Option<String>,
+    #[serde(rename = "M")]
+    rod_mass: Option<String>,
+    l: Option<String>,
+    length: Option<String>,
+    a: Option<String>,
+    from_end: Option<String>,
+    v0: Option<String>,
+    rod: Option<String>,
+    e: Option<String>,
+    collision: Option<String>,
+    pivot: Option<String>,
+}
+
+/// One published problem: where it is from, its scene, its printed answers.
+#[derive(Debug, Clone)]
+pub struct Problem {
+    /// Short id.
+    pub id: String,
+    /// Citation.
+    pub source: String,
+    /// The problem in a sentence, as the source states it.
+    pub statement: Option<String>,
+    /// Remarks kept with the problem (what the book did, why an answer is wrong).
+    pub note: Option<String>,
+    /// Significant figures to use instead of the printed ones.
+    pub sig: Option<u32>,
+    /// The scene as given.
+    pub scene: SceneInput,
+    /// The printed answers.
+    pub claims: Vec<Claim>,
+}
+
+/// Parses a problem file; `label` (the path) starts every error message.
+///
+/// # Errors
+/// TOML syntax, unknown keys, wrong value types (with line and key), a value that is not a
+/// number, unit or formula, an unknown claim name, or a limit.
+///
+/// # Examples
+/// ```
+/// use rodimpact::textbook::problems::parse_problems;
+/// let text = r#"
+/// [[problem]]
+/// id = "p1"
+/// source = "test"
+/// [problem.given]
+/// m = "1"
+/// M = "1"
+/// [problem.claims]
+/// omega = "6/5"
+/// "#;
+/// assert_eq!(parse_problems("t.toml", text).unwrap()[0].claims.len(), 1);
+/// let bad = text.replace("source", "sorce");
+/// let err = parse_problems("t.toml", &bad).unwrap_err().to_string();
+/// assert!(err.starts_with("t.toml: line 4: unknown field `sorce`"), "{err}");
+/// ```
+pub fn parse_problems(label: &str, text: &str) -> Result<Vec<Problem>, Error> {
+    if text.len() > MAX_FILE_BYTES {
+        return Err(Error::out_of_range(
+            label,
+            format!("file larger than {MAX_FILE_BYTES} bytes (limit)"),
+        ));
+    }
+    let doc: FileDoc = toml::from_str(text).map_err(|e| {
+        let line = e.span().map(|s| {
+            format!(
+                "line {}: ",
+                text.get(..s.start).unwrap_or(text).matches('\n').count() + 1
+            )
+        });
+        let message = e
+            .message()
+            .lines()
+            .next()
+            .unwrap_or("invalid TOML")
+            .to_string();
+        Error::new(
+            label,
+            ErrorKind::Invalid(format!("{}{message}", line.unwrap_or_default())),
+        )
+    })?;
+    if doc.problem.len() > MAX_PROBLEMS {
+        return Err(Error::out_of_range(
+            label,
+            format!("more than {MAX_PROBLEMS} problems (limit)"),
+        ));
+    }
+    doc.problem.into_iter().map(|p| problem(label, p)).collect()
+}
+
+fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
+    let id = p.id;
+    let at = |field: &str| format!("{label}: problem '{id}': {field}");
+    let wrap = |e: Error| Error::new(at(&e.field), e.kind);
+    if let Some(n) = p.sig {
+        super::sigfig::check_sig(n).map_err(wrap)?;
+    }
+    let g = p.given;
+    let e = match (g.e, g.collision.as_deref()) {
+        (Some(_), Some(_)) => {
+            return Err(Error::new(
+                at("given.collision"),
+                ErrorKind::Conflict("give either e or collision, not both".into()),
+            ));
+        }
+        (e, None) => e,
+        (None, Some("elastic")) => Some("1".into()),
+        (None, Some("inelastic" | "sticking")) => Some("0".into()),
+        (None, Some(other)) => {
+            return Err(Error::new(
+                at("given.collision"),
+                ErrorKind::Invalid(format!(
+                    "expected elastic, inelastic or sticking, got '{}'",
+                    other.chars().take(40).collect::<String>()
+                )),
+            ));
+        }
+    };
+    let scene = SceneInput {
+        m: g.m,
+        rod_mass: g.rod_mass,
+        l: g.l,
+        length: g.length,
+        a: g.a,
+        from_end: g.from_end,
+        v0: g.v0,
+        rod: g.rod,
+        e,
+        pivot: g.pivot,
+    };
+    if p.claims.is_empty() || p.claims.len() > MAX_CLAIMS {
+        return Err(Error::out_of_range(
+            at("claims"),
+            format!("give 1 to {MAX_CLAIMS} claims"),
+        ));
+    }
+    let mut claims = Vec::with_capacity(p.claims.len());
+    for (name, value) in &p.claims {
+        let Some(text) = value.as_str() else {
+            return Err(Error::new(
+                at(&format!("claims.{name}")),
+                ErrorKind::Invalid(
+                    "write the value as a string (\"1.50\"), so its significant figures survive"
+                        .into(),
+                ),
+            ));
+        };
+        claims.push(
+            Claim::new(name, text)
+                .map_err(|e| Error::new(at(&format!("claims.{name}")), e.kind))?,
+        );
+    }
+    Ok(Problem {
+        id,
+        source: p.source,
+        statement: p.statement,
+        note: p.note,
+        sig: p.sig,
+        scene,
+        claims,
+    })
+}
+
+/// The verdicts for one problem.
+#[derive(Debug, Clone)]
+pub struct ProblemReport {
+    /// The problem checked.
+    pub problem: Problem,
+    /// Its claims' decisions.
+    pub report: Report,
+}
+
+/// Checks every problem; `sig` (if given) overrides each problem's figures.
+///
+/// # Errors
+/// The first problem whose scene or claims are bad input, naming the problem and field.
+///
+/// # Examples
+/// ```
+/// use rodimpact::textbook::problems::{parse_problems, check_problems};
+/// let text = "[[problem]]\nid = \"p\"\nsource = \"s\"\n[problem.given]\nm = \"1\"\nM = \"1\"\n[problem.claims]\nomega = \"6/5\"\n";
+/// let reports = check_problems("t.toml", &parse_problems("t.toml", text).unwrap(), None).unwrap();
+/// assert!(reports[0].report.all_agree());
+/// ```
+pub fn check_problems(
+    label: &str,
+    problems: &[Problem],
+    sig: Option<u32>,
+) -> Result<Vec<ProblemReport>, Error> {
+    problems
+        .iter()
+        .map(|p| {
+            let report = check_scene(&p.scene, &p.claims, sig.or(p.sig)).map_err(|e| {
+                Error::new(format!("{label}: problem '{}': {}", p.id, e.field), e.kind)
+            })?;
+            Ok(ProblemReport {
+                problem: p.clone(),
+                report,
+            })
+        })
+        .collect()
+}
+
+fn totals(reports: &[ProblemReport]) -> (usize, usize) {
+    reports.iter().fold((0, 0), |(a, t), r| {
+        (a + r.report.agreeing(), t + r.report.decisions.len())
+    })
+}
+
+/// The text report: one section per problem, then the summary.
+///
+/// # Examples
+/// ```
+/// assert_eq!(rodimpact::textbook::problems::problems_text(&[]), "0 problems; 0 of 0 claims agree\n");
+/// ```
+pub fn problems_text(reports: &[ProblemReport]) -> String {
+    let mut out = String::new();
+    for r in reports {
+        let _ = writeln!(out, "{}  ({})", r.problem.id, r.problem.source);
+        out.push_str(&r.report.to_text());
+        if let Some(note) = &r.problem.note {
+            let _ = writeln!(out, "  about: {note}");
+        }
+        let _ = writeln!(out, "  {}\n", r.report.summary());
+    }
+    let (agree, total) = totals(reports);
+    let wrong: Vec<&str> = reports
+        .iter()
+        .filter(|r| !r.report.all_agree())
+        .map(|r| r.problem.id.as_str())
+        .collect();
+    let _ = write!(
+        out,
+        "{} problems; {}",
+        reports.len(),
+        super::verdict::summary_line(agree, total)
+    );
+    if !wrong.is_empty() {
+        let _ = write!(out, " (disagreements in: {})", wrong.join(", "));
+    }
+    out.push('\n');
+    out
+}
+
+/// The JSON report: `{"problems": [...], "summary": {...}}`.
+///
+/// # Examples
+/// ```
+/// let j = rodimpact::textbook::problems::problems_json(&[]);
+/// assert_eq!(j["summary"]["claims"], 0);
+/// ```
+pub fn problems_json(reports: &[ProblemReport]) -> Value {
+    let (agree, total) = totals(reports);
+    json!({
+        "problems": reports.iter().map(|r| {
+            let mut j = r.report.to_json();
+            j["id"] = json!(r.problem.id);
+            j["source"] = json!(r.problem.source);
+            j
+        }).collect::<Vec<_>>(),
+        "summary": super::verdict::summary_json(agree, total),
+    })
+}
