@@ -28,6 +28,7 @@
 pub mod claims;
 pub mod error;
 pub mod field;
+pub mod float;
 pub mod mechanics;
 pub mod number;
 pub mod optimum;
