@@ -35,6 +35,7 @@ pub mod optimum;
 pub mod report;
 pub mod scene;
 pub mod solve;
+pub mod stability;
 
 pub use error::{Error, ErrorKind};
 
