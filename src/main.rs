@@ -30,6 +30,8 @@ enum Command {
     Table(commands::table::TableArgs),
     /// Figures as SVG: omega against a, a* against M/m, or the paper's Figure 1.
     Plot(Box<commands::plot::PlotArgs>),
+    /// Float error against run time for every backend and formula on the stiff/extreme suite.
+    Stability(commands::stability::StabilityArgs),
 }
 
 fn main() -> ExitCode {
@@ -62,6 +64,7 @@ fn main() -> ExitCode {
         Command::Paper(args) => commands::claims::run_paper(args),
         Command::Table(args) => commands::table::run_table(args),
         Command::Plot(args) => commands::plot::run_plot(args),
+        Command::Stability(args) => commands::stability::run_stability(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -160,7 +160,7 @@ impl Div<&Interval> for Interval {
             return Interval::new(f64::NEG_INFINITY, f64::INFINITY);
         }
         let inverse = Interval::outward(1.0 / rhs.hi, 1.0 / rhs.lo);
-        self * &inverse
+        self * inverse
     }
 }
 

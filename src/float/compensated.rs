@@ -14,15 +14,15 @@ struct Double<T> {
 
 /// `a + b = s + t` exactly (Knuth's TwoSum).
 fn two_sum<T: Real>(a: T, b: T) -> (T, T) {
-    let s = a + &b;
-    let bb = s - &a;
-    let t = (a - &(s - &bb)) + &(b - &bb);
+    let s = a + b;
+    let bb = s - a;
+    let t = (a - (s - bb)) + (b - bb);
     (s, t)
 }
 
 /// `a b = p + t` exactly (fma TwoProd).
 fn two_prod<T: Real>(a: T, b: T) -> (T, T) {
-    let p = a * &b;
+    let p = a * b;
     (p, a.mul_add(b, -p))
 }
 
@@ -62,14 +62,14 @@ impl<T: Real> Double<T> {
     fn mul(self, b: Ext<T>) -> Double<T> {
         let (fb, kb) = b.parts();
         let (p, t) = two_prod(self.hi, fb);
-        Double::normalised(p, t + &(self.lo * &fb), self.k + kb)
+        Double::normalised(p, t + (self.lo * fb), self.k + kb)
     }
 
     fn div(self, b: Ext<T>) -> Double<T> {
         let (fb, kb) = b.parts();
         let q = self.hi / fb;
         // hi - q fb is exact (fma); the remainder over fb is the next word.
-        let remainder = (-q).mul_add(fb, self.hi) + &self.lo;
+        let remainder = (-q).mul_add(fb, self.hi) + self.lo;
         Double::normalised(q, remainder / fb, self.k - kb)
     }
 
@@ -86,11 +86,11 @@ impl<T: Real> Double<T> {
             return big;
         }
         let (s, t) = two_sum(big.hi, small.hi.ldexp(-gap));
-        Double::normalised(s, t + &big.lo + &small.lo.ldexp(-gap), big.k)
+        Double::normalised(s, t + big.lo + small.lo.ldexp(-gap), big.k)
     }
 
     fn value(self) -> Ext<T> {
-        Ext::from_parts(self.hi + &self.lo, self.k)
+        Ext::from_parts(self.hi + self.lo, self.k)
     }
 }
 

@@ -77,7 +77,7 @@ impl<T: Real> Ext<T> {
 impl<T: Real> Mul for Ext<T> {
     type Output = Ext<T>;
     fn mul(self, rhs: Ext<T>) -> Ext<T> {
-        Ext::from_parts(self.f * &rhs.f, self.k + rhs.k)
+        Ext::from_parts(self.f * rhs.f, self.k + rhs.k)
     }
 }
 
@@ -118,7 +118,7 @@ impl<T: Real> Add for Ext<T> {
         if gap > T::PRECISION as i32 + 2 {
             return big;
         }
-        Ext::from_parts(big.f + &small.f.ldexp(-gap), big.k)
+        Ext::from_parts(big.f + small.f.ldexp(-gap), big.k)
     }
 }
 

@@ -92,7 +92,7 @@ macro_rules! real {
                     return self;
                 }
                 // 2^j for j in the normal exponent range, exactly.
-                let pow2 = |j: i32| <$t>::from_bits((((j + $bias) as $bits) << MANT));
+                let pow2 = |j: i32| <$t>::from_bits(((j + $bias) as $bits) << MANT);
                 let target = e.saturating_add(k); // self 2^k = f 2^target, f in [0.5, 1)
                 let min_normal = 2 - $bias; // exponent of the smallest normal, as f 2^target
                 if target > $bias + 1 {

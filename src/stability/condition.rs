@@ -18,8 +18,8 @@ use num_traits::{One, Signed, Zero};
 /// use rodimpact::{scene::Scene, field::{q, Q}, stability::condition};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?; // r = 1, s = 3/4
 /// let c = condition(&s.params::<Q>(), false);
-/// assert_eq!(c.rod_v, Some(q(27, 11)));  // 1 + 5/(11/4)
-/// assert_eq!(c.omega, Some(q(25, 11)));  // 1 + (4 + 5/4)/(11/4)
+/// assert_eq!(c.rod_v, Some(q(31, 11))); // 1 + (2 + 3)/(11/4)
+/// assert_eq!(c.omega, Some(q(32, 11))); // 1 + (2 + 2 + 5/4)/(11/4)
 /// let stop = Scene::builder(q(4, 7), q(1, 1)).a(q(1, 2)).build()?; // q = 1 = e
 /// assert_eq!(condition(&stop.params::<Q>(), false).v, None);
 /// # Ok::<(), rodimpact::Error>(())

@@ -47,7 +47,7 @@ impl Measured {
     pub fn of<T: Real>(x: T, exact: &Q, cond: Option<&Q>, u: &Q) -> Measured {
         match x.to_exact() {
             None if x.finite() => unreachable!("finite floats are rationals"),
-            None if x != x => Measured::undefined(Class::Nan),
+            None if x.sign().is_none() => Measured::undefined(Class::Nan),
             None => Measured::undefined(Class::Infinite),
             Some(value) => Measured::distance((&value - exact).abs(), exact, cond, u, &value),
         }

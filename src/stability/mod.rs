@@ -6,11 +6,13 @@
 mod backend;
 mod condition;
 mod measure;
+mod report;
 mod suite;
 mod timing;
 
 pub use backend::{Backend, Reference};
 pub use condition::condition;
 pub use measure::{Class, Measured};
+pub use report::{Row, json, markdown, report};
 pub use suite::{Case, SplitMix64, in_range, suite, sweep};
 pub use timing::median_nanos;
