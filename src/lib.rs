@@ -28,12 +28,14 @@
 pub mod claims;
 pub mod error;
 pub mod field;
+pub mod float;
 pub mod mechanics;
 pub mod number;
 pub mod optimum;
 pub mod report;
 pub mod scene;
 pub mod solve;
+pub mod stability;
 pub mod textbook;
 
 pub use error::{Error, ErrorKind};

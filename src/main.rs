@@ -32,6 +32,8 @@ enum Command {
     Plot(Box<commands::plot::PlotArgs>),
     /// Check published answers (printed numbers, fractions, formulas) against the exact ones.
     Check(Box<commands::check::CheckArgs>),
+    /// Float error against run time for every backend and formula on the stiff/extreme suite.
+    Stability(commands::stability::StabilityArgs),
 }
 
 fn main() -> ExitCode {
@@ -65,6 +67,7 @@ fn main() -> ExitCode {
         Command::Table(args) => commands::table::run_table(args),
         Command::Plot(args) => commands::plot::run_plot(args),
         Command::Check(args) => commands::check::run_check(args),
+        Command::Stability(args) => commands::stability::run_stability(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

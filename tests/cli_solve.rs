@@ -236,3 +236,62 @@ fn plots_are_written_and_bad_figures_refused() {
     assert!(stderr.contains("ratios: "), "{stderr}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// DESIGN.md §3 done-when: v = 0 exactly (q = e), so the f64 v is flagged unreliable while V
+/// and omega stay reliable; every value carries float, exact, rel_error and cond.
+#[test]
+fn backend_f64_flags_the_stopping_projectile_as_unreliable() {
+    let j = solve_json(&[
+        "--backend",
+        "f64",
+        "--m",
+        "4/7",
+        "--M",
+        "1",
+        "--l",
+        "1",
+        "--a",
+        "1/2",
+    ]);
+    assert_eq!(j["backend"], "f64/sq");
+    assert_eq!(j["v"]["exact"], "0");
+    assert_eq!(j["v"]["cond"], "inf");
+    assert_eq!(j["v"]["reliable"], false);
+    assert_eq!(j["V"]["exact"], "4/7");
+    assert_eq!(j["V"]["float"], "0.5714285714285714");
+    assert_eq!(j["V"]["reliable"], true);
+    assert_eq!(j["omega"]["reliable"], true);
+    assert!(j["a_star"]["squared"].is_string(), "the exact keys stay");
+}
+
+#[test]
+fn backend_interval_encloses_and_pivot_with_a_float_backend_is_refused() {
+    let j = solve_json(&[
+        "--backend",
+        "interval",
+        "--m",
+        "1/3",
+        "--M",
+        "1",
+        "--a",
+        "1/2",
+    ]);
+    for key in ["v", "V", "omega"] {
+        assert_eq!(j[key]["encloses"], true, "{key}");
+    }
+    let (code, stdout, stderr) = rodimpact(&[
+        "solve",
+        "--backend",
+        "f32",
+        "--m",
+        "1",
+        "--M",
+        "1",
+        "--pivot",
+        "0",
+    ]);
+    assert_eq!(code, 2);
+    assert!(stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1);
+    assert!(stderr.starts_with("error: backend:"), "{stderr}");
+}

@@ -1,6 +1,6 @@
 //! `rodimpact check`: published answers against the exact ones.
 
-use super::{Failure, SceneFlags};
+use super::{Failure, SceneFlags, print_out};
 use clap::Args;
 use rodimpact::textbook::problems::{
     MAX_CLAIMS, check_problems, parse_problems, problems_json, problems_text,
@@ -69,9 +69,9 @@ fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
     let problems = parse_problems(&label, &text)?;
     let reports = check_problems(&label, &problems, args.sig)?;
     if args.json {
-        println!("{}", pretty(&problems_json(&reports)));
+        print_out(&format!("{}\n", pretty(&problems_json(&reports))));
     } else {
-        print!("{}", problems_text(&reports));
+        print_out(&problems_text(&reports));
     }
     Ok(reports.iter().all(|r| r.report.all_agree()))
 }
@@ -93,10 +93,9 @@ fn check_flags(args: &CheckArgs) -> Result<bool, Error> {
         .collect::<Result<Vec<_>, _>>()?;
     let report = check_scene(&args.scene.input(), &claims, args.sig)?;
     if args.json {
-        println!("{}", pretty(&report.to_json()));
+        print_out(&format!("{}\n", pretty(&report.to_json())));
     } else {
-        print!("{}", report.to_text());
-        println!("{}", report.summary());
+        print_out(&format!("{}{}\n", report.to_text(), report.summary()));
     }
     Ok(report.all_agree())
 }

@@ -5,6 +5,7 @@ pub(crate) mod check;
 pub(crate) mod claims;
 pub(crate) mod plot;
 pub(crate) mod solve;
+pub(crate) mod stability;
 pub(crate) mod table;
 
 use clap::Args;

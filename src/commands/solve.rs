@@ -1,8 +1,35 @@
-//! `rodimpact solve`: one scene, exactly.
+//! `rodimpact solve`: one scene, exactly, and optionally in a float backend next to it.
 
 use super::{Failure, SceneFlags, parse_digits, print_out};
-use clap::Args;
-use rodimpact::report::Solution;
+use clap::{Args, ValueEnum};
+use rodimpact::float::Formula;
+use rodimpact::report::{Solution, backend_values};
+use rodimpact::stability::Backend;
+use serde_json::Value;
+
+/// The number format `--backend` solves in.
+#[derive(ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum BackendArg {
+    /// Exact rationals (the default).
+    Exact,
+    /// IEEE binary64 with the stable formula, measured against the exact answer.
+    F64,
+    /// IEEE binary32 with the stable formula, measured against the exact answer.
+    F32,
+    /// Outward-rounded f64 intervals, checked to enclose the exact answer.
+    Interval,
+}
+
+impl BackendArg {
+    fn backend(self) -> Backend {
+        match self {
+            BackendArg::Exact => Backend::Exact,
+            BackendArg::F64 => Backend::F64(Formula::DEFAULT),
+            BackendArg::F32 => Backend::F32(Formula::DEFAULT),
+            BackendArg::Interval => Backend::Interval,
+        }
+    }
+}
 
 #[derive(Args, Debug)]
 pub(crate) struct SolveArgs {
@@ -15,19 +42,48 @@ pub(crate) struct SolveArgs {
     /// 15 in the text report].
     #[arg(long, value_name = "N")]
     pub(crate) digits: Option<String>,
+    /// Also solve in this backend and report its error against the exact answer.
+    #[arg(long, value_enum, default_value = "exact")]
+    pub(crate) backend: BackendArg,
 }
 
 pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
     let scene = args.scene.input().build()?;
+    let backend = args.backend.backend();
+    let floats = match backend {
+        Backend::Exact => None,
+        _ => Some(backend_values(&scene, backend)?),
+    };
     let solution = Solution::of(&scene);
     if args.json {
         let digits = parse_digits(args.digits.as_deref(), 30)?;
-        let json = solution.to_json(digits);
+        let mut json = solution.to_json(digits);
+        if let (Value::Object(out), Some(floats)) = (&mut json, floats) {
+            out.insert("backend".into(), Value::String(backend.name()));
+            out.extend(floats);
+        }
         let json = serde_json::to_string_pretty(&json).expect("JSON of strings and bools");
         print_out(&format!("{json}\n"));
     } else {
         let digits = parse_digits(args.digits.as_deref(), 15)?;
-        print_out(&solution.to_text(digits));
+        let mut text = solution.to_text(digits);
+        if let Some(floats) = floats {
+            text.push_str(&format!(
+                "\nBackend {} against the exact values\n",
+                backend.name()
+            ));
+            for (name, value) in floats {
+                let fields: Vec<String> = value
+                    .as_object()
+                    .into_iter()
+                    .flatten()
+                    .filter(|(k, _)| k.as_str() != "exact")
+                    .map(|(k, v)| format!("{k} {}", v.as_str().map_or(v.to_string(), String::from)))
+                    .collect();
+                text.push_str(&format!("  {name:<5}  {}\n", fields.join(", ")));
+            }
+        }
+        print_out(&text);
     }
     if solution.outcome.residuals.all_zero() {
         Ok(())

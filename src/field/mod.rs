@@ -7,6 +7,7 @@
 //! |---|---|---|
 //! | exact rationals | [`Q`] (`BigRational`) | the exact answer for a rational scene |
 //! | floats | `f64`, `f32` | what a float code computes, to measure its error |
+//! | intervals | [`Interval`] | a guaranteed `f64` enclosure of the exact answer |
 //! | quadratic field | [`QSqrt`] | exact values at the irrational optimum a* |
 //! | rational functions | [`RatFn`] | identities for *all* parameter values, exact limits |
 //!
@@ -20,12 +21,14 @@ use std::fmt::{Debug, Display};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 mod float;
+mod interval;
 pub mod laws;
 pub mod poly;
 pub mod quadratic;
 pub mod ratfunc;
 mod rational;
 
+pub use interval::Interval;
 pub use poly::{Poly, Sym};
 pub use quadratic::QSqrt;
 pub use ratfunc::RatFn;

@@ -1,6 +1,7 @@
 //! Output: the forms in which results leave the library (JSON, text, and later Markdown, LaTeX,
 //! CSV and SVG).
 
+mod backend;
 mod files;
 mod paper_tables;
 mod plot;
@@ -8,9 +9,10 @@ mod proofs;
 mod solution;
 mod table;
 
+pub use backend::backend_values;
 pub use files::{create_output_dir, write_atomic};
 pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
-pub use plot::{plot_figure1, plot_omega, plot_optimum};
+pub use plot::{plot_figure1, plot_omega, plot_optimum, plot_stability};
 pub use proofs::{
     claim_markdown, index_markdown, paper_report, prove_json, prove_line, summary_line,
     verdict_label,

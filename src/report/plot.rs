@@ -467,3 +467,76 @@ pub fn plot_figure1(scene: &Scene) -> Result<String, Error> {
         (width, height),
     )
 }
+
+/// Error against run time, log-log, one labelled point per backend/formula (the exact backend,
+/// error 0, is drawn on the bottom edge).
+///
+/// # Errors
+/// Drawing fails (not expected for an in-memory SVG).
+///
+/// # Examples
+/// ```
+/// let rows = rodimpact::stability::report(5);
+/// assert!(rodimpact::report::plot_stability(&rows).unwrap().starts_with("<svg"));
+/// ```
+pub fn plot_stability(rows: &[crate::stability::Row]) -> Result<String, Error> {
+    let floor = 1e-3;
+    // An error beyond f64's range (max = inf) is drawn on the top edge.
+    let finite_max = rows.iter().map(|r| r.max).filter(|m| m.is_finite());
+    let y_max = finite_max.fold(10.0, f64::max) * 30.0;
+    let t_min = rows.iter().map(|r| r.nanos).fold(f64::INFINITY, f64::min) / 3.0;
+    let t_max = rows.iter().map(|r| r.nanos).fold(0.0, f64::max) * 10.0;
+    svg(
+        |root| {
+            let mut chart = ChartBuilder::on(root)
+                .caption(
+                    "Float error against run time (suite + sweep, in-range scenes)",
+                    ("sans-serif", 24),
+                )
+                .margin(20)
+                .x_label_area_size(55)
+                .y_label_area_size(80)
+                .build_cartesian_2d((t_min..t_max).log_scale(), (floor..y_max).log_scale())
+                .map_err(drawing_error)?;
+            chart
+                .configure_mesh()
+                .x_desc("median run time per scene (ns)")
+                .y_desc("max error / (cond * u)")
+                .axis_desc_style(("sans-serif", 18))
+                .label_style(("sans-serif", 15))
+                .x_label_formatter(&|x| format!("{x:.0e}"))
+                .y_label_formatter(&|y| format!("{y:.0e}"))
+                .light_line_style(WHITE.mix(0.0))
+                .draw()
+                .map_err(drawing_error)?;
+            for (i, r) in rows.iter().enumerate() {
+                let color = PALETTE[i % PALETTE.len()];
+                let y = r.max.clamp(floor * 5.0, y_max / 2.0);
+                let label = match r.max {
+                    0.0 => format!("{} (error 0)", r.backend.name()),
+                    m if m.is_infinite() => format!("{} (error > 1e308)", r.backend.name()),
+                    _ => r.backend.name(),
+                };
+                chart
+                    .draw_series(std::iter::once(Circle::new(
+                        (r.nanos, y),
+                        6,
+                        color.filled(),
+                    )))
+                    .map_err(drawing_error)?;
+                // Labels step through four heights so neighbours (f64 and f32 of one formula
+                // cost the same) do not collide.
+                let dy = [1.3, 0.15, 8.0, 0.02][i % 4];
+                chart
+                    .draw_series(std::iter::once(Text::new(
+                        label,
+                        (r.nanos * 1.15, y * dy),
+                        ("sans-serif", 15),
+                    )))
+                    .map_err(drawing_error)?;
+            }
+            Ok(())
+        },
+        SIZE,
+    )
+}

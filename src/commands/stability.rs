@@ -1,0 +1,44 @@
+//! `rodimpact stability`: every backend and formula on the stiff/extreme suite and a seeded
+//! sweep, error in units of cond u against run time.
+
+use super::{Failure, print_out};
+use clap::{Args, ValueEnum};
+use rodimpact::report::{plot_stability, write_atomic};
+use rodimpact::stability::{json, markdown, report};
+use std::path::PathBuf;
+
+/// Sweep scenes per format.
+const SWEEP: usize = 150;
+
+#[derive(ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum StabilityFormat {
+    /// A Markdown table.
+    Md,
+    /// A JSON list of rows.
+    Json,
+}
+
+#[derive(Args, Debug)]
+pub(crate) struct StabilityArgs {
+    /// Output format.
+    #[arg(long, value_enum, default_value = "md")]
+    pub(crate) format: StabilityFormat,
+    /// Also write the error-against-time plot (SVG) to this file.
+    #[arg(long, value_name = "FILE.svg")]
+    pub(crate) plot: Option<PathBuf>,
+}
+
+pub(crate) fn run_stability(args: &StabilityArgs) -> Result<(), Failure> {
+    let rows = report(SWEEP);
+    if let Some(path) = &args.plot {
+        write_atomic("plot", path, &plot_stability(&rows)?)?;
+    }
+    match args.format {
+        StabilityFormat::Md => print_out(&markdown(&rows)),
+        StabilityFormat::Json => print_out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&json(&rows)).expect("JSON of numbers and strings")
+        )),
+    }
+    Ok(())
+}

@@ -1,0 +1,177 @@
+//! The backends compared by the stability report: f64 and f32 with each [`Formula`], the
+//! outward-rounded interval, and exact rationals; each evaluated and measured on one scene.
+
+use super::{Measured, condition};
+use crate::field::{Field, Interval, Q};
+use crate::float::{Formula, Real};
+use crate::mechanics::Motion;
+use crate::scene::{Params, Scene, Support};
+use crate::solve::closed_form;
+use num_traits::Zero;
+
+/// A number format and the formula evaluated in it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Backend {
+    /// IEEE binary64.
+    F64(Formula),
+    /// IEEE binary32.
+    F32(Formula),
+    /// Outward-rounded f64 intervals through the closed form.
+    Interval,
+    /// Exact rationals through the closed form (the reference).
+    Exact,
+}
+
+/// The exact answer for a free-rod scene, with its condition numbers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reference {
+    /// Exact (v, V, omega).
+    pub motion: Motion<Q>,
+    /// The exact scene inputs.
+    pub params: Params<Q>,
+}
+
+impl Reference {
+    /// The exact reference of a free-rod scene (`None` for a pivoted rod).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{scene::Scene, field::q, stability::Reference};
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
+    /// assert_eq!(Reference::of(&s).unwrap().motion.v, q(3, 11));
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn of(scene: &Scene) -> Option<Reference> {
+        let params = scene.params::<Q>();
+        if params.support != Support::Free {
+            return None;
+        }
+        let motion = closed_form(&params)?;
+        Some(Reference { motion, params })
+    }
+}
+
+impl Backend {
+    /// Every backend, in report order.
+    pub const ALL: [Backend; 8] = [
+        Backend::F64(Formula::Naive),
+        Backend::F64(Formula::Sq),
+        Backend::F64(Formula::Scomp),
+        Backend::F32(Formula::Naive),
+        Backend::F32(Formula::Sq),
+        Backend::F32(Formula::Scomp),
+        Backend::Interval,
+        Backend::Exact,
+    ];
+
+    /// Name in reports: `f64/sq`, `f32/naive`, `interval`, `exact`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{float::Formula, stability::Backend};
+    /// assert_eq!(Backend::F64(Formula::Sq).name(), "f64/sq");
+    /// ```
+    pub fn name(self) -> String {
+        match self {
+            Backend::F64(f) => format!("f64/{}", f.name()),
+            Backend::F32(f) => format!("f32/{}", f.name()),
+            Backend::Interval => "interval".into(),
+            Backend::Exact => "exact".into(),
+        }
+    }
+
+    /// The unit roundoff of the format, exactly (0 for exact).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::stability::Backend;
+    /// assert_eq!(Backend::Interval.unit_roundoff().to_string(), "1/9007199254740992");
+    /// ```
+    pub fn unit_roundoff(self) -> Q {
+        match self {
+            Backend::F64(_) | Backend::Interval => <f64 as Real>::unit_roundoff(),
+            Backend::F32(_) => <f32 as Real>::unit_roundoff(),
+            Backend::Exact => Q::zero(),
+        }
+    }
+
+    /// The condition numbers for this format: the e terms count when e is not a float of it.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{scene::Scene, field::q, stability::Backend, float::Formula};
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).e(q(1, 10)).build()?;
+    /// let r = rodimpact::stability::Reference::of(&s).unwrap();
+    /// let with_e = Backend::F64(Formula::Sq).condition(&r).rod_v.unwrap();
+    /// assert!(with_e > Backend::Exact.condition(&r).rod_v.unwrap());
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn condition(self, reference: &Reference) -> Motion<Option<Q>> {
+        let e = &reference.params.e;
+        let e_rounds = match self {
+            Backend::F64(_) | Backend::Interval => f64::from_rational(e).to_exact(),
+            Backend::F32(_) => f32::from_rational(e).to_exact(),
+            Backend::Exact => Some(e.clone()),
+        }
+        .as_ref()
+            != Some(e);
+        condition(&reference.params, e_rounds)
+    }
+
+    /// Evaluates `scene` and measures (v, V, omega) against the reference; for the interval
+    /// also whether each enclosure holds the exact value. `None` for a pivoted rod.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{scene::Scene, field::q, stability::{Backend, Reference}, float::Formula};
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
+    /// let r = Reference::of(&s).unwrap();
+    /// let (m, encloses) = Backend::F64(Formula::Sq).measure(&s, &r).unwrap();
+    /// assert!(m.v.ratio.unwrap() <= 4.0);
+    /// assert!(encloses);
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn measure(self, scene: &Scene, reference: &Reference) -> Option<(Motion<Measured>, bool)> {
+        let cond = self.condition(reference);
+        let u = self.unit_roundoff();
+        let exact = &reference.motion;
+        let each = |measure: &dyn Fn(usize) -> Measured| Motion {
+            v: measure(0),
+            rod_v: measure(1),
+            omega: measure(2),
+        };
+        let exact_of = |i: usize| [&exact.v, &exact.rod_v, &exact.omega][i];
+        let cond_of = |i: usize| [&cond.v, &cond.rod_v, &cond.omega][i].as_ref();
+        let floats = |x: &Motion<f64>| {
+            let at = |i: usize| [x.v, x.rod_v, x.omega][i];
+            (
+                each(&|i| Measured::of(at(i), exact_of(i), cond_of(i), &u)),
+                true,
+            )
+        };
+        match self {
+            Backend::F64(formula) => Some(floats(&formula.eval(&scene.params::<f64>())?)),
+            Backend::F32(formula) => {
+                let x = formula.eval(&scene.params::<f32>())?;
+                // f32 -> f64 is exact, so the measurement is unchanged.
+                Some(floats(&Motion {
+                    v: f64::from(x.v),
+                    rod_v: f64::from(x.rod_v),
+                    omega: f64::from(x.omega),
+                }))
+            }
+            Backend::Interval => {
+                let x = closed_form(&scene.params::<Interval>())?;
+                let at = |i: usize| [&x.v, &x.rod_v, &x.omega][i];
+                let encloses = (0..3).all(|i| at(i).contains(exact_of(i)));
+                let measured = each(&|i| Measured::of_interval(at(i), exact_of(i), cond_of(i), &u));
+                Some((measured, encloses))
+            }
+            Backend::Exact => {
+                let x = closed_form(&scene.params::<Q>())?;
+                let at = |i: usize| [&x.v, &x.rod_v, &x.omega][i];
+                Some((each(&|i| Measured::of_exact(at(i), exact_of(i))), true))
+            }
+        }
+    }
+}

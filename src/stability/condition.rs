@@ -1,0 +1,50 @@
+//! Exact componentwise relative condition numbers of v, V and omega for a free rod
+//! (STABILITY.md §1), in the inputs m, M, I, a, v0 (and e when e is not a float of the format).
+
+use crate::field::Q;
+use crate::mechanics::Motion;
+use crate::scene::Params;
+use num_traits::{One, Signed, Zero};
+
+/// The condition numbers of (v, V, omega); `None` (infinite) for v when q = e, where the
+/// projectile stops. `e_rounds` adds the e terms (e is not exactly a float of the format).
+///
+/// cond_v = 1 + (1+e)(2r+4s)/(|q-e|(1+q)) [+ e/|q-e|],
+/// cond_V = 1 + (2+4s)/(1+q) [+ e/(1+e)],
+/// cond_omega = 1 + (2+2r+|1+r-s|)/(1+q) [+ e/(1+e)], with r = m/M, s = m a^2/I, q = r + s.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::Scene, field::{q, Q}, stability::condition};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?; // r = 1, s = 3/4
+/// let c = condition(&s.params::<Q>(), false);
+/// assert_eq!(c.rod_v, Some(q(31, 11))); // 1 + (2 + 3)/(11/4)
+/// assert_eq!(c.omega, Some(q(32, 11))); // 1 + (2 + 2 + 5/4)/(11/4)
+/// let stop = Scene::builder(q(4, 7), q(1, 1)).a(q(1, 2)).build()?; // q = 1 = e
+/// assert_eq!(condition(&stop.params::<Q>(), false).v, None);
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn condition(p: &Params<Q>, e_rounds: bool) -> Motion<Option<Q>> {
+    let one = Q::one();
+    let two = Q::from_integer(2.into());
+    let four = Q::from_integer(4.into());
+    let e = &p.e;
+    let r = &p.m / &p.rod_mass;
+    let s = &p.m * &p.a * &p.a / &p.inertia;
+    let q = &r + &s;
+    let d = &one + &q;
+    let e_term = |denominator: &Q| {
+        if e_rounds { e / denominator } else { Q::zero() }
+    };
+    let gap = (&q - e).abs();
+    let v = (!gap.is_zero())
+        .then(|| &one + (&one + e) * (&two * &r + &four * &s) / (&gap * &d) + e_term(&gap));
+    let one_plus_e = &one + e;
+    let rod_v = &one + (&two + &four * &s) / &d + e_term(&one_plus_e);
+    let omega = &one + (&two + &two * &r + (&one + &r - &s).abs()) / &d + e_term(&one_plus_e);
+    Motion {
+        v,
+        rod_v: Some(rod_v),
+        omega: Some(omega),
+    }
+}

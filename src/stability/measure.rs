@@ -1,0 +1,144 @@
+//! Exact error measurement: a float result converted exactly (`Ratio::from_float`) and compared
+//! with the exact answer for the same rational inputs.
+
+use crate::field::{Interval, Q};
+use crate::float::Real;
+use num_traits::{Signed, ToPrimitive, Zero};
+
+/// What a float output is, judged against the exact value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Class {
+    /// A finite number (possibly a correct zero).
+    Number,
+    /// NaN.
+    Nan,
+    /// An infinity (or an infinite interval end).
+    Infinite,
+    /// 0 where the exact value is not 0.
+    SpuriousZero,
+    /// Not 0 where the exact value is 0 (expected in the stop zone: only exact arithmetic
+    /// decides v = 0).
+    MissedZero,
+}
+
+/// One float output measured against its exact value.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measured {
+    /// |float - exact|/|exact| exactly (0 when both are 0); `None` when undefined (NaN,
+    /// infinite, or nonzero where the exact value is 0).
+    pub rel_error: Option<Q>,
+    /// `rel_error / (cond u)` in f64; `None` when either is undefined (cond infinite).
+    pub ratio: Option<f64>,
+    /// Kind of output.
+    pub class: Class,
+}
+
+impl Measured {
+    /// Measures the float `x` against `exact`, with condition number `cond` (`None`:
+    /// infinite) and unit roundoff `u`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, float::Real, stability::{Class, Measured}};
+    /// let m = Measured::of(1.0f64 / 3.0, &q(1, 3), Some(&q(1, 1)), &<f64 as Real>::unit_roundoff());
+    /// assert_eq!(m.class, Class::Number);
+    /// assert!(m.ratio.unwrap() <= 1.0); // correctly rounded: at most u
+    /// ```
+    pub fn of<T: Real>(x: T, exact: &Q, cond: Option<&Q>, u: &Q) -> Measured {
+        match x.to_exact() {
+            None if x.finite() => unreachable!("finite floats are rationals"),
+            None if x.sign().is_none() => Measured::undefined(Class::Nan),
+            None => Measured::undefined(Class::Infinite),
+            Some(value) => Measured::distance((&value - exact).abs(), exact, cond, u, &value),
+        }
+    }
+
+    /// Measures an interval by its worst point: the larger distance of an end from `exact`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::{q, Field, Interval}, float::Real, stability::Measured};
+    /// let third = Interval::from_rational(&q(1, 3));
+    /// let m = Measured::of_interval(&third, &q(1, 3), Some(&q(1, 1)), &<f64 as Real>::unit_roundoff());
+    /// assert!(m.ratio.unwrap() <= 2.0); // one ulp wide
+    /// ```
+    pub fn of_interval(x: &Interval, exact: &Q, cond: Option<&Q>, u: &Q) -> Measured {
+        match (x.lower().to_exact(), x.upper().to_exact()) {
+            (Some(lo), Some(hi)) => {
+                let far = (&lo - exact).abs().max((&hi - exact).abs());
+                let point = if lo.is_zero() && hi.is_zero() { lo } else { hi };
+                Measured::distance(far, exact, cond, u, &point)
+            }
+            _ if x.lower().is_nan() || x.upper().is_nan() => Measured::undefined(Class::Nan),
+            _ => Measured::undefined(Class::Infinite),
+        }
+    }
+
+    /// Measures an exact result (its error is 0 unless the exact path is wrong).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, stability::Measured};
+    /// assert_eq!(Measured::of_exact(&q(1, 3), &q(1, 3)).ratio, Some(0.0));
+    /// ```
+    pub fn of_exact(x: &Q, exact: &Q) -> Measured {
+        let gap = (x - exact).abs();
+        let rel = if exact.is_zero() {
+            gap
+        } else {
+            gap / exact.abs()
+        };
+        Measured {
+            ratio: rel.to_f64(),
+            rel_error: Some(rel),
+            class: Class::Number,
+        }
+    }
+
+    fn undefined(class: Class) -> Measured {
+        Measured {
+            rel_error: None,
+            ratio: None,
+            class,
+        }
+    }
+
+    fn distance(gap: Q, exact: &Q, cond: Option<&Q>, u: &Q, value: &Q) -> Measured {
+        if exact.is_zero() {
+            return if gap.is_zero() {
+                Measured {
+                    rel_error: Some(Q::zero()),
+                    ratio: Some(0.0),
+                    class: Class::Number,
+                }
+            } else {
+                Measured::undefined(Class::MissedZero)
+            };
+        }
+        let rel = gap / exact.abs();
+        let ratio = cond.map(|c| (&rel / (c * u)).to_f64().unwrap_or(f64::INFINITY));
+        Measured {
+            rel_error: Some(rel),
+            ratio,
+            class: if value.is_zero() {
+                Class::SpuriousZero
+            } else {
+                Class::Number
+            },
+        }
+    }
+
+    /// `cond u > 1e-3`: the float cannot be trusted (DESIGN.md §3 `reliable: false`).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, stability::Measured};
+    /// let u = q(1, 1 << 20);
+    /// assert!(Measured::reliable(Some(&q(1, 1)), &u));
+    /// assert!(!Measured::reliable(Some(&q(10_000, 1)), &u));
+    /// assert!(!Measured::reliable(None, &u));
+    /// ```
+    pub fn reliable(cond: Option<&Q>, u: &Q) -> bool {
+        cond.is_some_and(|c| c * u <= Q::new(1.into(), 1000.into()))
+    }
+}
