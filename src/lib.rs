@@ -27,6 +27,7 @@
 
 pub mod claims;
 pub mod error;
+pub mod fast;
 pub mod field;
 pub mod mechanics;
 pub mod number;

@@ -1,0 +1,422 @@
+//! The fast exact path: the same v, V, omega as [`crate::solve::solve`] over
+//! [`Q`], bit for bit, without a GCD after every operation.
+//!
+//! The straightforward path spends about 91 % of its time in num-bigint's GCD, because
+//! `BigRational` reduces after every operation (PERFORMANCE.md). Here, for a free rod, the scene's
+//! numbers are split once into integer numerators and denominators, the closed form is evaluated
+//! on integers over one common denominator, the conservation laws are checked as integer
+//! identities, and each output is reduced once.
+//!
+//! With I = M g (g = l^2/3 uniform, l^2 dumbbell, r_G^2 by radius of gyration, I/M given) every
+//! term carries a factor M, which cancels. Over the common denominator md Md gd ad^2 of the
+//! masses, g and a^2:
+//!
+//! - `A = mn gn Md ad^2` (m g), `B = Mn gn md ad^2` (M g), `C = mn an^2 Md gd` (m a^2);
+//! - `dd = ed (A + B + C)`, `nv = ed (A + C) - en B`, `nV = (ed + en) A`,
+//!   `nw = (ed + en) mn an Md gd ad`;
+//! - `v = v0 nv/dd`, `V = v0 nV/dd`, `omega = v0 nw/dd`.
+//!
+//! The laws are homogeneous in (v0, v, V, omega), so they are checked on (dd, nv, nV, nw):
+//! linear momentum `mn Md nv + Mn md nV = mn Md dd`, angular momentum about the centre
+//! `mn Md an gd nv + Mn md gn ad nw = mn Md an gd dd` (I = M g), and for e = 1 the kinetic
+//! energy `mn Md gd nv^2 + Mn md gd nV^2 + Mn md gn nw^2 = mn Md gd dd^2`.
+//!
+//! The integers are first tried in checked `i128` (energy in 256 bits, its terms are
+//! non-negative); the first overflow restarts the scene in [`BigInt`]. A pivoted rod is
+//! delegated to the generic solver over [`Q`].
+
+use crate::field::Q;
+use crate::mechanics::Motion;
+use crate::scene::{RodInertia, Scene, Support};
+use num_bigint::BigInt;
+use num_traits::{One, ToPrimitive};
+
+/// Which arithmetic produced a [`Solved`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Arithmetic {
+    /// Fraction-free in checked `i128` (energy in 256-bit unsigned).
+    Fixed,
+    /// Fraction-free in `BigInt` (the fixed width overflowed, or was not tried).
+    Big,
+    /// The generic solver over `BigRational` (pivoted rods).
+    Generic,
+}
+
+/// The velocities after the impact, exact and reduced, and whether the laws held.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solved {
+    /// v, V, omega exactly as [`crate::solve::solve`] over [`Q`] gives them.
+    pub after: Motion<Q>,
+    /// Every applicable conservation law holds exactly (linear momentum for a free rod, angular
+    /// momentum, energy when e = 1).
+    pub laws_hold: bool,
+    /// The arithmetic that was used.
+    pub arithmetic: Arithmetic,
+}
+
+/// Solves the scene exactly on the fastest path that fits: fixed width, then big integers, and
+/// the generic solver for a pivoted rod.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{fast::{solve, Arithmetic}, scene::Scene, field::q};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+/// let out = solve(&s);
+/// assert_eq!((out.after.v, out.after.rod_v, out.after.omega), (q(3, 5), q(2, 5), q(6, 5)));
+/// assert!(out.laws_hold);
+/// assert_eq!(out.arithmetic, Arithmetic::Fixed);
+/// ```
+pub fn solve(scene: &Scene) -> Solved {
+    free_rod::<i128>(scene)
+        .map(|s| s.with(Arithmetic::Fixed))
+        .unwrap_or_else(|| solve_big(scene))
+}
+
+/// [`solve`] without the fixed-width attempt: fraction-free in [`BigInt`] (the fallback on
+/// its own, for tests and benchmarks).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{fast::{solve, solve_big}, scene::Scene, field::q};
+/// let s = Scene::builder(q(2, 7), q(5, 3)).a(q(-1, 3)).e(q(1, 2)).build().unwrap();
+/// assert_eq!(solve_big(&s).after, solve(&s).after);
+/// ```
+pub fn solve_big(scene: &Scene) -> Solved {
+    match free_rod::<BigInt>(scene) {
+        Some(s) => s.with(Arithmetic::Big),
+        None => generic(scene),
+    }
+}
+
+impl Solved {
+    fn with(self, arithmetic: Arithmetic) -> Self {
+        Solved { arithmetic, ..self }
+    }
+}
+
+fn generic(scene: &Scene) -> Solved {
+    let out =
+        crate::solve::solve(&scene.params::<Q>()).expect("a valid scene is never singular over Q");
+    Solved {
+        laws_hold: out.residuals.all_zero(),
+        after: out.after,
+        arithmetic: Arithmetic::Generic,
+    }
+}
+
+/// The integer operations the fraction-free form needs; `None` means "does not fit".
+trait Int: Sized + Clone + PartialEq {
+    fn lift(x: &BigInt) -> Option<Self>;
+    fn small(x: u8) -> Self;
+    fn add(&self, o: &Self) -> Option<Self>;
+    fn sub(&self, o: &Self) -> Option<Self>;
+    fn mul(&self, o: &Self) -> Option<Self>;
+    /// Decides `sum c_i x_i^2 == c x^2` for non-negative weights.
+    fn squares_balance(lhs: [(&Self, &Self); 3], rhs: (&Self, &Self)) -> Option<bool>;
+    /// `n/d` reduced, `d > 0`.
+    fn ratio(n: Self, d: Self) -> Q;
+}
+
+impl Int for BigInt {
+    fn lift(x: &BigInt) -> Option<Self> {
+        Some(x.clone())
+    }
+    fn small(x: u8) -> Self {
+        BigInt::from(x)
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        Some(self + o)
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        Some(self - o)
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        Some(self * o)
+    }
+    fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
+        let sum: BigInt = lhs.iter().map(|(c, x)| *c * *x * *x).sum();
+        Some(sum == c * x * x)
+    }
+    fn ratio(n: Self, d: Self) -> Q {
+        Q::new(n, d)
+    }
+}
+
+impl Int for i128 {
+    fn lift(x: &BigInt) -> Option<Self> {
+        x.to_i128()
+    }
+    fn small(x: u8) -> Self {
+        x.into()
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        self.checked_add(*o)
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        self.checked_sub(*o)
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        self.checked_mul(*o)
+    }
+    fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
+        let term = |c: &i128, x: &i128| {
+            let c = u128::try_from(*c).ok()?;
+            U256::square(x.unsigned_abs()).checked_mul(c)
+        };
+        let mut sum = U256::ZERO;
+        for (c, x) in lhs {
+            sum = sum.checked_add(term(c, x)?)?;
+        }
+        Some(sum == term(c, x)?)
+    }
+    fn ratio(n: Self, d: Self) -> Q {
+        let g = gcd(n.unsigned_abs(), d.unsigned_abs());
+        // g divides both, and g >= 1 because d > 0; n/g and d/g stay in range.
+        let g = g as i128;
+        Q::new_raw(BigInt::from(n / g), BigInt::from(d / g))
+    }
+}
+
+/// Stein's binary GCD on `u128` (`gcd(0, d) = d`).
+fn gcd(mut a: u128, mut b: u128) -> u128 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+/// A 256-bit unsigned integer: just enough for the energy identity of the fixed-width path.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct U256 {
+    hi: u128,
+    lo: u128,
+}
+
+impl U256 {
+    const ZERO: U256 = U256 { hi: 0, lo: 0 };
+
+    /// The exact product of two `u128`.
+    fn product(a: u128, b: u128) -> U256 {
+        let mask = u128::from(u64::MAX);
+        let (a1, a0) = (a >> 64, a & mask);
+        let (b1, b0) = (b >> 64, b & mask);
+        let low = a0 * b0;
+        let (mid, carry_mid) = (a1 * b0).overflowing_add(a0 * b1);
+        let (lo, carry_lo) = low.overflowing_add(mid << 64);
+        let hi = a1 * b1 + (mid >> 64) + (u128::from(carry_mid) << 64) + u128::from(carry_lo);
+        U256 { hi, lo }
+    }
+
+    fn square(x: u128) -> U256 {
+        U256::product(x, x)
+    }
+
+    fn checked_mul(self, c: u128) -> Option<U256> {
+        let low = U256::product(self.lo, c);
+        let high = U256::product(self.hi, c);
+        if high.hi != 0 {
+            return None;
+        }
+        let hi = low.hi.checked_add(high.lo)?;
+        Some(U256 { hi, lo: low.lo })
+    }
+
+    fn checked_add(self, o: U256) -> Option<U256> {
+        let (lo, carry) = self.lo.overflowing_add(o.lo);
+        let hi = self.hi.checked_add(o.hi)?.checked_add(u128::from(carry))?;
+        Some(U256 { hi, lo })
+    }
+}
+
+/// Numerator and denominator of a rational, lifted into `T`.
+fn split<T: Int>(x: &Q) -> Option<(T, T)> {
+    Some((T::lift(x.numer())?, T::lift(x.denom())?))
+}
+
+/// g = I/M as (gn, gd), gd > 0, not necessarily reduced.
+fn inertia_per_mass<T: Int>(scene: &Scene) -> Option<(T, T)> {
+    let square = |x: &Q| -> Option<(T, T)> {
+        let (n, d) = split::<T>(x)?;
+        Some((n.mul(&n)?, d.mul(&d)?))
+    };
+    match scene.rod() {
+        RodInertia::Uniform => {
+            let (n, d) = square(scene.half_length())?;
+            Some((n, d.mul(&T::small(3))?))
+        }
+        RodInertia::Dumbbell => square(scene.half_length()),
+        RodInertia::Gyration(r) => square(r),
+        RodInertia::Moment(i) => {
+            let (in_, id) = split::<T>(i)?;
+            let (mn, md) = split::<T>(scene.rod_mass())?;
+            Some((in_.mul(&md)?, id.mul(&mn)?))
+        }
+    }
+}
+
+/// The fraction-free solve of a free rod in `T`; `None` for a pivoted rod or on overflow.
+fn free_rod<T: Int>(scene: &Scene) -> Option<Solved> {
+    if !matches!(scene.support(), Support::Free) {
+        return None;
+    }
+    let (mn, md) = split::<T>(scene.m())?;
+    let (big_n, big_d) = split::<T>(scene.rod_mass())?;
+    let (an, ad) = split::<T>(scene.a())?;
+    let (vn, vd) = split::<T>(scene.v0())?;
+    let (en, ed) = split::<T>(scene.e())?;
+    let (gn, gd) = inertia_per_mass::<T>(scene)?;
+
+    let ad2 = ad.mul(&ad)?;
+    let mn_big_d = mn.mul(&big_d)?;
+    let big_n_md = big_n.mul(&md)?;
+    let a_term = mn_big_d.mul(&gn)?.mul(&ad2)?;
+    let b_term = big_n_md.mul(&gn)?.mul(&ad2)?;
+    let c_term = mn_big_d.mul(&an)?.mul(&an)?.mul(&gd)?;
+    let a_plus_c = a_term.add(&c_term)?;
+    let dd = ed.mul(&a_plus_c.add(&b_term)?)?;
+    let ne = ed.add(&en)?;
+    let nv = ed.mul(&a_plus_c)?.sub(&en.mul(&b_term)?)?;
+    let n_big_v = ne.mul(&a_term)?;
+    let nw = ne.mul(&mn_big_d)?.mul(&an)?.mul(&gd)?.mul(&ad)?;
+
+    let linear = mn_big_d.mul(&nv)?.add(&big_n_md.mul(&n_big_v)?)? == mn_big_d.mul(&dd)?;
+    let mn_an_gd = mn_big_d.mul(&an)?.mul(&gd)?;
+    let angular = mn_an_gd
+        .mul(&nv)?
+        .add(&big_n_md.mul(&gn)?.mul(&ad)?.mul(&nw)?)?
+        == mn_an_gd.mul(&dd)?;
+    let energy = if scene.e().is_one() {
+        let weight = mn_big_d.mul(&gd)?;
+        T::squares_balance(
+            [
+                (&weight, &nv),
+                (&big_n_md.mul(&gd)?, &n_big_v),
+                (&big_n_md.mul(&gn)?, &nw),
+            ],
+            (&weight, &dd),
+        )?
+    } else {
+        true
+    };
+
+    let den = vd.mul(&dd)?;
+    let after = Motion {
+        v: T::ratio(vn.mul(&nv)?, den.clone()),
+        rod_v: T::ratio(vn.mul(&n_big_v)?, den.clone()),
+        omega: T::ratio(vn.mul(&nw)?, den),
+    };
+    Some(Solved {
+        after,
+        laws_hold: linear && angular && energy,
+        arithmetic: Arithmetic::Big,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::q;
+    use num_traits::{Signed, Zero};
+
+    #[test]
+    fn u256_products_match_big_integers() {
+        let cases = [
+            (0u128, 5u128),
+            (u128::MAX, u128::MAX),
+            (u128::MAX, 1),
+            (1 << 64, 1 << 64),
+            (
+                0xdead_beef_0123_4567_89ab_cdef_7777_9999,
+                0xffff_0000_ffff_0000_1234,
+            ),
+        ];
+        for (a, b) in cases {
+            let p = U256::product(a, b);
+            let want = BigInt::from(a) * BigInt::from(b);
+            let got = (BigInt::from(p.hi) << 128) + BigInt::from(p.lo);
+            assert_eq!(got, want, "{a} * {b}");
+        }
+        assert_eq!(U256::square(u128::MAX).checked_mul(2), None);
+        assert_eq!(U256::square(u128::MAX).checked_add(U256::square(2)), None);
+        assert_eq!(
+            U256::square(1 << 100).checked_mul(1 << 55),
+            Some(U256 {
+                hi: 1 << 127,
+                lo: 0
+            })
+        );
+    }
+
+    #[test]
+    fn energy_balance_is_decided_alike_in_both_widths() {
+        // 2*3^2 + 1*4^2 + 0*7^2 = 34 = 34*1^2; off by one it is not.
+        for (c, want) in [(34i128, true), (35, false)] {
+            let (two, three, one, four, zero, seven) = (2i128, 3, 1, 4, 0, 7);
+            let fixed =
+                i128::squares_balance([(&two, &three), (&one, &four), (&zero, &seven)], (&c, &one));
+            let big = |x: i128| BigInt::from(x);
+            let (b2, b3, b1, b4, b0, b7, bc) =
+                (big(2), big(3), big(1), big(4), big(0), big(7), big(c));
+            let wide = BigInt::squares_balance([(&b2, &b3), (&b1, &b4), (&b0, &b7)], (&bc, &b1));
+            assert_eq!((fixed, wide), (Some(want), Some(want)));
+        }
+        let max = i128::MAX;
+        assert_eq!(
+            i128::squares_balance([(&max, &max), (&0, &0), (&0, &0)], (&1, &1)),
+            None
+        );
+    }
+
+    #[test]
+    fn gcd_of_u128() {
+        assert_eq!(gcd(0, 7), 7);
+        assert_eq!(gcd(12, 18), 6);
+        assert_eq!(gcd(1 << 100, 3 << 90), 1 << 90);
+        assert_eq!(gcd(u128::MAX, u128::MAX - 1), 1);
+    }
+
+    #[test]
+    fn every_arithmetic_is_reached() {
+        let paper = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+        assert_eq!(solve(&paper).arithmetic, Arithmetic::Fixed);
+        let huge = q(i64::MAX, 3) * q(i64::MAX, 1);
+        let big = Scene::builder(huge.clone(), huge).build().unwrap();
+        assert_eq!(solve(&big).arithmetic, Arithmetic::Big);
+        let pivoted = Scene::builder(q(1, 1), q(3, 1))
+            .pivot(q(0, 1))
+            .build()
+            .unwrap();
+        let out = solve(&pivoted);
+        assert_eq!(out.arithmetic, Arithmetic::Generic);
+        assert_eq!((out.after.v, out.after.omega), (q(0, 1), q(1, 1)));
+    }
+
+    #[test]
+    fn a_negative_projectile_velocity_is_reduced_with_its_sign() {
+        // M = 3m, hit at the centre: v = -v0/2.
+        let s = Scene::builder(q(1, 1), q(3, 1))
+            .a(q(0, 1))
+            .v0(q(4, 6))
+            .build()
+            .unwrap();
+        let out = solve(&s);
+        assert_eq!(out.after.v, q(-1, 3));
+        assert!(out.after.v.denom().is_positive());
+        assert!(out.after.omega.is_zero());
+        assert!(out.laws_hold);
+    }
+}
