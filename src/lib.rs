@@ -25,6 +25,7 @@
 //! # Ok::<(), rodimpact::Error>(())
 //! ```
 
+pub mod batch;
 pub mod claims;
 pub mod error;
 pub mod fast;

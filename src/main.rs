@@ -30,6 +30,9 @@ enum Command {
     Table(commands::table::TableArgs),
     /// Figures as SVG: omega against a, a* against M/m, or the paper's Figure 1.
     Plot(Box<commands::plot::PlotArgs>),
+    /// Many scenes from a CSV file, exactly, streamed and in parallel; claimed v, V, omega
+    /// columns are checked.
+    Batch(commands::batch::BatchArgs),
 }
 
 fn main() -> ExitCode {
@@ -62,6 +65,7 @@ fn main() -> ExitCode {
         Command::Paper(args) => commands::claims::run_paper(args),
         Command::Table(args) => commands::table::run_table(args),
         Command::Plot(args) => commands::plot::run_plot(args),
+        Command::Batch(args) => commands::batch::run_batch(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -7,7 +7,7 @@ use common::{any_scene, rat, reference_rows, scene};
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
 use rodimpact::field::Q;
-use rodimpact::scene::{Scene, Support};
+use rodimpact::scene::Support;
 use rodimpact::solve::{closed_form, solve};
 
 /// (scene, v, V, omega, pivot impulse or "-", energy lost), each worked by hand.
