@@ -19,7 +19,9 @@ use std::time::Instant;
 fn main() {
     let quick = std::env::args().any(|a| a == "--quick");
     println!("== per scene, side by side (medians over 1000-scene chunks) ==");
-    println!("batch     | f64 ns | BigRational us | fast us | BigRational/f64 | fast/f64 | BigRational/fast");
+    println!(
+        "batch     | f64 ns | BigRational us | fast us | BigRational/f64 | fast/f64 | BigRational/fast"
+    );
     for (label, file) in [("1e6", "bench-1e6.csv"), ("textbook", "bench-textbook.csv")] {
         side_by_side(label, &reference(file));
     }

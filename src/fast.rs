@@ -28,7 +28,7 @@
 use crate::field::Q;
 use crate::mechanics::Motion;
 use crate::scene::{RodInertia, Scene, Support};
-use num_bigint::BigInt;
+use num_bigint::{BigInt, BigUint};
 use num_traits::{One, ToPrimitive};
 
 /// Which arithmetic produced a [`Solved`].
@@ -138,7 +138,20 @@ impl Int for BigInt {
         Some(sum == c * x * x)
     }
     fn ratio(n: Self, d: Self) -> Q {
-        Q::new(n, d)
+        // Up to 256 bits (every 10^6-sized scene) the GCD runs on two machine words, far faster
+        // than num-bigint's binary GCD on heap digits; beyond, `Q::new` reduces.
+        match (U256::from_big(n.magnitude()), U256::from_big(d.magnitude())) {
+            (Some(a), Some(b)) => {
+                let g = U256::gcd(a, b);
+                if g == U256::ONE {
+                    Q::new_raw(n, d)
+                } else {
+                    let g = BigInt::from(g.to_big());
+                    Q::new_raw(n / &g, d / g)
+                }
+            }
+            _ => Q::new(n, d),
+        }
     }
 }
 
@@ -199,8 +212,9 @@ fn gcd(mut a: u128, mut b: u128) -> u128 {
     }
 }
 
-/// A 256-bit unsigned integer: just enough for the energy identity of the fixed-width path.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// A 256-bit unsigned integer: just enough for the energy identity of the fixed-width path and
+/// the GCDs of the big-integer path. The derived order compares `hi`, then `lo`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 struct U256 {
     hi: u128,
     lo: u128,
@@ -208,6 +222,93 @@ struct U256 {
 
 impl U256 {
     const ZERO: U256 = U256 { hi: 0, lo: 0 };
+    const ONE: U256 = U256 { hi: 0, lo: 1 };
+
+    fn from_big(x: &BigUint) -> Option<U256> {
+        if x.bits() > 256 {
+            return None;
+        }
+        let mut words = x.iter_u64_digits();
+        let mut next = || u128::from(words.next().unwrap_or(0));
+        let lo = next() | next() << 64;
+        let hi = next() | next() << 64;
+        Some(U256 { hi, lo })
+    }
+
+    fn to_big(self) -> BigUint {
+        (BigUint::from(self.hi) << 128u32) + BigUint::from(self.lo)
+    }
+
+    fn trailing_zeros(self) -> u32 {
+        if self.lo == 0 {
+            128 + self.hi.trailing_zeros()
+        } else {
+            self.lo.trailing_zeros()
+        }
+    }
+
+    fn shr(self, k: u32) -> U256 {
+        match k {
+            0 => self,
+            1..128 => U256 {
+                hi: self.hi >> k,
+                lo: self.lo >> k | self.hi << (128 - k),
+            },
+            _ => U256 {
+                hi: 0,
+                lo: self.hi >> (k - 128),
+            },
+        }
+    }
+
+    fn shl(self, k: u32) -> U256 {
+        match k {
+            0 => self,
+            1..128 => U256 {
+                hi: self.hi << k | self.lo >> (128 - k),
+                lo: self.lo << k,
+            },
+            _ => U256 {
+                hi: self.lo << (k - 128),
+                lo: 0,
+            },
+        }
+    }
+
+    /// `self - o` for `self >= o`.
+    fn minus(self, o: U256) -> U256 {
+        let (lo, borrow) = self.lo.overflowing_sub(o.lo);
+        U256 {
+            hi: self.hi - o.hi - u128::from(borrow),
+            lo,
+        }
+    }
+
+    /// Stein's binary GCD; once both fit in 128 bits it finishes in `u128`.
+    fn gcd(mut a: U256, mut b: U256) -> U256 {
+        if a == U256::ZERO {
+            return b;
+        }
+        if b == U256::ZERO {
+            return a;
+        }
+        let shift = a.trailing_zeros().min(b.trailing_zeros());
+        a = a.shr(a.trailing_zeros());
+        loop {
+            b = b.shr(b.trailing_zeros());
+            if a > b {
+                std::mem::swap(&mut a, &mut b);
+            }
+            if b.hi == 0 {
+                let g = gcd(a.lo, b.lo);
+                return U256 { hi: 0, lo: g }.shl(shift);
+            }
+            b = b.minus(a);
+            if b == U256::ZERO {
+                return a.shl(shift);
+            }
+        }
+    }
 
     /// The exact product of two `u128`.
     fn product(a: u128, b: u128) -> U256 {
@@ -351,7 +452,10 @@ mod tests {
             assert_eq!(got, want, "{a} * {b}");
         }
         assert_eq!(U256::square(u128::MAX).checked_mul(2), None);
-        assert_eq!(U256::square(u128::MAX).checked_add(U256::square(2)), None);
+        assert_eq!(
+            U256::square(u128::MAX).checked_add(U256::square(u128::MAX)),
+            None
+        );
         assert_eq!(
             U256::square(1 << 100).checked_mul(1 << 55),
             Some(U256 {
@@ -379,6 +483,36 @@ mod tests {
             i128::squares_balance([(&max, &max), (&0, &0), (&0, &0)], (&1, &1)),
             None
         );
+    }
+
+    #[test]
+    fn gcd_of_u256_matches_big_integers() {
+        let big = |s: &str| s.parse::<BigUint>().unwrap();
+        let cases = [
+            ("0", "12"),
+            ("12", "0"),
+            ("340282366920938463463374607431768211457", "3"),
+            (
+                "115792089237316195423570985008687907853269984665640564039457584007913129639935",
+                "340282366920938463463374607431768211455",
+            ),
+            (
+                "605266953260872505155079183529643000000",
+                "42781701118546417863969985673251741000000",
+            ),
+            ("1180591620717411303424", "3541774862152233910272"),
+        ];
+        for (a, b) in cases {
+            let (x, y) = (big(a), big(b));
+            let (ux, uy) = (U256::from_big(&x).unwrap(), U256::from_big(&y).unwrap());
+            assert_eq!(ux.to_big(), x);
+            assert_eq!(
+                U256::gcd(ux, uy).to_big(),
+                num_integer::Integer::gcd(&x, &y),
+                "{a} {b}"
+            );
+        }
+        assert_eq!(U256::from_big(&(BigUint::from(1u8) << 256u32)), None);
     }
 
     #[test]
