@@ -85,8 +85,12 @@ fn side_by_side(label: &str, scenes: &[Scene]) {
                 black_box(fast::solve(black_box(s)));
             }
         });
-        (bf.push(tb / tf), xf.push(tx / tf), bx.push(tb / tx));
-        (f.push(tf), b.push(tb), x.push(tx));
+        bf.push(tb / tf);
+        xf.push(tx / tf);
+        bx.push(tb / tx);
+        f.push(tf);
+        b.push(tb);
+        x.push(tx);
     }
     println!(
         "{label:9} | {:6.1} | {:14.2} | {:7.3} | {:15.0} | {:8.0} | {:16.1}",

@@ -417,7 +417,7 @@ impl ClaimStats {
 /// let b = Batch::new("m,M", Backend::Exact).unwrap();
 /// let mut out = Vec::new();
 /// let summary = run("1,1\n2,1\n".as_bytes(), &mut out, &b, |_| {}).unwrap();
-/// assert_eq!(String::from_utf8(out).unwrap(), "1,1,3/5,2/5,6/5,true\n2,1,5/7,4/7,12/7,true\n");
+/// assert_eq!(String::from_utf8(out).unwrap(), "1,1,3/5,2/5,6/5,true\n2,1,7/9,4/9,4/3,true\n");
 /// assert_eq!(summary.rows, 2);
 /// ```
 pub fn run(
