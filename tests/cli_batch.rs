@@ -139,6 +139,9 @@ fn usage_errors_exit_2() {
     let file = dir.join("in.csv");
     std::fs::write(&file, "m,M,mass\n1,1,1\n").unwrap();
     let f = file.to_str().unwrap();
+    let empty = dir.join("empty.csv");
+    std::fs::write(&empty, "").unwrap();
+    let e = empty.to_str().unwrap();
     for (args, want) in [
         (vec!["batch", f], "error: header: unknown column 'mass'"),
         (

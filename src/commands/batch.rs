@@ -64,6 +64,16 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     let mut input = BufReader::with_capacity(1 << 16, file);
     let mut header = String::new();
     input.read_line(&mut header).map_err(read_error)?;
+    if header.trim().is_empty() {
+        return Err(Error::new(
+            "FILE",
+            ErrorKind::Invalid(format!(
+                "{} has no header line (expected columns among m,M,l,a,v0,rod,e,pivot,v,V,omega)",
+                args.file.display()
+            )),
+        )
+        .into());
+    }
     let batch = Batch::new(&header, backend)?;
 
     let bar = std::io::stderr().is_terminal().then(|| {
