@@ -22,8 +22,8 @@
 //! energy `mn Md gd nv^2 + Mn md gd nV^2 + Mn md gn nw^2 = mn Md gd dd^2`.
 //!
 //! The integers are first tried in checked `i128` (energy in 256 bits, its terms are
-//! non-negative); the first overflow restarts the scene in [`BigInt`]. A pivoted rod is
-//! delegated to the generic solver over [`Q`].
+//! non-negative); the first overflow restarts the scene in [`BigInt`]. A pivoted rod takes the
+//! same route with its own fixed-axis formulas (see `pivoted`).
 
 use crate::field::Q;
 use crate::mechanics::Motion;
@@ -38,8 +38,6 @@ pub enum Arithmetic {
     Fixed,
     /// Fraction-free in `BigInt` (the fixed width overflowed, or was not tried).
     Big,
-    /// The generic solver over `BigRational` (pivoted rods).
-    Generic,
 }
 
 /// The velocities after the impact, exact and reduced, and whether the laws held.
@@ -54,8 +52,8 @@ pub struct Solved {
     pub arithmetic: Arithmetic,
 }
 
-/// Solves the scene exactly on the fastest path that fits: fixed width, then big integers, and
-/// the generic solver for a pivoted rod.
+/// Solves the scene exactly on the fastest path that fits, fixed width then big integers: free
+/// or pivoted rod, any inertia, any e.
 ///
 /// # Examples
 /// ```
@@ -67,7 +65,7 @@ pub struct Solved {
 /// assert_eq!(out.arithmetic, Arithmetic::Fixed);
 /// ```
 pub fn solve(scene: &Scene) -> Solved {
-    free_rod::<i128>(scene)
+    fraction_free::<i128>(scene)
         .map(|s| s.with(Arithmetic::Fixed))
         .unwrap_or_else(|| solve_big(scene))
 }
@@ -82,10 +80,9 @@ pub fn solve(scene: &Scene) -> Solved {
 /// assert_eq!(solve_big(&s).after, solve(&s).after);
 /// ```
 pub fn solve_big(scene: &Scene) -> Solved {
-    match free_rod::<BigInt>(scene) {
-        Some(s) => s.with(Arithmetic::Big),
-        None => generic(scene),
-    }
+    fraction_free::<BigInt>(scene)
+        .expect("big integers never overflow")
+        .with(Arithmetic::Big)
 }
 
 /// `n/d` reduced to lowest terms with a positive denominator: the same value and
@@ -115,16 +112,6 @@ pub fn reduce(n: BigInt, d: BigInt) -> Q {
 impl Solved {
     fn with(self, arithmetic: Arithmetic) -> Self {
         Solved { arithmetic, ..self }
-    }
-}
-
-fn generic(scene: &Scene) -> Solved {
-    let out =
-        crate::solve::solve(&scene.params::<Q>()).expect("a valid scene is never singular over Q");
-    Solved {
-        laws_hold: out.residuals.all_zero(),
-        after: out.after,
-        arithmetic: Arithmetic::Generic,
     }
 }
 
@@ -393,61 +380,158 @@ fn inertia_per_mass<T: Int>(scene: &Scene) -> Option<(T, T)> {
     }
 }
 
-/// The fraction-free solve of a free rod in `T`; `None` for a pivoted rod or on overflow.
-fn free_rod<T: Int>(scene: &Scene) -> Option<Solved> {
-    if !matches!(scene.support(), Support::Free) {
-        return None;
-    }
+/// The scene's numbers split once into numerators and denominators (I = M g).
+struct Parts<T> {
+    mn: T,
+    md: T,
+    big_n: T,
+    big_d: T,
+    an: T,
+    ad: T,
+    en: T,
+    ed: T,
+    gn: T,
+    gd: T,
+}
+
+/// The solution over one common denominator, before v0: `v = v0 nv/den`, and so on.
+struct Raw<T> {
+    nv: T,
+    n_big_v: T,
+    nw: T,
+    den: T,
+    /// The momentum laws that apply held (energy is checked on the raw values afterwards).
+    momentum: bool,
+}
+
+/// The fraction-free solve in `T`; `None` on overflow.
+fn fraction_free<T: Int>(scene: &Scene) -> Option<Solved> {
     let (mn, md) = split::<T>(scene.m())?;
     let (big_n, big_d) = split::<T>(scene.rod_mass())?;
     let (an, ad) = split::<T>(scene.a())?;
-    let (vn, vd) = split::<T>(scene.v0())?;
     let (en, ed) = split::<T>(scene.e())?;
     let (gn, gd) = inertia_per_mass::<T>(scene)?;
-
-    let ad2 = ad.mul(&ad)?;
-    let mn_big_d = mn.mul(&big_d)?;
-    let big_n_md = big_n.mul(&md)?;
-    let a_term = mn_big_d.mul(&gn)?.mul(&ad2)?;
-    let b_term = big_n_md.mul(&gn)?.mul(&ad2)?;
-    let c_term = mn_big_d.mul(&an)?.mul(&an)?.mul(&gd)?;
-    let a_plus_c = a_term.add(&c_term)?;
-    let dd = ed.mul(&a_plus_c.add(&b_term)?)?;
-    let ne = ed.add(&en)?;
-    let nv = ed.mul(&a_plus_c)?.sub(&en.mul(&b_term)?)?;
-    let n_big_v = ne.mul(&a_term)?;
-    let nw = ne.mul(&mn_big_d)?.mul(&an)?.mul(&gd)?.mul(&ad)?;
-
-    let linear = mn_big_d.mul(&nv)?.add(&big_n_md.mul(&n_big_v)?)? == mn_big_d.mul(&dd)?;
-    let mn_an_gd = mn_big_d.mul(&an)?.mul(&gd)?;
-    let angular = mn_an_gd
-        .mul(&nv)?
-        .add(&big_n_md.mul(&gn)?.mul(&ad)?.mul(&nw)?)?
-        == mn_an_gd.mul(&dd)?;
+    let parts = Parts {
+        mn,
+        md,
+        big_n,
+        big_d,
+        an,
+        ad,
+        en,
+        ed,
+        gn,
+        gd,
+    };
+    let raw = match scene.support() {
+        Support::Free => free_rod(&parts)?,
+        Support::Pivot(p) => pivoted(&parts, p)?,
+    };
+    // Energy, m v^2 + M V^2 + M g omega^2 = m v0^2, times md Md gd: the same for both supports.
     let energy = if scene.e().is_one() {
-        let weight = mn_big_d.mul(&gd)?;
+        let Parts {
+            mn,
+            md,
+            big_n,
+            big_d,
+            gn,
+            gd,
+            ..
+        } = &parts;
+        let weight = mn.mul(big_d)?.mul(gd)?;
         T::squares_balance(
             [
-                (&weight, &nv),
-                (&big_n_md.mul(&gd)?, &n_big_v),
-                (&big_n_md.mul(&gn)?, &nw),
+                (&weight, &raw.nv),
+                (&big_n.mul(md)?.mul(gd)?, &raw.n_big_v),
+                (&big_n.mul(md)?.mul(gn)?, &raw.nw),
             ],
-            (&weight, &dd),
+            (&weight, &raw.den),
         )?
     } else {
         true
     };
-
-    let den = vd.mul(&dd)?;
+    let (vn, vd) = split::<T>(scene.v0())?;
+    let den = vd.mul(&raw.den)?;
     let after = Motion {
-        v: T::ratio(vn.mul(&nv)?, den.clone()),
-        rod_v: T::ratio(vn.mul(&n_big_v)?, den.clone()),
-        omega: T::ratio(vn.mul(&nw)?, den),
+        v: T::ratio(vn.mul(&raw.nv)?, den.clone()),
+        rod_v: T::ratio(vn.mul(&raw.n_big_v)?, den.clone()),
+        omega: T::ratio(vn.mul(&raw.nw)?, den),
     };
     Some(Solved {
         after,
-        laws_hold: linear && angular && energy,
+        laws_hold: raw.momentum && energy,
         arithmetic: Arithmetic::Big,
+    })
+}
+
+/// Free rod: see the module documentation for the formulas and the identities.
+fn free_rod<T: Int>(s: &Parts<T>) -> Option<Raw<T>> {
+    let ad2 = s.ad.mul(&s.ad)?;
+    let mn_big_d = s.mn.mul(&s.big_d)?;
+    let big_n_md = s.big_n.mul(&s.md)?;
+    let a_term = mn_big_d.mul(&s.gn)?.mul(&ad2)?;
+    let b_term = big_n_md.mul(&s.gn)?.mul(&ad2)?;
+    let c_term = mn_big_d.mul(&s.an)?.mul(&s.an)?.mul(&s.gd)?;
+    let a_plus_c = a_term.add(&c_term)?;
+    let den = s.ed.mul(&a_plus_c.add(&b_term)?)?;
+    let ne = s.ed.add(&s.en)?;
+    let nv = s.ed.mul(&a_plus_c)?.sub(&s.en.mul(&b_term)?)?;
+    let n_big_v = ne.mul(&a_term)?;
+    let nw = ne.mul(&mn_big_d)?.mul(&s.an)?.mul(&s.gd)?.mul(&s.ad)?;
+
+    let linear = mn_big_d.mul(&nv)?.add(&big_n_md.mul(&n_big_v)?)? == mn_big_d.mul(&den)?;
+    let mn_an_gd = mn_big_d.mul(&s.an)?.mul(&s.gd)?;
+    let angular = mn_an_gd
+        .mul(&nv)?
+        .add(&big_n_md.mul(&s.gn)?.mul(&s.ad)?.mul(&nw)?)?
+        == mn_an_gd.mul(&den)?;
+    Some(Raw {
+        nv,
+        n_big_v,
+        nw,
+        den,
+        momentum: linear && angular,
+    })
+}
+
+/// Pivot at p, d = a - p = dn/dq: with s = mn Md gd pd^2 and
+/// `K = Mn md dq^2 (gn pd^2 + pn^2 gd) + s dn^2` (I_p + m d^2 over the common denominator),
+/// `den = ed K`, `nw = ne s dn dq`, `nv = ne s dn^2 - en K`, `nV = -ne mn Md gd pd pn dn dq`.
+/// Checked: angular momentum about the pivot, m d v + I omega - p M V = m d v0, times
+/// md dq Md gd pd.
+fn pivoted<T: Int>(s: &Parts<T>, p: &Q) -> Option<Raw<T>> {
+    let (pn, pd) = split::<T>(p)?;
+    let dn = s.an.mul(&pd)?.sub(&pn.mul(&s.ad)?)?;
+    let dq = s.ad.mul(&pd)?;
+    let mn_big_d_gd = s.mn.mul(&s.big_d)?.mul(&s.gd)?;
+    let big_n_md = s.big_n.mul(&s.md)?;
+    let scale = mn_big_d_gd.mul(&pd)?.mul(&pd)?;
+    let inertia = s.gn.mul(&pd)?.mul(&pd)?.add(&pn.mul(&pn)?.mul(&s.gd)?)?;
+    let k = big_n_md
+        .mul(&dq)?
+        .mul(&dq)?
+        .mul(&inertia)?
+        .add(&scale.mul(&dn)?.mul(&dn)?)?;
+    let ne = s.ed.add(&s.en)?;
+    let den = s.ed.mul(&k)?;
+    let ne_dn_dq = ne.mul(&dn)?.mul(&dq)?;
+    let nw = scale.mul(&ne_dn_dq)?;
+    let nv = ne.mul(&scale)?.mul(&dn)?.mul(&dn)?.sub(&s.en.mul(&k)?)?;
+    let n_big_v = T::small(0).sub(&mn_big_d_gd.mul(&pd)?.mul(&pn)?.mul(&ne_dn_dq)?)?;
+
+    let m_d = s.mn.mul(&dn)?.mul(&s.big_d)?.mul(&s.gd)?.mul(&pd)?;
+    let big_n_md_dq = big_n_md.mul(&dq)?;
+    let angular = m_d
+        .mul(&nv)?
+        .add(&big_n_md_dq.mul(&s.gn)?.mul(&pd)?.mul(&nw)?)?
+        .sub(&pn.mul(&big_n_md_dq)?.mul(&s.gd)?.mul(&n_big_v)?)?
+        == m_d.mul(&den)?;
+    Some(Raw {
+        nv,
+        n_big_v,
+        nw,
+        den,
+        momentum: angular,
     })
 }
 
@@ -558,7 +642,7 @@ mod tests {
             .build()
             .unwrap();
         let out = solve(&pivoted);
-        assert_eq!(out.arithmetic, Arithmetic::Generic);
+        assert_eq!(out.arithmetic, Arithmetic::Fixed);
         assert_eq!((out.after.v, out.after.omega), (q(0, 1), q(1, 1)));
     }
 

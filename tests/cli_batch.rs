@@ -144,6 +144,7 @@ fn usage_errors_exit_2() {
     let e = empty.to_str().unwrap();
     for (args, want) in [
         (vec!["batch", f], "error: header: unknown column 'mass'"),
+        (vec!["batch", e], "error: FILE: "),
         (
             vec!["batch", "/nonexistent/x.csv"],
             "error: FILE: cannot read /nonexistent/x.csv",

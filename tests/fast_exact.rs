@@ -68,13 +68,14 @@ proptest! {
     }
 
     /// Law: the same across the fixed-width overflow boundary (inputs of 8 to 40 bits), for
-    /// every rod kind and e.
+    /// every rod kind, e and support.
     #[test]
     fn fast_equals_generic_across_the_overflow_boundary(
         bits in 8u32..=40,
         kind in 0u8..4,
         e_num in 0i64..=4,
         sign in proptest::bool::ANY,
+        pivot in proptest::option::of(-8i64..=8),
         seed in (wide(40), wide(40), wide(40), wide(40), (1u64..=1000, 1u64..=1000)),
     ) {
         let scale = Q::from_integer(1.into()) / Q::from_integer((1u64 << (40 - bits)).into());
@@ -88,7 +89,11 @@ proptest! {
             2 => RodInertia::Gyration(&l * &frac),
             _ => RodInertia::Moment(&big_m * &l * &l * &frac),
         };
-        let s = Scene::builder(m, big_m)
+        let mut builder = Scene::builder(m, big_m);
+        if let Some(k) = pivot {
+            builder = builder.pivot(&l * Q::new(k.into(), 8.into()));
+        }
+        let s = builder
             .half_length(l)
             .a(a)
             .v0(v0)
