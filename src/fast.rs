@@ -216,9 +216,30 @@ fn gcd(mut a: u128, mut b: u128) -> u128 {
         if a > b {
             std::mem::swap(&mut a, &mut b);
         }
+        if let Ok(small) = u64::try_from(b) {
+            // Both fit one machine word now (a <= b): finish there.
+            return u128::from(gcd64(a as u64, small)) << shift;
+        }
         b -= a;
         if b == 0 {
             return a << shift;
+        }
+    }
+}
+
+/// Stein's binary GCD on `u64`, for odd `a` (`gcd64(a, 0) = a`).
+fn gcd64(mut a: u64, mut b: u64) -> u64 {
+    if b == 0 {
+        return a;
+    }
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a;
         }
     }
 }
@@ -628,6 +649,12 @@ mod tests {
         assert_eq!(gcd(12, 18), 6);
         assert_eq!(gcd(1 << 100, 3 << 90), 1 << 90);
         assert_eq!(gcd(u128::MAX, u128::MAX - 1), 1);
+        assert_eq!(gcd(3 << 70, 9 << 3), 3 << 3);
+        assert_eq!(gcd(1 << 64, 1), 1);
+        assert_eq!(
+            gcd(123_456_789 * 987_654_321, 987_654_321 * 1_000_003),
+            987_654_321
+        );
     }
 
     #[test]
