@@ -32,6 +32,13 @@ pub const CHUNK: usize = 8192;
 pub const FLOAT_TOLERANCE: f64 = 1e-9;
 
 /// The arithmetic of the batch.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Batch, Backend};
+/// let row = Batch::new("m,M", Backend::F64).unwrap().row(1, "1,1").unwrap();
+/// assert_eq!(row.laws_held, None); // a float backend decides nothing exactly
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Backend {
     /// Exact rationals ([`fast::solve`]): claims agree only when exactly equal.
@@ -54,6 +61,15 @@ pub struct Batch {
 }
 
 /// A claimed value compared with the computed one.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{batch::{Batch, Backend}, field::q};
+/// let row = Batch::new("m,M,V", Backend::Exact).unwrap().row(1, "1,1,0.5").unwrap();
+/// let verdict = &row.verdicts[0];
+/// assert_eq!((verdict.output, verdict.ok), (1, false));
+/// assert_eq!(verdict.rel_error, Some(q(1, 4))); // |1/2 - 2/5| / (2/5)
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Verdict {
     /// Which output: 0 v, 1 V, 2 omega.
@@ -65,6 +81,13 @@ pub struct Verdict {
 }
 
 /// One output row: the CSV line (with its newline) and what the summary needs.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Batch, Backend};
+/// let row = Batch::new("m,M", Backend::Exact).unwrap().row(1, "1,1").unwrap();
+/// assert_eq!((row.line.as_str(), row.laws_held), ("1,1,3/5,2/5,6/5,true\n", Some(true)));
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
     /// The output line.
@@ -129,6 +152,13 @@ impl Batch {
     }
 
     /// The header of the output file (with its newline).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Backend};
+    /// let b = Batch::new("m,M,omega", Backend::Exact).unwrap();
+    /// assert_eq!(b.output_header(), "m,M,omega,v,V,omega_exact,laws_held,omega_ok,omega_rel_error\n");
+    /// ```
     pub fn output_header(&self) -> String {
         let mut out = self.header.clone();
         for (k, name) in OUTPUTS.iter().enumerate() {
@@ -283,6 +313,15 @@ fn compare(output: usize, claim: &Q, value: &Q, backend: Backend) -> Verdict {
 
 /// Counts, the largest relative error and a bounded histogram for the median, per claimed
 /// output.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Batch, Backend, Summary};
+/// let b = Batch::new("m,M", Backend::Exact).unwrap();
+/// let mut s = Summary::default();
+/// s.add(&b.row(1, "1,1").unwrap());
+/// assert_eq!((s.rows, s.laws_failed, s.wrong()), (1, 0, 0));
+/// ```
 #[derive(Debug, Clone, Default)]
 pub struct Summary {
     /// Data rows processed.
@@ -303,7 +342,7 @@ struct ClaimStats {
 }
 
 impl Summary {
-    /// Adds one row.
+    /// Adds one row (see the type's example).
     pub fn add(&mut self, row: &Row) {
         self.rows += 1;
         if row.laws_held == Some(false) {

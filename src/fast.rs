@@ -32,6 +32,14 @@ use num_bigint::{BigInt, BigUint};
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// Which arithmetic produced a [`Solved`].
+///
+/// # Examples
+/// ```
+/// use rodimpact::{fast::{solve, Arithmetic}, scene::Scene, field::q};
+/// let big = q(1 << 62, 3);
+/// let s = Scene::builder(big.clone(), big * q(7, 5)).build().unwrap();
+/// assert_eq!(solve(&s).arithmetic, Arithmetic::Big); // beyond i128
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Arithmetic {
     /// Fraction-free in checked `i128` (energy in 256-bit unsigned).
@@ -41,6 +49,15 @@ pub enum Arithmetic {
 }
 
 /// The velocities after the impact, exact and reduced, and whether the laws held.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{fast::solve, scene::Scene, field::q};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).e(q(0, 1)).build().unwrap();
+/// let out = solve(&s);
+/// assert_eq!((out.after.v, out.after.omega), (q(4, 5), q(3, 5))); // sticking
+/// assert!(out.laws_hold); // momentum balances; energy is not conserved for e = 0
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Solved {
     /// v, V, omega exactly as [`crate::solve::solve`] over [`Q`] gives them.

@@ -88,6 +88,12 @@ impl AtomicFile {
     ///
     /// # Errors
     /// `field: cannot write <path>: <reason>`.
+    ///
+    /// # Examples
+    /// ```
+    /// let err = rodimpact::report::AtomicFile::create("out", "/nonexistent/x.csv".as_ref());
+    /// assert!(err.err().unwrap().to_string().starts_with("out: cannot write /nonexistent/x.csv"));
+    /// ```
     pub fn create(field: &str, path: &Path) -> Result<AtomicFile, Error> {
         let tmp = temporary_sibling(path);
         let file = fs::File::create(&tmp).map_err(|why| io_error(field, path, why))?;
@@ -103,6 +109,18 @@ impl AtomicFile {
     ///
     /// # Errors
     /// `field: cannot write <path>: <reason>` (the temporary file is then removed).
+    ///
+    /// # Examples
+    /// ```
+    /// use std::io::Write;
+    /// let dir = std::env::temp_dir().join(format!("rodimpact-doc-commit-{}", std::process::id()));
+    /// std::fs::create_dir_all(&dir).unwrap();
+    /// let mut dropped = rodimpact::report::AtomicFile::create("out", &dir.join("a.csv")).unwrap();
+    /// dropped.write_all(b"x").unwrap();
+    /// drop(dropped); // no commit: nothing left behind
+    /// assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
+    /// # std::fs::remove_dir_all(&dir).unwrap();
+    /// ```
     pub fn commit(mut self) -> Result<(), Error> {
         let file = self.file.take().expect("open until committed");
         let done = file
