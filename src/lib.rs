@@ -25,8 +25,10 @@
 //! # Ok::<(), rodimpact::Error>(())
 //! ```
 
+pub mod batch;
 pub mod claims;
 pub mod error;
+pub mod fast;
 pub mod field;
 pub mod float;
 pub mod mechanics;

@@ -34,6 +34,9 @@ enum Command {
     Check(Box<commands::check::CheckArgs>),
     /// Float error against run time for every backend and formula on the stiff/extreme suite.
     Stability(commands::stability::StabilityArgs),
+    /// Many scenes from a CSV file, exactly, streamed and in parallel; claimed v, V, omega
+    /// columns are checked.
+    Batch(commands::batch::BatchArgs),
 }
 
 fn main() -> ExitCode {
@@ -68,6 +71,7 @@ fn main() -> ExitCode {
         Command::Plot(args) => commands::plot::run_plot(args),
         Command::Check(args) => commands::check::run_check(args),
         Command::Stability(args) => commands::stability::run_stability(args),
+        Command::Batch(args) => commands::batch::run_batch(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -3,11 +3,11 @@
 
 mod common;
 
-use common::{any_scene, rat, scene};
+use common::{any_scene, rat, reference_rows, scene};
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
 use rodimpact::field::Q;
-use rodimpact::scene::{Scene, Support};
+use rodimpact::scene::Support;
 use rodimpact::solve::{closed_form, solve};
 
 /// (scene, v, V, omega, pivot impulse or "-", energy lost), each worked by hand.
@@ -69,27 +69,6 @@ fn only_the_laws_that_apply_are_reported() {
     assert!(pivot_sticking.residuals.linear_momentum.is_none());
     assert!(pivot_sticking.residuals.energy.is_none());
     assert!(pivot_sticking.pivot_impulse.is_some());
-}
-
-/// The first `limit` rows of a reference batch of `../shared/data/`: the line, its scene
-/// (columns m, M, l, a, v0) and every column as an exact number.
-fn reference_rows(file: &str, limit: usize) -> Vec<(String, Scene, Vec<Q>)> {
-    let path = format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(path).expect("shared/data beside the project");
-    text.lines()
-        .skip(1)
-        .take(limit)
-        .map(|line| {
-            let f: Vec<Q> = line.split(',').map(rat).collect();
-            let s = Scene::builder(f[0].clone(), f[1].clone())
-                .half_length(f[2].clone())
-                .a(f[3].clone())
-                .v0(f[4].clone())
-                .build()
-                .expect("reference scenes are valid");
-            (line.to_string(), s, f)
-        })
-        .collect()
 }
 
 #[test]

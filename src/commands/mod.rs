@@ -1,6 +1,7 @@
 //! The subcommands: each file parses its flags and calls the library; this module holds what
 //! they share (scene flags, number lists, the failure kinds that become exit codes).
 
+pub(crate) mod batch;
 pub(crate) mod check;
 pub(crate) mod claims;
 pub(crate) mod plot;

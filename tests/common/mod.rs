@@ -102,3 +102,24 @@ pub fn rodimpact(args: &[&str]) -> (i32, String, String) {
         String::from_utf8_lossy(&out.stderr).into_owned(),
     )
 }
+
+/// The first `limit` rows of a reference batch of `../shared/data/`: the line, its scene
+/// (columns m, M, l, a, v0) and every column as an exact number.
+pub fn reference_rows(file: &str, limit: usize) -> Vec<(String, Scene, Vec<Q>)> {
+    let path = format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).expect("shared/data beside the project");
+    text.lines()
+        .skip(1)
+        .take(limit)
+        .map(|line| {
+            let f: Vec<Q> = line.split(',').map(rat).collect();
+            let s = Scene::builder(f[0].clone(), f[1].clone())
+                .half_length(f[2].clone())
+                .a(f[3].clone())
+                .v0(f[4].clone())
+                .build()
+                .expect("reference scenes are valid");
+            (line.to_string(), s, f)
+        })
+        .collect()
+}

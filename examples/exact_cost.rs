@@ -1,0 +1,187 @@
+//! The cost of exactness, measured side by side: `cargo run --release --example exact_cost`.
+//!
+//! 1. Per scene (solve + the conservation laws) on both reference batches of `../shared/data/`:
+//!    f64 closed form, the straightforward `BigRational` path (generic solver over Q) and the
+//!    fast exact path, interleaved on 1000-scene chunks; medians of per-chunk times and ratios.
+//! 2. Growth of the fast exact cost with the size of the inputs: random scenes whose numerators
+//!    and denominators have 10 to 100,000 bits; the exponent of the fitted power law.
+//!
+//! Pass `--quick` to stop the growth curve at 10,000 bits.
+
+use num_bigint::{BigInt, BigUint};
+use rodimpact::fast;
+use rodimpact::field::Q;
+use rodimpact::scene::Scene;
+use rodimpact::solve::{closed_form, outcome, solve};
+use std::hint::black_box;
+use std::time::Instant;
+
+fn main() {
+    let quick = std::env::args().any(|a| a == "--quick");
+    println!("== per scene, side by side (medians over 1000-scene chunks) ==");
+    println!(
+        "batch     | f64 ns | BigRational us | fast us | BigRational/f64 | fast/f64 | BigRational/fast"
+    );
+    for (label, file) in [("1e6", "bench-1e6.csv"), ("textbook", "bench-textbook.csv")] {
+        side_by_side(label, &reference(file));
+    }
+    println!();
+    println!("== growth of the fast exact cost with input size ==");
+    growth(if quick { 10_000 } else { 100_000 });
+}
+
+fn reference(file: &str) -> Vec<Scene> {
+    let path = format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).expect("shared/data beside the project");
+    text.lines()
+        .skip(1)
+        .map(|line| {
+            let f: Vec<Q> = line
+                .split(',')
+                .map(|t| rodimpact::number::parse(t).expect("reference data"))
+                .collect();
+            Scene::builder(f[0].clone(), f[1].clone())
+                .half_length(f[2].clone())
+                .a(f[3].clone())
+                .v0(f[4].clone())
+                .build()
+                .expect("valid reference scene")
+        })
+        .collect()
+}
+
+fn median(mut xs: Vec<f64>) -> f64 {
+    xs.sort_by(f64::total_cmp);
+    xs[xs.len() / 2]
+}
+
+/// Seconds per scene of `work` over `chunk`, repeated `reps` times.
+fn per_scene(reps: usize, chunk: usize, mut work: impl FnMut()) -> f64 {
+    let start = Instant::now();
+    for _ in 0..reps {
+        work();
+    }
+    start.elapsed().as_secs_f64() / (reps * chunk) as f64
+}
+
+fn side_by_side(label: &str, scenes: &[Scene]) {
+    let (mut f, mut b, mut x) = (vec![], vec![], vec![]);
+    let (mut bf, mut xf, mut bx) = (vec![], vec![], vec![]);
+    for chunk in scenes.chunks(1000) {
+        let floats: Vec<_> = chunk.iter().map(|s| s.params::<f64>()).collect();
+        let exact: Vec<_> = chunk.iter().map(|s| s.params::<Q>()).collect();
+        let tf = per_scene(200, chunk.len(), || {
+            for p in &floats {
+                black_box(closed_form(black_box(p)).map(|m| outcome(p, m)));
+            }
+        });
+        let tb = per_scene(1, chunk.len(), || {
+            for p in &exact {
+                black_box(solve(black_box(p)));
+            }
+        });
+        let tx = per_scene(3, chunk.len(), || {
+            for s in chunk {
+                black_box(fast::solve(black_box(s)));
+            }
+        });
+        bf.push(tb / tf);
+        xf.push(tx / tf);
+        bx.push(tb / tx);
+        f.push(tf);
+        b.push(tb);
+        x.push(tx);
+    }
+    println!(
+        "{label:9} | {:6.1} | {:14.2} | {:7.3} | {:15.0} | {:8.0} | {:16.1}",
+        median(f) * 1e9,
+        median(b) * 1e6,
+        median(x) * 1e6,
+        median(bf),
+        median(xf),
+        median(bx)
+    );
+}
+
+/// SplitMix64, as in PERFORMANCE.md's batches.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// A random integer of exactly `bits` bits.
+    fn int(&mut self, bits: u64) -> BigInt {
+        let words = bits.div_ceil(32) as usize;
+        let digits: Vec<u32> = (0..words).map(|_| self.next() as u32).collect();
+        let mut n = BigUint::new(digits) >> (words as u64 * 32 - bits);
+        n.set_bit(bits - 1, true);
+        n.into()
+    }
+
+    fn rational(&mut self, bits: u64) -> Q {
+        Q::new(self.int(bits), self.int(bits))
+    }
+}
+
+fn random_scene(rng: &mut Rng, bits: u64) -> Scene {
+    let (mut l, mut a) = (rng.rational(bits), rng.rational(bits));
+    if a > l {
+        std::mem::swap(&mut l, &mut a);
+    }
+    if rng.next() % 2 == 1 {
+        a = -a;
+    }
+    Scene::builder(rng.rational(bits), rng.rational(bits))
+        .half_length(l)
+        .a(a)
+        .v0(rng.rational(bits))
+        .build()
+        .expect("|a| <= l by construction")
+}
+
+fn growth(max_bits: u64) {
+    println!("bits    | fast exact us/scene | BigRational us/scene");
+    let mut rng = Rng(20240611);
+    let mut points = vec![];
+    for bits in [10u64, 32, 100, 316, 1000, 3162, 10_000, 31_623, 100_000] {
+        if bits > max_bits {
+            break;
+        }
+        let count = (200_000 / bits).clamp(1, 200) as usize;
+        let scenes: Vec<Scene> = (0..count).map(|_| random_scene(&mut rng, bits)).collect();
+        let t_fast = per_scene(1, count, || {
+            for s in &scenes {
+                black_box(fast::solve(black_box(s)));
+            }
+        });
+        let t_big = (bits <= 3162).then(|| {
+            let exact: Vec<_> = scenes.iter().map(|s| s.params::<Q>()).collect();
+            per_scene(1, count, || {
+                for p in &exact {
+                    black_box(solve(black_box(p)));
+                }
+            })
+        });
+        let big = t_big.map_or("-".to_string(), |t| format!("{:.1}", t * 1e6));
+        println!("{bits:7} | {:19.1} | {big:>20}", t_fast * 1e6);
+        points.push((bits as f64, t_fast));
+    }
+    let fit: Vec<_> = points.iter().filter(|(b, _)| *b >= 1000.0).collect();
+    if fit.len() >= 2 {
+        let n = fit.len() as f64;
+        let (xs, ys): (Vec<f64>, Vec<f64>) = fit.iter().map(|(b, t)| (b.ln(), t.ln())).unzip();
+        let (mx, my) = (xs.iter().sum::<f64>() / n, ys.iter().sum::<f64>() / n);
+        let sxy: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
+        let sxx: f64 = xs.iter().map(|x| (x - mx) * (x - mx)).sum();
+        println!(
+            "fitted exponent (inputs >= 1000 bits): cost ~ bits^{:.2}",
+            sxy / sxx
+        );
+    }
+}

@@ -1,0 +1,605 @@
+//! Many scenes from a CSV file: solved exactly (or in f64), streamed in chunks, in parallel,
+//! written back in input order with the results appended.
+//!
+//! The header names columns among `m, M, l, a, v0, rod, e, pivot` (m and M required, the others
+//! take the `solve` defaults, also when a cell is empty) and optionally `v, V, omega`: claimed
+//! results, each compared with the computed value. Appended columns: `v, V, omega` (named
+//! `v_exact`, ... when the input already has a claim of that name), `laws_held`, and for each
+//! claim `<name>_ok, <name>_rel_error`.
+//!
+//! Limits: at most [`MAX_ROWS`] rows and [`MAX_LINE`] bytes per line; each number at most
+//! [`number::MAX_DIGITS`](crate::number::MAX_DIGITS) digits. Memory stays flat in the number of
+//! rows: [`CHUNK`] rows are held at a time, and the median of the summary comes from a
+//! histogram of relative errors rounded to two significant digits.
+
+use crate::error::{Error, ErrorKind};
+use crate::fast;
+use crate::field::Q;
+use crate::mechanics::Motion;
+use crate::scene::{SceneInput, parse_field};
+use num_traits::{Signed, Zero};
+use rayon::prelude::*;
+use std::collections::BTreeMap;
+use std::io::{BufRead, Read, Write};
+
+/// The largest number of data rows accepted.
+pub const MAX_ROWS: usize = 100_000_000;
+/// The longest line accepted, in bytes.
+pub const MAX_LINE: usize = 1 << 20;
+/// Rows read, solved in parallel and written per step.
+pub const CHUNK: usize = 8192;
+/// The relative error up to which a claim agrees with a float backend's value.
+pub const FLOAT_TOLERANCE: f64 = 1e-9;
+
+/// The arithmetic of the batch.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Batch, Backend};
+/// let row = Batch::new("m,M", Backend::F64).unwrap().row(1, "1,1").unwrap();
+/// assert_eq!(row.laws_held, None); // a float backend decides nothing exactly
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Backend {
+    /// Exact rationals ([`fast::solve`]): claims agree only when exactly equal.
+    Exact,
+    /// The closed form in f64: claims agree within [`FLOAT_TOLERANCE`]; laws not decided.
+    F64,
+}
+
+const SCENE_COLUMNS: [&str; 8] = ["m", "M", "l", "a", "v0", "rod", "e", "pivot"];
+const OUTPUTS: [&str; 3] = ["v", "V", "omega"];
+
+/// A parsed header: which input column feeds which scene field or claim.
+#[derive(Debug, Clone)]
+pub struct Batch {
+    backend: Backend,
+    /// Per input column: index into `SCENE_COLUMNS`, or 8 + index into `OUTPUTS` for a claim.
+    columns: Vec<usize>,
+    claims: Vec<usize>,
+    header: String,
+}
+
+/// A claimed value compared with the computed one.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{batch::{Batch, Backend}, field::q};
+/// let row = Batch::new("m,M,V", Backend::Exact).unwrap().row(1, "1,1,0.5").unwrap();
+/// let verdict = &row.verdicts[0];
+/// assert_eq!((verdict.output, verdict.ok), (1, false));
+/// assert_eq!(verdict.rel_error, Some(q(1, 4))); // |1/2 - 2/5| / (2/5)
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Verdict {
+    /// Which output: 0 v, 1 V, 2 omega.
+    pub output: usize,
+    /// The claim agrees (exactly, or within [`FLOAT_TOLERANCE`] for a float backend).
+    pub ok: bool,
+    /// |claim - value| / |value|, exact; `None` when the value is 0 and the claim is not.
+    pub rel_error: Option<Q>,
+}
+
+/// One output row: the CSV line (with its newline) and what the summary needs.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Batch, Backend};
+/// let row = Batch::new("m,M", Backend::Exact).unwrap().row(1, "1,1").unwrap();
+/// assert_eq!((row.line.as_str(), row.laws_held), ("1,1,3/5,2/5,6/5,true\n", Some(true)));
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// The output line.
+    pub line: String,
+    /// The laws held exactly (`None` for a float backend).
+    pub laws_held: Option<bool>,
+    /// The claims of the row.
+    pub verdicts: Vec<Verdict>,
+}
+
+impl Batch {
+    /// Parses the header line.
+    ///
+    /// # Errors
+    /// `header: ...` for an unknown or repeated column, or when m or M is missing.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Backend};
+    /// let b = Batch::new("m,M,a,v", Backend::Exact).unwrap();
+    /// assert_eq!(b.output_header(), "m,M,a,v,v_exact,V,omega,laws_held,v_ok,v_rel_error\n");
+    /// assert_eq!(Batch::new("m,M,x", Backend::Exact).unwrap_err().to_string(),
+    ///            "header: unknown column 'x' (expected m, M, l, a, v0, rod, e, pivot, v, V, omega)");
+    /// ```
+    pub fn new(header: &str, backend: Backend) -> Result<Batch, Error> {
+        let header = header.trim_start_matches('\u{feff}').trim_end();
+        let bad = |why: String| Error::new("header", ErrorKind::Invalid(why));
+        let mut columns = Vec::new();
+        for name in header.split(',').map(str::trim) {
+            let index = SCENE_COLUMNS
+                .iter()
+                .chain(&OUTPUTS)
+                .position(|c| *c == name)
+                .ok_or_else(|| {
+                    bad(format!(
+                        "unknown column '{}' (expected {}, {})",
+                        name.chars().take(40).collect::<String>(),
+                        SCENE_COLUMNS.join(", "),
+                        OUTPUTS.join(", ")
+                    ))
+                })?;
+            if columns.contains(&index) {
+                return Err(bad(format!("column '{name}' given twice")));
+            }
+            columns.push(index);
+        }
+        for required in [0, 1] {
+            if !columns.contains(&required) {
+                return Err(bad(format!(
+                    "column '{}' is required",
+                    SCENE_COLUMNS[required]
+                )));
+            }
+        }
+        let claims = (0..3).filter(|k| columns.contains(&(8 + k))).collect();
+        Ok(Batch {
+            backend,
+            columns,
+            claims,
+            header: header.to_string(),
+        })
+    }
+
+    /// The header of the output file (with its newline).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Backend};
+    /// let b = Batch::new("m,M,omega", Backend::Exact).unwrap();
+    /// assert_eq!(b.output_header(), "m,M,omega,v,V,omega_exact,laws_held,omega_ok,omega_rel_error\n");
+    /// ```
+    pub fn output_header(&self) -> String {
+        let mut out = self.header.clone();
+        for (k, name) in OUTPUTS.iter().enumerate() {
+            let suffix = if self.claims.contains(&k) {
+                "_exact"
+            } else {
+                ""
+            };
+            out.push_str(&format!(",{name}{suffix}"));
+        }
+        out.push_str(",laws_held");
+        for &k in &self.claims {
+            out.push_str(&format!(",{0}_ok,{0}_rel_error", OUTPUTS[k]));
+        }
+        out.push('\n');
+        out
+    }
+
+    /// Solves data row `number` (1-based) given as its line.
+    ///
+    /// # Errors
+    /// `row N, column X: reason` for a bad cell; `row N: ...` for a wrong number of cells.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Backend};
+    /// let b = Batch::new("m,M,omega", Backend::Exact).unwrap();
+    /// let row = b.row(1, "1,1,6/5").unwrap();
+    /// assert_eq!(row.line, "1,1,6/5,3/5,2/5,6/5,true,true,0\n");
+    /// assert_eq!(b.row(2, "1,-1,1").unwrap_err().to_string(), "row 2, column M: must be > 0, got -1");
+    /// ```
+    pub fn row(&self, number: usize, line: &str) -> Result<Row, Error> {
+        let line = line.trim_end_matches(['\n', '\r']);
+        let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+        if cells.len() != self.columns.len() {
+            return Err(Error::new(
+                format!("row {number}"),
+                ErrorKind::Invalid(format!(
+                    "expected {} cells, got {}",
+                    self.columns.len(),
+                    cells.len()
+                )),
+            ));
+        }
+        let at = |e: Error| Error::new(format!("row {number}, column {}", e.field), e.kind);
+        let mut input = SceneInput::default();
+        let mut claimed: [Option<Q>; 3] = [None, None, None];
+        for (&column, &cell) in self.columns.iter().zip(&cells) {
+            if cell.is_empty() && column >= 2 {
+                continue;
+            }
+            let text = Some(cell.to_string());
+            match column {
+                0 => input.m = text,
+                1 => input.rod_mass = text,
+                2 => input.l = text,
+                3 => input.a = text,
+                4 => input.v0 = text,
+                5 => input.rod = text,
+                6 => input.e = text,
+                7 => input.pivot = text,
+                k => claimed[k - 8] = Some(parse_field(OUTPUTS[k - 8], cell).map_err(at)?),
+            }
+        }
+        let scene = input.build().map_err(at)?;
+        let (exact, texts, laws_held) = match self.backend {
+            Backend::Exact => {
+                let out = fast::solve(&scene);
+                let m = out.after;
+                let texts = [m.v.to_string(), m.rod_v.to_string(), m.omega.to_string()];
+                ([m.v, m.rod_v, m.omega], texts, Some(out.laws_hold))
+            }
+            Backend::F64 => {
+                let (exact, texts) = float_values(&scene);
+                (exact, texts, None)
+            }
+        };
+        let mut out =
+            String::with_capacity(line.len() + texts.iter().map(String::len).sum::<usize>() + 32);
+        out.push_str(line);
+        for t in &texts {
+            out.push(',');
+            out.push_str(t);
+        }
+        out.push_str(match laws_held {
+            Some(true) => ",true",
+            Some(false) => ",false",
+            None => ",-",
+        });
+        let mut verdicts = Vec::new();
+        for &k in &self.claims {
+            let Some(claim) = &claimed[k] else {
+                out.push_str(",,");
+                continue;
+            };
+            let verdict = compare(k, claim, &exact[k], self.backend);
+            out.push_str(if verdict.ok { ",true," } else { ",false," });
+            out.push_str(&match &verdict.rel_error {
+                Some(r) => crate::number::decimal(r, 3),
+                None => "inf".to_string(),
+            });
+            verdicts.push(verdict);
+        }
+        out.push('\n');
+        Ok(Row {
+            line: out,
+            laws_held,
+            verdicts,
+        })
+    }
+}
+
+/// v, V, omega by the closed form in f64, as exact dyadic rationals and shortest round-trip text.
+fn float_values(scene: &crate::scene::Scene) -> ([Q; 3], [String; 3]) {
+    let nan = Motion {
+        v: f64::NAN,
+        rod_v: f64::NAN,
+        omega: f64::NAN,
+    };
+    let m = crate::solve::closed_form(&scene.params::<f64>()).unwrap_or(nan);
+    let xs = [m.v, m.rod_v, m.omega];
+    let exact = xs.map(|x| Q::from_float(x).unwrap_or_else(Q::zero));
+    (exact, xs.map(|x| format!("{x:?}")))
+}
+
+fn compare(output: usize, claim: &Q, value: &Q, backend: Backend) -> Verdict {
+    if claim == value {
+        return Verdict {
+            output,
+            ok: true,
+            rel_error: Some(Q::zero()),
+        };
+    }
+    let diff = (claim - value).abs();
+    let rel_error = if value.is_zero() {
+        diff.is_zero().then(Q::zero)
+    } else {
+        Some(diff / value.abs())
+    };
+    let ok = match backend {
+        Backend::Exact => claim == value,
+        Backend::F64 => rel_error
+            .as_ref()
+            .is_some_and(|r| crate::field::Field::nearest_f64(r) <= FLOAT_TOLERANCE),
+    };
+    Verdict {
+        output,
+        ok,
+        rel_error,
+    }
+}
+
+/// Counts, the largest relative error and a bounded histogram for the median, per claimed
+/// output.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Batch, Backend, Summary};
+/// let b = Batch::new("m,M", Backend::Exact).unwrap();
+/// let mut s = Summary::default();
+/// s.add(&b.row(1, "1,1").unwrap());
+/// assert_eq!((s.rows, s.laws_failed, s.wrong()), (1, 0, 0));
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct Summary {
+    /// Data rows processed.
+    pub rows: usize,
+    /// Rows whose laws did not hold exactly (exact backend).
+    pub laws_failed: usize,
+    claims: [ClaimStats; 3],
+}
+
+#[derive(Debug, Clone, Default)]
+struct ClaimStats {
+    compared: usize,
+    wrong: usize,
+    /// `None` before the first claim; `Some(None)` once an infinite error was seen.
+    max: Option<Option<Q>>,
+    /// Relative errors rounded to 2 significant digits (f64 bits, ordered as the values).
+    histogram: BTreeMap<u64, usize>,
+}
+
+impl Summary {
+    /// Adds one row (see the type's example).
+    pub fn add(&mut self, row: &Row) {
+        self.rows += 1;
+        if row.laws_held == Some(false) {
+            self.laws_failed += 1;
+        }
+        for v in &row.verdicts {
+            let s = &mut self.claims[v.output];
+            s.compared += 1;
+            s.wrong += usize::from(!v.ok);
+            let bigger = match (&s.max, &v.rel_error) {
+                (None, _) | (Some(Some(_)), None) => true,
+                (Some(Some(old)), Some(new)) => new > old,
+                (Some(None), _) => false,
+            };
+            if bigger {
+                s.max = Some(v.rel_error.clone());
+            }
+            let rounded = match &v.rel_error {
+                Some(r) if r.is_zero() => 0.0,
+                Some(r) => format!("{:.1e}", crate::field::Field::nearest_f64(r))
+                    .parse::<f64>()
+                    .unwrap_or(f64::INFINITY),
+                None => f64::INFINITY,
+            };
+            *s.histogram.entry(rounded.to_bits()).or_default() += 1;
+        }
+    }
+
+    /// Claims that were wrong, over all outputs.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Backend, Summary};
+    /// let b = Batch::new("m,M,v", Backend::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "1,1,3/5").unwrap());
+    /// s.add(&b.row(2, "1,1,0.6000001").unwrap());
+    /// assert_eq!(s.wrong(), 1);
+    /// ```
+    pub fn wrong(&self) -> usize {
+        self.claims.iter().map(|c| c.wrong).sum()
+    }
+
+    /// The report for stderr: rows, laws, and per claimed output the count wrong, the maximum
+    /// and the median relative error.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Backend, Summary};
+    /// let b = Batch::new("m,M,v", Backend::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "1,1,3/5").unwrap());
+    /// assert_eq!(s.report(), "1 rows, laws held exactly on 1\nv: 1 claims, 0 wrong, max rel error 0, median 0\n");
+    /// ```
+    pub fn report(&self) -> String {
+        let mut out = format!(
+            "{} rows, laws held exactly on {}\n",
+            self.rows,
+            self.rows - self.laws_failed
+        );
+        for (k, s) in self.claims.iter().enumerate() {
+            if s.compared == 0 {
+                continue;
+            }
+            let max = match &s.max {
+                Some(Some(r)) => crate::number::decimal(r, 3),
+                _ => "inf".to_string(),
+            };
+            out.push_str(&format!(
+                "{}: {} claims, {} wrong, max rel error {max}, median {}\n",
+                OUTPUTS[k],
+                s.compared,
+                s.wrong,
+                s.median()
+            ));
+        }
+        out
+    }
+}
+
+impl ClaimStats {
+    fn median(&self) -> String {
+        let mut seen = 0;
+        for (&bits, &count) in &self.histogram {
+            seen += count;
+            if 2 * seen > self.compared {
+                let x = f64::from_bits(bits);
+                return if x == 0.0 {
+                    "0".to_string()
+                } else {
+                    format!("{x:.1e}")
+                };
+            }
+        }
+        "-".to_string()
+    }
+}
+
+/// Streams the data rows of `input` (after the header) to `out`, [`CHUNK`] rows at a time, each
+/// chunk solved in parallel on the current rayon pool and written in input order. `progress`
+/// gets the number of bytes read so far after each chunk.
+///
+/// # Errors
+/// The first bad row in input order (`row N, column X: ...`), an over-long line or too many
+/// rows, `input: ...` when reading fails, `out: ...` when writing fails. Rows before the bad one
+/// may already be written: write to an [`crate::report::AtomicFile`] to publish all or nothing.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{run, Batch, Backend};
+/// let b = Batch::new("m,M", Backend::Exact).unwrap();
+/// let mut out = Vec::new();
+/// let summary = run("1,1\n2,1\n".as_bytes(), &mut out, &b, |_| {}).unwrap();
+/// assert_eq!(String::from_utf8(out).unwrap(), "1,1,3/5,2/5,6/5,true\n2,1,7/9,4/9,4/3,true\n");
+/// assert_eq!(summary.rows, 2);
+/// ```
+pub fn run(
+    mut input: impl BufRead,
+    out: &mut impl Write,
+    batch: &Batch,
+    mut progress: impl FnMut(u64),
+) -> Result<Summary, Error> {
+    let mut summary = Summary::default();
+    let mut bytes = 0u64;
+    let mut number = 0usize;
+    loop {
+        let mut lines = Vec::with_capacity(CHUNK);
+        while lines.len() < CHUNK {
+            let mut line = String::new();
+            let n = (&mut input)
+                .take(MAX_LINE as u64 + 1)
+                .read_line(&mut line)
+                .map_err(|why| {
+                    Error::new(
+                        format!("row {}", number + 1),
+                        ErrorKind::Io(format!("cannot read: {why}")),
+                    )
+                })?;
+            if n == 0 {
+                break;
+            }
+            bytes += n as u64;
+            number += 1;
+            if n > MAX_LINE {
+                return Err(Error::new(
+                    format!("row {number}"),
+                    ErrorKind::Invalid(format!("line longer than {MAX_LINE} bytes")),
+                ));
+            }
+            if number > MAX_ROWS {
+                return Err(Error::new(
+                    format!("row {number}"),
+                    ErrorKind::Invalid(format!("more than {MAX_ROWS} rows (limit per batch)")),
+                ));
+            }
+            if line.trim().is_empty() {
+                continue;
+            }
+            lines.push((number, line));
+        }
+        if lines.is_empty() {
+            return Ok(summary);
+        }
+        let rows: Vec<Result<Row, Error>> = lines
+            .par_iter()
+            .map(|(n, line)| batch.row(*n, line))
+            .collect();
+        for row in rows {
+            let row = row?;
+            out.write_all(row.line.as_bytes())
+                .map_err(|why| Error::new("out", ErrorKind::Io(format!("cannot write: {why}"))))?;
+            summary.add(&row);
+        }
+        progress(bytes);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn claims_agree_only_when_exact() {
+        let b = Batch::new("m,M,v,V,omega", Backend::Exact).unwrap();
+        let row = b.row(1, "1,1,0.6,2/5,1.2").unwrap();
+        assert!(row.verdicts.iter().all(|v| v.ok));
+        let wrong = b.row(2, "1,1,0.6,0.4000001,1.2").unwrap();
+        assert_eq!(
+            wrong.line,
+            "1,1,0.6,0.4000001,1.2,3/5,2/5,6/5,true,true,0,false,0.000000250,true,0\n"
+        );
+    }
+
+    #[test]
+    fn empty_optional_cells_take_the_defaults() {
+        let b = Batch::new("m,M,pivot,e", Backend::Exact).unwrap();
+        let free = b.row(1, "1,1,,").unwrap();
+        assert_eq!(free.line, "1,1,,,3/5,2/5,6/5,true\n");
+        let pivoted = b.row(2, "1,3,0,0").unwrap();
+        assert_eq!(pivoted.line, "1,3,0,0,1/2,0,1/2,true\n");
+        assert_eq!(
+            b.row(3, ",1,,").unwrap_err().to_string(),
+            "row 3, column m: empty number"
+        );
+    }
+
+    #[test]
+    fn a_zero_value_with_a_nonzero_claim_is_infinitely_wrong() {
+        let b = Batch::new("m,M,a,omega", Backend::Exact).unwrap();
+        let row = b.row(1, "1,1,0,1/1000").unwrap();
+        assert!(row.line.ends_with(",false,inf\n"), "{}", row.line);
+        let mut s = Summary::default();
+        s.add(&row);
+        assert!(
+            s.report()
+                .contains("omega: 1 claims, 1 wrong, max rel error inf")
+        );
+    }
+
+    #[test]
+    fn the_f64_backend_agrees_within_its_tolerance() {
+        let b = Batch::new("m,M,V", Backend::F64).unwrap();
+        let row = b.row(1, "1,1,2/5").unwrap();
+        assert!(row.line.starts_with("1,1,2/5,0.6,0.4,1.2"), "{}", row.line);
+        assert!(row.line.contains(",-,true,"), "{}", row.line);
+        assert!(!b.row(2, "1,1,0.41").unwrap().verdicts[0].ok);
+    }
+
+    #[test]
+    fn headers_are_checked() {
+        for (header, want) in [
+            ("m,m,M", "header: column 'm' given twice"),
+            ("M,l", "header: column 'm' is required"),
+        ] {
+            assert_eq!(
+                Batch::new(header, Backend::Exact).unwrap_err().to_string(),
+                want
+            );
+        }
+        let b = Batch::new("m,M", Backend::Exact).unwrap();
+        assert_eq!(
+            b.row(4, "1").unwrap_err().to_string(),
+            "row 4: expected 2 cells, got 1"
+        );
+    }
+
+    #[test]
+    fn long_lines_are_refused_and_blank_lines_skipped() {
+        let b = Batch::new("m,M", Backend::Exact).unwrap();
+        let long = format!("1,{}\n", "1".repeat(MAX_LINE));
+        let err = run(long.as_bytes(), &mut Vec::new(), &b, |_| {}).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            format!("row 1: line longer than {MAX_LINE} bytes")
+        );
+        let mut out = Vec::new();
+        let s = run("1,1\n\n1,1\n".as_bytes(), &mut out, &b, |_| {}).unwrap();
+        assert_eq!(s.rows, 2);
+    }
+}

@@ -1,0 +1,142 @@
+//! `rodimpact batch FILE.csv`: many scenes, streamed, in parallel, written back in order.
+
+use super::Failure;
+use clap::{Args, ValueEnum};
+use indicatif::{ProgressBar, ProgressStyle};
+use rodimpact::batch::{Backend, Batch, Summary, run};
+use rodimpact::report::AtomicFile;
+use rodimpact::{Error, ErrorKind};
+use std::io::{BufRead, BufReader, IsTerminal, Write};
+use std::path::PathBuf;
+
+#[derive(Args, Debug)]
+pub(crate) struct BatchArgs {
+    /// CSV file: header among m,M,l,a,v0,rod,e,pivot (m and M required) and claimed v,V,omega.
+    #[arg(value_name = "FILE.csv")]
+    pub(crate) file: PathBuf,
+    /// Arithmetic: exact rationals, or the closed form in f64.
+    #[arg(long, value_enum, default_value = "exact")]
+    pub(crate) backend: BackendArg,
+    /// Worker threads [default: one per core].
+    #[arg(long, value_name = "N")]
+    pub(crate) jobs: Option<String>,
+    /// Write the rows here (all or nothing) instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) out: Option<PathBuf>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub(crate) enum BackendArg {
+    Exact,
+    F64,
+}
+
+/// The most worker threads `--jobs` accepts.
+const MAX_JOBS: usize = 1024;
+
+fn parse_jobs(text: &str) -> Result<usize, Error> {
+    match text.trim().parse::<usize>() {
+        Ok(n) if (1..=MAX_JOBS).contains(&n) => Ok(n),
+        _ => Err(Error::out_of_range(
+            "jobs",
+            format!(
+                "must be a whole number from 1 to {MAX_JOBS}, got '{}'",
+                text.chars().take(40).collect::<String>()
+            ),
+        )),
+    }
+}
+
+pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
+    let backend = match args.backend {
+        BackendArg::Exact => Backend::Exact,
+        BackendArg::F64 => Backend::F64,
+    };
+    let jobs = args.jobs.as_deref().map(parse_jobs).transpose()?;
+    let read_error = |why: std::io::Error| {
+        Error::new(
+            "FILE",
+            ErrorKind::Io(format!("cannot read {}: {why}", args.file.display())),
+        )
+    };
+    let file = std::fs::File::open(&args.file).map_err(read_error)?;
+    let size = file.metadata().map(|m| m.len()).unwrap_or(0);
+    let mut input = BufReader::with_capacity(1 << 16, file);
+    let mut header = String::new();
+    input.read_line(&mut header).map_err(read_error)?;
+    if header.trim().is_empty() {
+        return Err(Error::new(
+            "FILE",
+            ErrorKind::Invalid(format!(
+                "{} has no header line (expected columns among m,M,l,a,v0,rod,e,pivot,v,V,omega)",
+                args.file.display()
+            )),
+        )
+        .into());
+    }
+    let batch = Batch::new(&header, backend)?;
+
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let bar = ProgressBar::new(size);
+        bar.set_style(
+            ProgressStyle::with_template("{bar:40} {bytes}/{total_bytes} {eta}")
+                .expect("constant template"),
+        );
+        bar.set_position(header.len() as u64);
+        bar
+    });
+    let header_len = header.len() as u64;
+    let progress = |bytes: u64| {
+        if let Some(bar) = &bar {
+            bar.set_position(header_len + bytes);
+        }
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(jobs.unwrap_or(0))
+        .build()
+        .map_err(|why| Error::new("jobs", ErrorKind::Invalid(why.to_string())))?;
+
+    let summary = match &args.out {
+        Some(path) => {
+            let mut out = AtomicFile::create("out", path)?;
+            write_header(&mut out, &batch)?;
+            let summary = pool.install(|| run(input, &mut out, &batch, progress))?;
+            out.commit()?;
+            summary
+        }
+        None => {
+            let mut out = std::io::BufWriter::new(std::io::stdout());
+            let streamed = write_header(&mut out, &batch)
+                .and_then(|()| pool.install(|| run(input, &mut out, &batch, progress)))
+                .and_then(|s| {
+                    out.flush()
+                        .map(|()| s)
+                        .map_err(|why| Error::new("out", ErrorKind::Io(why.to_string())))
+                });
+            match streamed {
+                Ok(summary) => summary,
+                // The reader has gone (`rodimpact batch f.csv | head`): end quietly.
+                Err(e) if e.field == "out" => std::process::exit(0),
+                Err(e) => return Err(e.into()),
+            }
+        }
+    };
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    report(&summary)
+}
+
+fn write_header(out: &mut impl Write, batch: &Batch) -> Result<(), Error> {
+    out.write_all(batch.output_header().as_bytes())
+        .map_err(|why| Error::new("out", ErrorKind::Io(format!("cannot write: {why}"))))
+}
+
+fn report(summary: &Summary) -> Result<(), Failure> {
+    eprint!("{}", summary.report());
+    if summary.wrong() > 0 || summary.laws_failed > 0 {
+        Err(Failure::Check)
+    } else {
+        Ok(())
+    }
+}

@@ -1,0 +1,707 @@
+//! The fast exact path: the same v, V, omega as [`crate::solve::solve`] over
+//! [`Q`], bit for bit, without a GCD after every operation.
+//!
+//! The straightforward path spends about 91 % of its time in num-bigint's GCD, because
+//! `BigRational` reduces after every operation (PERFORMANCE.md). Here, for a free rod, the scene's
+//! numbers are split once into integer numerators and denominators, the closed form is evaluated
+//! on integers over one common denominator, the conservation laws are checked as integer
+//! identities, and each output is reduced once.
+//!
+//! With I = M g (g = l^2/3 uniform, l^2 dumbbell, r_G^2 by radius of gyration, I/M given) every
+//! term carries a factor M, which cancels. Over the common denominator md Md gd ad^2 of the
+//! masses, g and a^2:
+//!
+//! - `A = mn gn Md ad^2` (m g), `B = Mn gn md ad^2` (M g), `C = mn an^2 Md gd` (m a^2);
+//! - `dd = ed (A + B + C)`, `nv = ed (A + C) - en B`, `nV = (ed + en) A`,
+//!   `nw = (ed + en) mn an Md gd ad`;
+//! - `v = v0 nv/dd`, `V = v0 nV/dd`, `omega = v0 nw/dd`.
+//!
+//! The laws are homogeneous in (v0, v, V, omega), so they are checked on (dd, nv, nV, nw):
+//! linear momentum `mn Md nv + Mn md nV = mn Md dd`, angular momentum about the centre
+//! `mn Md an gd nv + Mn md gn ad nw = mn Md an gd dd` (I = M g), and for e = 1 the kinetic
+//! energy `mn Md gd nv^2 + Mn md gd nV^2 + Mn md gn nw^2 = mn Md gd dd^2`.
+//!
+//! The integers are first tried in checked `i128` (energy in 256 bits, its terms are
+//! non-negative); the first overflow restarts the scene in [`BigInt`]. A pivoted rod takes the
+//! same route with its own fixed-axis formulas (see `pivoted`).
+
+use crate::field::Q;
+use crate::mechanics::Motion;
+use crate::scene::{RodInertia, Scene, Support};
+use num_bigint::{BigInt, BigUint};
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+/// Which arithmetic produced a [`Solved`].
+///
+/// # Examples
+/// ```
+/// use rodimpact::{fast::{solve, Arithmetic}, scene::Scene, field::q};
+/// let big = q(1 << 62, 3);
+/// let s = Scene::builder(big.clone(), big * q(7, 5)).build().unwrap();
+/// assert_eq!(solve(&s).arithmetic, Arithmetic::Big); // beyond i128
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Arithmetic {
+    /// Fraction-free in checked `i128` (energy in 256-bit unsigned).
+    Fixed,
+    /// Fraction-free in `BigInt` (the fixed width overflowed, or was not tried).
+    Big,
+}
+
+/// The velocities after the impact, exact and reduced, and whether the laws held.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{fast::solve, scene::Scene, field::q};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).e(q(0, 1)).build().unwrap();
+/// let out = solve(&s);
+/// assert_eq!((out.after.v, out.after.omega), (q(4, 5), q(3, 5))); // sticking
+/// assert!(out.laws_hold); // momentum balances; energy is not conserved for e = 0
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solved {
+    /// v, V, omega exactly as [`crate::solve::solve`] over [`Q`] gives them.
+    pub after: Motion<Q>,
+    /// Every applicable conservation law holds exactly (linear momentum for a free rod, angular
+    /// momentum, energy when e = 1).
+    pub laws_hold: bool,
+    /// The arithmetic that was used.
+    pub arithmetic: Arithmetic,
+}
+
+/// Solves the scene exactly on the fastest path that fits, fixed width then big integers: free
+/// or pivoted rod, any inertia, any e.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{fast::{solve, Arithmetic}, scene::Scene, field::q};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+/// let out = solve(&s);
+/// assert_eq!((out.after.v, out.after.rod_v, out.after.omega), (q(3, 5), q(2, 5), q(6, 5)));
+/// assert!(out.laws_hold);
+/// assert_eq!(out.arithmetic, Arithmetic::Fixed);
+/// ```
+pub fn solve(scene: &Scene) -> Solved {
+    fraction_free::<i128>(scene)
+        .map(|s| s.with(Arithmetic::Fixed))
+        .unwrap_or_else(|| solve_big(scene))
+}
+
+/// [`solve`] without the fixed-width attempt: fraction-free in [`BigInt`] (the fallback on
+/// its own, for tests and benchmarks).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{fast::{solve, solve_big}, scene::Scene, field::q};
+/// let s = Scene::builder(q(2, 7), q(5, 3)).a(q(-1, 3)).e(q(1, 2)).build().unwrap();
+/// assert_eq!(solve_big(&s).after, solve(&s).after);
+/// ```
+pub fn solve_big(scene: &Scene) -> Solved {
+    fraction_free::<BigInt>(scene)
+        .expect("big integers never overflow")
+        .with(Arithmetic::Big)
+}
+
+/// `n/d` reduced to lowest terms with a positive denominator: the same value and
+/// representation as `Q::new(n, d)`, but a GCD of numbers up to 256 bits runs on two machine
+/// words instead of num-bigint's heap digits.
+///
+/// # Panics
+/// If `d` is zero (as `Q::new`).
+///
+/// # Examples
+/// ```
+/// use rodimpact::fast::reduce;
+/// use rodimpact::field::Q;
+/// let (n, d) = (num_bigint::BigInt::from(-84), num_bigint::BigInt::from(-36));
+/// assert_eq!(reduce(n.clone(), d.clone()), Q::new(n.clone(), d));
+/// assert_eq!(reduce(n, 1.into()).to_string(), "-84");
+/// ```
+pub fn reduce(n: BigInt, d: BigInt) -> Q {
+    assert!(!d.is_zero(), "denominator == 0");
+    if d.is_negative() {
+        BigInt::ratio(-n, -d)
+    } else {
+        BigInt::ratio(n, d)
+    }
+}
+
+impl Solved {
+    fn with(self, arithmetic: Arithmetic) -> Self {
+        Solved { arithmetic, ..self }
+    }
+}
+
+/// The integer operations the fraction-free form needs; `None` means "does not fit".
+trait Int: Sized + Clone + PartialEq {
+    fn lift(x: &BigInt) -> Option<Self>;
+    fn small(x: u8) -> Self;
+    fn add(&self, o: &Self) -> Option<Self>;
+    fn sub(&self, o: &Self) -> Option<Self>;
+    fn mul(&self, o: &Self) -> Option<Self>;
+    /// Decides `sum c_i x_i^2 == c x^2` for non-negative weights.
+    fn squares_balance(lhs: [(&Self, &Self); 3], rhs: (&Self, &Self)) -> Option<bool>;
+    /// `n/d` reduced, `d > 0`.
+    fn ratio(n: Self, d: Self) -> Q;
+}
+
+impl Int for BigInt {
+    fn lift(x: &BigInt) -> Option<Self> {
+        Some(x.clone())
+    }
+    fn small(x: u8) -> Self {
+        BigInt::from(x)
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        Some(self + o)
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        Some(self - o)
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        Some(self * o)
+    }
+    fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
+        let sum: BigInt = lhs.iter().map(|(c, x)| *c * *x * *x).sum();
+        Some(sum == c * x * x)
+    }
+    fn ratio(n: Self, d: Self) -> Q {
+        // Up to 256 bits (every 10^6-sized scene) the GCD runs on two machine words, far faster
+        // than num-bigint's binary GCD on heap digits; beyond, `Q::new` reduces.
+        match (U256::from_big(n.magnitude()), U256::from_big(d.magnitude())) {
+            (Some(a), Some(b)) => {
+                let g = U256::gcd(a, b);
+                if g == U256::ONE {
+                    Q::new_raw(n, d)
+                } else {
+                    let g = BigInt::from(g.to_big());
+                    Q::new_raw(n / &g, d / g)
+                }
+            }
+            _ => Q::new(n, d),
+        }
+    }
+}
+
+impl Int for i128 {
+    fn lift(x: &BigInt) -> Option<Self> {
+        x.to_i128()
+    }
+    fn small(x: u8) -> Self {
+        x.into()
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        self.checked_add(*o)
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        self.checked_sub(*o)
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        self.checked_mul(*o)
+    }
+    fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
+        let term = |c: &i128, x: &i128| {
+            let c = u128::try_from(*c).ok()?;
+            U256::square(x.unsigned_abs()).checked_mul(c)
+        };
+        let mut sum = U256::ZERO;
+        for (c, x) in lhs {
+            sum = sum.checked_add(term(c, x)?)?;
+        }
+        Some(sum == term(c, x)?)
+    }
+    fn ratio(n: Self, d: Self) -> Q {
+        let g = gcd(n.unsigned_abs(), d.unsigned_abs());
+        // g divides both, and g >= 1 because d > 0; n/g and d/g stay in range.
+        let g = g as i128;
+        Q::new_raw(BigInt::from(n / g), BigInt::from(d / g))
+    }
+}
+
+/// Stein's binary GCD on `u128` (`gcd(0, d) = d`).
+fn gcd(mut a: u128, mut b: u128) -> u128 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        if let Ok(small) = u64::try_from(b) {
+            // Both fit one machine word now (a <= b): finish there.
+            return u128::from(gcd64(a as u64, small)) << shift;
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+/// Stein's binary GCD on `u64`, for odd `a` (`gcd64(a, 0) = a`).
+fn gcd64(mut a: u64, mut b: u64) -> u64 {
+    if b == 0 {
+        return a;
+    }
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a;
+        }
+    }
+}
+
+/// A 256-bit unsigned integer: just enough for the energy identity of the fixed-width path and
+/// the GCDs of the big-integer path. The derived order compares `hi`, then `lo`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+struct U256 {
+    hi: u128,
+    lo: u128,
+}
+
+impl U256 {
+    const ZERO: U256 = U256 { hi: 0, lo: 0 };
+    const ONE: U256 = U256 { hi: 0, lo: 1 };
+
+    fn from_big(x: &BigUint) -> Option<U256> {
+        if x.bits() > 256 {
+            return None;
+        }
+        let mut words = x.iter_u64_digits();
+        let mut next = || u128::from(words.next().unwrap_or(0));
+        let lo = next() | next() << 64;
+        let hi = next() | next() << 64;
+        Some(U256 { hi, lo })
+    }
+
+    fn to_big(self) -> BigUint {
+        (BigUint::from(self.hi) << 128u32) + BigUint::from(self.lo)
+    }
+
+    fn trailing_zeros(self) -> u32 {
+        if self.lo == 0 {
+            128 + self.hi.trailing_zeros()
+        } else {
+            self.lo.trailing_zeros()
+        }
+    }
+
+    fn shr(self, k: u32) -> U256 {
+        match k {
+            0 => self,
+            1..128 => U256 {
+                hi: self.hi >> k,
+                lo: self.lo >> k | self.hi << (128 - k),
+            },
+            _ => U256 {
+                hi: 0,
+                lo: self.hi >> (k - 128),
+            },
+        }
+    }
+
+    fn shl(self, k: u32) -> U256 {
+        match k {
+            0 => self,
+            1..128 => U256 {
+                hi: self.hi << k | self.lo >> (128 - k),
+                lo: self.lo << k,
+            },
+            _ => U256 {
+                hi: self.lo << (k - 128),
+                lo: 0,
+            },
+        }
+    }
+
+    /// `self - o` for `self >= o`.
+    fn minus(self, o: U256) -> U256 {
+        let (lo, borrow) = self.lo.overflowing_sub(o.lo);
+        U256 {
+            hi: self.hi - o.hi - u128::from(borrow),
+            lo,
+        }
+    }
+
+    /// Stein's binary GCD; once both fit in 128 bits it finishes in `u128`.
+    fn gcd(mut a: U256, mut b: U256) -> U256 {
+        if a == U256::ZERO {
+            return b;
+        }
+        if b == U256::ZERO {
+            return a;
+        }
+        let shift = a.trailing_zeros().min(b.trailing_zeros());
+        a = a.shr(a.trailing_zeros());
+        loop {
+            b = b.shr(b.trailing_zeros());
+            if a > b {
+                std::mem::swap(&mut a, &mut b);
+            }
+            if b.hi == 0 {
+                let g = gcd(a.lo, b.lo);
+                return U256 { hi: 0, lo: g }.shl(shift);
+            }
+            b = b.minus(a);
+            if b == U256::ZERO {
+                return a.shl(shift);
+            }
+        }
+    }
+
+    /// The exact product of two `u128`.
+    fn product(a: u128, b: u128) -> U256 {
+        let mask = u128::from(u64::MAX);
+        let (a1, a0) = (a >> 64, a & mask);
+        let (b1, b0) = (b >> 64, b & mask);
+        let low = a0 * b0;
+        let (mid, carry_mid) = (a1 * b0).overflowing_add(a0 * b1);
+        let (lo, carry_lo) = low.overflowing_add(mid << 64);
+        let hi = a1 * b1 + (mid >> 64) + (u128::from(carry_mid) << 64) + u128::from(carry_lo);
+        U256 { hi, lo }
+    }
+
+    fn square(x: u128) -> U256 {
+        U256::product(x, x)
+    }
+
+    fn checked_mul(self, c: u128) -> Option<U256> {
+        let low = U256::product(self.lo, c);
+        let high = U256::product(self.hi, c);
+        if high.hi != 0 {
+            return None;
+        }
+        let hi = low.hi.checked_add(high.lo)?;
+        Some(U256 { hi, lo: low.lo })
+    }
+
+    fn checked_add(self, o: U256) -> Option<U256> {
+        let (lo, carry) = self.lo.overflowing_add(o.lo);
+        let hi = self.hi.checked_add(o.hi)?.checked_add(u128::from(carry))?;
+        Some(U256 { hi, lo })
+    }
+}
+
+/// Numerator and denominator of a rational, lifted into `T`.
+fn split<T: Int>(x: &Q) -> Option<(T, T)> {
+    Some((T::lift(x.numer())?, T::lift(x.denom())?))
+}
+
+/// g = I/M as (gn, gd), gd > 0, not necessarily reduced.
+fn inertia_per_mass<T: Int>(scene: &Scene) -> Option<(T, T)> {
+    let square = |x: &Q| -> Option<(T, T)> {
+        let (n, d) = split::<T>(x)?;
+        Some((n.mul(&n)?, d.mul(&d)?))
+    };
+    match scene.rod() {
+        RodInertia::Uniform => {
+            let (n, d) = square(scene.half_length())?;
+            Some((n, d.mul(&T::small(3))?))
+        }
+        RodInertia::Dumbbell => square(scene.half_length()),
+        RodInertia::Gyration(r) => square(r),
+        RodInertia::Moment(i) => {
+            let (in_, id) = split::<T>(i)?;
+            let (mn, md) = split::<T>(scene.rod_mass())?;
+            Some((in_.mul(&md)?, id.mul(&mn)?))
+        }
+    }
+}
+
+/// The scene's numbers split once into numerators and denominators (I = M g).
+struct Parts<T> {
+    mn: T,
+    md: T,
+    big_n: T,
+    big_d: T,
+    an: T,
+    ad: T,
+    en: T,
+    ed: T,
+    gn: T,
+    gd: T,
+}
+
+/// The solution over one common denominator, before v0: `v = v0 nv/den`, and so on.
+struct Raw<T> {
+    nv: T,
+    n_big_v: T,
+    nw: T,
+    den: T,
+    /// The momentum laws that apply held (energy is checked on the raw values afterwards).
+    momentum: bool,
+}
+
+/// The fraction-free solve in `T`; `None` on overflow.
+fn fraction_free<T: Int>(scene: &Scene) -> Option<Solved> {
+    let (mn, md) = split::<T>(scene.m())?;
+    let (big_n, big_d) = split::<T>(scene.rod_mass())?;
+    let (an, ad) = split::<T>(scene.a())?;
+    let (en, ed) = split::<T>(scene.e())?;
+    let (gn, gd) = inertia_per_mass::<T>(scene)?;
+    let parts = Parts {
+        mn,
+        md,
+        big_n,
+        big_d,
+        an,
+        ad,
+        en,
+        ed,
+        gn,
+        gd,
+    };
+    let raw = match scene.support() {
+        Support::Free => free_rod(&parts)?,
+        Support::Pivot(p) => pivoted(&parts, p)?,
+    };
+    // Energy, m v^2 + M V^2 + M g omega^2 = m v0^2, times md Md gd: the same for both supports.
+    let energy = if scene.e().is_one() {
+        let Parts {
+            mn,
+            md,
+            big_n,
+            big_d,
+            gn,
+            gd,
+            ..
+        } = &parts;
+        let weight = mn.mul(big_d)?.mul(gd)?;
+        T::squares_balance(
+            [
+                (&weight, &raw.nv),
+                (&big_n.mul(md)?.mul(gd)?, &raw.n_big_v),
+                (&big_n.mul(md)?.mul(gn)?, &raw.nw),
+            ],
+            (&weight, &raw.den),
+        )?
+    } else {
+        true
+    };
+    let (vn, vd) = split::<T>(scene.v0())?;
+    let den = vd.mul(&raw.den)?;
+    let after = Motion {
+        v: T::ratio(vn.mul(&raw.nv)?, den.clone()),
+        rod_v: T::ratio(vn.mul(&raw.n_big_v)?, den.clone()),
+        omega: T::ratio(vn.mul(&raw.nw)?, den),
+    };
+    Some(Solved {
+        after,
+        laws_hold: raw.momentum && energy,
+        arithmetic: Arithmetic::Big,
+    })
+}
+
+/// Free rod: see the module documentation for the formulas and the identities.
+fn free_rod<T: Int>(s: &Parts<T>) -> Option<Raw<T>> {
+    let ad2 = s.ad.mul(&s.ad)?;
+    let mn_big_d = s.mn.mul(&s.big_d)?;
+    let big_n_md = s.big_n.mul(&s.md)?;
+    let a_term = mn_big_d.mul(&s.gn)?.mul(&ad2)?;
+    let b_term = big_n_md.mul(&s.gn)?.mul(&ad2)?;
+    let c_term = mn_big_d.mul(&s.an)?.mul(&s.an)?.mul(&s.gd)?;
+    let a_plus_c = a_term.add(&c_term)?;
+    let den = s.ed.mul(&a_plus_c.add(&b_term)?)?;
+    let ne = s.ed.add(&s.en)?;
+    let nv = s.ed.mul(&a_plus_c)?.sub(&s.en.mul(&b_term)?)?;
+    let n_big_v = ne.mul(&a_term)?;
+    let nw = ne.mul(&mn_big_d)?.mul(&s.an)?.mul(&s.gd)?.mul(&s.ad)?;
+
+    let linear = mn_big_d.mul(&nv)?.add(&big_n_md.mul(&n_big_v)?)? == mn_big_d.mul(&den)?;
+    let mn_an_gd = mn_big_d.mul(&s.an)?.mul(&s.gd)?;
+    let angular = mn_an_gd
+        .mul(&nv)?
+        .add(&big_n_md.mul(&s.gn)?.mul(&s.ad)?.mul(&nw)?)?
+        == mn_an_gd.mul(&den)?;
+    Some(Raw {
+        nv,
+        n_big_v,
+        nw,
+        den,
+        momentum: linear && angular,
+    })
+}
+
+/// Pivot at p, d = a - p = dn/dq: with s = mn Md gd pd^2 and
+/// `K = Mn md dq^2 (gn pd^2 + pn^2 gd) + s dn^2` (I_p + m d^2 over the common denominator),
+/// `den = ed K`, `nw = ne s dn dq`, `nv = ne s dn^2 - en K`, `nV = -ne mn Md gd pd pn dn dq`.
+/// Checked: angular momentum about the pivot, m d v + I omega - p M V = m d v0, times
+/// md dq Md gd pd.
+fn pivoted<T: Int>(s: &Parts<T>, p: &Q) -> Option<Raw<T>> {
+    let (pn, pd) = split::<T>(p)?;
+    let dn = s.an.mul(&pd)?.sub(&pn.mul(&s.ad)?)?;
+    let dq = s.ad.mul(&pd)?;
+    let mn_big_d_gd = s.mn.mul(&s.big_d)?.mul(&s.gd)?;
+    let big_n_md = s.big_n.mul(&s.md)?;
+    let scale = mn_big_d_gd.mul(&pd)?.mul(&pd)?;
+    let inertia = s.gn.mul(&pd)?.mul(&pd)?.add(&pn.mul(&pn)?.mul(&s.gd)?)?;
+    let k = big_n_md
+        .mul(&dq)?
+        .mul(&dq)?
+        .mul(&inertia)?
+        .add(&scale.mul(&dn)?.mul(&dn)?)?;
+    let ne = s.ed.add(&s.en)?;
+    let den = s.ed.mul(&k)?;
+    let ne_dn_dq = ne.mul(&dn)?.mul(&dq)?;
+    let nw = scale.mul(&ne_dn_dq)?;
+    let nv = ne.mul(&scale)?.mul(&dn)?.mul(&dn)?.sub(&s.en.mul(&k)?)?;
+    let n_big_v = T::small(0).sub(&mn_big_d_gd.mul(&pd)?.mul(&pn)?.mul(&ne_dn_dq)?)?;
+
+    let m_d = s.mn.mul(&dn)?.mul(&s.big_d)?.mul(&s.gd)?.mul(&pd)?;
+    let big_n_md_dq = big_n_md.mul(&dq)?;
+    let angular = m_d
+        .mul(&nv)?
+        .add(&big_n_md_dq.mul(&s.gn)?.mul(&pd)?.mul(&nw)?)?
+        .sub(&pn.mul(&big_n_md_dq)?.mul(&s.gd)?.mul(&n_big_v)?)?
+        == m_d.mul(&den)?;
+    Some(Raw {
+        nv,
+        n_big_v,
+        nw,
+        den,
+        momentum: angular,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::q;
+
+    #[test]
+    fn u256_products_match_big_integers() {
+        let cases = [
+            (0u128, 5u128),
+            (u128::MAX, u128::MAX),
+            (u128::MAX, 1),
+            (1 << 64, 1 << 64),
+            (
+                0xdead_beef_0123_4567_89ab_cdef_7777_9999,
+                0xffff_0000_ffff_0000_1234,
+            ),
+        ];
+        for (a, b) in cases {
+            let p = U256::product(a, b);
+            let want = BigInt::from(a) * BigInt::from(b);
+            let got = (BigInt::from(p.hi) << 128) + BigInt::from(p.lo);
+            assert_eq!(got, want, "{a} * {b}");
+        }
+        assert_eq!(U256::square(u128::MAX).checked_mul(2), None);
+        assert_eq!(
+            U256::square(u128::MAX).checked_add(U256::square(u128::MAX)),
+            None
+        );
+        assert_eq!(
+            U256::square(1 << 100).checked_mul(1 << 55),
+            Some(U256 {
+                hi: 1 << 127,
+                lo: 0
+            })
+        );
+    }
+
+    #[test]
+    fn energy_balance_is_decided_alike_in_both_widths() {
+        // 2*3^2 + 1*4^2 + 0*7^2 = 34 = 34*1^2; off by one it is not.
+        for (c, want) in [(34i128, true), (35, false)] {
+            let (two, three, one, four, zero, seven) = (2i128, 3, 1, 4, 0, 7);
+            let fixed =
+                i128::squares_balance([(&two, &three), (&one, &four), (&zero, &seven)], (&c, &one));
+            let big = |x: i128| BigInt::from(x);
+            let (b2, b3, b1, b4, b0, b7, bc) =
+                (big(2), big(3), big(1), big(4), big(0), big(7), big(c));
+            let wide = BigInt::squares_balance([(&b2, &b3), (&b1, &b4), (&b0, &b7)], (&bc, &b1));
+            assert_eq!((fixed, wide), (Some(want), Some(want)));
+        }
+        let max = i128::MAX;
+        assert_eq!(
+            i128::squares_balance([(&max, &max), (&0, &0), (&0, &0)], (&1, &1)),
+            None
+        );
+    }
+
+    #[test]
+    fn gcd_of_u256_matches_big_integers() {
+        let big = |s: &str| s.parse::<BigUint>().unwrap();
+        let cases = [
+            ("0", "12"),
+            ("12", "0"),
+            ("340282366920938463463374607431768211457", "3"),
+            (
+                "115792089237316195423570985008687907853269984665640564039457584007913129639935",
+                "340282366920938463463374607431768211455",
+            ),
+            (
+                "605266953260872505155079183529643000000",
+                "42781701118546417863969985673251741000000",
+            ),
+            ("1180591620717411303424", "3541774862152233910272"),
+        ];
+        for (a, b) in cases {
+            let (x, y) = (big(a), big(b));
+            let (ux, uy) = (U256::from_big(&x).unwrap(), U256::from_big(&y).unwrap());
+            assert_eq!(ux.to_big(), x);
+            assert_eq!(
+                U256::gcd(ux, uy).to_big(),
+                num_integer::Integer::gcd(&x, &y),
+                "{a} {b}"
+            );
+        }
+        assert_eq!(U256::from_big(&(BigUint::from(1u8) << 256u32)), None);
+    }
+
+    #[test]
+    fn gcd_of_u128() {
+        assert_eq!(gcd(0, 7), 7);
+        assert_eq!(gcd(12, 18), 6);
+        assert_eq!(gcd(1 << 100, 3 << 90), 1 << 90);
+        assert_eq!(gcd(u128::MAX, u128::MAX - 1), 1);
+        assert_eq!(gcd(3 << 70, 9 << 3), 3 << 3);
+        assert_eq!(gcd(1 << 64, 1), 1);
+        assert_eq!(
+            gcd(123_456_789 * 987_654_321, 987_654_321 * 1_000_003),
+            987_654_321
+        );
+    }
+
+    #[test]
+    fn every_arithmetic_is_reached() {
+        let paper = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+        assert_eq!(solve(&paper).arithmetic, Arithmetic::Fixed);
+        let huge = q(i64::MAX, 3) * q(i64::MAX, 1);
+        let big = Scene::builder(huge.clone(), huge).build().unwrap();
+        assert_eq!(solve(&big).arithmetic, Arithmetic::Big);
+        let pivoted = Scene::builder(q(1, 1), q(3, 1))
+            .pivot(q(0, 1))
+            .build()
+            .unwrap();
+        let out = solve(&pivoted);
+        assert_eq!(out.arithmetic, Arithmetic::Fixed);
+        assert_eq!((out.after.v, out.after.omega), (q(0, 1), q(1, 1)));
+    }
+
+    #[test]
+    fn a_negative_projectile_velocity_is_reduced_with_its_sign() {
+        // M = 3m, hit at the centre: v = -v0/2.
+        let s = Scene::builder(q(1, 1), q(3, 1))
+            .a(q(0, 1))
+            .v0(q(4, 6))
+            .build()
+            .unwrap();
+        let out = solve(&s);
+        assert_eq!(out.after.v, q(-1, 3));
+        assert!(out.after.v.denom().is_positive());
+        assert!(out.after.omega.is_zero());
+        assert!(out.laws_hold);
+    }
+}

@@ -1,0 +1,197 @@
+//! `rodimpact batch`: the reference batches confirmed exactly, a wrong claim reported with its
+//! row, bad cells named by row and column, nothing half-written.
+
+mod common;
+
+use common::rodimpact;
+use std::path::{Path, PathBuf};
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rodimpact-batch-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn data(file: &str) -> String {
+    format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn leftovers(dir: &Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect()
+}
+
+#[test]
+fn every_claim_of_the_1e6_batch_is_confirmed_in_order() {
+    let dir = scratch("confirm");
+    let out = dir.join("out.csv");
+    let (code, stdout, stderr) = rodimpact(&[
+        "batch",
+        &data("bench-1e6.csv"),
+        "--jobs",
+        "2",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.is_empty());
+    for name in ["v", "V", "omega"] {
+        assert!(
+            stderr.contains(&format!(
+                "{name}: 10000 claims, 0 wrong, max rel error 0, median 0"
+            )),
+            "{stderr}"
+        );
+    }
+    let input = std::fs::read_to_string(data("bench-1e6.csv")).unwrap();
+    let output = std::fs::read_to_string(&out).unwrap();
+    let (inputs, outputs): (Vec<_>, Vec<_>) = (input.lines().collect(), output.lines().collect());
+    assert_eq!(outputs.len(), inputs.len());
+    assert!(
+        outputs[0].starts_with("m,M,l,a,v0,v,V,omega,v_exact,V_exact,omega_exact,laws_held,v_ok,")
+    );
+    for (i, o) in inputs.iter().zip(&outputs).skip(1) {
+        // Same row, in order; the exact columns repeat the file's claims.
+        let claims: Vec<&str> = i.split(',').skip(5).collect();
+        let cells: Vec<&str> = o.split(',').collect();
+        assert!(o.starts_with(&format!("{i},")), "row order");
+        assert_eq!(&cells[8..11], &claims[..], "{o}");
+        assert_eq!(
+            &cells[11..],
+            ["true", "true", "0", "true", "0", "true", "0"]
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn an_altered_value_is_reported_with_its_row_and_exit_1() {
+    let dir = scratch("altered");
+    let input = std::fs::read_to_string(data("bench-textbook.csv")).unwrap();
+    let mut lines: Vec<String> = input.lines().take(101).map(String::from).collect();
+    // Row 17 (line 18): omega off by 1 in the last digit of the numerator.
+    let mut cells: Vec<String> = lines[17].split(',').map(String::from).collect();
+    let (n, d) = cells[7].split_once('/').unwrap();
+    let n: i64 = n.parse().unwrap();
+    cells[7] = format!("{}/{d}", n + 1);
+    lines[17] = cells.join(",");
+    let file = dir.join("in.csv");
+    std::fs::write(&file, lines.join("\n")).unwrap();
+    let (code, stdout, stderr) = rodimpact(&["batch", file.to_str().unwrap()]);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(stderr.contains("omega: 100 claims, 1 wrong"), "{stderr}");
+    let row17 = stdout.lines().nth(17).unwrap();
+    assert!(row17.starts_with(&lines[17]));
+    assert!(row17.contains(",true,0,true,0,false,"), "{row17}");
+    assert_eq!(stdout.lines().filter(|l| l.contains(",false,")).count(), 1);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_bad_cell_names_row_and_column_and_writes_nothing() {
+    let dir = scratch("bad");
+    let mut text = String::from("m,M,a,e,rod,pivot\n");
+    for _ in 0..20_000 {
+        text.push_str("1,2,1/2,1,uniform,\n");
+    }
+    let file = dir.join("in.csv");
+    let out = dir.join("out.csv");
+    for (row, cell, want) in [
+        (
+            "1,-1,0,1,uniform,",
+            17,
+            "error: row 17, column M: must be > 0, got -1",
+        ),
+        (
+            "1,1,0,1,steel,",
+            9000,
+            "error: row 9000, column rod: expected uniform",
+        ),
+        (
+            "1,1,x,1,uniform,",
+            20_000,
+            "error: row 20000, column a: not a number",
+        ),
+        ("1,1,1", 3, "error: row 3: expected 6 cells, got 3"),
+    ] {
+        let mut lines: Vec<&str> = text.lines().collect();
+        lines[cell] = row;
+        std::fs::write(&file, lines.join("\n")).unwrap();
+        let (code, _, stderr) = rodimpact(&[
+            "batch",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 2, "{stderr}");
+        assert!(stderr.starts_with(want), "{stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert_eq!(leftovers(&dir), ["in.csv"], "no output, no temporary file");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn usage_errors_exit_2() {
+    let dir = scratch("usage");
+    let file = dir.join("in.csv");
+    std::fs::write(&file, "m,M,mass\n1,1,1\n").unwrap();
+    let f = file.to_str().unwrap();
+    let empty = dir.join("empty.csv");
+    std::fs::write(&empty, "").unwrap();
+    let e = empty.to_str().unwrap();
+    for (args, want) in [
+        (vec!["batch", f], "error: header: unknown column 'mass'"),
+        (vec!["batch", e], "error: FILE: "),
+        (
+            vec!["batch", "/nonexistent/x.csv"],
+            "error: FILE: cannot read /nonexistent/x.csv",
+        ),
+        (
+            vec!["batch", f, "--jobs", "0"],
+            "error: jobs: must be a whole number from 1 to 1024",
+        ),
+        (
+            vec!["batch", f, "--backend", "f16"],
+            "error: invalid value 'f16'",
+        ),
+    ] {
+        let (code, _, stderr) = rodimpact(&args);
+        assert_eq!(code, 2, "{args:?}: {stderr}");
+        assert!(stderr.starts_with(want), "{args:?}: {stderr}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn mixed_scenes_and_the_f64_backend() {
+    let dir = scratch("mixed");
+    let file = dir.join("in.csv");
+    std::fs::write(
+        &file,
+        "m,M,a,e,rod,pivot,omega\n1,1,1,,,,6/5\n1,3,1,0,,0,1/2\n1,2,1/2,,dumbbell,,4/13\n",
+    )
+    .unwrap();
+    let (code, stdout, stderr) = rodimpact(&["batch", file.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(
+        stdout,
+        "m,M,a,e,rod,pivot,omega,v,V,omega_exact,laws_held,omega_ok,omega_rel_error\n\
+         1,1,1,,,,6/5,3/5,2/5,6/5,true,true,0\n\
+         1,3,1,0,,0,1/2,1/2,0,1/2,true,true,0\n\
+         1,2,1/2,,dumbbell,,4/13,-3/13,8/13,4/13,true,true,0\n"
+    );
+    let (code, stdout, stderr) = rodimpact(&["batch", file.to_str().unwrap(), "--backend", "f64"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stdout
+            .lines()
+            .nth(1)
+            .unwrap()
+            .starts_with("1,1,1,,,,6/5,0.6,0.4,1.2"),
+        "{stdout}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

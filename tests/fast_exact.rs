@@ -1,0 +1,102 @@
+//! The fast exact path against the reference path: bit-identical v, V, omega on every row of
+//! both reference batches and on random scenes, in each arithmetic (fixed width, big integers).
+
+mod common;
+
+use common::{any_scene, reference_rows};
+use proptest::prelude::*;
+use rodimpact::fast;
+use rodimpact::field::Q;
+use rodimpact::scene::{RodInertia, Scene};
+use rodimpact::solve::solve;
+
+/// Fast and fraction-free-big results equal the generic solver's; the laws hold.
+fn assert_same_as_reference(s: &Scene, context: &str) -> fast::Solved {
+    let reference = solve(&s.params::<Q>()).expect("nonsingular");
+    let quick = fast::solve(s);
+    let big = fast::solve_big(s);
+    assert_eq!(quick.after, reference.after, "fast path, {context}");
+    assert_eq!(big.after, reference.after, "big-integer path, {context}");
+    assert!(quick.laws_hold && big.laws_hold, "laws, {context}");
+    quick
+}
+
+fn check_batch(file: &str) -> [usize; 2] {
+    let mut paths = [0; 2];
+    for (line, s, f) in reference_rows(file, usize::MAX) {
+        let out = assert_same_as_reference(&s, &line);
+        assert_eq!(
+            (&out.after.v, &out.after.rod_v, &out.after.omega),
+            (&f[5], &f[6], &f[7]),
+            "the file's exact values, row {line}"
+        );
+        paths[out.arithmetic as usize] += 1;
+    }
+    paths
+}
+
+#[test]
+fn the_10e6_batch_is_reproduced_bit_for_bit() {
+    // Every 10^6-sized scene overflows i128 and falls back to big integers.
+    assert_eq!(check_batch("bench-1e6.csv"), [0, 10_000]);
+}
+
+#[test]
+fn the_textbook_batch_is_reproduced_bit_for_bit() {
+    // Every textbook scene (inputs <= 100) fits the fixed width, energy identity included.
+    assert_eq!(check_batch("bench-textbook.csv"), [10_000, 0]);
+}
+
+/// A positive rational with numerator and denominator of up to `bits` bits.
+fn wide(bits: u32) -> impl Strategy<Value = Q> {
+    let max = (1u64 << bits) - 1;
+    (1..=max, 1..=max).prop_map(|(n, d)| Q::new(n.into(), d.into()))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
+
+    /// Law: on any valid scene (any rod, any e, free or pivoted) the fast path gives the
+    /// generic solver's exact values and the laws hold.
+    #[test]
+    fn fast_equals_generic_on_any_scene(s in any_scene()) {
+        assert_same_as_reference(&s, &format!("{s:?}"));
+    }
+
+    /// Law: the same across the fixed-width overflow boundary (inputs of 8 to 40 bits), for
+    /// every rod kind, e and support.
+    #[test]
+    fn fast_equals_generic_across_the_overflow_boundary(
+        bits in 8u32..=40,
+        kind in 0u8..4,
+        e_num in 0i64..=4,
+        sign in proptest::bool::ANY,
+        pivot in proptest::option::of(-8i64..=8),
+        seed in (wide(40), wide(40), wide(40), wide(40), (1u64..=1000, 1u64..=1000)),
+    ) {
+        let scale = Q::from_integer(1.into()) / Q::from_integer((1u64 << (40 - bits)).into());
+        let (m, big_m, l, v0, (p, q)) = seed;
+        let (m, big_m, l, v0) = (m * &scale, big_m * &scale, l * &scale, v0 * &scale);
+        let frac = Q::new(p.min(q).into(), p.max(q).into());
+        let a = if sign { -(&l * &frac) } else { &l * &frac };
+        let rod = match kind {
+            0 => RodInertia::Uniform,
+            1 => RodInertia::Dumbbell,
+            2 => RodInertia::Gyration(&l * &frac),
+            _ => RodInertia::Moment(&big_m * &l * &l * &frac),
+        };
+        let mut builder = Scene::builder(m, big_m);
+        if let Some(k) = pivot {
+            builder = builder.pivot(&l * Q::new(k.into(), 8.into()));
+        }
+        let s = builder
+            .half_length(l)
+            .a(a)
+            .v0(v0)
+            .e(Q::new(e_num.into(), 4.into()))
+            .rod(rod)
+            .build()
+            .unwrap();
+        assert_same_as_reference(&s, &format!("{s:?}"));
+    }
+}
