@@ -6,6 +6,7 @@
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use rodimpact::fast;
 use rodimpact::field::Q;
+use rodimpact::float::Formula;
 use rodimpact::scene::Scene;
 use rodimpact::solve::{closed_form, outcome, solve};
 use std::hint::black_box;
@@ -48,6 +49,13 @@ fn per_scene(c: &mut Criterion) {
             b.iter(|| {
                 for p in &floats {
                     black_box(closed_form(black_box(p)).map(|m| outcome(p, m)));
+                }
+            })
+        });
+        group.bench_function("f64 stable (sq)", |b| {
+            b.iter(|| {
+                for p in &floats {
+                    black_box(Formula::Sq.eval(black_box(p)));
                 }
             })
         });
