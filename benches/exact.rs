@@ -4,6 +4,7 @@
 //! Throughput is in scenes; the ratios to f64 are the figures of the README.
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use rodimpact::batch::{Backend, Batch};
 use rodimpact::fast;
 use rodimpact::field::Q;
 use rodimpact::float::Formula;
@@ -17,21 +18,12 @@ const SCENES: usize = 1000;
 fn scenes(file: &str) -> Vec<Scene> {
     let path = format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(path).expect("shared/data beside the project");
-    text.lines()
-        .skip(1)
+    let mut lines = text.lines();
+    let batch = Batch::new(lines.next().expect("a header"), Backend::Exact).expect("the header");
+    lines
         .take(SCENES)
-        .map(|line| {
-            let f: Vec<Q> = line
-                .split(',')
-                .map(|t| rodimpact::number::parse(t).expect("bench data"))
-                .collect();
-            Scene::builder(f[0].clone(), f[1].clone())
-                .half_length(f[2].clone())
-                .a(f[3].clone())
-                .v0(f[4].clone())
-                .build()
-                .expect("valid bench scene")
-        })
+        .enumerate()
+        .map(|(i, line)| batch.scene(i + 1, line).expect("valid reference scene").0)
         .collect()
 }
 

@@ -9,6 +9,7 @@
 //! Pass `--quick` to stop the growth curve at 10,000 bits.
 
 use num_bigint::{BigInt, BigUint};
+use rodimpact::batch::{Backend, Batch};
 use rodimpact::fast;
 use rodimpact::field::Q;
 use rodimpact::scene::Scene;
@@ -33,20 +34,11 @@ fn main() {
 fn reference(file: &str) -> Vec<Scene> {
     let path = format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(path).expect("shared/data beside the project");
-    text.lines()
-        .skip(1)
-        .map(|line| {
-            let f: Vec<Q> = line
-                .split(',')
-                .map(|t| rodimpact::number::parse(t).expect("reference data"))
-                .collect();
-            Scene::builder(f[0].clone(), f[1].clone())
-                .half_length(f[2].clone())
-                .a(f[3].clone())
-                .v0(f[4].clone())
-                .build()
-                .expect("valid reference scene")
-        })
+    let mut lines = text.lines();
+    let batch = Batch::new(lines.next().expect("a header"), Backend::Exact).expect("the header");
+    lines
+        .enumerate()
+        .map(|(i, line)| batch.scene(i + 1, line).expect("valid reference scene").0)
         .collect()
 }
 

@@ -16,7 +16,7 @@ use crate::error::{Error, ErrorKind};
 use crate::fast;
 use crate::field::Q;
 use crate::mechanics::Motion;
-use crate::scene::{SceneInput, parse_field};
+use crate::scene::{Scene, SceneInput, parse_field};
 use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
@@ -177,20 +177,21 @@ impl Batch {
         out
     }
 
-    /// Solves data row `number` (1-based) given as its line.
+    /// The scene and the claimed v, V, omega of data row `number` (1-based), without solving.
     ///
     /// # Errors
-    /// `row N, column X: reason` for a bad cell; `row N: ...` for a wrong number of cells.
+    /// As [`Batch::row`]: `row N, column X: reason`, or `row N: ...` for a wrong number of cells.
     ///
     /// # Examples
     /// ```
     /// use rodimpact::batch::{Batch, Backend};
-    /// let b = Batch::new("m,M,omega", Backend::Exact).unwrap();
-    /// let row = b.row(1, "1,1,6/5").unwrap();
-    /// assert_eq!(row.line, "1,1,6/5,3/5,2/5,6/5,true,true,0\n");
-    /// assert_eq!(b.row(2, "1,-1,1").unwrap_err().to_string(), "row 2, column M: must be > 0, got -1");
+    /// use rodimpact::field::q;
+    /// let b = Batch::new("m,M,l,a,v0,omega", Backend::Exact).unwrap();
+    /// let (scene, claimed) = b.scene(1, "1,1,1,1/2,1,6/5").unwrap();
+    /// assert_eq!(scene.a(), &q(1, 2));
+    /// assert_eq!(claimed, [None, None, Some(q(6, 5))]);
     /// ```
-    pub fn row(&self, number: usize, line: &str) -> Result<Row, Error> {
+    pub fn scene(&self, number: usize, line: &str) -> Result<(Scene, [Option<Q>; 3]), Error> {
         let line = line.trim_end_matches(['\n', '\r']);
         let cells: Vec<&str> = line.split(',').map(str::trim).collect();
         if cells.len() != self.columns.len() {
@@ -210,20 +211,36 @@ impl Batch {
             if cell.is_empty() && column >= 2 {
                 continue;
             }
-            let text = Some(cell.to_string());
-            match column {
-                0 => input.m = text,
-                1 => input.rod_mass = text,
-                2 => input.l = text,
-                3 => input.a = text,
-                4 => input.v0 = text,
-                5 => input.rod = text,
-                6 => input.e = text,
-                7 => input.pivot = text,
-                k => claimed[k - 8] = Some(parse_field(OUTPUTS[k - 8], cell).map_err(at)?),
+            match SCENE_COLUMNS.get(column) {
+                Some(name) => {
+                    *input.slot(name).expect("scene columns are scene inputs") =
+                        Some(cell.to_string());
+                }
+                None => {
+                    let k = column - SCENE_COLUMNS.len();
+                    claimed[k] = Some(parse_field(OUTPUTS[k], cell).map_err(at)?);
+                }
             }
         }
-        let scene = input.build().map_err(at)?;
+        Ok((input.build().map_err(at)?, claimed))
+    }
+
+    /// Solves data row `number` (1-based) given as its line.
+    ///
+    /// # Errors
+    /// `row N, column X: reason` for a bad cell; `row N: ...` for a wrong number of cells.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Backend};
+    /// let b = Batch::new("m,M,omega", Backend::Exact).unwrap();
+    /// let row = b.row(1, "1,1,6/5").unwrap();
+    /// assert_eq!(row.line, "1,1,6/5,3/5,2/5,6/5,true,true,0\n");
+    /// assert_eq!(b.row(2, "1,-1,1").unwrap_err().to_string(), "row 2, column M: must be > 0, got -1");
+    /// ```
+    pub fn row(&self, number: usize, line: &str) -> Result<Row, Error> {
+        let line = line.trim_end_matches(['\n', '\r']);
+        let (scene, claimed) = self.scene(number, line)?;
         let (exact, texts, laws_held) = match self.backend {
             Backend::Exact => {
                 let out = fast::solve(&scene);

@@ -422,6 +422,35 @@ pub struct SceneInput {
 }
 
 impl SceneInput {
+    /// The slot of the input named `key` (the command-line flag without dashes: `m`, `M`, `l`,
+    /// `length`, `a`, `from-end`, `v0`, `rod`, `e`, `pivot`), or `None` for an unknown key.
+    ///
+    /// Scene files, batch columns and tests fill a scene by name through this one map.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::SceneInput;
+    /// let mut input = SceneInput::default();
+    /// *input.slot("M").unwrap() = Some("3".into());
+    /// assert_eq!(input.rod_mass.as_deref(), Some("3"));
+    /// assert!(input.slot("mass").is_none());
+    /// ```
+    pub fn slot(&mut self, key: &str) -> Option<&mut Option<String>> {
+        Some(match key {
+            "m" => &mut self.m,
+            "M" => &mut self.rod_mass,
+            "l" => &mut self.l,
+            "length" => &mut self.length,
+            "a" => &mut self.a,
+            "from-end" => &mut self.from_end,
+            "v0" => &mut self.v0,
+            "rod" => &mut self.rod,
+            "e" => &mut self.e,
+            "pivot" => &mut self.pivot,
+            _ => return None,
+        })
+    }
+
     /// Parses and validates every field.
     ///
     /// # Errors
@@ -564,20 +593,7 @@ mod tests {
     fn input(pairs: &[(&str, &str)]) -> SceneInput {
         let mut s = SceneInput::default();
         for (k, v) in pairs {
-            let v = Some(v.to_string());
-            match *k {
-                "m" => s.m = v,
-                "M" => s.rod_mass = v,
-                "l" => s.l = v,
-                "length" => s.length = v,
-                "a" => s.a = v,
-                "from-end" => s.from_end = v,
-                "v0" => s.v0 = v,
-                "rod" => s.rod = v,
-                "e" => s.e = v,
-                "pivot" => s.pivot = v,
-                other => panic!("unknown test key {other}"),
-            }
+            *s.slot(k).expect("a known test key") = Some(v.to_string());
         }
         s
     }

@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 use proptest::prelude::*;
+use rodimpact::batch::{Backend, Batch};
 use rodimpact::field::Q;
 use rodimpact::scene::{RodInertia, Scene, SceneInput};
 
@@ -16,20 +17,7 @@ pub fn scene(text: &str) -> Scene {
     let mut s = SceneInput::default();
     for pair in text.split_whitespace() {
         let (k, v) = pair.split_once('=').expect("key=value");
-        let v = Some(v.to_string());
-        match k {
-            "m" => s.m = v,
-            "M" => s.rod_mass = v,
-            "l" => s.l = v,
-            "length" => s.length = v,
-            "a" => s.a = v,
-            "from-end" => s.from_end = v,
-            "v0" => s.v0 = v,
-            "rod" => s.rod = v,
-            "e" => s.e = v,
-            "pivot" => s.pivot = v,
-            other => panic!("unknown key {other}"),
-        }
+        *s.slot(k).expect("a known scene key") = Some(v.to_string());
     }
     s.build()
         .unwrap_or_else(|e| panic!("bad test scene {text}: {e}"))
@@ -104,22 +92,20 @@ pub fn rodimpact(args: &[&str]) -> (i32, String, String) {
 }
 
 /// The first `limit` rows of a reference batch of `../shared/data/`: the line, its scene
-/// (columns m, M, l, a, v0) and every column as an exact number.
-pub fn reference_rows(file: &str, limit: usize) -> Vec<(String, Scene, Vec<Q>)> {
+/// (columns m, M, l, a, v0) and its exact v, V, omega, read as `rodimpact batch` reads them.
+pub fn reference_rows(file: &str, limit: usize) -> Vec<(String, Scene, [Q; 3])> {
     let path = format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(path).expect("shared/data beside the project");
-    text.lines()
-        .skip(1)
+    let mut lines = text.lines();
+    let header = lines.next().expect("a header line");
+    let batch = Batch::new(header, Backend::Exact).expect("the reference header");
+    lines
         .take(limit)
-        .map(|line| {
-            let f: Vec<Q> = line.split(',').map(rat).collect();
-            let s = Scene::builder(f[0].clone(), f[1].clone())
-                .half_length(f[2].clone())
-                .a(f[3].clone())
-                .v0(f[4].clone())
-                .build()
-                .expect("reference scenes are valid");
-            (line.to_string(), s, f)
+        .enumerate()
+        .map(|(i, line)| {
+            let (scene, claimed) = batch.scene(i + 1, line).expect("reference rows are valid");
+            let expected = claimed.map(|x| x.expect("the reference gives v, V and omega"));
+            (line.to_string(), scene, expected)
         })
         .collect()
 }
