@@ -27,6 +27,7 @@
 
 pub mod batch;
 pub mod claims;
+pub mod contact;
 pub mod error;
 pub mod fast;
 pub mod field;

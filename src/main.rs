@@ -37,6 +37,8 @@ enum Command {
     /// Many scenes from a CSV file, exactly, streamed and in parallel; claimed v, V, omega
     /// columns are checked.
     Batch(commands::batch::BatchArgs),
+    /// The compliant-contact model integrated in time against the exact impulsive result.
+    Simulate(Box<commands::simulate::SimulateArgs>),
 }
 
 fn main() -> ExitCode {
@@ -72,6 +74,7 @@ fn main() -> ExitCode {
         Command::Check(args) => commands::check::run_check(args),
         Command::Stability(args) => commands::stability::run_stability(args),
         Command::Batch(args) => commands::batch::run_batch(args),
+        Command::Simulate(args) => commands::simulate::run_simulate(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
