@@ -305,6 +305,21 @@ fn expressions_on_the_command_line() {
         ("exponent 1e9", "omega=2^1000000000", "omega"),
         ("number exponent 1e9", "omega=1e1000000000", "omega"),
         ("huge power", "omega=(m+M+l+v0)^64*(m+M+l+v0)^64", "omega"),
+        // Regression (fuzzing, target `expr`): `0/(0/(M+24---0/4-m)^48---0/` ran past the
+        // fuzzer's 10 s timeout, and the 48 characters below took 14 s: the sum of two degree-30
+        // fractions is a degree-60 rational function (within the old degree limit of 64) whose
+        // normalising polynomial GCD over rational coefficients grows like degree^4.5. The degree
+        // limit is now 32, so this is refused at once.
+        (
+            "degree-60 sum",
+            "omega=(M+24-m)^30/(M+23-m)^30+(M+22-m)^30/(M+21-m)^30",
+            "omega: expression too large",
+        ),
+        (
+            "fuzz artifact",
+            "omega=0/(0/(M+24---0/4-m)^48---0/",
+            "omega",
+        ),
         ("length", long.as_str(), "omega"),
         ("depth 1000", nest.as_str(), "omega"),
         ("control bytes", "omega=\u{1}", "omega"),
