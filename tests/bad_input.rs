@@ -6,7 +6,8 @@
 //!
 //! Each case must exit with code 2 and exactly one stderr line that names the field (and the row
 //! and column, or the line, or the problem and key, for files), must not panic, and must end
-//! within a generous bound (killed after [`HANG`], to detect hangs; speed is never asserted).
+//! within a generous bound (killed after [`HANG`], to detect hangs; speed is never asserted)
+//! and within [`MEMORY_KIB`] of address space.
 //!
 //! argv holds at most 128 KiB per argument on Linux, so the 10^7-digit numbers and the
 //! 100,000-deep nest go through files (TOML and CSV); the flags get a 100,000-digit number.
@@ -21,9 +22,18 @@ use std::time::{Duration, Instant};
 /// Far beyond any case's run time: only a hang (or a runaway computation) reaches it.
 const HANG: Duration = Duration::from_secs(20);
 
+/// The address space each case may use, in KiB (1 GiB: the 4 GiB sparse files must not be read
+/// into memory).
+const MEMORY_KIB: u64 = 1 << 20;
+
 /// The exit code, stdout and stderr of the binary, or `None` when it had to be killed.
 fn run(args: &[OsString]) -> Option<(i32, String, String)> {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+    // Through `sh` to cap the address space: an input that makes the binary allocate beyond
+    // MEMORY fails (an allocation abort is not exit 2) instead of passing unnoticed.
+    let mut child = Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {MEMORY_KIB} && exec \"$0\" \"$@\""))
+        .arg(env!("CARGO_BIN_EXE_rodimpact"))
         .args(args)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
