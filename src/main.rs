@@ -59,9 +59,7 @@ fn main() -> ExitCode {
                     },
                 );
             }
-            let rendered = err.to_string();
-            let first = rendered.lines().next().unwrap_or("usage error");
-            eprintln!("{first} (try --help)");
+            eprintln!("{} (try --help)", first_paragraph(&err.to_string()));
             return ExitCode::from(2);
         }
     };
@@ -86,6 +84,21 @@ fn main() -> ExitCode {
     }
 }
 
+/// The first paragraph of a clap error as one line: clap lists the missing arguments on the
+/// lines after "the following required arguments were not provided:", and those name the field.
+fn first_paragraph(rendered: &str) -> String {
+    let words: Vec<&str> = rendered
+        .lines()
+        .take_while(|line| !line.trim().is_empty())
+        .map(str::trim)
+        .collect();
+    if words.is_empty() {
+        "error: usage error".to_string()
+    } else {
+        words.join(" ")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -95,6 +108,17 @@ mod tests {
     #[test]
     fn cli_definition_is_consistent() {
         Cli::command().debug_assert();
+    }
+
+    /// Regression (bad-input matrix): a missing required argument printed only
+    /// "error: the following required arguments were not provided:" because clap lists the
+    /// arguments on the next lines and only the first line was kept; the field went unnamed.
+    #[test]
+    fn a_missing_argument_is_named_on_the_one_line() {
+        let err = Cli::try_parse_from(["rodimpact", "plot", "omega"]).unwrap_err();
+        let line = first_paragraph(&err.to_string());
+        assert!(line.contains("not provided: --out <FILE.svg>"), "{line}");
+        assert!(!line.contains('\n'));
     }
 
     #[test]

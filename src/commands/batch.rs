@@ -3,10 +3,10 @@
 use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
-use rodimpact::batch::{Backend, Batch, Summary, run};
+use rodimpact::batch::{Backend, Batch, MAX_LINE, Summary, run};
 use rodimpact::report::AtomicFile;
 use rodimpact::{Error, ErrorKind};
-use std::io::{BufRead, BufReader, IsTerminal, Write};
+use std::io::{BufRead, BufReader, IsTerminal, Read, Write};
 use std::path::PathBuf;
 
 #[derive(Args, Debug)]
@@ -62,8 +62,25 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     let file = std::fs::File::open(&args.file).map_err(read_error)?;
     let size = file.metadata().map(|m| m.len()).unwrap_or(0);
     let mut input = BufReader::with_capacity(1 << 16, file);
+    // The header is read like any row: bounded by MAX_LINE, so a file of one endless line (a
+    // sparse file of zeros) is refused instead of read into memory.
     let mut header = String::new();
-    input.read_line(&mut header).map_err(read_error)?;
+    let n = (&mut input)
+        .take(MAX_LINE as u64 + 1)
+        .read_line(&mut header)
+        .map_err(|why| {
+            Error::new(
+                "header (line 1)",
+                ErrorKind::Io(format!("cannot read {}: {why}", args.file.display())),
+            )
+        })?;
+    if n > MAX_LINE {
+        return Err(Error::new(
+            "header (line 1)",
+            ErrorKind::Invalid(format!("line longer than {MAX_LINE} bytes (limit)")),
+        )
+        .into());
+    }
     if header.trim().is_empty() {
         return Err(Error::new(
             "FILE",

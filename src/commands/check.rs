@@ -3,10 +3,11 @@
 use super::{Failure, SceneFlags, print_out};
 use clap::Args;
 use rodimpact::textbook::problems::{
-    MAX_CLAIMS, check_problems, parse_problems, problems_json, problems_text,
+    MAX_CLAIMS, MAX_FILE_BYTES, check_problems, parse_problems, problems_json, problems_text,
 };
 use rodimpact::textbook::{Claim, check_scene};
 use rodimpact::{Error, ErrorKind};
+use std::io::Read;
 use std::path::PathBuf;
 
 #[derive(Args, Debug)]
@@ -64,8 +65,7 @@ fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
             ErrorKind::Conflict("give either a problem file or scene flags with --claim".into()),
         ));
     }
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Error::new(label.as_str(), ErrorKind::Io(format!("cannot read: {e}"))))?;
+    let text = read_bounded(&label, path)?;
     let problems = parse_problems(&label, &text)?;
     let reports = check_problems(&label, &problems, args.sig)?;
     if args.json {
@@ -74,6 +74,30 @@ fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
         print_out(&problems_text(&reports));
     }
     Ok(reports.iter().all(|r| r.report.all_agree()))
+}
+
+/// The file's text, read no further than the size limit (a huge or endless file is refused
+/// without being read into memory); bytes that are not UTF-8 are named by line.
+fn read_bounded(label: &str, path: &std::path::Path) -> Result<String, Error> {
+    let io = |e: std::io::Error| Error::new(label, ErrorKind::Io(format!("cannot read: {e}")));
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_FILE_BYTES as u64 + 1).read_to_end(&mut bytes))
+        .map_err(io)?;
+    if bytes.len() > MAX_FILE_BYTES {
+        return Err(Error::out_of_range(
+            label,
+            format!("file larger than {MAX_FILE_BYTES} bytes (limit)"),
+        ));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        let good = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+        let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
+        Error::new(
+            label,
+            ErrorKind::Invalid(format!("line {line}: not valid UTF-8")),
+        )
+    })
 }
 
 fn check_flags(args: &CheckArgs) -> Result<bool, Error> {

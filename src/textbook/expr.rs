@@ -20,7 +20,7 @@ pub const MAX_DEPTH: usize = 200;
 /// The largest accepted |exponent| after `^`.
 pub const MAX_EXPONENT: i64 = 64;
 /// The largest total degree of any intermediate polynomial.
-pub const MAX_DEGREE: u32 = 64;
+pub const MAX_DEGREE: u32 = 32;
 /// The most terms of any intermediate polynomial.
 pub const MAX_TERMS: usize = 2_000;
 

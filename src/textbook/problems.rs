@@ -145,6 +145,13 @@ pub fn parse_problems(label: &str, text: &str) -> Result<Vec<Problem>, Error> {
             format!("more than {MAX_PROBLEMS} problems (limit)"),
         ));
     }
+    let mut ids = std::collections::HashSet::new();
+    if let Some(twice) = doc.problem.iter().find(|p| !ids.insert(p.id.as_str())) {
+        return Err(Error::new(
+            format!("{label}: problem '{}'", twice.id),
+            ErrorKind::Conflict("the id is used by two problems".into()),
+        ));
+    }
     doc.problem.into_iter().map(|p| problem(label, p)).collect()
 }
 
