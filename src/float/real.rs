@@ -26,6 +26,17 @@ pub trait Real: Field + Copy + PartialOrd {
     /// `self 2^k`, correctly rounded (a single rounding, also into the subnormal range).
     fn ldexp(self, k: i32) -> Self;
 
+    /// `2^k`, exact, for `k` in the normal exponent range; outside it as [`Real::ldexp`] rounds
+    /// (a subnormal, 0 or infinity).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::float::Real;
+    /// assert_eq!(<f64 as Real>::pow2(-3), 0.125);
+    /// assert_eq!(<f32 as Real>::pow2(200), f32::INFINITY);
+    /// ```
+    fn pow2(k: i32) -> Self;
+
     /// `self * a + b` with one rounding.
     fn mul_add(self, a: Self, b: Self) -> Self;
 
@@ -98,13 +109,23 @@ macro_rules! real {
                 if target > $bias + 1 {
                     f * <$t>::INFINITY
                 } else if target >= min_normal {
-                    f * pow2(target - 1) * 2.0
+                    // f 2 is in [1, 2): the product stays normal, even at the lowest binade.
+                    f * 2.0 * pow2(target - 1)
                 } else if target < min_normal - ($precision + 1) {
                     f * 0.0
                 } else {
                     // Exact into the smallest normal binade, then one rounding into subnormals.
                     let drop = min_normal - target; // 1 ..= PRECISION + 1
-                    (f * pow2(min_normal - 1) * 2.0) * pow2(-drop)
+                    (f * 2.0 * pow2(min_normal - 1)) * pow2(-drop)
+                }
+            }
+
+            fn pow2(k: i32) -> Self {
+                const MANT: u32 = $precision - 1;
+                if (1 - $bias..=$bias).contains(&k) {
+                    <$t>::from_bits(((k + $bias) as $bits) << MANT)
+                } else {
+                    (1.0 as $t).ldexp(k)
                 }
             }
 
@@ -142,6 +163,15 @@ real!(f32, u32, 24, 127);
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ldexp_is_exact_into_the_lowest_normal_binade() {
+        // Regression: f 2^-1 2^target once went through the subnormal range and lost the last bit.
+        let x = 1.0f32 + f32::EPSILON;
+        assert_eq!(x.ldexp(-126), f32::MIN_POSITIVE * x);
+        let y = 1.0f64 + f64::EPSILON;
+        assert_eq!(y.ldexp(-1022), f64::MIN_POSITIVE * y);
+    }
 
     #[test]
     fn frexp_splits_normals_and_subnormals_exactly() {
