@@ -330,6 +330,16 @@ fn expressions_on_the_command_line() {
             "omega=0/(0/(M+24---0/4-m)^48---0/",
             "omega",
         ),
+        // Regression (fuzzing, target `expr`, second run): `V=3e3849^47e2e32-222-22e32-22` ran
+        // past the timeout, and `V=3e9999^64` did not finish in 30 s: every number was within
+        // the digit limit, but the power built a 640,000-digit constant that the verdict then
+        // worked on. Intermediate coefficients are now capped at MAX_COEFF_BITS.
+        ("huge constant", "V=3e9999^64", "V: expression too large"),
+        (
+            "fuzz artifact 2",
+            "V=3e3849^47e2e32-222-22e32-22",
+            "V: expression too large",
+        ),
         ("length", long.as_str(), "omega"),
         ("depth 1000", nest.as_str(), "omega"),
         ("control bytes", "omega=\u{1}", "omega"),

@@ -5,7 +5,8 @@
 //! [`crate::number::parse`] reads them) and the symbols `m M l L a d v0 e p`. There is no
 //! implicit multiplication (`2m` is an error; write `2*m`). Inputs longer than [`MAX_LEN`]
 //! characters or nested deeper than [`MAX_DEPTH`] are refused before any deep recursion, and
-//! intermediate results are capped ([`MAX_DEGREE`], [`MAX_TERMS`]) so no input runs for ever.
+//! intermediate results are capped ([`MAX_DEGREE`], [`MAX_TERMS`], [`MAX_COEFF_BITS`]) so no
+//! input runs for ever.
 
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, RatFn};
@@ -23,6 +24,9 @@ pub const MAX_EXPONENT: i64 = 64;
 pub const MAX_DEGREE: u32 = 32;
 /// The most terms of any intermediate polynomial.
 pub const MAX_TERMS: usize = 2_000;
+/// The largest numerator or denominator of any intermediate coefficient, in bits (about 20,000
+/// decimal digits: the product of two numbers at the digit limit).
+pub const MAX_COEFF_BITS: u64 = 66_440;
 
 /// The symbols an expression may use.
 pub const SYMBOLS: [&str; 9] = ["m", "M", "l", "L", "a", "d", "v0", "e", "p"];
@@ -395,6 +399,13 @@ impl Parser<'_> {
                 format!(
                     "expression too large (a polynomial beyond degree {MAX_DEGREE} or {MAX_TERMS} terms)"
                 ),
+            ));
+        }
+        let huge = |c: &Q| c.numer().bits() > MAX_COEFF_BITS || c.denom().bits() > MAX_COEFF_BITS;
+        if polys.iter().any(|p| p.terms().any(|(_, c)| huge(c))) {
+            return Err(invalid(
+                self.field,
+                format!("expression too large (a number beyond {MAX_COEFF_BITS} bits, limit)"),
             ));
         }
         Ok(value)
