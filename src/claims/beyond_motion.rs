@@ -987,12 +987,10 @@ fn x26(paper: &Paper) -> Claim {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{Verdict, decide};
+    use super::super::Verdict;
     use super::*;
 
-    fn verdict(id: &str, paper: &Paper) -> Result<Verdict, String> {
-        decide(id, paper).expect("registered").verdict
-    }
+    use super::super::test_support::verdict;
 
     #[test]
     fn verdicts() {

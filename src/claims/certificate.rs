@@ -502,18 +502,8 @@ impl Certificate {
                 if radicands.len() > 1 {
                     return Err(format!("instance mixes square roots of {radicands:?}"));
                 }
-                let value_of = |s: Sym| {
-                    instance
-                        .iter()
-                        .find(|(k, _)| *k == s)
-                        .map(|(_, v)| v.clone())
-                };
-                let l = lhs
-                    .eval(&value_of)
-                    .ok_or("lhs is undefined at the instance")?;
-                let r = rhs
-                    .eval(&value_of)
-                    .ok_or("rhs is undefined at the instance")?;
+                let l = evaluate_at(instance, lhs).ok_or("lhs is undefined at the instance")?;
+                let r = evaluate_at(instance, rhs).ok_or("rhs is undefined at the instance")?;
                 let order = (l.clone() - &r).sign().ok_or("the sign is undecided")?;
                 if relation.holds(order) {
                     Ok(())
@@ -613,14 +603,8 @@ impl Certificate {
                     .map(|(s, v)| format!("{s} = {v}"))
                     .collect::<Vec<_>>()
                     .join(", ");
-                let value_of = |s: Sym| {
-                    instance
-                        .iter()
-                        .find(|(k, _)| *k == s)
-                        .map(|(_, v)| v.clone())
-                };
                 let show = |x: &RatFn| {
-                    x.eval(&value_of)
+                    evaluate_at(instance, x)
                         .map(|v| format!("{v} (~ {})", v.decimal(12)))
                         .unwrap_or_else(|| "undefined".into())
                 };
@@ -644,6 +628,17 @@ impl Certificate {
             ),
         }
     }
+}
+
+/// `x` evaluated exactly at a witness instance; `None` where a denominator vanishes or a symbol
+/// has no value.
+fn evaluate_at(instance: &[(Sym, QSqrt)], x: &RatFn) -> Option<QSqrt> {
+    x.eval(&|s: Sym| {
+        instance
+            .iter()
+            .find(|(k, _)| *k == s)
+            .map(|(_, v)| v.clone())
+    })
 }
 
 /// `integral_{lower}^{upper} density(var) * var^power d var`, for a density polynomial in `var`.

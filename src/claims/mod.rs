@@ -175,6 +175,19 @@ impl Claim {
         }
     }
 
+    /// Every certificate of the decision, counterexamples first, for editing (the mutation tests
+    /// use it to check that a tampered certificate fails).
+    pub fn certificates_mut(&mut self) -> Vec<&mut Certificate> {
+        match &mut self.decision {
+            Decision::Proved(c) | Decision::Refuted(c) => c.iter_mut().collect(),
+            Decision::Qualified {
+                counterexample,
+                proof,
+                ..
+            } => counterexample.iter_mut().chain(proof.iter_mut()).collect(),
+        }
+    }
+
     /// The method: the distinct certificate kinds, joined by `+` (`identity + positivity`).
     ///
     /// # Examples
@@ -334,4 +347,15 @@ pub fn decide_entry(entry: &Entry, paper: &Paper) -> Decided {
 /// Builds and checks every claim.
 pub fn decide_all(paper: &Paper) -> Vec<Decided> {
     registry().iter().map(|e| decide_entry(e, paper)).collect()
+}
+
+/// Helpers shared by the claim files' tests.
+#[cfg(test)]
+mod test_support {
+    use super::{Paper, Verdict, decide};
+
+    /// The verdict of claim `id` against `paper`.
+    pub(super) fn verdict(id: &str, paper: &Paper) -> Result<Verdict, String> {
+        decide(id, paper).expect("registered").verdict
+    }
 }

@@ -896,15 +896,9 @@ mod tests {
 
     /// The `index`-th certificate of a claim, counterexamples first.
     fn certificate(claim: &mut Claim, index: usize) -> &mut Certificate {
-        let all: Vec<&mut Certificate> = match &mut claim.decision {
-            Decision::Proved(c) | Decision::Refuted(c) => c.iter_mut().collect(),
-            Decision::Qualified {
-                counterexample,
-                proof,
-                ..
-            } => counterexample.iter_mut().chain(proof.iter_mut()).collect(),
-        };
-        all.into_iter()
+        claim
+            .certificates_mut()
+            .into_iter()
             .nth(index)
             .expect("the claim has that certificate")
     }

@@ -924,9 +924,7 @@ mod tests {
         ("C31", Verdict::Qualified),
     ];
 
-    fn verdict(id: &str, paper: &Paper) -> Result<Verdict, String> {
-        decide(id, paper).expect("a registered id").verdict
-    }
+    use super::super::test_support::verdict;
 
     /// The ids of the range whose verdict fails under `paper`.
     fn failing(paper: &Paper) -> Vec<&'static str> {
