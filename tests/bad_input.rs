@@ -300,6 +300,7 @@ fn other_options() {
 fn expressions_on_the_command_line() {
     let long = format!("omega={}1", "1+".repeat(6_000));
     let nest = format!("omega={}", deep_nest(1_000));
+    let chain = format!("omega={}", vec!["(m+M+l+a)^16/(m+M+l+a)^16"; 300].join("*"));
     let cases = [
         ("empty", "omega=", "omega"),
         ("no name", "=1", "claim"),
@@ -319,11 +320,11 @@ fn expressions_on_the_command_line() {
         // fuzzer's 10 s timeout, and the 48 characters below took 14 s: the sum of two degree-30
         // fractions is a degree-60 rational function (within the old degree limit of 64) whose
         // normalising polynomial GCD over rational coefficients grows like degree^4.5. The degree
-        // limit is now 32, so this is refused at once.
+        // limit is now 32 (and the work budget below also stops it), so this is refused at once.
         (
             "degree-60 sum",
             "omega=(M+24-m)^30/(M+23-m)^30+(M+22-m)^30/(M+21-m)^30",
-            "omega: expression too large",
+            "omega: expression too",
         ),
         (
             "fuzz artifact",
@@ -339,6 +340,22 @@ fn expressions_on_the_command_line() {
             "fuzz artifact 2",
             "V=3e3849^47e2e32-222-22e32-22",
             "V: expression too large",
+        ),
+        // Regression (review of the limits after the fuzzing runs): every intermediate value was
+        // within the degree, term and size limits, but the work was not bounded: the 55
+        // characters below built two 969-term quadrivariate fractions of degree 16 whose sum
+        // (58,905 terms, refused only afterwards) took 10 s, and `chain` (300 copies of
+        // `(m+M+l+a)^16/(m+M+l+a)^16`) took 16 s of polynomial GCDs. Every operation is now
+        // charged against MAX_WORK before it is carried out.
+        (
+            "costly sum",
+            "omega=(M+24-m+l)^16/(M+23-m+a)^16+(M+22-m+l)^16/(M+21-m+a)^16",
+            "omega: expression too costly",
+        ),
+        (
+            "costly chain",
+            chain.as_str(),
+            "omega: expression too costly",
         ),
         ("length", long.as_str(), "omega"),
         ("depth 1000", nest.as_str(), "omega"),

@@ -5,8 +5,8 @@
 //! [`crate::number::parse`] reads them) and the symbols `m M l L a d v0 e p`. There is no
 //! implicit multiplication (`2m` is an error; write `2*m`). Inputs longer than [`MAX_LEN`]
 //! characters or nested deeper than [`MAX_DEPTH`] are refused before any deep recursion, and
-//! intermediate results are capped ([`MAX_DEGREE`], [`MAX_TERMS`], [`MAX_COEFF_BITS`]) so no
-//! input runs for ever.
+//! intermediate results are capped ([`MAX_DEGREE`], [`MAX_TERMS`], [`MAX_COEFF_BITS`]), and so is
+//! the total work of the evaluation ([`MAX_WORK`]), so no input runs for long.
 
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, RatFn};
@@ -27,6 +27,11 @@ pub const MAX_TERMS: usize = 2_000;
 /// The largest numerator or denominator of any intermediate coefficient, in bits (about 20,000
 /// decimal digits: the product of two numbers at the digit limit).
 pub const MAX_COEFF_BITS: u64 = 66_440;
+/// The most work one expression may cost: each operation on intermediate values `x` and `y`
+/// is charged `size(x) * size(y)`, where a value's size counts the 64-bit words of every
+/// coefficient of its polynomials. A count, not a clock, so a refusal does not depend on the
+/// machine; textbook formulas cost a few hundred units.
+pub const MAX_WORK: u64 = 4_000_000;
 
 /// The symbols an expression may use.
 pub const SYMBOLS: [&str; 9] = ["m", "M", "l", "L", "a", "d", "v0", "e", "p"];
@@ -153,6 +158,7 @@ pub fn parse(field: &str, text: &str) -> Result<Radical, Error> {
         chars: text.chars().collect(),
         pos: 0,
         depth: 0,
+        work: 0,
     };
     let value = p.expr()?;
     p.skip_space();
@@ -171,6 +177,8 @@ struct Parser<'a> {
     chars: Vec<char>,
     pos: usize,
     depth: usize,
+    /// Work charged so far (see [`MAX_WORK`]).
+    work: u64,
 }
 
 impl Parser<'_> {
@@ -217,6 +225,7 @@ impl Parser<'_> {
             self.pos += 1;
             let rhs = self.term()?;
             let rhs = if op == '-' { neg(rhs) } else { rhs };
+            self.charge(&value, &rhs)?;
             value = self.checked(add(value, rhs))?;
         }
         Ok(value)
@@ -227,6 +236,7 @@ impl Parser<'_> {
         while let Some(op @ ('*' | '/')) = self.peek() {
             self.pos += 1;
             let rhs = self.unary()?;
+            self.charge(&value, &rhs)?;
             value = if op == '*' {
                 self.checked(Ok(mul(value, rhs)))?
             } else {
@@ -264,6 +274,7 @@ impl Parser<'_> {
         }
         let mut result = Radical::rational(RatFn::one());
         for _ in 0..n.unsigned_abs() {
+            self.charge(&result, &base)?;
             result = self.checked(Ok(mul(result, base.clone())))?;
         }
         Ok(if n < 0 { inverse(result) } else { result })
@@ -382,6 +393,18 @@ impl Parser<'_> {
         }
     }
 
+    /// Charges an operation on `x` and `y` against [`MAX_WORK`] before it is carried out.
+    fn charge(&mut self, x: &Radical, y: &Radical) -> Result<(), Error> {
+        self.work = self.work.saturating_add(size(x).saturating_mul(size(y)));
+        if self.work > MAX_WORK {
+            return Err(invalid(
+                self.field,
+                format!("expression too costly to evaluate (work beyond {MAX_WORK} units, limit)"),
+            ));
+        }
+        Ok(())
+    }
+
     fn checked(&self, value: Result<Radical, String>) -> Result<Radical, Error> {
         let value = value.map_err(|why| invalid(self.field, why))?;
         let polys = [
@@ -410,6 +433,22 @@ impl Parser<'_> {
         }
         Ok(value)
     }
+}
+
+/// The size of a value for [`MAX_WORK`]: the 64-bit words of every coefficient of its four
+/// polynomials.
+fn size(x: &Radical) -> u64 {
+    let words = |c: &Q| c.numer().bits() / 64 + c.denom().bits() / 64 + 2;
+    [
+        x.coeff.num(),
+        x.coeff.den(),
+        x.radicand.num(),
+        x.radicand.den(),
+    ]
+    .iter()
+    .flat_map(|p| p.terms())
+    .map(|(_, c)| words(c))
+    .sum()
 }
 
 fn neg(x: Radical) -> Radical {
