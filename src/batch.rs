@@ -16,6 +16,7 @@ use crate::error::{Error, ErrorKind};
 use crate::fast;
 use crate::field::Q;
 use crate::mechanics::Motion;
+use crate::number::WordRatio;
 use crate::scene::{Scene, SceneInput, parse_field};
 use num_traits::{Signed, Zero};
 use rayon::prelude::*;
@@ -192,6 +193,12 @@ impl Batch {
     /// assert_eq!(claimed, [None, None, Some(q(6, 5))]);
     /// ```
     pub fn scene(&self, number: usize, line: &str) -> Result<(Scene, [Option<Q>; 3]), Error> {
+        let (scene, claimed) = self.cells(number, line)?;
+        Ok((scene, claimed.map(|c| c.as_ref().map(Claimed::value))))
+    }
+
+    /// [`Batch::scene`] with the claims as read (not reduced).
+    fn cells(&self, number: usize, line: &str) -> Result<(Scene, [Option<Claimed>; 3]), Error> {
         let line = line.trim_end_matches(['\n', '\r']);
         let cells: Vec<&str> = line.split(',').map(str::trim).collect();
         if cells.len() != self.columns.len() {
@@ -206,7 +213,7 @@ impl Batch {
         }
         let at = |e: Error| Error::new(format!("row {number}, column {}", e.field), e.kind);
         let mut input = SceneInput::default();
-        let mut claimed: [Option<Q>; 3] = [None, None, None];
+        let mut claimed: [Option<Claimed>; 3] = [None, None, None];
         for (&column, &cell) in self.columns.iter().zip(&cells) {
             if cell.is_empty() && column >= 2 {
                 continue;
@@ -218,7 +225,7 @@ impl Batch {
                 }
                 None => {
                     let k = column - SCENE_COLUMNS.len();
-                    claimed[k] = Some(parse_field(OUTPUTS[k], cell).map_err(at)?);
+                    claimed[k] = Some(Claimed::parse(k, cell).map_err(at)?);
                 }
             }
         }
@@ -240,26 +247,28 @@ impl Batch {
     /// ```
     pub fn row(&self, number: usize, line: &str) -> Result<Row, Error> {
         let line = line.trim_end_matches(['\n', '\r']);
-        let (scene, claimed) = self.scene(number, line)?;
-        let (exact, texts, laws_held) = match self.backend {
+        let (scene, claimed) = self.cells(number, line)?;
+        let mut out = String::with_capacity(2 * line.len() + 64);
+        out.push_str(line);
+        let (exact, laws_held) = match self.backend {
             Backend::Exact => {
-                let out = fast::solve(&scene);
-                let m = out.after;
-                let texts = [m.v.to_string(), m.rod_v.to_string(), m.omega.to_string()];
-                ([m.v, m.rod_v, m.omega], texts, Some(out.laws_hold))
+                let solved = fast::solve(&scene);
+                let m = solved.after;
+                for value in [&m.v, &m.rod_v, &m.omega] {
+                    out.push(',');
+                    crate::number::write_exact(&mut out, value);
+                }
+                ([m.v, m.rod_v, m.omega], Some(solved.laws_hold))
             }
             Backend::F64 => {
                 let (exact, texts) = float_values(&scene);
-                (exact, texts, None)
+                for t in &texts {
+                    out.push(',');
+                    out.push_str(t);
+                }
+                (exact, None)
             }
         };
-        let mut out =
-            String::with_capacity(line.len() + texts.iter().map(String::len).sum::<usize>() + 32);
-        out.push_str(line);
-        for t in &texts {
-            out.push(',');
-            out.push_str(t);
-        }
         out.push_str(match laws_held {
             Some(true) => ",true",
             Some(false) => ",false",
@@ -301,14 +310,42 @@ fn float_values(scene: &crate::scene::Scene) -> ([Q; 3], [String; 3]) {
     (exact, xs.map(|x| format!("{x:?}")))
 }
 
-fn compare(output: usize, claim: &Q, value: &Q, backend: Backend) -> Verdict {
-    if claim == value {
+/// A claimed value as read: on machine words (compared without reducing), or exact.
+#[derive(Debug, Clone)]
+enum Claimed {
+    Word(WordRatio),
+    Exact(Q),
+}
+
+impl Claimed {
+    fn parse(output: usize, cell: &str) -> Result<Claimed, Error> {
+        match WordRatio::parse(cell) {
+            Some(word) => Ok(Claimed::Word(word)),
+            None => parse_field(OUTPUTS[output], cell).map(Claimed::Exact),
+        }
+    }
+
+    fn value(&self) -> Q {
+        match self {
+            Claimed::Word(word) => word.value(),
+            Claimed::Exact(q) => q.clone(),
+        }
+    }
+}
+
+fn compare(output: usize, claim: &Claimed, value: &Q, backend: Backend) -> Verdict {
+    let equal = match claim {
+        Claimed::Word(word) => word.equals(value),
+        Claimed::Exact(q) => Some(q == value),
+    };
+    if equal == Some(true) {
         return Verdict {
             output,
             ok: true,
             rel_error: Some(Q::zero()),
         };
     }
+    let claim = &claim.value();
     let diff = (claim - value).abs();
     let rel_error = if value.is_zero() {
         diff.is_zero().then(Q::zero)
@@ -551,6 +588,23 @@ mod tests {
             wrong.line,
             "1,1,0.6,0.4000001,1.2,3/5,2/5,6/5,true,true,0,false,0.000000250,true,0\n"
         );
+    }
+
+    #[test]
+    fn claims_on_machine_words_are_compared_unreduced_and_with_their_sign() {
+        // M = 3m hit at the centre: v = -1/2, V = 1/2, omega = 0.
+        let b = Batch::new("m,M,a,v,V,omega", Backend::Exact).unwrap();
+        let row = b.row(1, "1,3,0,-3/6,+2/4,-0").unwrap();
+        assert!(row.verdicts.iter().all(|v| v.ok), "{row:?}");
+        let signs = b.row(2, "1,3,0,1/2,-1/2,0/7").unwrap();
+        let oks: Vec<bool> = signs.verdicts.iter().map(|v| v.ok).collect();
+        assert_eq!(oks, [false, false, true]);
+        assert_eq!(signs.verdicts[0].rel_error, Some(Q::from_integer(2.into())));
+        // Beyond 38 digits a claim takes the general parser, with the same verdict.
+        let long = format!("{}/{}", "1".repeat(40), "2".repeat(40));
+        let row = b.row(3, &format!("1,3,0,-1/2,{long},0")).unwrap();
+        let oks: Vec<bool> = row.verdicts.iter().map(|v| v.ok).collect();
+        assert_eq!(oks, [true, true, true]);
     }
 
     #[test]

@@ -13,7 +13,7 @@ use crate::error::ErrorKind;
 use crate::field::{Q, TrySqrt};
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -55,6 +55,9 @@ pub fn parse(text: &str) -> Result<Q, ErrorKind> {
     if text.is_empty() {
         return Err(ErrorKind::Empty);
     }
+    if let Some(word) = WordRatio::parse(text) {
+        return Ok(word.value());
+    }
     let parts: Vec<&str> = text.split('/').collect();
     if parts.iter().any(|part| is_non_finite_word(part)) {
         return Err(ErrorKind::NotFinite(echo(text)));
@@ -92,6 +95,105 @@ pub fn parse(text: &str) -> Result<Q, ErrorKind> {
                 Ok(numerator / denominator)
             }
         }
+    }
+}
+
+/// A number in one of the commonest forms, `[+-]digits` or `[+-]digits/digits` with at most 38
+/// digits each (every cell of a typical batch), read on machine words and not yet reduced:
+/// `±numer/denom`, `denom > 0`. [`parse`] reduces it once; a batch compares a claimed value
+/// with it without reducing at all.
+///
+/// # Examples
+/// ```
+/// use rodimpact::number::WordRatio;
+/// use rodimpact::field::q;
+/// let r = WordRatio::parse("-6/10").unwrap();
+/// assert_eq!((r.negative, r.numer, r.denom), (true, 6, 10));
+/// assert_eq!(r.value(), q(-3, 5));
+/// assert_eq!(r.equals(&q(-3, 5)), Some(true));
+/// assert!(WordRatio::parse("1.5").is_none() && WordRatio::parse("1/0").is_none());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct WordRatio {
+    /// The sign (a negative zero is zero).
+    pub negative: bool,
+    /// The magnitude of the numerator.
+    pub numer: u128,
+    /// The denominator, > 0.
+    pub denom: u128,
+}
+
+impl WordRatio {
+    /// The machine-word form of `text` (already trimmed), or `None` when it is not one; the
+    /// general parser gives the same value for these forms (and the error for `/0`).
+    pub fn parse(text: &str) -> Option<WordRatio> {
+        let (negative, unsigned) = match text.as_bytes().first()? {
+            b'-' => (true, &text[1..]),
+            b'+' => (false, &text[1..]),
+            _ => (false, text),
+        };
+        let word = |digits: &str| -> Option<u128> {
+            if digits.is_empty() || digits.len() > 38 || !digits.bytes().all(|b| b.is_ascii_digit())
+            {
+                return None;
+            }
+            // At most 38 digits: below 2^127, no overflow.
+            Some(
+                digits
+                    .bytes()
+                    .fold(0u128, |n, b| n * 10 + u128::from(b - b'0')),
+            )
+        };
+        let (numer, denom) = match unsigned.split_once('/') {
+            Some((n, d)) => (word(n)?, word(d)?),
+            None => (word(unsigned)?, 1),
+        };
+        (denom != 0).then_some(WordRatio {
+            negative,
+            numer,
+            denom,
+        })
+    }
+
+    /// The value, reduced (one GCD on machine words).
+    pub fn value(&self) -> Q {
+        let g = crate::fast::gcd(self.numer, self.denom);
+        let n = BigInt::from(self.numer / g);
+        Q::new_raw(
+            if self.negative { -n } else { n },
+            BigInt::from(self.denom / g),
+        )
+    }
+
+    /// Whether the value equals `q`, decided by cross-multiplication on machine words without
+    /// reducing; `None` when `q`'s numerator or denominator exceeds 128 bits.
+    pub fn equals(&self, q: &Q) -> Option<bool> {
+        let (n, d) = (q.numer().magnitude(), q.denom().magnitude());
+        let (n, d) = (n.to_u128()?, d.to_u128()?);
+        if self.numer == 0 || n == 0 {
+            return Some(self.numer == n);
+        }
+        let same_sign = self.negative == q.is_negative();
+        Some(same_sign && crate::fast::cross_equal(self.numer, d, n, self.denom))
+    }
+}
+
+/// Appends `q` exactly as its `Display` (`n`, or `n/d`), on machine words when both fit 256
+/// bits.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{field::q, number::write_exact};
+/// let mut out = String::new();
+/// write_exact(&mut out, &q(-6, 4));
+/// out.push(',');
+/// write_exact(&mut out, &q(7, 1));
+/// assert_eq!(out, "-3/2,7");
+/// ```
+pub fn write_exact(out: &mut String, q: &Q) {
+    if crate::fast::write_ratio(out, q).is_none() {
+        use std::fmt::Write;
+        write!(out, "{q}").expect("writing to a String cannot fail");
     }
 }
 
@@ -885,6 +987,28 @@ mod tests {
     }
 
     proptest! {
+        /// Law: the machine-word forms give the value of the big-integer construction (and
+        /// the general parser's: the same text with `.0` after the numerator).
+        #[test]
+        fn word_sized_forms_parse_exactly(
+            sign in "[-+]?",
+            n in "[0-9]{1,38}",
+            d in proptest::option::of("[0-9]{0,37}[1-9]"),
+        ) {
+            let text = match &d {
+                Some(d) => format!("{sign}{n}/{d}"),
+                None => format!("{sign}{n}"),
+            };
+            let num: BigInt = n.parse().unwrap();
+            let den: BigInt = d.as_deref().unwrap_or("1").parse().unwrap();
+            let want = Q::new(if sign == "-" { -num } else { num }, den);
+            prop_assert_eq!(WordRatio::parse(&text).map(|w| w.value()), Some(want.clone()));
+            prop_assert_eq!(WordRatio::parse(&text).and_then(|w| w.equals(&want)), Some(true));
+            prop_assert_eq!(parse(&text), Ok(want.clone()));
+            let general = text.replacen('/', ".0/", 1) + if d.is_none() { ".0" } else { "" };
+            prop_assert_eq!(parse(&general), Ok(want));
+        }
+
         /// `parse` never panics, whatever the input.
         #[test]
         fn parse_never_panics(text in any::<String>()) {

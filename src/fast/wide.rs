@@ -1,0 +1,279 @@
+//! A 512-bit signed integer with checked arithmetic: the second fixed width of the fast path.
+//!
+//! Scenes with numbers of about 10^6 (20 bits) give fraction-free values of about 120 bits and
+//! law identities of up to about 330 bits: too wide for `i128`, far below what needs heap
+//! digits. Sign and magnitude (eight 64-bit limbs, least significant first); the loops run over
+//! the limbs in use only, so small values cost little more than machine words.
+
+use super::Int;
+use super::words::U256;
+use crate::field::Q;
+use num_bigint::{BigInt, BigUint, Sign};
+use std::cmp::Ordering;
+
+const LIMBS: usize = 8;
+
+/// A signed integer of at most 512 bits; zero is never negative.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Wide {
+    negative: bool,
+    mag: [u64; LIMBS],
+}
+
+impl Wide {
+    const ZERO: Wide = Wide {
+        negative: false,
+        mag: [0; LIMBS],
+    };
+
+    /// The number of limbs in use (0 for zero).
+    fn len(&self) -> usize {
+        self.mag.iter().rposition(|&x| x != 0).map_or(0, |i| i + 1)
+    }
+
+    fn is_zero(&self) -> bool {
+        self.mag == [0; LIMBS]
+    }
+
+    fn signed(negative: bool, mag: [u64; LIMBS]) -> Wide {
+        let mut w = Wide { negative, mag };
+        if w.is_zero() {
+            w.negative = false;
+        }
+        w
+    }
+
+    fn compare_magnitudes(a: &[u64; LIMBS], b: &[u64; LIMBS]) -> Ordering {
+        a.iter().rev().cmp(b.iter().rev())
+    }
+
+    fn add_magnitudes(a: &[u64; LIMBS], b: &[u64; LIMBS]) -> Option<[u64; LIMBS]> {
+        let mut out = [0; LIMBS];
+        let mut carry = false;
+        for i in 0..LIMBS {
+            let (s, c1) = a[i].overflowing_add(b[i]);
+            let (s, c2) = s.overflowing_add(u64::from(carry));
+            out[i] = s;
+            carry = c1 || c2;
+        }
+        (!carry).then_some(out)
+    }
+
+    /// `a - b` for `a >= b`.
+    fn sub_magnitudes(a: &[u64; LIMBS], b: &[u64; LIMBS]) -> [u64; LIMBS] {
+        let mut out = [0; LIMBS];
+        let mut borrow = false;
+        for i in 0..LIMBS {
+            let (d, b1) = a[i].overflowing_sub(b[i]);
+            let (d, b2) = d.overflowing_sub(u64::from(borrow));
+            out[i] = d;
+            borrow = b1 || b2;
+        }
+        out
+    }
+
+    fn checked_add(&self, o: &Wide) -> Option<Wide> {
+        if self.negative == o.negative {
+            return Some(Wide::signed(
+                self.negative,
+                Wide::add_magnitudes(&self.mag, &o.mag)?,
+            ));
+        }
+        Some(match Wide::compare_magnitudes(&self.mag, &o.mag) {
+            Ordering::Less => Wide::signed(o.negative, Wide::sub_magnitudes(&o.mag, &self.mag)),
+            _ => Wide::signed(self.negative, Wide::sub_magnitudes(&self.mag, &o.mag)),
+        })
+    }
+
+    fn negated(&self) -> Wide {
+        Wide::signed(!self.negative, self.mag)
+    }
+
+    fn checked_mul(&self, o: &Wide) -> Option<Wide> {
+        let (la, lb) = (self.len(), o.len());
+        if la == 0 || lb == 0 {
+            return Some(Wide::ZERO);
+        }
+        // The product has la + lb - 1 or la + lb limbs.
+        if la + lb - 1 > LIMBS {
+            return None;
+        }
+        let mut out = [0u64; LIMBS + 1];
+        for i in 0..la {
+            let mut carry = 0u128;
+            for j in 0..lb {
+                let t =
+                    u128::from(self.mag[i]) * u128::from(o.mag[j]) + u128::from(out[i + j]) + carry;
+                out[i + j] = t as u64;
+                carry = t >> 64;
+            }
+            out[i + lb] = carry as u64;
+        }
+        if out[LIMBS] != 0 {
+            return None;
+        }
+        let mut mag = [0; LIMBS];
+        mag.copy_from_slice(&out[..LIMBS]);
+        Some(Wide::signed(self.negative != o.negative, mag))
+    }
+
+    fn from_big(x: &BigInt) -> Option<Wide> {
+        if x.bits() > 64 * LIMBS as u64 {
+            return None;
+        }
+        let mut mag = [0; LIMBS];
+        for (slot, digit) in mag.iter_mut().zip(x.magnitude().iter_u64_digits()) {
+            *slot = digit;
+        }
+        Some(Wide::signed(x.sign() == Sign::Minus, mag))
+    }
+
+    fn magnitude_to_big(mag: &[u64]) -> BigUint {
+        let digits: Vec<u32> = mag
+            .iter()
+            .flat_map(|&x| [x as u32, (x >> 32) as u32])
+            .collect();
+        BigUint::new(digits)
+    }
+
+    fn to_big(self) -> BigInt {
+        let sign = if self.negative {
+            Sign::Minus
+        } else {
+            Sign::Plus
+        };
+        let magnitude = match self.len() {
+            0..=2 => BigUint::from(u128::from(self.mag[0]) | u128::from(self.mag[1]) << 64),
+            len => Wide::magnitude_to_big(&self.mag[..len]),
+        };
+        BigInt::from_biguint(sign, magnitude)
+    }
+
+    /// The magnitude as a [`U256`] when it fits.
+    fn to_u256(self) -> Option<U256> {
+        (self.len() <= 4).then(|| U256 {
+            lo: u128::from(self.mag[0]) | u128::from(self.mag[1]) << 64,
+            hi: u128::from(self.mag[2]) | u128::from(self.mag[3]) << 64,
+        })
+    }
+}
+
+impl Int for Wide {
+    fn lift(x: &BigInt) -> Option<Self> {
+        Wide::from_big(x)
+    }
+    fn small(x: u8) -> Self {
+        let mut mag = [0; LIMBS];
+        mag[0] = x.into();
+        Wide::signed(false, mag)
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        self.checked_add(o)
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        self.checked_add(&o.negated())
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        self.checked_mul(o)
+    }
+    fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
+        let mut sum = Wide::ZERO;
+        for (c, x) in lhs {
+            sum = sum.checked_add(&c.checked_mul(&x.checked_mul(x)?)?)?;
+        }
+        Some(sum == c.checked_mul(&x.checked_mul(x)?)?)
+    }
+    fn ratio(n: Self, d: Self) -> Q {
+        match (n.to_u256(), d.to_u256()) {
+            (Some(a), Some(b)) => {
+                let g = U256::gcd(a, b);
+                if g == U256::ONE {
+                    Q::new_raw(n.to_big(), d.to_big())
+                } else {
+                    let g = BigInt::from(g.to_big());
+                    Q::new_raw(n.to_big() / &g, d.to_big() / g)
+                }
+            }
+            _ => Q::new(n.to_big(), d.to_big()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn big(s: &str) -> BigInt {
+        s.parse().unwrap()
+    }
+
+    #[test]
+    fn limits_of_the_width() {
+        let top = (BigInt::from(1) << 512u32) - 1;
+        let w = Wide::from_big(&top).unwrap();
+        assert_eq!(w.to_big(), top);
+        assert_eq!(Wide::from_big(&(top.clone() + 1)), None);
+        assert_eq!(w.add(&Wide::small(1)), None);
+        assert_eq!(w.negated().sub(&Wide::small(1)), None);
+        assert_eq!(w.sub(&w), Some(Wide::ZERO));
+        let half = Wide::from_big(&(BigInt::from(1) << 256u32)).unwrap();
+        assert_eq!(half.mul(&half), None);
+        let just = Wide::from_big(&(BigInt::from(1) << 255u32)).unwrap();
+        assert_eq!(just.mul(&half).unwrap().to_big(), BigInt::from(1) << 511u32);
+        assert_eq!(Wide::small(0).negated(), Wide::ZERO);
+    }
+
+    #[test]
+    fn ratio_reduces_like_num_rational() {
+        let cases = [
+            ("-84", "36"),
+            (
+                "605266953260872505155079183529643000000",
+                "42781701118546417863969985673251741000000",
+            ),
+            ("0", "17"),
+            (
+                "115792089237316195423570985008687907853269984665640564039457584007913129639936",
+                "6",
+            ),
+        ];
+        for (n, d) in cases {
+            let (wn, wd) = (
+                Wide::from_big(&big(n)).unwrap(),
+                Wide::from_big(&big(d)).unwrap(),
+            );
+            assert_eq!(Wide::ratio(wn, wd), Q::new(big(n), big(d)), "{n}/{d}");
+        }
+    }
+
+    /// A signed integer of up to 300 bits.
+    fn int() -> impl Strategy<Value = BigInt> {
+        (
+            any::<bool>(),
+            proptest::collection::vec(any::<u32>(), 0..10),
+        )
+            .prop_map(|(negative, digits)| {
+                let m = BigInt::from(BigUint::new(digits));
+                if negative { -m } else { m }
+            })
+    }
+
+    proptest! {
+        /// Law: every operation agrees with big integers, or reports overflow exactly when the
+        /// result needs more than 512 bits.
+        #[test]
+        fn agrees_with_big_integers(a in int(), b in int()) {
+            let (wa, wb) = (Wide::from_big(&a).unwrap(), Wide::from_big(&b).unwrap());
+            let fits = |x: &BigInt| x.bits() <= 512;
+            let check = |got: Option<Wide>, want: BigInt| match got {
+                Some(w) => w.to_big() == want,
+                None => !fits(&want),
+            };
+            prop_assert!(check(wa.add(&wb), &a + &b));
+            prop_assert!(check(wa.sub(&wb), &a - &b));
+            prop_assert!(check(wa.mul(&wb), &a * &b));
+            prop_assert!(check(wa.mul(&wa), &a * &a));
+        }
+    }
+}

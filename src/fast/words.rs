@@ -1,0 +1,318 @@
+//! Machine-word exact arithmetic for the fast path: binary GCDs on `u64` and `u128`, and a
+//! 256-bit unsigned integer with just the operations the fraction-free form needs.
+
+use num_bigint::BigUint;
+
+/// `a/b == c/d` for positive `b`, `d`: `a d == c b` on 256 bits.
+pub(crate) fn cross_equal(a: u128, d: u128, c: u128, b: u128) -> bool {
+    U256::product(a, d) == U256::product(c, b)
+}
+
+/// Stein's binary GCD on `u128` (`gcd(0, d) = d`).
+pub(crate) fn gcd(mut a: u128, mut b: u128) -> u128 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        if let Ok(small) = u64::try_from(b) {
+            // Both fit one machine word now (a <= b): finish there.
+            return u128::from(gcd64(a as u64, small)) << shift;
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+/// Stein's binary GCD on `u64`, for odd `a` (`gcd64(a, 0) = a`).
+fn gcd64(mut a: u64, mut b: u64) -> u64 {
+    if b == 0 {
+        return a;
+    }
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a;
+        }
+    }
+}
+
+/// A 256-bit unsigned integer: just enough for the energy identity of the fixed-width path and
+/// the GCDs of the big-integer path. The derived order compares `hi`, then `lo`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) struct U256 {
+    pub(crate) hi: u128,
+    pub(crate) lo: u128,
+}
+
+impl U256 {
+    pub(crate) const ZERO: U256 = U256 { hi: 0, lo: 0 };
+    pub(crate) const ONE: U256 = U256 { hi: 0, lo: 1 };
+
+    pub(crate) fn from_big(x: &BigUint) -> Option<U256> {
+        if x.bits() > 256 {
+            return None;
+        }
+        let mut words = x.iter_u64_digits();
+        let mut next = || u128::from(words.next().unwrap_or(0));
+        let lo = next() | next() << 64;
+        let hi = next() | next() << 64;
+        Some(U256 { hi, lo })
+    }
+
+    pub(crate) fn to_big(self) -> BigUint {
+        (BigUint::from(self.hi) << 128u32) + BigUint::from(self.lo)
+    }
+
+    fn trailing_zeros(self) -> u32 {
+        if self.lo == 0 {
+            128 + self.hi.trailing_zeros()
+        } else {
+            self.lo.trailing_zeros()
+        }
+    }
+
+    fn shr(self, k: u32) -> U256 {
+        match k {
+            0 => self,
+            1..128 => U256 {
+                hi: self.hi >> k,
+                lo: self.lo >> k | self.hi << (128 - k),
+            },
+            _ => U256 {
+                hi: 0,
+                lo: self.hi >> (k - 128),
+            },
+        }
+    }
+
+    fn shl(self, k: u32) -> U256 {
+        match k {
+            0 => self,
+            1..128 => U256 {
+                hi: self.hi << k | self.lo >> (128 - k),
+                lo: self.lo << k,
+            },
+            _ => U256 {
+                hi: self.lo << (k - 128),
+                lo: 0,
+            },
+        }
+    }
+
+    /// `self - o` for `self >= o`.
+    fn minus(self, o: U256) -> U256 {
+        let (lo, borrow) = self.lo.overflowing_sub(o.lo);
+        U256 {
+            hi: self.hi - o.hi - u128::from(borrow),
+            lo,
+        }
+    }
+
+    /// Stein's binary GCD; once both fit in 128 bits it finishes in `u128`.
+    pub(crate) fn gcd(mut a: U256, mut b: U256) -> U256 {
+        if a == U256::ZERO {
+            return b;
+        }
+        if b == U256::ZERO {
+            return a;
+        }
+        let shift = a.trailing_zeros().min(b.trailing_zeros());
+        a = a.shr(a.trailing_zeros());
+        loop {
+            b = b.shr(b.trailing_zeros());
+            if a > b {
+                std::mem::swap(&mut a, &mut b);
+            }
+            if b.hi == 0 {
+                let g = gcd(a.lo, b.lo);
+                return U256 { hi: 0, lo: g }.shl(shift);
+            }
+            b = b.minus(a);
+            if b == U256::ZERO {
+                return a.shl(shift);
+            }
+        }
+    }
+
+    /// Appends the decimal digits.
+    pub(crate) fn write_decimal(self, out: &mut String) {
+        use std::fmt::Write;
+        const CHUNK: u64 = 10_000_000_000_000_000_000; // 10^19
+        if self.hi == 0 {
+            write!(out, "{}", self.lo).expect("writing to a String cannot fail");
+            return;
+        }
+        // Base-10^19 digits by long division of the four 64-bit limbs (at most five chunks).
+        let mut limbs = [
+            (self.hi >> 64) as u64,
+            self.hi as u64,
+            (self.lo >> 64) as u64,
+            self.lo as u64,
+        ];
+        let mut chunks = Vec::with_capacity(5);
+        while limbs.iter().any(|&x| x != 0) {
+            let mut rem = 0u128;
+            for limb in &mut limbs {
+                let cur = rem << 64 | u128::from(*limb);
+                *limb = (cur / u128::from(CHUNK)) as u64;
+                rem = cur % u128::from(CHUNK);
+            }
+            chunks.push(rem as u64);
+        }
+        let mut chunks = chunks.iter().rev();
+        if let Some(first) = chunks.next() {
+            write!(out, "{first}").expect("writing to a String cannot fail");
+        }
+        for chunk in chunks {
+            write!(out, "{chunk:019}").expect("writing to a String cannot fail");
+        }
+    }
+
+    /// The exact product of two `u128`.
+    fn product(a: u128, b: u128) -> U256 {
+        let mask = u128::from(u64::MAX);
+        let (a1, a0) = (a >> 64, a & mask);
+        let (b1, b0) = (b >> 64, b & mask);
+        let low = a0 * b0;
+        let (mid, carry_mid) = (a1 * b0).overflowing_add(a0 * b1);
+        let (lo, carry_lo) = low.overflowing_add(mid << 64);
+        let hi = a1 * b1 + (mid >> 64) + (u128::from(carry_mid) << 64) + u128::from(carry_lo);
+        U256 { hi, lo }
+    }
+
+    pub(crate) fn square(x: u128) -> U256 {
+        U256::product(x, x)
+    }
+
+    pub(crate) fn checked_mul(self, c: u128) -> Option<U256> {
+        let low = U256::product(self.lo, c);
+        let high = U256::product(self.hi, c);
+        if high.hi != 0 {
+            return None;
+        }
+        let hi = low.hi.checked_add(high.lo)?;
+        Some(U256 { hi, lo: low.lo })
+    }
+
+    pub(crate) fn checked_add(self, o: U256) -> Option<U256> {
+        let (lo, carry) = self.lo.overflowing_add(o.lo);
+        let hi = self.hi.checked_add(o.hi)?.checked_add(u128::from(carry))?;
+        Some(U256 { hi, lo })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_bigint::BigInt;
+
+    #[test]
+    fn u256_products_match_big_integers() {
+        let cases = [
+            (0u128, 5u128),
+            (u128::MAX, u128::MAX),
+            (u128::MAX, 1),
+            (1 << 64, 1 << 64),
+            (
+                0xdead_beef_0123_4567_89ab_cdef_7777_9999,
+                0xffff_0000_ffff_0000_1234,
+            ),
+        ];
+        for (a, b) in cases {
+            let p = U256::product(a, b);
+            let want = BigInt::from(a) * BigInt::from(b);
+            let got = (BigInt::from(p.hi) << 128) + BigInt::from(p.lo);
+            assert_eq!(got, want, "{a} * {b}");
+        }
+        assert_eq!(U256::square(u128::MAX).checked_mul(2), None);
+        assert_eq!(
+            U256::square(u128::MAX).checked_add(U256::square(u128::MAX)),
+            None
+        );
+        assert_eq!(
+            U256::square(1 << 100).checked_mul(1 << 55),
+            Some(U256 {
+                hi: 1 << 127,
+                lo: 0
+            })
+        );
+    }
+
+    #[test]
+    fn gcd_of_u256_matches_big_integers() {
+        let big = |s: &str| s.parse::<BigUint>().unwrap();
+        let cases = [
+            ("0", "12"),
+            ("12", "0"),
+            ("340282366920938463463374607431768211457", "3"),
+            (
+                "115792089237316195423570985008687907853269984665640564039457584007913129639935",
+                "340282366920938463463374607431768211455",
+            ),
+            (
+                "605266953260872505155079183529643000000",
+                "42781701118546417863969985673251741000000",
+            ),
+            ("1180591620717411303424", "3541774862152233910272"),
+        ];
+        for (a, b) in cases {
+            let (x, y) = (big(a), big(b));
+            let (ux, uy) = (U256::from_big(&x).unwrap(), U256::from_big(&y).unwrap());
+            assert_eq!(ux.to_big(), x);
+            assert_eq!(
+                U256::gcd(ux, uy).to_big(),
+                num_integer::Integer::gcd(&x, &y),
+                "{a} {b}"
+            );
+        }
+        assert_eq!(U256::from_big(&(BigUint::from(1u8) << 256u32)), None);
+    }
+
+    #[test]
+    fn decimal_digits_match_big_integers() {
+        let cases = [
+            "0",
+            "340282366920938463463374607431768211455",
+            "340282366920938463463374607431768211456",
+            "10000000000000000000000000000000000000000000000000000000000",
+            "115792089237316195423570985008687907853269984665640564039457584007913129639935",
+            "605266953260872505155079183529643000000000000000000000000001",
+        ];
+        for text in cases {
+            let mut out = String::new();
+            U256::from_big(&text.parse().unwrap())
+                .unwrap()
+                .write_decimal(&mut out);
+            assert_eq!(out, text);
+        }
+    }
+
+    #[test]
+    fn gcd_of_u128() {
+        assert_eq!(gcd(0, 7), 7);
+        assert_eq!(gcd(12, 18), 6);
+        assert_eq!(gcd(1 << 100, 3 << 90), 1 << 90);
+        assert_eq!(gcd(u128::MAX, u128::MAX - 1), 1);
+        assert_eq!(gcd(3 << 70, 9 << 3), 3 << 3);
+        assert_eq!(gcd(1 << 64, 1), 1);
+        assert_eq!(
+            gcd(123_456_789 * 987_654_321, 987_654_321 * 1_000_003),
+            987_654_321
+        );
+    }
+}
