@@ -10,10 +10,11 @@
 //! [`decimal_sqrt`] rounds a square root correctly. All of it uses integer arithmetic only.
 
 use crate::error::ErrorKind;
+use crate::fast::U256;
 use crate::field::{Q, TrySqrt};
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -98,57 +99,31 @@ pub fn parse(text: &str) -> Result<Q, ErrorKind> {
     }
 }
 
-/// A number in one of the commonest forms, `[+-]digits` or `[+-]digits/digits` with at most 38
-/// digits each (every cell of a typical batch), read on machine words and not yet reduced:
+/// A number in one of the commonest forms, `[+-]digits` or `[+-]digits/digits` with each part
+/// below 2^256 (every cell of a typical batch), read on machine words and not yet reduced:
 /// `±numer/denom`, `denom > 0`. [`parse`] reduces it once; a batch compares a claimed value
-/// with it without reducing at all.
-///
-/// # Examples
-/// ```
-/// use rodimpact::number::WordRatio;
-/// use rodimpact::field::q;
-/// let r = WordRatio::parse("-6/10").unwrap();
-/// assert_eq!((r.negative, r.numer, r.denom), (true, 6, 10));
-/// assert_eq!(r.value(), q(-3, 5));
-/// assert_eq!(r.equals(&q(-3, 5)), Some(true));
-/// assert!(WordRatio::parse("1.5").is_none() && WordRatio::parse("1/0").is_none());
-/// ```
+/// with it by cross-multiplication, without reducing at all.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct WordRatio {
-    /// The sign (a negative zero is zero).
-    pub negative: bool,
-    /// The magnitude of the numerator.
-    pub numer: u128,
-    /// The denominator, > 0.
-    pub denom: u128,
+pub(crate) struct WordRatio {
+    negative: bool,
+    numer: U256,
+    denom: U256,
 }
 
 impl WordRatio {
     /// The machine-word form of `text` (already trimmed), or `None` when it is not one; the
     /// general parser gives the same value for these forms (and the error for `/0`).
-    pub fn parse(text: &str) -> Option<WordRatio> {
+    pub(crate) fn parse(text: &str) -> Option<WordRatio> {
         let (negative, unsigned) = match text.as_bytes().first()? {
             b'-' => (true, &text[1..]),
             b'+' => (false, &text[1..]),
             _ => (false, text),
         };
-        let word = |digits: &str| -> Option<u128> {
-            if digits.is_empty() || digits.len() > 38 || !digits.bytes().all(|b| b.is_ascii_digit())
-            {
-                return None;
-            }
-            // At most 38 digits: below 2^127, no overflow.
-            Some(
-                digits
-                    .bytes()
-                    .fold(0u128, |n, b| n * 10 + u128::from(b - b'0')),
-            )
-        };
         let (numer, denom) = match unsigned.split_once('/') {
-            Some((n, d)) => (word(n)?, word(d)?),
-            None => (word(unsigned)?, 1),
+            Some((n, d)) => (U256::parse_decimal(n)?, U256::parse_decimal(d)?),
+            None => (U256::parse_decimal(unsigned)?, U256::ONE),
         };
-        (denom != 0).then_some(WordRatio {
+        (denom != U256::ZERO).then_some(WordRatio {
             negative,
             numer,
             denom,
@@ -156,25 +131,22 @@ impl WordRatio {
     }
 
     /// The value, reduced (one GCD on machine words).
-    pub fn value(&self) -> Q {
-        let g = crate::fast::gcd(self.numer, self.denom);
-        let n = BigInt::from(self.numer / g);
-        Q::new_raw(
-            if self.negative { -n } else { n },
-            BigInt::from(self.denom / g),
-        )
+    pub(crate) fn value(&self) -> Q {
+        let (n, d) = U256::reduce(self.numer, self.denom);
+        let n = BigInt::from(n);
+        Q::new_raw(if self.negative { -n } else { n }, BigInt::from(d))
     }
 
     /// Whether the value equals `q`, decided by cross-multiplication on machine words without
-    /// reducing; `None` when `q`'s numerator or denominator exceeds 128 bits.
-    pub fn equals(&self, q: &Q) -> Option<bool> {
-        let (n, d) = (q.numer().magnitude(), q.denom().magnitude());
-        let (n, d) = (n.to_u128()?, d.to_u128()?);
-        if self.numer == 0 || n == 0 {
+    /// reducing; `None` when `q`'s numerator or denominator exceeds 256 bits.
+    pub(crate) fn equals(&self, q: &Q) -> Option<bool> {
+        let n = U256::from_big(q.numer().magnitude())?;
+        let d = U256::from_big(q.denom().magnitude())?;
+        if self.numer == U256::ZERO || n == U256::ZERO {
             return Some(self.numer == n);
         }
         let same_sign = self.negative == q.is_negative();
-        Some(same_sign && crate::fast::cross_equal(self.numer, d, n, self.denom))
+        Some(same_sign && U256::cross_equal(self.numer, d, n, self.denom))
     }
 }
 
@@ -992,8 +964,8 @@ mod tests {
         #[test]
         fn word_sized_forms_parse_exactly(
             sign in "[-+]?",
-            n in "[0-9]{1,38}",
-            d in proptest::option::of("[0-9]{0,37}[1-9]"),
+            n in "[0-9]{1,77}",
+            d in proptest::option::of("[0-9]{0,76}[1-9]"),
         ) {
             let text = match &d {
                 Some(d) => format!("{sign}{n}/{d}"),

@@ -33,8 +33,7 @@ use crate::scene::{RodInertia, Scene, Support};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use wide::Wide;
-use words::U256;
-pub(crate) use words::{cross_equal, gcd};
+pub(crate) use words::{U256, gcd};
 
 mod wide;
 mod words;
@@ -92,10 +91,36 @@ pub struct Solved {
 /// assert_eq!(out.arithmetic, Arithmetic::Fixed);
 /// ```
 pub fn solve(scene: &Scene) -> Solved {
-    fraction_free::<i128>(scene)
-        .map(|s| s.with(Arithmetic::Fixed))
+    let fixed = || {
+        (input_bits(scene) <= I128_INPUT_BITS)
+            .then(|| fraction_free::<i128>(scene))
+            .flatten()
+            .map(|s| s.with(Arithmetic::Fixed))
+    };
+    fixed()
         .or_else(|| fraction_free::<Wide>(scene).map(|s| s.with(Arithmetic::Wide)))
         .unwrap_or_else(|| solve_big(scene))
+}
+
+/// Above this many input bits (see `input_bits`) `i128` is not tried: the law identities grow
+/// like the product of the inputs, and every 10^6-sized scene (about 280 bits) overflowed it.
+/// A choice of route only: every route gives the same exact result.
+const I128_INPUT_BITS: u64 = 200;
+
+/// The bits of every numerator and denominator of the scene, summed.
+fn input_bits(scene: &Scene) -> u64 {
+    let bits = |x: &Q| x.numer().bits() + x.denom().bits();
+    [
+        scene.m(),
+        scene.rod_mass(),
+        scene.half_length(),
+        scene.a(),
+        scene.v0(),
+        scene.e(),
+    ]
+    .into_iter()
+    .map(bits)
+    .sum()
 }
 
 /// [`solve`] without the fixed-width attempt: fraction-free in [`BigInt`] (the fallback on

@@ -3,13 +3,11 @@
 
 use num_bigint::BigUint;
 
-/// `a/b == c/d` for positive `b`, `d`: `a d == c b` on 256 bits.
-pub(crate) fn cross_equal(a: u128, d: u128, c: u128, b: u128) -> bool {
-    U256::product(a, d) == U256::product(c, b)
-}
-
 /// Stein's binary GCD on `u128` (`gcd(0, d) = d`).
 pub(crate) fn gcd(mut a: u128, mut b: u128) -> u128 {
+    if let (Ok(x), Ok(y)) = (u64::try_from(a), u64::try_from(b)) {
+        return gcd_u64(x, y).into();
+    }
     if a == 0 {
         return b;
     }
@@ -32,6 +30,18 @@ pub(crate) fn gcd(mut a: u128, mut b: u128) -> u128 {
             return a << shift;
         }
     }
+}
+
+/// Stein's binary GCD on `u64` (`gcd_u64(0, d) = d`).
+fn gcd_u64(a: u64, b: u64) -> u64 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    gcd64(a >> a.trailing_zeros(), b) << shift
 }
 
 /// Stein's binary GCD on `u64`, for odd `a` (`gcd64(a, 0) = a`).
@@ -75,7 +85,21 @@ impl U256 {
     }
 
     pub(crate) fn to_big(self) -> BigUint {
-        (BigUint::from(self.hi) << 128u32) + BigUint::from(self.lo)
+        if self.hi == 0 {
+            return BigUint::from(self.lo);
+        }
+        let limbs = [
+            self.lo as u64,
+            (self.lo >> 64) as u64,
+            self.hi as u64,
+            (self.hi >> 64) as u64,
+        ];
+        BigUint::new(
+            limbs
+                .iter()
+                .flat_map(|&x| [x as u32, (x >> 32) as u32])
+                .collect(),
+        )
     }
 
     fn trailing_zeros(self) -> u32 {
@@ -125,6 +149,12 @@ impl U256 {
 
     /// Stein's binary GCD; once both fit in 128 bits it finishes in `u128`.
     pub(crate) fn gcd(mut a: U256, mut b: U256) -> U256 {
+        if a.hi == 0 && b.hi == 0 {
+            return U256 {
+                hi: 0,
+                lo: gcd(a.lo, b.lo),
+            };
+        }
         if a == U256::ZERO {
             return b;
         }
@@ -147,6 +177,84 @@ impl U256 {
                 return a.shl(shift);
             }
         }
+    }
+
+    /// A decimal number below 2^256 (every number of up to 77 digits; nothing but digits, at
+    /// least one), or `None`.
+    pub(crate) fn parse_decimal(digits: &str) -> Option<U256> {
+        let bytes = digits.as_bytes();
+        if bytes.is_empty() || bytes.len() > 78 || !bytes.iter().all(u8::is_ascii_digit) {
+            return None;
+        }
+        let word = |chunk: &[u8]| chunk.iter().fold(0u64, |n, b| n * 10 + u64::from(b - b'0'));
+        if bytes.len() <= 38 {
+            // Below 10^38 < 2^127: one or two 19-digit words in u128.
+            let (head, tail) = bytes.split_at(bytes.len().saturating_sub(19));
+            let scale = 10u128.pow(tail.len() as u32);
+            return Some(U256 {
+                hi: 0,
+                lo: u128::from(word(head)) * scale + u128::from(word(tail)),
+            });
+        }
+        let mut value = U256::ZERO;
+        // Chunks of up to 19 digits: value = value * 10^k + chunk.
+        for chunk in bytes.chunks(19) {
+            let scale = 10u128.pow(chunk.len() as u32);
+            value = value.checked_mul(scale)?.checked_add(U256 {
+                hi: 0,
+                lo: word(chunk).into(),
+            })?;
+        }
+        Some(value)
+    }
+
+    /// `n/d` in lowest terms (`d > 0`).
+    pub(crate) fn reduce(n: U256, d: U256) -> (BigUint, BigUint) {
+        let g = U256::gcd(n, d);
+        if g == U256::ONE {
+            return (n.to_big(), d.to_big());
+        }
+        if n.hi == 0 && d.hi == 0 {
+            if let (Ok(n), Ok(d), Ok(g)) = (
+                u64::try_from(n.lo),
+                u64::try_from(d.lo),
+                u64::try_from(g.lo),
+            ) {
+                return ((n / g).into(), (d / g).into());
+            }
+            return ((n.lo / g.lo).into(), (d.lo / g.lo).into());
+        }
+        let g = g.to_big();
+        (n.to_big() / &g, d.to_big() / g)
+    }
+
+    /// `a/b == c/d` for nonzero `b`, `d`: `a d == c b`, on 512 bits.
+    pub(crate) fn cross_equal(a: U256, d: U256, c: U256, b: U256) -> bool {
+        a.full_product(d) == c.full_product(b)
+    }
+
+    /// The exact 512-bit product, as eight 64-bit limbs, least significant first.
+    fn full_product(self, o: U256) -> [u64; 8] {
+        let limbs = |x: U256| {
+            [
+                x.lo as u64,
+                (x.lo >> 64) as u64,
+                x.hi as u64,
+                (x.hi >> 64) as u64,
+            ]
+        };
+        let (a, b) = (limbs(self), limbs(o));
+        let mut out = [0u64; 8];
+        for i in 0..4 {
+            let mut carry = 0u128;
+            for j in 0..4 {
+                let t = u128::from(a[i]) * u128::from(b[j]) + u128::from(out[i + j]) + carry;
+                out[i + j] = t as u64;
+                carry = t >> 64;
+            }
+            out[i + 4] = carry as u64;
+        }
+        out
     }
 
     /// Appends the decimal digits.
@@ -284,6 +392,54 @@ mod tests {
     }
 
     #[test]
+    fn parsing_reduction_and_cross_products_match_big_integers() {
+        let big = |s: &str| s.parse::<BigUint>().unwrap();
+        let max = "115792089237316195423570985008687907853269984665640564039457584007913129639935";
+        assert_eq!(U256::parse_decimal(max).unwrap().to_big(), big(max));
+        assert_eq!(
+            U256::parse_decimal(
+                "115792089237316195423570985008687907853269984665640564039457584007913129639936"
+            ),
+            None
+        );
+        assert_eq!(U256::parse_decimal(&"9".repeat(78)), None);
+        assert_eq!(U256::parse_decimal(&"0".repeat(79)), None);
+        assert_eq!(U256::parse_decimal("0012"), Some(U256 { hi: 0, lo: 12 }));
+        assert_eq!(U256::parse_decimal(""), None);
+        assert_eq!(U256::parse_decimal("1_0"), None);
+        let (a, b) = (
+            "605266953260872505155079183529643000000000000000000000000001",
+            "3",
+        );
+        let (x, y) = (
+            U256::parse_decimal(a).unwrap(),
+            U256::parse_decimal(b).unwrap(),
+        );
+        let g = num_integer::Integer::gcd(&big(a), &big(b));
+        assert_eq!(U256::reduce(x, y), (big(a) / &g, big(b) / &g));
+        let (six, nine) = (U256 { hi: 0, lo: 6 }, U256 { hi: 0, lo: 9 });
+        assert_eq!(
+            U256::reduce(six, nine),
+            (BigUint::from(2u8), BigUint::from(3u8))
+        );
+        let m = U256::parse_decimal(max).unwrap();
+        assert!(U256::cross_equal(m, m, m, m));
+        assert!(!U256::cross_equal(
+            m,
+            m,
+            m,
+            U256::parse_decimal(&max.replace("935", "934")).unwrap()
+        ));
+        let product = m.full_product(m);
+        let want = big(max) * big(max);
+        let got = product
+            .iter()
+            .rev()
+            .fold(BigUint::from(0u8), |acc, &x| (acc << 64u32) + x);
+        assert_eq!(got, want);
+    }
+
+    #[test]
     fn decimal_digits_match_big_integers() {
         let cases = [
             "0",
@@ -310,6 +466,10 @@ mod tests {
         assert_eq!(gcd(u128::MAX, u128::MAX - 1), 1);
         assert_eq!(gcd(3 << 70, 9 << 3), 3 << 3);
         assert_eq!(gcd(1 << 64, 1), 1);
+        assert_eq!(
+            (gcd(0, 0), gcd(12, 0), gcd(8, 12), gcd(1 << 63, 1 << 62)),
+            (0, 12, 4, 1 << 62)
+        );
         assert_eq!(
             gcd(123_456_789 * 987_654_321, 987_654_321 * 1_000_003),
             987_654_321
