@@ -32,7 +32,9 @@ impl Wide {
     }
 
     fn is_zero(&self) -> bool {
-        self.mag == [0; LIMBS]
+        // An OR over the limbs: comparing the arrays calls memcmp, which took 19 % of the path's
+        // time.
+        self.mag.iter().fold(0, |acc, &x| acc | x) == 0
     }
 
     fn signed(negative: bool, mag: [u64; LIMBS]) -> Wide {

@@ -16,16 +16,17 @@ pub(crate) fn gcd(mut a: u128, mut b: u128) -> u128 {
     }
     let shift = (a | b).trailing_zeros();
     a >>= a.trailing_zeros();
+    // a odd. Each step is branch-free (min and difference by conditional moves): the branches
+    // of the textbook loop are taken at random and mispredicted about half the time.
     loop {
         b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
+        let (low, high) = (a.min(b), a.max(b));
+        if let Ok(small) = u64::try_from(high) {
+            // Both fit one machine word now: finish there.
+            return u128::from(gcd64(low as u64, small)) << shift;
         }
-        if let Ok(small) = u64::try_from(b) {
-            // Both fit one machine word now (a <= b): finish there.
-            return u128::from(gcd64(a as u64, small)) << shift;
-        }
-        b -= a;
+        a = low;
+        b = high - low;
         if b == 0 {
             return a << shift;
         }
@@ -44,21 +45,15 @@ fn gcd_u64(a: u64, b: u64) -> u64 {
     gcd64(a >> a.trailing_zeros(), b) << shift
 }
 
-/// Stein's binary GCD on `u64`, for odd `a` (`gcd64(a, 0) = a`).
+/// Stein's binary GCD on `u64`, for odd `a` (`gcd64(a, 0) = a`), branch-free inside the loop.
 fn gcd64(mut a: u64, mut b: u64) -> u64 {
-    if b == 0 {
-        return a;
-    }
-    loop {
+    while b != 0 {
         b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a;
-        }
+        let (low, high) = (a.min(b), a.max(b));
+        a = low;
+        b = high - low;
     }
+    a
 }
 
 /// A 256-bit unsigned integer: just enough for the energy identity of the fixed-width path and
