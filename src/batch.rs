@@ -496,7 +496,8 @@ impl ClaimStats {
 }
 
 /// Streams the data rows of `input` (after the header) to `out`, [`CHUNK`] rows at a time, each
-/// chunk solved in parallel on the current rayon pool and written in input order. `progress`
+/// chunk solved in parallel on the current rayon pool and written in input order. Reading the
+/// next chunk and writing the previous one overlap with solving the current one. `progress`
 /// gets the number of bytes read so far after each chunk.
 ///
 /// # Errors
@@ -514,63 +515,98 @@ impl ClaimStats {
 /// assert_eq!(summary.rows, 2);
 /// ```
 pub fn run(
-    mut input: impl BufRead,
+    input: impl BufRead,
     out: &mut impl Write,
     batch: &Batch,
     mut progress: impl FnMut(u64),
 ) -> Result<Summary, Error> {
     let mut summary = Summary::default();
-    let mut bytes = 0u64;
-    let mut number = 0usize;
-    loop {
+    let mut reader = ChunkReader {
+        input,
+        bytes: 0,
+        number: 0,
+    };
+    let mut solved: Vec<Row> = Vec::new();
+    let mut current = reader.next_chunk()?;
+    while !current.is_empty() {
+        let mut rows = Vec::new();
+        let (mut written, mut next) = (Ok(()), Ok(Vec::new()));
+        rayon::in_place_scope(|scope| {
+            scope.spawn(|_| {
+                rows = current
+                    .par_iter()
+                    .map(|(n, line)| batch.row(*n, line))
+                    .collect();
+            });
+            written = write_rows(out, &solved, &mut summary);
+            next = reader.next_chunk();
+        });
+        written?;
+        progress(reader.bytes);
+        // The current chunk's first bad row comes before any error in the next chunk.
+        solved = rows.into_iter().collect::<Result<_, _>>()?;
+        current = next?;
+    }
+    write_rows(out, &solved, &mut summary)?;
+    Ok(summary)
+}
+
+fn write_rows(out: &mut impl Write, rows: &[Row], summary: &mut Summary) -> Result<(), Error> {
+    for row in rows {
+        out.write_all(row.line.as_bytes())
+            .map_err(|why| Error::new("out", ErrorKind::Io(format!("cannot write: {why}"))))?;
+        summary.add(row);
+    }
+    Ok(())
+}
+
+/// Reads data rows [`CHUNK`] at a time, enforcing [`MAX_LINE`] and [`MAX_ROWS`].
+struct ChunkReader<R> {
+    input: R,
+    /// Bytes read so far.
+    bytes: u64,
+    /// The number of the last row read (1-based, blank lines counted).
+    number: usize,
+}
+
+impl<R: BufRead> ChunkReader<R> {
+    /// Up to [`CHUNK`] non-blank rows with their numbers; empty at the end of the input.
+    fn next_chunk(&mut self) -> Result<Vec<(usize, String)>, Error> {
         let mut lines = Vec::with_capacity(CHUNK);
         while lines.len() < CHUNK {
             let mut line = String::new();
-            let n = (&mut input)
+            let n = (&mut self.input)
                 .take(MAX_LINE as u64 + 1)
                 .read_line(&mut line)
                 .map_err(|why| {
                     Error::new(
-                        format!("row {}", number + 1),
+                        format!("row {}", self.number + 1),
                         ErrorKind::Io(format!("cannot read: {why}")),
                     )
                 })?;
             if n == 0 {
                 break;
             }
-            bytes += n as u64;
-            number += 1;
+            self.bytes += n as u64;
+            self.number += 1;
             if n > MAX_LINE {
                 return Err(Error::new(
-                    format!("row {number}"),
+                    format!("row {}", self.number),
                     ErrorKind::Invalid(format!("line longer than {MAX_LINE} bytes")),
                 ));
             }
-            if number > MAX_ROWS {
+            if self.number > MAX_ROWS {
                 return Err(Error::new(
-                    format!("row {number}"),
+                    format!("row {}", self.number),
                     ErrorKind::Invalid(format!("more than {MAX_ROWS} rows (limit per batch)")),
                 ));
             }
             if line.trim().is_empty() {
                 continue;
             }
-            lines.push((number, line));
+            lines.push((self.number, line));
         }
-        if lines.is_empty() {
-            return Ok(summary);
-        }
-        let rows: Vec<Result<Row, Error>> = lines
-            .par_iter()
-            .map(|(n, line)| batch.row(*n, line))
-            .collect();
-        for row in rows {
-            let row = row?;
-            out.write_all(row.line.as_bytes())
-                .map_err(|why| Error::new("out", ErrorKind::Io(format!("cannot write: {why}"))))?;
-            summary.add(&row);
-        }
-        progress(bytes);
+        Ok(lines)
     }
 }
 
