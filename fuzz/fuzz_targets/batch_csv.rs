@@ -6,6 +6,19 @@
 
 use libfuzzer_sys::fuzz_target;
 use rodimpact::batch::{Backend, Batch, run};
+use std::sync::OnceLock;
+
+/// One worker: `run`'s logic without waking threads on every input (tens of ms under the
+/// sanitizer with the other core busy); `tests/cli_batch.rs` runs it on two.
+fn pool() -> &'static rayon::ThreadPool {
+    static POOL: OnceLock<rayon::ThreadPool> = OnceLock::new();
+    POOL.get_or_init(|| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .expect("a one-thread pool")
+    })
+}
 
 fuzz_target!(|text: &str| {
     let mut lines = text.lines();
@@ -39,7 +52,7 @@ fuzz_target!(|text: &str| {
         }
         let body: String = text.lines().skip(1).map(|l| format!("{l}\n")).collect();
         let mut out = Vec::new();
-        let result = run(body.as_bytes(), &mut out, &batch, |_| {});
+        let result = pool().install(|| run(body.as_bytes(), &mut out, &batch, |_| {}));
         match first_error {
             None => {
                 let summary = result.expect("every row was solved one by one");
