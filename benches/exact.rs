@@ -1,35 +1,25 @@
 //! Per scene, side by side: f64 closed form, the straightforward `BigRational` path (the generic
 //! solver over Q) and the fast exact path (fixed width, then big integers), each solving and
-//! checking the conservation laws, on the first 1000 scenes of both reference batches.
-//! Throughput is in scenes; the ratios to f64 are the figures of the README.
+//! checking the conservation laws, on the first 1000 scenes of both reference batches; and the
+//! growth of the fast exact cost with the size of the inputs. Throughput is in scenes; the
+//! ratios to f64 are the figures of the README.
 
-use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use rodimpact::batch::{Backend, Batch};
+#[path = "support/scenes.rs"]
+mod scenes;
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use rodimpact::fast;
 use rodimpact::field::Q;
 use rodimpact::float::Formula;
-use rodimpact::scene::Scene;
 use rodimpact::solve::{closed_form, outcome, solve};
 use std::hint::black_box;
 use std::time::Duration;
 
 const SCENES: usize = 1000;
 
-fn scenes(file: &str) -> Vec<Scene> {
-    let path = format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(path).expect("shared/data beside the project");
-    let mut lines = text.lines();
-    let batch = Batch::new(lines.next().expect("a header"), Backend::Exact).expect("the header");
-    lines
-        .take(SCENES)
-        .enumerate()
-        .map(|(i, line)| batch.scene(i + 1, line).expect("valid reference scene").0)
-        .collect()
-}
-
 fn per_scene(c: &mut Criterion) {
     for (label, file) in [("1e6", "bench-1e6.csv"), ("textbook", "bench-textbook.csv")] {
-        let batch = scenes(file);
+        let batch = scenes::reference(file, SCENES);
         let floats: Vec<_> = batch.iter().map(|s| s.params::<f64>()).collect();
         let exact: Vec<_> = batch.iter().map(|s| s.params::<Q>()).collect();
         let mut group = c.benchmark_group(format!("exact/{label}"));
@@ -76,5 +66,31 @@ fn per_scene(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, per_scene);
+/// Growth of the fast exact cost with the size of the inputs: random scenes whose numerators
+/// and denominators have 10 to 10,000 bits (the example `exact_cost` goes to 100,000 and fits
+/// the exponent).
+fn growth(c: &mut Criterion) {
+    let mut group = c.benchmark_group("exact/growth");
+    group.sample_size(10);
+    group.warm_up_time(Duration::from_millis(300));
+    group.measurement_time(Duration::from_secs(2));
+    let mut rng = scenes::Rng(20240611);
+    for bits in [10u64, 100, 1000, 10_000] {
+        let count = (20_000 / bits).clamp(2, 100) as usize;
+        let batch: Vec<_> = (0..count)
+            .map(|_| scenes::random_scene(&mut rng, bits))
+            .collect();
+        group.throughput(Throughput::Elements(count as u64));
+        group.bench_with_input(BenchmarkId::new("fast exact", bits), &batch, |b, batch| {
+            b.iter(|| {
+                for s in batch {
+                    black_box(fast::solve(black_box(s)));
+                }
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, per_scene, growth);
 criterion_main!(benches);

@@ -8,8 +8,9 @@
 //!
 //! Pass `--quick` to stop the growth curve at 10,000 bits.
 
-use num_bigint::{BigInt, BigUint};
-use rodimpact::batch::{Backend, Batch};
+#[path = "../benches/support/scenes.rs"]
+mod scenes;
+
 use rodimpact::fast;
 use rodimpact::field::Q;
 use rodimpact::scene::Scene;
@@ -24,22 +25,11 @@ fn main() {
         "batch     | f64 ns | BigRational us | fast us | BigRational/f64 | fast/f64 | BigRational/fast"
     );
     for (label, file) in [("1e6", "bench-1e6.csv"), ("textbook", "bench-textbook.csv")] {
-        side_by_side(label, &reference(file));
+        side_by_side(label, &scenes::reference(file, usize::MAX));
     }
     println!();
     println!("== growth of the fast exact cost with input size ==");
     growth(if quick { 10_000 } else { 100_000 });
-}
-
-fn reference(file: &str) -> Vec<Scene> {
-    let path = format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(path).expect("shared/data beside the project");
-    let mut lines = text.lines();
-    let batch = Batch::new(lines.next().expect("a header"), Backend::Exact).expect("the header");
-    lines
-        .enumerate()
-        .map(|(i, line)| batch.scene(i + 1, line).expect("valid reference scene").0)
-        .collect()
 }
 
 fn median(mut xs: Vec<f64>) -> f64 {
@@ -95,58 +85,18 @@ fn side_by_side(label: &str, scenes: &[Scene]) {
     );
 }
 
-/// SplitMix64, as in PERFORMANCE.md's batches.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    /// A random integer of exactly `bits` bits.
-    fn int(&mut self, bits: u64) -> BigInt {
-        let words = bits.div_ceil(32) as usize;
-        let digits: Vec<u32> = (0..words).map(|_| self.next() as u32).collect();
-        let mut n = BigUint::new(digits) >> (words as u64 * 32 - bits);
-        n.set_bit(bits - 1, true);
-        n.into()
-    }
-
-    fn rational(&mut self, bits: u64) -> Q {
-        Q::new(self.int(bits), self.int(bits))
-    }
-}
-
-fn random_scene(rng: &mut Rng, bits: u64) -> Scene {
-    let (mut l, mut a) = (rng.rational(bits), rng.rational(bits));
-    if a > l {
-        std::mem::swap(&mut l, &mut a);
-    }
-    if rng.next() % 2 == 1 {
-        a = -a;
-    }
-    Scene::builder(rng.rational(bits), rng.rational(bits))
-        .half_length(l)
-        .a(a)
-        .v0(rng.rational(bits))
-        .build()
-        .expect("|a| <= l by construction")
-}
-
 fn growth(max_bits: u64) {
     println!("bits    | fast exact us/scene | BigRational us/scene");
-    let mut rng = Rng(20240611);
+    let mut rng = scenes::Rng(20240611);
     let mut points = vec![];
     for bits in [10u64, 32, 100, 316, 1000, 3162, 10_000, 31_623, 100_000] {
         if bits > max_bits {
             break;
         }
         let count = (200_000 / bits).clamp(1, 200) as usize;
-        let scenes: Vec<Scene> = (0..count).map(|_| random_scene(&mut rng, bits)).collect();
+        let scenes: Vec<Scene> = (0..count)
+            .map(|_| scenes::random_scene(&mut rng, bits))
+            .collect();
         let t_fast = per_scene(1, count, || {
             for s in &scenes {
                 black_box(fast::solve(black_box(s)));
