@@ -2,6 +2,7 @@
 //!
 //! Exit codes: 0 success, 1 a check or claim failed, 2 bad input or usage (one line on stderr
 //! naming the field and the reason).
+#![forbid(unsafe_code)]
 
 mod commands;
 
