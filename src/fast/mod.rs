@@ -58,8 +58,11 @@ type Big = malachite_nz::integer::Integer;
 /// ```
 /// use rodimpact::{fast::{solve, Arithmetic}, scene::Scene, field::q};
 /// let big = q(1 << 62, 3);
-/// let s = Scene::builder(big.clone(), big * q(7, 5)).build().unwrap();
-/// assert_eq!(solve(&s).arithmetic, Arithmetic::Big); // beyond i128
+/// let s = Scene::builder(big.clone(), big.clone() * q(7, 5)).build().unwrap();
+/// assert_eq!(solve(&s).arithmetic, Arithmetic::Wide); // beyond i128
+/// let huge = big.clone() * &big * &big * &big * &big;
+/// let s = Scene::builder(huge.clone(), huge * q(7, 5)).build().unwrap();
+/// assert_eq!(solve(&s).arithmetic, Arithmetic::Big); // beyond 512 bits
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Arithmetic {
