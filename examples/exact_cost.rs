@@ -6,7 +6,8 @@
 //! 2. Growth of the fast exact cost with the size of the inputs: random scenes whose numerators
 //!    and denominators have 10 to 100,000 bits; the exponent of the fitted power law.
 //!
-//! Pass `--quick` to stop the growth curve at 10,000 bits.
+//! Pass `--quick` to stop the growth curve at 10,000 bits; add `--features malachite` to run the
+//! big-integer fallback on malachite-nz.
 
 #[path = "../benches/support/scenes.rs"]
 mod scenes;
@@ -29,6 +30,13 @@ fn main() {
     }
     println!();
     println!("== growth of the fast exact cost with input size ==");
+    // The fast path's big-integer fallback: the cargo feature `malachite` switches it.
+    let big = if cfg!(feature = "malachite") {
+        "malachite-nz"
+    } else {
+        "num-bigint"
+    };
+    println!("(big-integer fallback on {big})");
     growth(if quick { 10_000 } else { 100_000 });
 }
 

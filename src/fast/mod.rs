@@ -22,10 +22,11 @@
 //! energy `mn Md gd nv^2 + Mn md gd nV^2 + Mn md gn nw^2 = mn Md gd dd^2`.
 //!
 //! The integers are first tried in checked `i128` (energy in 256 bits, its terms are
-//! non-negative), then in a checked 512-bit integer (`wide`), and only then in [`BigInt`]: the
-//! first overflow restarts the scene in the next width. A pivoted rod takes the same route with
-//! its own fixed-axis formulas (see `pivoted`). The GCDs of the final reductions run on machine
-//! words up to 256 bits (`words`).
+//! non-negative), then in a checked 512-bit integer (`wide`), and only then in big integers
+//! ([`BigInt`], or malachite's `Integer` with the cargo feature `malachite`: see `malachite`):
+//! the first overflow restarts the scene in the next width. A pivoted rod takes the same route
+//! with its own fixed-axis formulas (see `pivoted`). The GCDs of the final reductions run on
+//! machine words up to 256 bits (`words`).
 
 use crate::field::Q;
 use crate::mechanics::Motion;
@@ -35,8 +36,21 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 use wide::Wide;
 pub(crate) use words::{U256, gcd};
 
+#[cfg(feature = "malachite")]
+mod malachite;
 mod wide;
 mod words;
+
+/// The big-integer type of the fallback (`solve_big`): num-bigint's [`BigInt`] by default,
+/// malachite's `Integer` with the feature `malachite` (subquadratic GCD and multiplication).
+/// Results are returned as [`Q`] either way, identical.
+#[cfg(not(feature = "malachite"))]
+type Big = BigInt;
+/// The big-integer type of the fallback (`solve_big`): malachite's `Integer` (feature
+/// `malachite`; subquadratic GCD and multiplication) instead of num-bigint's [`BigInt`].
+/// Results are returned as [`Q`] either way, identical.
+#[cfg(feature = "malachite")]
+type Big = malachite_nz::integer::Integer;
 
 /// Which arithmetic produced a [`Solved`].
 ///
@@ -44,8 +58,11 @@ mod words;
 /// ```
 /// use rodimpact::{fast::{solve, Arithmetic}, scene::Scene, field::q};
 /// let big = q(1 << 62, 3);
-/// let s = Scene::builder(big.clone(), big * q(7, 5)).build().unwrap();
-/// assert_eq!(solve(&s).arithmetic, Arithmetic::Big); // beyond i128
+/// let s = Scene::builder(big.clone(), big.clone() * q(7, 5)).build().unwrap();
+/// assert_eq!(solve(&s).arithmetic, Arithmetic::Wide); // beyond i128
+/// let huge = big.clone() * &big * &big * &big * &big;
+/// let s = Scene::builder(huge.clone(), huge * q(7, 5)).build().unwrap();
+/// assert_eq!(solve(&s).arithmetic, Arithmetic::Big); // beyond 512 bits
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Arithmetic {
@@ -53,7 +70,8 @@ pub enum Arithmetic {
     Fixed,
     /// Fraction-free in a checked 512-bit integer (`i128` overflowed).
     Wide,
-    /// Fraction-free in `BigInt` (the fixed width overflowed, or was not tried).
+    /// Fraction-free in big integers, num-bigint's `BigInt` or, with the feature `malachite`,
+    /// malachite's `Integer` (the fixed width overflowed, or was not tried).
     Big,
 }
 
@@ -123,8 +141,9 @@ fn input_bits(scene: &Scene) -> u64 {
     .sum()
 }
 
-/// [`solve`] without the fixed-width attempt: fraction-free in [`BigInt`] (the fallback on
-/// its own, for tests and benchmarks).
+/// [`solve`] without the fixed-width attempt: fraction-free in big integers (the fallback on
+/// its own, for tests and benchmarks): num-bigint's [`BigInt`], or malachite's `Integer` with
+/// the cargo feature `malachite` (LGPL-3.0; subquadratic GCD). The result is the same.
 ///
 /// # Examples
 /// ```
@@ -133,7 +152,7 @@ fn input_bits(scene: &Scene) -> u64 {
 /// assert_eq!(solve_big(&s).after, solve(&s).after);
 /// ```
 pub fn solve_big(scene: &Scene) -> Solved {
-    fraction_free::<BigInt>(scene)
+    fraction_free::<Big>(scene)
         .expect("big integers never overflow")
         .with(Arithmetic::Big)
 }
