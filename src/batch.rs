@@ -346,11 +346,16 @@ fn compare(output: usize, claim: &Claimed, value: &Q, backend: Backend) -> Verdi
         };
     }
     let claim = &claim.value();
-    let diff = (claim - value).abs();
     let rel_error = if value.is_zero() {
-        diff.is_zero().then(Q::zero)
+        claim.is_zero().then(Q::zero)
     } else {
-        Some(diff / value.abs())
+        // |c - v| / |v| = |cn vd - vn cd| / (|vn| cd), reduced once (one GCD instead of the
+        // three of a subtraction and a division of rationals).
+        let difference = claim.numer() * value.denom() - value.numer() * claim.denom();
+        Some(Q::new(
+            difference.abs(),
+            value.numer().abs() * claim.denom(),
+        ))
     };
     let ok = match backend {
         Backend::Exact => claim == value,
