@@ -91,6 +91,8 @@ pub struct Verdict {
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
+    /// The data row's number (1-based, as in error messages).
+    pub number: usize,
     /// The output line.
     pub line: String,
     /// The laws held exactly (`None` for a float backend).
@@ -290,6 +292,7 @@ impl Batch {
         }
         out.push('\n');
         Ok(Row {
+            number,
             line: out,
             laws_held,
             verdicts,
@@ -398,7 +401,12 @@ struct ClaimStats {
     max: Option<Option<Q>>,
     /// Relative errors rounded to 2 significant digits (f64 bits, ordered as the values).
     histogram: BTreeMap<u64, usize>,
+    /// The first [`WRONG_ROWS_SHOWN`] rows with a wrong claim.
+    wrong_rows: Vec<usize>,
 }
+
+/// How many rows with a wrong claim the summary names, per output.
+pub const WRONG_ROWS_SHOWN: usize = 10;
 
 impl Summary {
     /// Adds one row (see the type's example).
@@ -411,6 +419,9 @@ impl Summary {
             let s = &mut self.claims[v.output];
             s.compared += 1;
             s.wrong += usize::from(!v.ok);
+            if !v.ok && s.wrong_rows.len() < WRONG_ROWS_SHOWN {
+                s.wrong_rows.push(row.number);
+            }
             let bigger = match (&s.max, &v.rel_error) {
                 (None, _) | (Some(Some(_)), None) => true,
                 (Some(Some(old)), Some(new)) => new > old,
@@ -445,8 +456,8 @@ impl Summary {
         self.claims.iter().map(|c| c.wrong).sum()
     }
 
-    /// The report for stderr: rows, laws, and per claimed output the count wrong, the maximum
-    /// and the median relative error.
+    /// The report for stderr: rows, laws, and per claimed output the count wrong (naming the
+    /// first [`WRONG_ROWS_SHOWN`] rows), the maximum and the median relative error.
     ///
     /// # Examples
     /// ```
@@ -455,6 +466,9 @@ impl Summary {
     /// let mut s = Summary::default();
     /// s.add(&b.row(1, "1,1,3/5").unwrap());
     /// assert_eq!(s.report(), "1 rows, laws held exactly on 1\nv: 1 claims, 0 wrong, max rel error 0, median 0\n");
+    /// s.add(&b.row(2, "1,1,0.6").unwrap());
+    /// s.add(&b.row(3, "1,1,0.61").unwrap());
+    /// assert!(s.report().contains("v: 3 claims, 1 wrong (row 3), max rel error 0.0167, median 0"));
     /// ```
     pub fn report(&self) -> String {
         let mut out = format!(
@@ -471,10 +485,11 @@ impl Summary {
                 _ => "inf".to_string(),
             };
             out.push_str(&format!(
-                "{}: {} claims, {} wrong, max rel error {max}, median {}\n",
+                "{}: {} claims, {} wrong{}, max rel error {max}, median {}\n",
                 OUTPUTS[k],
                 s.compared,
                 s.wrong,
+                s.wrong_rows_text(),
                 s.median()
             ));
         }
@@ -483,6 +498,18 @@ impl Summary {
 }
 
 impl ClaimStats {
+    /// ` (rows 3, 17 and 5 more)`, or nothing when no claim was wrong.
+    fn wrong_rows_text(&self) -> String {
+        let rows: Vec<String> = self.wrong_rows.iter().map(usize::to_string).collect();
+        let more = self.wrong - rows.len();
+        match (rows.len(), more) {
+            (0, _) => String::new(),
+            (1, 0) => format!(" (row {})", rows[0]),
+            (_, 0) => format!(" (rows {})", rows.join(", ")),
+            _ => format!(" (rows {} and {more} more)", rows.join(", ")),
+        }
+    }
+
     fn median(&self) -> String {
         let mut seen = 0;
         for (&bits, &count) in &self.histogram {

@@ -81,7 +81,10 @@ fn an_altered_value_is_reported_with_its_row_and_exit_1() {
     std::fs::write(&file, lines.join("\n")).unwrap();
     let (code, stdout, stderr) = rodimpact(&["batch", file.to_str().unwrap()]);
     assert_eq!(code, 1, "{stderr}");
-    assert!(stderr.contains("omega: 100 claims, 1 wrong"), "{stderr}");
+    assert!(
+        stderr.contains("omega: 100 claims, 1 wrong (row 17)"),
+        "{stderr}"
+    );
     let row17 = stdout.lines().nth(17).unwrap();
     assert!(row17.starts_with(&lines[17]));
     assert!(row17.contains(",true,0,true,0,false,"), "{row17}");
