@@ -9,8 +9,9 @@
 //!
 //! Limits: at most [`MAX_ROWS`] rows and [`MAX_LINE`] bytes per line; each number at most
 //! [`number::MAX_DIGITS`](crate::number::MAX_DIGITS) digits. Memory stays flat in the number of
-//! rows: [`CHUNK`] rows are held at a time, and the median of the summary comes from a
-//! histogram of relative errors rounded to two significant digits.
+//! rows: at most three chunks of [`CHUNK`] rows are held at a time (one being read, one solved,
+//! one written), and the median of the summary comes from a histogram of relative errors
+//! rounded to two significant digits.
 
 use crate::error::{Error, ErrorKind};
 use crate::fast;
@@ -697,7 +698,7 @@ mod tests {
         s.add(&row);
         assert!(
             s.report()
-                .contains("omega: 1 claims, 1 wrong, max rel error inf")
+                .contains("omega: 1 claims, 1 wrong (row 1), max rel error inf")
         );
     }
 
