@@ -49,19 +49,7 @@ impl Int for Integer {
     fn small(x: u8) -> Self {
         Integer::from(x)
     }
-    fn add(&self, o: &Self) -> Option<Self> {
-        Some(self + o)
-    }
-    fn sub(&self, o: &Self) -> Option<Self> {
-        Some(self - o)
-    }
-    fn mul(&self, o: &Self) -> Option<Self> {
-        Some(self * o)
-    }
-    fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
-        let sum: Integer = lhs.iter().map(|(c, x)| *c * (*x * *x)).sum();
-        Some(sum == c * (x * x))
-    }
+    unbounded_arithmetic!();
     fn ratio(n: Self, d: Self) -> Q {
         // d > 0, so g >= 1; n/g and d/g are exact. With g = 1 nothing is divided.
         let negative = n < 0;

@@ -36,6 +36,27 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 use wide::Wide;
 pub(crate) use words::{U256, gcd};
 
+/// The [`Int`] operations of an integer type that never overflows (every result `Some`),
+/// written once for num-bigint's `BigInt` and, with the feature, malachite's `Integer`
+/// (defined before the modules, which see it by textual scope).
+macro_rules! unbounded_arithmetic {
+    () => {
+        fn add(&self, o: &Self) -> Option<Self> {
+            Some(self + o)
+        }
+        fn sub(&self, o: &Self) -> Option<Self> {
+            Some(self - o)
+        }
+        fn mul(&self, o: &Self) -> Option<Self> {
+            Some(self * o)
+        }
+        fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
+            let sum: Self = lhs.iter().map(|(c, x)| *c * &(*x * *x)).sum();
+            Some(sum == c * &(x * x))
+        }
+    };
+}
+
 #[cfg(feature = "malachite")]
 mod malachite;
 mod wide;
@@ -222,19 +243,7 @@ impl Int for BigInt {
     fn small(x: u8) -> Self {
         BigInt::from(x)
     }
-    fn add(&self, o: &Self) -> Option<Self> {
-        Some(self + o)
-    }
-    fn sub(&self, o: &Self) -> Option<Self> {
-        Some(self - o)
-    }
-    fn mul(&self, o: &Self) -> Option<Self> {
-        Some(self * o)
-    }
-    fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
-        let sum: BigInt = lhs.iter().map(|(c, x)| *c * *x * *x).sum();
-        Some(sum == c * x * x)
-    }
+    unbounded_arithmetic!();
     fn ratio(n: Self, d: Self) -> Q {
         // Up to 256 bits (every 10^6-sized scene) the GCD runs on two machine words, far faster
         // than num-bigint's binary GCD on heap digits; beyond, `Q::new` reduces.
