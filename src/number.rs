@@ -132,9 +132,7 @@ impl WordRatio {
 
     /// The value, reduced (one GCD on machine words).
     pub(crate) fn value(&self) -> Q {
-        let (n, d) = U256::reduce(self.numer, self.denom);
-        let n = BigInt::from(n);
-        Q::new_raw(if self.negative { -n } else { n }, BigInt::from(d))
+        U256::ratio(self.negative, self.numer, self.denom)
     }
 
     /// Whether the value equals `q`, decided by cross-multiplication on machine words without

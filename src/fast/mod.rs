@@ -248,15 +248,7 @@ impl Int for BigInt {
         // Up to 256 bits (every 10^6-sized scene) the GCD runs on two machine words, far faster
         // than num-bigint's binary GCD on heap digits; beyond, `Q::new` reduces.
         match (U256::from_big(n.magnitude()), U256::from_big(d.magnitude())) {
-            (Some(a), Some(b)) => {
-                let g = U256::gcd(a, b);
-                if g == U256::ONE {
-                    Q::new_raw(n, d)
-                } else {
-                    let g = BigInt::from(g.to_big());
-                    Q::new_raw(n / &g, d / g)
-                }
-            }
+            (Some(a), Some(b)) => U256::ratio(n.is_negative(), a, b),
             _ => Q::new(n, d),
         }
     }

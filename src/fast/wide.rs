@@ -187,15 +187,7 @@ impl Int for Wide {
     }
     fn ratio(n: Self, d: Self) -> Q {
         match (n.to_u256(), d.to_u256()) {
-            (Some(a), Some(b)) => {
-                let g = U256::gcd(a, b);
-                if g == U256::ONE {
-                    Q::new_raw(n.to_big(), d.to_big())
-                } else {
-                    let g = BigInt::from(g.to_big());
-                    Q::new_raw(n.to_big() / &g, d.to_big() / g)
-                }
-            }
+            (Some(a), Some(b)) => U256::ratio(n.negative, a, b),
             _ => Q::new(n.to_big(), d.to_big()),
         }
     }

@@ -1,7 +1,8 @@
 //! Machine-word exact arithmetic for the fast path: binary GCDs on `u64` and `u128`, and a
 //! 256-bit unsigned integer with just the operations the fraction-free form needs.
 
-use num_bigint::BigUint;
+use crate::field::Q;
+use num_bigint::{BigInt, BigUint, Sign};
 
 /// Stein's binary GCD on `u128` (`gcd(0, d) = d`).
 pub(crate) fn gcd(mut a: u128, mut b: u128) -> u128 {
@@ -203,8 +204,16 @@ impl U256 {
         Some(value)
     }
 
+    /// `-n/d` (when `negative`) or `n/d` as a reduced [`Q`], `d > 0`: one GCD on machine
+    /// words. Shared by the fast path's outputs and the machine-word parser.
+    pub(crate) fn ratio(negative: bool, n: U256, d: U256) -> Q {
+        let (n, d) = U256::reduce(n, d);
+        let sign = if negative { Sign::Minus } else { Sign::Plus };
+        Q::new_raw(BigInt::from_biguint(sign, n), d.into())
+    }
+
     /// `n/d` in lowest terms (`d > 0`).
-    pub(crate) fn reduce(n: U256, d: U256) -> (BigUint, BigUint) {
+    fn reduce(n: U256, d: U256) -> (BigUint, BigUint) {
         let g = U256::gcd(n, d);
         if g == U256::ONE {
             return (n.to_big(), d.to_big());
