@@ -500,7 +500,7 @@ impl Parser<'_> {
 
     /// Charges an operation on `x` and `y` against [`MAX_WORK`] before it is carried out.
     fn charge(&mut self, x: &Radical, y: &Radical) -> Result<(), Error> {
-        let units = size(x).saturating_mul(size(y));
+        let units = pair_cost(x, y);
         self.work = self.work.saturating_add(units);
         if self.work > MAX_WORK {
             return Err(invalid(
@@ -539,6 +539,33 @@ impl Parser<'_> {
         }
         Ok(value)
     }
+}
+
+/// The work of combining `x` and `y` term by term: every pair of coefficients of `w_i` and
+/// `w_j` words costs `(w_i + w_j)^2` (a product, then a reduction by GCD, quadratic in the
+/// size of the result), summed without enumerating the pairs.
+fn pair_cost(x: &Radical, y: &Radical) -> u64 {
+    let (tx, s1x, s2x) = moments(x);
+    let (ty, s1y, s2y) = moments(y);
+    tx.saturating_mul(s2y)
+        .saturating_add(s1x.saturating_mul(s1y).saturating_mul(2))
+        .saturating_add(ty.saturating_mul(s2x))
+}
+
+/// (terms, sum of words, sum of squared words) over the four polynomials of `x`.
+fn moments(x: &Radical) -> (u64, u64, u64) {
+    [
+        x.coeff.num(),
+        x.coeff.den(),
+        x.radicand.num(),
+        x.radicand.den(),
+    ]
+    .iter()
+    .flat_map(|p| p.terms())
+    .map(|(_, c)| c.numer().bits() / 64 + c.denom().bits() / 64 + 2)
+    .fold((0, 0, 0), |(t, s1, s2), w| {
+        (t + 1, s1.saturating_add(w), s2.saturating_add(w * w))
+    })
 }
 
 /// The size of a value for [`MAX_WORK`]: the 64-bit words of every coefficient of its four
