@@ -462,3 +462,65 @@ fn every_problem_file_error_is_one_line_naming_the_key() {
             .starts_with("t.toml: problem 'p1': claims.omega: expected an operator")
     );
 }
+
+/// RELIABILITY F8: one budget for every formula of a run. A budget that holds one heavy
+/// claim refuses the second, naming it, whether the claims share a scene or not; the same
+/// claims under a fresh budget each pass.
+#[test]
+fn the_work_budget_is_shared_by_every_claim_of_a_run() {
+    use rodimpact::textbook::{check_scene_within, expr::Budget};
+    let heavy = format!("V=(m+{})^8", "7".repeat(200));
+    let mut probe = Budget::run();
+    let one = Claim::parse_within(&heavy, &mut probe).unwrap();
+    let scene = SceneInput {
+        m: Some("1".into()),
+        rod_mass: Some("1".into()),
+        ..Default::default()
+    };
+    check_scene_within(&scene, &[one], None, &mut probe).unwrap();
+    let cost = probe.spent();
+    assert!(cost > 100_000, "a heavy claim: {cost}");
+    let mut budget = Budget::new(cost + cost / 2);
+    let first = Claim::parse_within(&heavy, &mut budget).unwrap();
+    check_scene_within(&scene, &[first], None, &mut budget).unwrap();
+    let err = Claim::parse_within(&heavy.replace("V=", "v="), &mut budget)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.starts_with("claim v: the claims of this run together cost more than"),
+        "{err}"
+    );
+}
+
+/// NEWCOMER #3/#4 at the library level: a scene of formulas takes e = 1 and a uniform rod
+/// unless told otherwise; `--e e` keeps e a symbol.
+#[test]
+fn symbolic_defaults_and_an_explicit_symbol_e() {
+    let s = SceneInput {
+        rod_mass: Some("4*m".into()),
+        a: Some("l".into()),
+        ..Default::default()
+    };
+    let r = check_scene(&s, &[Claim::parse("v=0").unwrap()], None).unwrap();
+    assert!(r.all_agree());
+    let summary = r.symbolic.unwrap();
+    assert_eq!(summary.free, ["m", "l", "v0"]);
+    assert_eq!(
+        summary.defaults,
+        ["e = 1 (elastic)", "uniform rod (I = M l^2/3)"]
+    );
+    // With e a symbol, v = (1 - e) v0/2 at the end of M = 4m (effective mass m).
+    let s = SceneInput {
+        e: Some("e".into()),
+        ..s
+    };
+    let r = check_scene(
+        &s,
+        &[Claim::parse("v=(1-e)*v0/2").unwrap(), Claim::parse("v=0").unwrap()],
+        None,
+    )
+    .unwrap();
+    assert_eq!(r.decisions[0].verdict, Verdict::Agrees);
+    assert_eq!(r.decisions[1].verdict, Verdict::Disagrees);
+    assert_eq!(r.symbolic.unwrap().defaults, ["uniform rod (I = M l^2/3)"]);
+}

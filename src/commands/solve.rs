@@ -26,12 +26,12 @@ impl BackendArg {
         match self {
             BackendArg::Exact => "exact rationals",
             BackendArg::F64 => {
-                "f64 (IEEE binary64), with the library's stable float formula (\"sq\": the closed form with exact power-of-two rescaling, so no intermediate overflow or underflow)"
+                "f64: IEEE binary64 with the stable formula \"sq\" (the closed form with exact power-of-two rescaling: no intermediate overflow or underflow)"
             }
             BackendArg::F32 => {
-                "f32 (IEEE binary32), with the library's stable float formula (\"sq\": the closed form with exact power-of-two rescaling, so no intermediate overflow or underflow)"
+                "f32: IEEE binary32 with the stable formula \"sq\" (the closed form with exact power-of-two rescaling: no intermediate overflow or underflow)"
             }
-            BackendArg::Interval => "f64 intervals, rounded outward",
+            BackendArg::Interval => "interval: f64 intervals rounded outward",
         }
     }
 
@@ -83,7 +83,7 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
         let mut text = solution.to_text(digits);
         if let Some(floats) = floats {
             text.push_str(&format!(
-                "\nBackend {}\nagainst the exact values (rel_error = |float - exact|/|exact|; cond: the condition number; reliable: cond * unit roundoff <= 1e-3)\n",
+                "\nBackend {}\n  against the exact values: rel_error = |float - exact|/|exact|, cond = condition number,\n  reliable = cond * unit roundoff <= 1e-3\n",
                 args.backend.describe()
             ));
             for (name, value) in floats {
