@@ -180,17 +180,17 @@ fn check(args: &[&str]) -> (i32, String, String) {
 /// other quantities stay free, and the report says which are free and which defaults it used.
 #[test]
 fn symbolic_check_takes_the_defaults_of_solve_and_names_the_free_symbols() {
-    let (code, out, err) = check(&[
-        "--claim",
-        "omega=6*m*a*v0/(M*l^2*(1+m/M+3*m*a^2/(M*l^2)))",
-    ]);
+    let (code, out, err) = check(&["--claim", "omega=6*m*a*v0/(M*l^2*(1+m/M+3*m*a^2/(M*l^2)))"]);
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.starts_with("  free symbols: m, M, l, a, v0\n"), "{out}");
     assert!(
         out.contains("  defaults: e = 1 (elastic); uniform rod (I = M l^2/3)\n"),
         "{out}"
     );
-    assert!(out.contains("agrees") && out.ends_with("1 claim, it agrees\n"), "{out}");
+    assert!(
+        out.contains("agrees") && out.ends_with("1 claim, it agrees\n"),
+        "{out}"
+    );
     // The end-hit formula needs the end: a is free unless given, and the report shows it.
     let (code, out, _) = check(&["--elastic", "--claim", "omega=6*m*v0/((M+4*m)*l)"]);
     assert_eq!(code, 1, "{out}");
@@ -221,7 +221,10 @@ fn symbolic_check_takes_the_defaults_of_solve_and_names_the_free_symbols() {
 fn a_constant_claim_is_decided_against_a_formula() {
     let (code, out, err) = check(&["--M", "4*m", "--a", "l", "--claim", "v=0"]);
     assert_eq!(code, 0, "{out}{err}");
-    assert!(out.contains("  v      0           0        -           agrees"), "{out}");
+    assert!(
+        out.contains("  v      0           0        -           agrees"),
+        "{out}"
+    );
     let (code, out, err) = check(&["--M", "4*m", "--elastic", "--claim", "v=0", "--json"]);
     assert_eq!(code, 1, "a disagreement, not bad input: {err}");
     let j: Value = serde_json::from_str(&out).unwrap();
@@ -314,13 +317,22 @@ fn near_misses_and_large_errors_are_worded_for_what_they_are() {
     let (code, out, _) = check(&args);
     assert_eq!(code, 1, "{out}");
     let rows: Vec<&str> = out.lines().skip(1).collect();
-    assert!(rows[0].contains("-49 %") && rows[0].ends_with("DISAGREES"), "{out}");
+    assert!(
+        rows[0].contains("-49 %") && rows[0].ends_with("DISAGREES"),
+        "{out}"
+    );
     assert!(
         rows[1].contains("-0.49 %") && rows[1].ends_with("DISAGREES (last digit off by one)"),
         "{out}"
     );
-    assert!(rows[2].contains("×3.95") && rows[2].ends_with("DISAGREES"), "{out}");
-    assert!(rows[3].contains("-0.083 %") && rows[3].ends_with("agrees"), "{out}");
+    assert!(
+        rows[2].contains("×3.95") && rows[2].ends_with("DISAGREES"),
+        "{out}"
+    );
+    assert!(
+        rows[3].contains("-0.083 %") && rows[3].ends_with("agrees"),
+        "{out}"
+    );
     assert!(!out.contains("e2%") && !out.contains("e1%"), "{out}");
 }
 
@@ -385,8 +397,13 @@ fn check_wording_for_one_claim_and_for_stray_arguments() {
     let (code, out, _) = check(&["--m", "1", "--M", "1", "--claim", "omega=6/5"]);
     assert_eq!(code, 0);
     assert!(out.ends_with("\n1 claim, it agrees\n"), "{out}");
-    let (_, out, _) = check(&["--m", "1", "--M", "1", "--claim", "v=6/5", "--claim", "V=2/5"]);
-    assert!(out.ends_with("\n1 of 2 claims agrees; 1 disagrees\n"), "{out}");
+    let (_, out, _) = check(&[
+        "--m", "1", "--M", "1", "--claim", "v=6/5", "--claim", "V=2/5",
+    ]);
+    assert!(
+        out.ends_with("\n1 of 2 claims agrees; 1 disagrees\n"),
+        "{out}"
+    );
     let file = std::env::temp_dir().join(format!("rodimpact-one-{}.toml", std::process::id()));
     std::fs::write(
         &file,
@@ -419,7 +436,12 @@ fn check_wording_for_one_claim_and_for_stray_arguments() {
 fn scene_formulas_outside_the_domain_are_refused() {
     let cases: [(&[&str], &str); 5] = [
         (
-            &["--a", "2*l", "--claim", "omega=(6*e*m*v0 + 6*m*v0)/(M*l + 13*l*m)"],
+            &[
+                "--a",
+                "2*l",
+                "--claim",
+                "omega=(6*e*m*v0 + 6*m*v0)/(M*l + 13*l*m)",
+            ],
             "error: a: must lie on the rod, |a| <= l, but a = 2*l is off the rod in every sample scene of the free symbols\n",
         ),
         (

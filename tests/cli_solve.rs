@@ -311,14 +311,20 @@ fn text_report_speaks_to_students() {
             .collect::<Vec<_>>()
             .join(" ")
     };
-    assert_eq!(line("a* is on the rod when"), "a* is on the rod when M ≤ 2m (here M = m)");
+    assert_eq!(
+        line("a* is on the rod when"),
+        "a* is on the rod when M ≤ 2m (here M = m)"
+    );
     assert_eq!(line("on the rod"), "on the rod inside: a* < l = 1 m");
     assert!(!out.contains("b^2") && !out.contains("K x/") && !out.contains("identity in x"));
     // r_G = l/2: a*^2 = r_G^2 (M + m)/m <= l^2 iff M <= m (l^2 - r_G^2)/r_G^2 = 3m.
     let (_, out, _) = rodimpact(&["solve", "--m", "2", "--M", "3", "--rod", "rg=1/2"]);
     assert!(out.contains("M ≤ 3m (here M = (3/2)m)"), "{out}");
     let (_, out, _) = rodimpact(&["solve", "--m", "1", "--M", "1", "--rod", "dumbbell"]);
-    assert!(out.contains("never: with r_G = l, a* lies beyond the end for every M"), "{out}");
+    assert!(
+        out.contains("never: with r_G = l, a* lies beyond the end for every M"),
+        "{out}"
+    );
     let (_, out, _) = rodimpact(&["solve", "--backend", "f64", "--m", "4/7", "--M", "1"]);
     assert!(
         out.contains("Backend f64: IEEE binary64 with the stable formula \"sq\" (the closed form with exact power-of-two rescaling"),

@@ -516,7 +516,10 @@ fn symbolic_defaults_and_an_explicit_symbol_e() {
     };
     let r = check_scene(
         &s,
-        &[Claim::parse("v=(1-e)*v0/2").unwrap(), Claim::parse("v=0").unwrap()],
+        &[
+            Claim::parse("v=(1-e)*v0/2").unwrap(),
+            Claim::parse("v=0").unwrap(),
+        ],
         None,
     )
     .unwrap();

@@ -17,7 +17,16 @@ fn ok(args: &[&str]) -> String {
 
 /// 100 g = 0.1 kg, 1.5 kg, 120 cm = 2 x 0.6 m, 10 cm from the end = a 0.5 m, 36 km/h = 10 m/s.
 const WITH_UNITS: [&str; 10] = [
-    "--m", "100 g", "--M", "1.5kg", "--length", "120cm", "--from-end", "10 cm", "--v0", "36 km/h",
+    "--m",
+    "100 g",
+    "--M",
+    "1.5kg",
+    "--length",
+    "120cm",
+    "--from-end",
+    "10 cm",
+    "--v0",
+    "36 km/h",
 ];
 const IN_SI: [&str; 10] = [
     "--m", "0.1", "--M", "1.5", "--l", "0.6", "--a", "0.5", "--v0", "10",
@@ -58,7 +67,10 @@ fn plot_and_simulate_read_units_exactly() {
         &["plot", "figure1", "--out", a.to_str().unwrap()],
         &WITH_UNITS,
     ));
-    run(&with(&["plot", "figure1", "--out", b.to_str().unwrap()], &IN_SI));
+    run(&with(
+        &["plot", "figure1", "--out", b.to_str().unwrap()],
+        &IN_SI,
+    ));
     assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
     std::fs::remove_dir_all(&dir).unwrap();
     let sim = |base: &[&str]| -> Value {
@@ -103,12 +115,18 @@ fn a_wrong_unit_is_named_on_one_line() {
             "error: m: unknown unit 'lb' (a mass takes kg, g)\n",
         ),
         (
-            &["plot", "figure1", "--m", "1", "--M", "1", "--e", "1 J", "--out", "x.svg"][..],
+            &[
+                "plot", "figure1", "--m", "1", "--M", "1", "--e", "1 J", "--out", "x.svg",
+            ][..],
             "error: e: unit 'J' is an energy, expected a pure number\n",
         ),
     ] {
         let (code, out, err) = rodimpact(args);
-        assert_eq!((code, out.as_str(), err.as_str()), (2, "", expected), "{args:?}");
+        assert_eq!(
+            (code, out.as_str(), err.as_str()),
+            (2, "", expected),
+            "{args:?}"
+        );
     }
 }
 

@@ -20,7 +20,9 @@ pub(crate) struct CheckArgs {
     pub(crate) scene: SceneFlags,
     /// A claimed answer NAME=VALUE: NAME one of v, V, V_cm, omega, a_star, omega_max,
     /// energy_before, energy_after, energy_lost, pivot_impulse, impulse; VALUE a number as
-    /// printed (with an optional unit), a fraction, or a formula in m M l L a d v0 e p.
+    /// printed (with an optional unit), a fraction, or a formula in m M l L a d v0 e p I r.
+    /// With formulas, a scene quantity not given is a free symbol, except e (1, elastic) and
+    /// the rod (uniform), as in solve.
     #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true)]
     pub(crate) claim: Vec<String>,
     /// Significant figures to use for every printed claim, instead of the inferred ones.
