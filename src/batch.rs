@@ -18,7 +18,8 @@ use crate::fast;
 use crate::field::Q;
 use crate::mechanics::Motion;
 use crate::number::WordRatio;
-use crate::scene::{Scene, SceneInput, parse_field};
+use crate::scene::{Scene, SceneInput};
+use crate::units::{Dimension, parse_si};
 use num_traits::{Signed, Zero};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
@@ -325,7 +326,14 @@ impl Claimed {
     fn parse(output: usize, cell: &str) -> Result<Claimed, Error> {
         match WordRatio::parse(cell) {
             Some(word) => Ok(Claimed::Word(word)),
-            None => parse_field(OUTPUTS[output], cell).map(Claimed::Exact),
+            None => {
+                let dimension = if output == 2 {
+                    Dimension::AngularSpeed
+                } else {
+                    Dimension::Speed
+                };
+                parse_si(OUTPUTS[output], cell, dimension).map(Claimed::Exact)
+            }
         }
     }
 

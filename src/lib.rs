@@ -40,6 +40,7 @@ pub mod scene;
 pub mod solve;
 pub mod stability;
 pub mod textbook;
+pub mod units;
 
 pub use error::{Error, ErrorKind};
 

@@ -60,7 +60,7 @@ fn main() -> ExitCode {
                     },
                 );
             }
-            eprintln!("{} (try --help)", first_paragraph(&err.to_string()));
+            eprintln!("{} (try --help)", one_line(&err.to_string()));
             return ExitCode::from(2);
         }
     };
@@ -85,19 +85,29 @@ fn main() -> ExitCode {
     }
 }
 
-/// The first paragraph of a clap error as one line: clap lists the missing arguments on the
-/// lines after "the following required arguments were not provided:", and those name the field.
-fn first_paragraph(rendered: &str) -> String {
+/// A clap error as one line: its first paragraph (clap lists missing arguments on the lines
+/// after "the following required arguments were not provided:", and those name the field),
+/// then its tips ("a similar subcommand exists: 'solve'"), joined by "; ".
+fn one_line(rendered: &str) -> String {
     let words: Vec<&str> = rendered
         .lines()
         .take_while(|line| !line.trim().is_empty())
         .map(str::trim)
         .collect();
-    if words.is_empty() {
+    let mut line = if words.is_empty() {
         "error: usage error".to_string()
     } else {
         words.join(" ")
+    };
+    for tip in rendered
+        .lines()
+        .map(str::trim)
+        .filter(|l| l.starts_with("tip:"))
+    {
+        line.push_str("; ");
+        line.push_str(tip);
     }
+    line
 }
 
 #[cfg(test)]
@@ -117,9 +127,29 @@ mod tests {
     #[test]
     fn a_missing_argument_is_named_on_the_one_line() {
         let err = Cli::try_parse_from(["rodimpact", "plot", "omega"]).unwrap_err();
-        let line = first_paragraph(&err.to_string());
+        let line = one_line(&err.to_string());
         assert!(line.contains("not provided: --out <FILE.svg>"), "{line}");
         assert!(!line.contains('\n'));
+    }
+
+    /// Regression (NEWCOMER #25): `rodimpact slove` printed only "unrecognized subcommand
+    /// 'slove'": the one-line rewrite kept the first paragraph and dropped clap's tip naming
+    /// the subcommand the user meant.
+    #[test]
+    fn a_typo_keeps_clap_tip_on_the_one_line() {
+        let err = Cli::try_parse_from(["rodimpact", "slove"]).unwrap_err();
+        let line = one_line(&err.to_string());
+        assert!(
+            line.starts_with("error: unrecognized subcommand 'slove'"),
+            "{line}"
+        );
+        assert!(
+            line.contains("; tip: ") && line.contains("'solve'"),
+            "{line}"
+        );
+        assert!(!line.contains('\n'));
+        let err = Cli::try_parse_from(["rodimpact", "solve", "--mm", "1"]).unwrap_err();
+        assert!(one_line(&err.to_string()).contains("a similar argument exists: '--m'"));
     }
 
     #[test]

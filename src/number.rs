@@ -601,6 +601,32 @@ pub fn decimal_sqrt(x: &Q, digits: usize) -> String {
     }
 }
 
+/// The longest exact fraction [`compact`] prints as it is.
+pub const COMPACT_CHARS: usize = 40;
+
+/// `x` for a reader: the exact fraction when it is short (at most [`COMPACT_CHARS`]
+/// characters), else the shortest decimal that equals it (`1e400`), else `≈` and its decimal
+/// to 6 significant digits. For text reports; JSON keeps the exact value.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{field::{q, Q}, number::compact};
+/// assert_eq!(compact(&q(36, 19)), "36/19");
+/// let big = Q::from_integer(num_bigint::BigInt::from(10).pow(400));
+/// assert_eq!(compact(&big), "1e400");
+/// assert_eq!(compact(&(big + q(1, 3))), "≈ 1.00000e400");
+/// ```
+pub fn compact(x: &Q) -> String {
+    let exact = x.to_string();
+    if exact.chars().count() <= COMPACT_CHARS {
+        return exact;
+    }
+    (1..=15)
+        .map(|digits| decimal(x, digits))
+        .find(|text| parse(text).is_ok_and(|y| y == *x))
+        .unwrap_or_else(|| format!("≈ {}", decimal(x, 6)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

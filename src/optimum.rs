@@ -142,7 +142,7 @@ impl PaperForm {
     pub fn of(scene: &Scene) -> PaperForm {
         PaperForm {
             k: (Q::one() + scene.e()) * scene.v0(),
-            b_squared: a_star_squared(scene),
+            b_squared: a_star_squared(&scene.params::<Q>()),
             c: Q::one(),
         }
     }
@@ -172,13 +172,20 @@ impl PaperForm {
     }
 }
 
-/// a*^2 (free rod, from the centre) or d*^2 (pivot, from the pivot).
-fn a_star_squared(scene: &Scene) -> Q {
-    let (m, big_m) = (scene.m(), scene.rod_mass());
-    let inertia = scene.inertia();
-    match scene.support() {
-        Support::Free => &inertia * (big_m + m) / (m * big_m),
-        Support::Pivot(p) => (&inertia + big_m * p * p) / m,
+/// a*^2 = I (M + m)/(m M) for a free rod (from the centre), d*^2 = I_p/m for a pivoted one
+/// (from the pivot), over any field (numbers, or rational functions for symbolic checks).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::Scene, optimum::a_star_squared, field::{q, Q}};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+/// assert_eq!(a_star_squared(&s.params::<Q>()), q(2, 3));
+/// ```
+pub fn a_star_squared<F: Field>(p: &Params<F>) -> F {
+    let (m, big_m) = (&p.m, &p.rod_mass);
+    match &p.support {
+        Support::Free => p.inertia.clone() * &(big_m.clone() + m) / (m.clone() * big_m),
+        Support::Pivot(_) => p.inertia_about_axis() / m.clone(),
     }
 }
 
@@ -197,7 +204,7 @@ fn a_star_squared(scene: &Scene) -> Q {
 pub fn optimum(scene: &Scene) -> Optimum {
     let (m, big_m) = (scene.m(), scene.rod_mass());
     let l = scene.half_length();
-    let squared = a_star_squared(scene);
+    let squared: Q = a_star_squared(&scene.params());
     let gyration_squared = scene.inertia() / big_m;
     let (arm, threshold_mass) = match scene.support() {
         Support::Free => {

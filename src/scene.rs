@@ -7,6 +7,7 @@
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q};
 use crate::number;
+use crate::units::{Dimension, parse_si};
 use num_traits::{One, Signed};
 use std::fmt;
 
@@ -42,7 +43,8 @@ impl RodInertia {
         }
     }
 
-    /// Parses the `--rod` forms `uniform`, `dumbbell`, `rg=Q`, `I=Q`.
+    /// Parses the `--rod` forms `uniform`, `dumbbell`, `rg=Q`, `I=Q` (a radius may carry a
+    /// length unit, a moment of inertia `kg*m^2`).
     ///
     /// # Errors
     /// `rod: ...` naming the accepted forms, or the number's own parse error.
@@ -52,19 +54,23 @@ impl RodInertia {
     /// use rodimpact::scene::RodInertia;
     /// use rodimpact::field::q;
     /// assert_eq!(RodInertia::parse("rg=1/2").unwrap(), RodInertia::Gyration(q(1, 2)));
+    /// assert_eq!(RodInertia::parse("rg=25 cm").unwrap(), RodInertia::Gyration(q(1, 4)));
     /// assert!(RodInertia::parse("steel").is_err());
     /// ```
     pub fn parse(text: &str) -> Result<Self, Error> {
         let text = text.trim();
-        let number = |s: &str| number::parse(s).map_err(|kind| Error::new("rod", kind));
         match text {
             "uniform" => Ok(RodInertia::Uniform),
             "dumbbell" => Ok(RodInertia::Dumbbell),
             _ => {
                 if let Some(r) = text.strip_prefix("rg=") {
-                    Ok(RodInertia::Gyration(number(r)?))
+                    Ok(RodInertia::Gyration(parse_si("rod", r, Dimension::Length)?))
                 } else if let Some(i) = text.strip_prefix("I=") {
-                    Ok(RodInertia::Moment(number(i)?))
+                    Ok(RodInertia::Moment(parse_si(
+                        "rod",
+                        i,
+                        Dimension::MomentOfInertia,
+                    )?))
                 } else {
                     Err(Error::new(
                         "rod",
@@ -451,7 +457,8 @@ impl SceneInput {
         })
     }
 
-    /// Parses and validates every field.
+    /// Parses and validates every field. Numbers may carry a unit of their field's dimension
+    /// (`100 g`, `120 cm`, `36 km/h`), converted exactly to SI.
     ///
     /// # Errors
     /// The first bad field: missing `m`/`M`, a number that does not parse, conflicting
@@ -470,6 +477,8 @@ impl SceneInput {
     /// };
     /// let s = input.build().unwrap();
     /// assert_eq!((s.m(), s.half_length(), s.a()), (&q(1, 4), &q(1, 1), &q(1, 2)));
+    /// let grams = SceneInput { m: Some("100 g".into()), rod_mass: Some("1.5kg".into()), ..Default::default() };
+    /// assert_eq!(grams.build().unwrap().m(), &q(1, 10));
     /// let bad = SceneInput { m: Some("1/0".into()), rod_mass: Some("1".into()), ..Default::default() };
     /// assert_eq!(bad.build().unwrap_err().to_string(), "m: division by zero");
     /// ```
@@ -481,9 +490,9 @@ impl SceneInput {
             (Some(_), Some(_)) => {
                 return Err(conflict("length", "give either --l or --length, not both"));
             }
-            (Some(l), None) => parse_field("l", l)?,
+            (Some(l), None) => number_of("l", l)?,
             (None, Some(len)) => {
-                let len = parse_field("length", len)?;
+                let len = number_of("length", len)?;
                 if !len.is_positive() {
                     return Err(Error::out_of_range(
                         "length",
@@ -502,9 +511,9 @@ impl SceneInput {
                     "give either --a or --from-end, not both",
                 ));
             }
-            (Some(a), None) => builder = builder.a(parse_field("a", a)?),
+            (Some(a), None) => builder = builder.a(number_of("a", a)?),
             (None, Some(d)) => {
-                let d = parse_field("from-end", d)?;
+                let d = number_of("from-end", d)?;
                 if d.is_negative() || d > &half_length * Q::from_integer(2.into()) {
                     return Err(Error::out_of_range(
                         "from-end",
@@ -519,24 +528,47 @@ impl SceneInput {
             (None, None) => {}
         }
         if let Some(v0) = &self.v0 {
-            builder = builder.v0(parse_field("v0", v0)?);
+            builder = builder.v0(number_of("v0", v0)?);
         }
         if let Some(rod) = &self.rod {
             builder = builder.rod(RodInertia::parse(rod)?);
         }
         if let Some(e) = &self.e {
-            builder = builder.e(parse_field("e", e)?);
+            builder = builder.e(number_of("e", e)?);
         }
         if let Some(p) = &self.pivot {
-            builder = builder.pivot(parse_field("pivot", p)?);
+            builder = builder.pivot(number_of("pivot", p)?);
         }
         builder.build()
     }
 }
 
+/// The dimension of the numeric scene input named `key` (`m`, `M`, `l`, `length`, `a`,
+/// `from-end`, `v0`, `e`, `pivot`): what a unit written after its number must measure.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::dimension_of, units::Dimension};
+/// assert_eq!(dimension_of("from-end"), Dimension::Length);
+/// assert_eq!(dimension_of("e"), Dimension::Pure);
+/// ```
+pub fn dimension_of(key: &str) -> Dimension {
+    match key {
+        "m" | "M" => Dimension::Mass,
+        "l" | "length" | "a" | "from-end" | "pivot" => Dimension::Length,
+        "v0" => Dimension::Speed,
+        _ => Dimension::Pure,
+    }
+}
+
+/// The numeric scene input `key`, with an optional unit of its dimension, in SI.
+fn number_of(key: &str, text: &str) -> Result<Q, Error> {
+    parse_si(key, text, dimension_of(key))
+}
+
 fn required(field: &str, text: &Option<String>) -> Result<Q, Error> {
     match text {
-        Some(t) => parse_field(field, t),
+        Some(t) => number_of(field, t),
         None => Err(Error::new(field, ErrorKind::Missing)),
     }
 }

@@ -160,3 +160,367 @@ fn bundled_collection_runs_and_reports_the_wrong_answers() {
     let j: Value = serde_json::from_str(&out).unwrap();
     assert_eq!(j["problems"].as_array().unwrap().len(), 12);
 }
+
+/// Runs `check` and returns (exit code, stdout, stderr), asserting the one-line contract for
+/// input errors.
+fn check(args: &[&str]) -> (i32, String, String) {
+    let mut all = vec!["check"];
+    all.extend_from_slice(args);
+    let (code, out, err) = rodimpact(&all);
+    if code == 2 {
+        assert_eq!(err.lines().count(), 1, "one line: {err}");
+        assert!(out.is_empty(), "nothing on stdout on bad input: {out}");
+    }
+    (code, out, err)
+}
+
+/// Regression (NEWCOMER #3): in symbolic mode every flag left out became a free symbol, e
+/// included, so the paper's own Eq. (omega) for the elastic uniform rod was "refuted" with a
+/// counterexample at e = 1/2. e and the rod now take solve's defaults (elastic, uniform), the
+/// other quantities stay free, and the report says which are free and which defaults it used.
+#[test]
+fn symbolic_check_takes_the_defaults_of_solve_and_names_the_free_symbols() {
+    let (code, out, err) = check(&["--claim", "omega=6*m*a*v0/(M*l^2*(1+m/M+3*m*a^2/(M*l^2)))"]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.starts_with("  free symbols: m, M, l, a, v0\n"), "{out}");
+    assert!(
+        out.contains("  defaults: e = 1 (elastic); uniform rod (I = M l^2/3)\n"),
+        "{out}"
+    );
+    assert!(
+        out.contains("agrees") && out.ends_with("1 claim, it agrees\n"),
+        "{out}"
+    );
+    // The end-hit formula needs the end: a is free unless given, and the report shows it.
+    let (code, out, _) = check(&["--elastic", "--claim", "omega=6*m*v0/((M+4*m)*l)"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("free symbols: m, M, l, a, v0"), "{out}");
+    let (code, out, _) = check(&[
+        "--elastic",
+        "--a",
+        "l",
+        "--claim",
+        "omega=6*m*v0/((M+4*m)*l)",
+    ]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("free symbols: m, M, l, v0\n"), "{out}");
+    assert!(!out.contains("defaults: e = 1"), "e was given: {out}");
+    // JSON says the same.
+    let (_, out, _) = check(&["--M", "m", "--claim", "V=1/2*v0", "--json"]);
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["symbolic"], true);
+    assert_eq!(j["free_symbols"], serde_json::json!(["m", "l", "a", "v0"]));
+    assert_eq!(j["defaults"][0], "e = 1 (elastic)");
+}
+
+/// Regression (NEWCOMER #4): `check --M 4*m --elastic --claim v=0` was refused ("a number
+/// cannot be checked against the formula ...") because a was free; a constant claim is now
+/// decided as an identity (refuted with a counterexample while a is free), and agrees once the
+/// end is given: M = 4m struck at the end stops the projectile (equal effective masses).
+#[test]
+fn a_constant_claim_is_decided_against_a_formula() {
+    let (code, out, err) = check(&["--M", "4*m", "--a", "l", "--claim", "v=0"]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        out.contains("  v      0           0        -           agrees"),
+        "{out}"
+    );
+    let (code, out, err) = check(&["--M", "4*m", "--elastic", "--claim", "v=0", "--json"]);
+    assert_eq!(code, 1, "a disagreement, not bad input: {err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    let c = &j["claims"][0];
+    assert_eq!(c["verdict"], "disagrees");
+    assert_eq!(
+        c["notes"][0],
+        "a number against a formula: decided as an identity in the free symbols"
+    );
+    // At m = l = v0 = 1, a = 1/2: v = (3/4 - 3)/(3/4 + 5) = -9/23.
+    assert_eq!(
+        c["counterexample"],
+        serde_json::json!({
+            "at": {"a": "1/2", "l": "1", "m": "1", "v0": "1"},
+            "exact": "-9/23",
+            "claimed": "0"
+        })
+    );
+}
+
+/// Regression (NEWCOMER #5): `check --rod rg=r ...` said "m: required, but not given" because
+/// a rod given by a formula did not make the scene symbolic (and `r` was no symbol). The
+/// paper's general-I formula, and its a* = sqrt((M+m) I/(m M)), are now decided with I and r.
+#[test]
+fn rod_formulas_make_the_check_symbolic_with_i_and_r() {
+    let (code, out, err) = check(&[
+        "--rod",
+        "rg=r",
+        "--claim",
+        "omega=2*m*a*v0/(I*(1+m/M+m*a^2/I))",
+        "--claim",
+        "a_star=sqrt((M+m)*I/(m*M))",
+        "--claim",
+        "a_star=r",
+    ]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(out.contains("free symbols: m, M, l, a, v0, r"), "{out}");
+    let verdicts: Vec<&str> = out
+        .lines()
+        .filter(|l| l.starts_with("  omega") || l.starts_with("  a_star"))
+        .map(|l| l.split_whitespace().last().unwrap())
+        .collect();
+    assert_eq!(verdicts, ["agrees", "agrees", "DISAGREES"], "{out}");
+    // Uniform rod by default: I = M l^2/3 in a claim; M = m puts a* at sqrt(2/3) l.
+    let (code, out, _) = check(&["--M", "m", "--claim", "a_star=sqrt(2/3)*l"]);
+    assert_eq!(code, 0, "{out}");
+    // What stays numeric-only is named, with what to claim instead.
+    let (code, _, err) = check(&["--claim", "omega_max=v0/l"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("omega_max is checked for numeric scenes only")
+            && err.contains("claim a_star or omega instead"),
+        "{err}"
+    );
+    let (code, _, err) = check(&["--claim", "a_star=r"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("give --rod rg=r"), "{err}");
+}
+
+/// Regression (NEWCOMER #11): an impulse claimed as 0.1 N s against 480/2437 = 0.197 N s
+/// (49 % off) was labelled "last digit off by one", and large errors printed as `3.0e2%`.
+/// "Last digit off by one" now needs a true near-miss (the claim within one unit of its last
+/// place of the exact value, with two figures or more); large errors read as a factor.
+#[test]
+fn near_misses_and_large_errors_are_worded_for_what_they_are() {
+    let scene = [
+        "--m",
+        "10g",
+        "--M",
+        "2kg",
+        "--length",
+        "120cm",
+        "--v0",
+        "36km/h",
+        "--from-end",
+        "10cm",
+    ];
+    let mut args = scene.to_vec();
+    args.extend([
+        "--claim",
+        "impulse=0.1 N*s",
+        "--claim",
+        "impulse=0.196 N*s",
+        "--claim",
+        "omega=1.62",
+        "--claim",
+        "omega=0.410",
+    ]);
+    // J = 480/2437 = 0.19696 N s; omega = J (a)/I = 1000/2437 = 0.41034 rad/s.
+    let (code, out, _) = check(&args);
+    assert_eq!(code, 1, "{out}");
+    let rows: Vec<&str> = out.lines().skip(1).collect();
+    assert!(
+        rows[0].contains("-49 %") && rows[0].ends_with("DISAGREES"),
+        "{out}"
+    );
+    assert!(
+        rows[1].contains("-0.49 %") && rows[1].ends_with("DISAGREES (last digit off by one)"),
+        "{out}"
+    );
+    assert!(
+        rows[2].contains("×3.95") && rows[2].ends_with("DISAGREES"),
+        "{out}"
+    );
+    assert!(
+        rows[3].contains("-0.083 %") && rows[3].ends_with("agrees"),
+        "{out}"
+    );
+    assert!(!out.contains("e2%") && !out.contains("e1%"), "{out}");
+}
+
+/// Regression (NEWCOMER #26): `check --json` gave 6-digit decimals, `rel_error` as a string
+/// with "%", and the counterexample only as free text in `notes`.
+#[test]
+fn check_json_is_machine_readable() {
+    let (_, out, _) = check(&[
+        "--m",
+        "0.100",
+        "--M",
+        "1.50",
+        "--length",
+        "2.00",
+        "--v0",
+        "12.0",
+        "--inelastic",
+        "--claim",
+        "omega=0.947",
+        "--claim",
+        "a_star=sqrt(1/2)",
+        "--json",
+    ]);
+    let j: Value = serde_json::from_str(&out).unwrap();
+    let omega = &j["claims"][0];
+    // omega = 36/19, correctly rounded to 30 significant digits.
+    assert_eq!(omega["decimal"], "1.89473684210526315789473684211");
+    // (0.947 - 36/19)/(36/19) = -0.50019444...
+    let rel = omega["rel_error"].as_f64().expect("a number");
+    assert!((rel + 0.500_194_444_444_444_4).abs() < 1e-15, "{rel}");
+    assert_eq!(omega["rel_error_at_counterexample"], false);
+    // a*^2 = I (M + m)/(m M) = (1/2)(1.6)/(0.15) = 16/3: a* = 4/sqrt(3), to 30 digits
+    // 2.30940107675850305803659512201 (2.309401076758503058036595122007... by Python decimal).
+    assert_eq!(j["claims"][1]["decimal"], "2.30940107675850305803659512201");
+    let (_, out, _) = check(&[
+        "--length",
+        "L",
+        "--a",
+        "L/2",
+        "--claim",
+        "omega=6*m*v0/((M+4*m)*L)",
+        "--json",
+    ]);
+    let j: Value = serde_json::from_str(&out).unwrap();
+    let c = &j["claims"][0];
+    // At M = 3, l = 1, m = 1, v0 = 1: exact 6/7, claimed 3/7: -50 %.
+    assert_eq!(
+        c["counterexample"]["at"],
+        serde_json::json!({"M": "3", "l": "1", "m": "1", "v0": "1"})
+    );
+    assert_eq!(c["counterexample"]["exact"], "6/7");
+    assert_eq!(c["counterexample"]["claimed"], "3/7");
+    assert_eq!(c["rel_error"], -0.5);
+    assert_eq!(c["rel_error_at_counterexample"], true);
+}
+
+/// Regression (NEWCOMER #25): summaries said "1 problems", "1 claims" and "0 of 1 claims
+/// agree"; `check --m 10 g ...` blamed the problem file, and `check --claim omega=1.2`
+/// answered "m: required, but not given" without saying why a number needs a numeric scene.
+#[test]
+fn check_wording_for_one_claim_and_for_stray_arguments() {
+    let (code, out, _) = check(&["--m", "1", "--M", "1", "--claim", "omega=6/5"]);
+    assert_eq!(code, 0);
+    assert!(out.ends_with("\n1 claim, it agrees\n"), "{out}");
+    let (_, out, _) = check(&[
+        "--m", "1", "--M", "1", "--claim", "v=6/5", "--claim", "V=2/5",
+    ]);
+    assert!(
+        out.ends_with("\n1 of 2 claims agrees; 1 disagrees\n"),
+        "{out}"
+    );
+    let file = std::env::temp_dir().join(format!("rodimpact-one-{}.toml", std::process::id()));
+    std::fs::write(
+        &file,
+        "[[problem]]\nid = \"p\"\nsource = \"s\"\n[problem.given]\nm = \"1\"\nM = \"1\"\n[problem.claims]\nomega = \"6/5\"\n",
+    )
+    .unwrap();
+    let (code, out, _) = check(&[file.to_str().unwrap()]);
+    let _ = std::fs::remove_file(&file);
+    assert_eq!(code, 0);
+    assert!(out.ends_with("\n1 problem; 1 claim, it agrees\n"), "{out}");
+    let (code, _, err) = check(&["--m", "10", "g", "--M", "1", "--claim", "v=1"]);
+    assert_eq!(code, 2);
+    assert_eq!(
+        err,
+        "error: check: unexpected argument 'g': a unit goes with its number in one argument (--m \"10 g\" or --m 10g)\n"
+    );
+    let (code, _, err) = check(&["--claim", "omega=1.2"]);
+    assert_eq!(code, 2);
+    assert_eq!(
+        err,
+        "error: m: not given; a numeric claim (omega=1.2) needs a numeric scene: give m and M as numbers (--m, --M), or claim a formula in the scene's symbols\n"
+    );
+}
+
+/// Regression (RELIABILITY F14): scene formulas skipped the physical domain: `--a 2*l`
+/// "agreed" (exit 0) for an impact off the rod, and `--M -m` or `--pivot 2*l` gave UNDECIDED
+/// (exit 1). A scene whose formulas leave no valid sample scene is now bad input (exit 2),
+/// naming the field and the constraint.
+#[test]
+fn scene_formulas_outside_the_domain_are_refused() {
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &[
+                "--a",
+                "2*l",
+                "--claim",
+                "omega=(6*e*m*v0 + 6*m*v0)/(M*l + 13*l*m)",
+            ],
+            "error: a: must lie on the rod, |a| <= l, but a = 2*l is off the rod in every sample scene of the free symbols\n",
+        ),
+        (
+            &["--M", "-m", "--claim", "omega=v0"],
+            "error: M: must be > 0, but M = -m is <= 0 in every sample scene of the free symbols\n",
+        ),
+        (
+            &["--M", "m", "--pivot", "2*l", "--claim", "omega=v0"],
+            "error: pivot: must lie on the rod, |p| <= l, but pivot = 2*l is off the rod in every sample scene of the free symbols\n",
+        ),
+        (
+            &["--e", "1+m/m", "--claim", "omega=v0"],
+            "error: e: 2 is outside the domain of e\n",
+        ),
+        (
+            &["--rod", "rg=2*l", "--claim", "omega=v0"],
+            "error: rod: the radius of gyration must satisfy 0 < r_G <= l, and it does in no sample scene of the free symbols\n",
+        ),
+    ];
+    for (args, expected) in cases {
+        let (code, out, err) = check(args);
+        assert_eq!(code, 2, "{args:?}: {out}{err}");
+        assert_eq!(err, expected, "{args:?}");
+    }
+    // A formula valid on part of the domain is checked there: a = l - 1 is on the rod for l >= 1/2.
+    let (code, out, err) = check(&["--a", "l-1", "--claim", "V_cm=m*v0/(m+M)"]);
+    assert_eq!(code, 0, "{out}{err}");
+}
+
+/// Regression (RELIABILITY F8): each formula was bounded by MAX_WORK but nothing bounded
+/// their sum: 100 claims of about a second each ran 106 s, and 1,000 problems 69 s with
+/// 916 MB. Every formula of a run (scene flags, claims, identity decisions), on the command
+/// line or in a file, is now charged to one budget of 10 x MAX_WORK, refused past it with
+/// exit 2 naming the claim (and the problem); a file's problems are checked one at a time.
+#[test]
+fn a_run_has_one_work_budget() {
+    // (m + 99...9)^12 with a 300-digit constant costs 2.4 million work units: 17 of them pass
+    // the budget of 40 million, while each alone is well within MAX_WORK.
+    let heavy = format!("omega=(m+{})^12", "9".repeat(300));
+    let mut args = vec!["--m", "1", "--M", "1"];
+    for _ in 0..20 {
+        args.extend(["--claim", heavy.as_str()]);
+    }
+    let (code, _, err) = check(&args);
+    assert_eq!(code, 2);
+    assert_eq!(
+        err,
+        "error: claim omega: the claims of this run together cost more than 40000000 work units (limit); check them in smaller runs\n"
+    );
+    let (code, out, _) = check(&args[..8]);
+    assert_eq!(code, 1, "two heavy claims fit: {out}");
+    let problem = |k: usize| {
+        format!(
+            "[[problem]]\nid = \"p{k}\"\nsource = \"s\"\n[problem.given]\nm = \"1\"\nM = \"1\"\n[problem.claims]\n{}\n",
+            heavy.replacen('=', " = \"", 1) + "\""
+        )
+    };
+    let text: String = (1..=20).map(problem).collect();
+    let file = std::env::temp_dir().join(format!("rodimpact-budget-{}.toml", std::process::id()));
+    std::fs::write(&file, text).unwrap();
+    let (code, _, err) = check(&[file.to_str().unwrap()]);
+    let _ = std::fs::remove_file(&file);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains(": problem 'p17': claims.omega: the claims of this run together cost more than 40000000 work units (limit)"),
+        "{err}"
+    );
+}
+
+/// Regression (NEWCOMER #25): `rodimpact slove` lost clap's "a similar subcommand exists" tip
+/// in the one-line rewrite of usage errors.
+#[test]
+fn a_mistyped_subcommand_suggests_the_right_one() {
+    let (code, out, err) = rodimpact(&["slove", "--m", "1"]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("error: unrecognized subcommand 'slove'; tip: ") && err.contains("'solve'"),
+        "{err}"
+    );
+}

@@ -295,3 +295,59 @@ fn backend_interval_encloses_and_pivot_with_a_float_backend_is_refused() {
     assert_eq!(stderr.lines().count(), 1);
     assert!(stderr.starts_with("error: backend:"), "{stderr}");
 }
+
+/// Regression (NEWCOMER #23): the text report said "on the rod when (this I/M)  M <= 2, i.e.
+/// M/m <= 2", printed the verifier's internals (`K  omega = K x/(b^2 + c^2 x^2)`, `b^2  c = 1;
+/// identity in x: checked`) and named the float formula only as "f64/sq".
+#[test]
+fn text_report_speaks_to_students() {
+    let (code, out, _) = rodimpact(&["solve", "--m", "1", "--M", "1"]);
+    assert_eq!(code, 0);
+    let line = |start: &str| {
+        out.lines()
+            .find(|l| l.trim_start().starts_with(start))
+            .unwrap_or_else(|| panic!("no line {start:?} in\n{out}"))
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    assert_eq!(
+        line("a* is on the rod when"),
+        "a* is on the rod when M ≤ 2m (here M = m)"
+    );
+    assert_eq!(line("on the rod"), "on the rod inside: a* < l = 1 m");
+    assert!(!out.contains("b^2") && !out.contains("K x/") && !out.contains("identity in x"));
+    // r_G = l/2: a*^2 = r_G^2 (M + m)/m <= l^2 iff M <= m (l^2 - r_G^2)/r_G^2 = 3m.
+    let (_, out, _) = rodimpact(&["solve", "--m", "2", "--M", "3", "--rod", "rg=1/2"]);
+    assert!(out.contains("M ≤ 3m (here M = (3/2)m)"), "{out}");
+    let (_, out, _) = rodimpact(&["solve", "--m", "1", "--M", "1", "--rod", "dumbbell"]);
+    assert!(
+        out.contains("never: with r_G = l, a* lies beyond the end for every M"),
+        "{out}"
+    );
+    let (_, out, _) = rodimpact(&["solve", "--backend", "f64", "--m", "4/7", "--M", "1"]);
+    assert!(
+        out.contains("Backend f64: IEEE binary64 with the stable formula \"sq\" (the closed form with exact power-of-two rescaling"),
+        "{out}"
+    );
+}
+
+/// Regression (NEWCOMER #26): `solve --m 1e400` printed the 401-digit integer in the scene
+/// line (and fractions of hundreds of digits in the table); the text now shows compact forms
+/// and the JSON keeps every exact digit.
+#[test]
+fn huge_numbers_are_compact_in_text_and_exact_in_json() {
+    let (code, out, _) = rodimpact(&["solve", "--m", "1e400", "--M", "1"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("  m = 1e400 kg, M = 1 kg,"), "{out}");
+    assert!(out.lines().all(|l| l.chars().count() < 120), "{out}");
+    // v = (m - M/4)/(m + M/4) for an elastic end hit: just below 1, shown as a decimal.
+    assert!(out.contains("≈ 1.00000000000000 m/s"), "{out}");
+    let j = solve_json(&["--m", "1e400", "--M", "1"]);
+    assert_eq!(j["scene"]["m"], format!("1{}", "0".repeat(400)));
+    assert_eq!(
+        j["v"]["exact"],
+        // (m - M/4)/(m + M/4) = (4e400 - 1)/(4e400 + 1)
+        format!("3{}/4{}1", "9".repeat(400), "0".repeat(399))
+    );
+}

@@ -2,10 +2,11 @@
 
 use super::{Failure, SceneFlags, print_out};
 use clap::Args;
+use rodimpact::textbook::expr::Budget;
 use rodimpact::textbook::problems::{
     MAX_CLAIMS, MAX_FILE_BYTES, check_problems, parse_problems, problems_json, problems_text,
 };
-use rodimpact::textbook::{Claim, check_scene};
+use rodimpact::textbook::{Claim, check_scene_within};
 use rodimpact::{Error, ErrorKind};
 use std::io::Read;
 use std::path::PathBuf;
@@ -19,7 +20,9 @@ pub(crate) struct CheckArgs {
     pub(crate) scene: SceneFlags,
     /// A claimed answer NAME=VALUE: NAME one of v, V, V_cm, omega, a_star, omega_max,
     /// energy_before, energy_after, energy_lost, pivot_impulse, impulse; VALUE a number as
-    /// printed (with an optional unit), a fraction, or a formula in m M l L a d v0 e p.
+    /// printed (with an optional unit), a fraction, or a formula in m M l L a d v0 e p I r.
+    /// With formulas, a scene quantity not given is a free symbol, except e (1, elastic) and
+    /// the rod (uniform), as in solve.
     #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true)]
     pub(crate) claim: Vec<String>,
     /// Significant figures to use for every printed claim, instead of the inferred ones.
@@ -60,10 +63,7 @@ fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
     .iter()
     .any(|f| f.is_some());
     if !args.claim.is_empty() || scene_given {
-        return Err(Error::new(
-            "check",
-            ErrorKind::Conflict("give either a problem file or scene flags with --claim".into()),
-        ));
+        return Err(stray_argument(path));
     }
     let text = read_bounded(&label, path)?;
     let problems = parse_problems(&label, &text)?;
@@ -74,6 +74,33 @@ fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
         print_out(&problems_text(&reports));
     }
     Ok(reports.iter().all(|r| r.report.all_agree()))
+}
+
+/// The error for a positional argument next to scene flags or claims: a problem file cannot be
+/// combined with them, and a word that is not a file is most often a unit separated from its
+/// number (`--m 10 g`).
+fn stray_argument(path: &std::path::Path) -> Error {
+    let word = path.display().to_string();
+    let shown: String = word.chars().take(40).collect();
+    if path.is_file() {
+        return Error::new(
+            "check",
+            ErrorKind::Conflict(format!(
+                "give either a problem file ('{shown}') or scene flags with --claim, not both"
+            )),
+        );
+    }
+    let unit = rodimpact::units::find_unit(word.trim()).is_some();
+    let why = if unit {
+        format!(
+            "unexpected argument '{shown}': a unit goes with its number in one argument (--m \"10 {shown}\" or --m 10{shown})"
+        )
+    } else {
+        format!(
+            "unexpected argument '{shown}': not a problem file; with scene flags, every value follows its flag (--m 2), and a value with spaces is quoted"
+        )
+    };
+    Error::new("check", ErrorKind::Invalid(why))
 }
 
 /// The file's text, read no further than the size limit (a huge or endless file is refused
@@ -110,12 +137,13 @@ fn check_flags(args: &CheckArgs) -> Result<bool, Error> {
             format!("more than {MAX_CLAIMS} claims (limit)"),
         ));
     }
+    let mut budget = Budget::run();
     let claims = args
         .claim
         .iter()
-        .map(|c| Claim::parse(c))
+        .map(|c| Claim::parse_within(c, &mut budget))
         .collect::<Result<Vec<_>, _>>()?;
-    let report = check_scene(&args.scene.input(), &claims, args.sig)?;
+    let report = check_scene_within(&args.scene.input(), &claims, args.sig, &mut budget)?;
     if args.json {
         print_out(&format!("{}\n", pretty(&report.to_json())));
     } else {

@@ -15,10 +15,12 @@ use rodimpact::Error;
 use rodimpact::scene::{SceneInput, parse_field};
 
 /// Scene flags shared by the commands that take one scene. Numbers are exact: "2", "0.25",
-/// "3/7", "1.5e-3", "75/9.8".
+/// "3/7", "1.5e-3", "75/9.8", and may carry a unit ("100 g", "120cm", "36 km/h"), converted
+/// exactly to SI.
 #[derive(Args, Debug)]
 pub(crate) struct SceneFlags {
-    /// Projectile mass m (> 0).
+    /// Projectile mass m (> 0); numbers may carry a unit (kg, g; m, cm, mm; m/s, cm/s, km/h),
+    /// read exactly in SI.
     #[arg(long = "m", value_name = "Q", allow_hyphen_values = true)]
     pub(crate) m: Option<String>,
     /// Rod mass M (> 0).

@@ -21,6 +21,20 @@ pub(crate) enum BackendArg {
 }
 
 impl BackendArg {
+    /// What the text report says the backend is, in words.
+    fn describe(self) -> &'static str {
+        match self {
+            BackendArg::Exact => "exact rationals",
+            BackendArg::F64 => {
+                "f64: IEEE binary64 with the stable formula \"sq\" (the closed form with exact power-of-two rescaling: no intermediate overflow or underflow)"
+            }
+            BackendArg::F32 => {
+                "f32: IEEE binary32 with the stable formula \"sq\" (the closed form with exact power-of-two rescaling: no intermediate overflow or underflow)"
+            }
+            BackendArg::Interval => "interval: f64 intervals rounded outward",
+        }
+    }
+
     fn backend(self) -> Backend {
         match self {
             BackendArg::Exact => Backend::Exact,
@@ -69,8 +83,8 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
         let mut text = solution.to_text(digits);
         if let Some(floats) = floats {
             text.push_str(&format!(
-                "\nBackend {} against the exact values\n",
-                backend.name()
+                "\nBackend {}\n  against the exact values: rel_error = |float - exact|/|exact|, cond = condition number,\n  reliable = cond * unit roundoff <= 1e-3\n",
+                args.backend.describe()
             ));
             for (name, value) in floats {
                 let fields: Vec<String> = value

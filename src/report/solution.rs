@@ -122,14 +122,16 @@ impl Solution {
         Value::Object(out)
     }
 
-    /// The aligned, human-readable report of `solve` (decimals to `digits` significant digits).
+    /// The aligned, human-readable report of `solve` (decimals to `digits` significant digits),
+    /// every value with its SI unit; a number too long to read is shown as a decimal (the
+    /// exact value is in the JSON).
     ///
     /// # Examples
     /// ```
     /// use rodimpact::{report::Solution, scene::Scene, field::q};
     /// let text = Solution::of(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap()).to_text(6);
-    /// assert!(text.contains("omega"));
-    /// assert!(text.contains("6/5"));
+    /// assert!(text.contains("6/5 rad/s"));
+    /// assert!(text.contains("a* is on the rod when") && text.contains("M ≤ 2m (here M = m)"));
     /// ```
     pub fn to_text(&self, digits: usize) -> String {
         let s = &self.scene;
@@ -137,127 +139,161 @@ impl Solution {
         let mut t = Table::default();
         let mut out = String::new();
         out.push_str(&format!("Scene: {}\n", describe(s)));
+        let length = |x: &Q| format!("{} m", number::compact(x));
         out.push_str(&format!(
-            "  m = {}, M = {}, l = {} (rod length {}), a = {}, v0 = {}\n\n",
-            s.m(),
-            s.rod_mass(),
-            s.half_length(),
-            s.half_length() * Q::from_integer(2.into()),
-            s.a(),
-            s.v0()
+            "  m = {} kg, M = {} kg, l = {} (rod length {}), a = {}, v0 = {} m/s\n",
+            number::compact(s.m()),
+            number::compact(s.rod_mass()),
+            length(s.half_length()),
+            length(&(s.half_length() * Q::from_integer(2.into()))),
+            length(s.a()),
+            number::compact(s.v0())
         ));
-        let dec = |x: &Q| number::decimal(x, digits);
+        out.push_str("  (SI units; a number given without a unit is read in SI)\n\n");
+        let value = |x: &Q, unit: &str| rational_cells(x, unit, digits);
         t.section("After the impact");
-        t.row(
-            "v",
-            "projectile velocity",
-            after.v.to_string(),
-            dec(&after.v),
-        );
-        t.row(
-            "V",
-            "rod centre velocity",
-            after.rod_v.to_string(),
-            dec(&after.rod_v),
-        );
+        t.row("v", "projectile velocity", value(&after.v, "m/s"));
+        t.row("V", "rod centre velocity", value(&after.rod_v, "m/s"));
         t.row(
             "omega",
             "rod angular velocity",
-            after.omega.to_string(),
-            dec(&after.omega),
+            value(&after.omega, "rad/s"),
         );
         let impulse = self.outcome.impulse(&s.params::<Q>());
         t.row(
             "J",
             "impulse on the rod, m (v0 - v)",
-            impulse.to_string(),
-            dec(&impulse),
+            value(&impulse, "N s"),
         );
         if let Some(p) = &self.outcome.pivot_impulse {
-            t.row(
-                "P",
-                "impulse of the pivot on the rod",
-                p.to_string(),
-                dec(p),
-            );
+            t.row("P", "impulse of the pivot on the rod", value(p, "N s"));
         }
         t.section("Kinetic energy");
         let e = &self.outcome.energy;
-        t.row("K0", "before", e.before.to_string(), dec(&e.before));
-        t.row("K1", "after", e.after.to_string(), dec(&e.after));
-        t.row("dK", "lost", e.lost.to_string(), dec(&e.lost));
+        t.row("K0", "before", value(&e.before, "J"));
+        t.row("K1", "after", value(&e.after, "J"));
+        t.row("dK", "lost", value(&e.lost, "J"));
         t.section("Conservation residuals, after - before (0 = the law holds exactly)");
         for (name, r) in self.outcome.residuals.iter() {
-            let label = match (name, s.support()) {
-                ("angular_momentum", Support::Free) => "angular momentum about the rod's centre",
-                ("angular_momentum", Support::Pivot(_)) => "angular momentum about the pivot",
-                ("linear_momentum", _) => "linear momentum",
-                _ => "kinetic energy (elastic)",
+            let (label, unit) = match (name, s.support()) {
+                ("angular_momentum", Support::Free) => {
+                    ("angular momentum about the rod's centre", "kg m^2/s")
+                }
+                ("angular_momentum", Support::Pivot(_)) => {
+                    ("angular momentum about the pivot", "kg m^2/s")
+                }
+                ("linear_momentum", _) => ("linear momentum", "kg m/s"),
+                _ => ("kinetic energy (elastic)", "J"),
             };
-            t.row("", label, r.to_string(), String::new());
+            t.row("", label, value(r, unit));
         }
         let o = &self.optimum;
         let (symbol, formula) = match s.support() {
             Support::Free => ("a*^2", "I (M + m)/(m M)"),
             Support::Pivot(_) => ("d*^2", "I_p/m, from the pivot"),
         };
-        t.section("Fastest spin");
-        t.row(symbol, formula, o.squared.to_string(), dec(&o.squared));
-        t.row(
-            &symbol[..2],
-            "optimal distance",
-            number::surd(&o.squared),
-            number::decimal_sqrt(&o.squared, digits),
-        );
         let star = &symbol[..2];
+        t.section("Fastest spin");
+        t.row(symbol, formula, value(&o.squared, "m^2"));
+        t.row(
+            star,
+            "optimal distance",
+            cells(
+                number::surd(&o.squared),
+                number::decimal_sqrt(&o.squared, digits),
+                "m",
+            ),
+        );
+        let end = match s.support() {
+            Support::Free => "l",
+            Support::Pivot(_) => "the pivot-to-end distance",
+        };
+        let arm = length(&o.arm);
         let place = match o.placement {
-            Placement::Inside => format!("inside: {star} < {}", o.arm),
-            Placement::AtEnd => format!("exactly at the end: {star} = {}", o.arm),
-            Placement::Beyond => format!("beyond the end: {star} > {}", o.arm),
+            Placement::Inside => format!("inside: {star} < {end} = {arm}"),
+            Placement::AtEnd => format!("exactly at the end: {star} = {end} = {arm}"),
+            Placement::Beyond => format!("beyond the end: {star} > {end} = {arm}"),
         };
-        t.row("", "on the rod", place, String::new());
-        let threshold = match &o.threshold_mass {
-            Some(t) => format!("M <= {t}, i.e. M/m <= {}", t / s.m()),
-            None => "never (dumbbell: a* > l for every M)".into(),
-        };
-        t.row("", "on the rod when (this I/M)", threshold, String::new());
+        t.row("", "on the rod", plain(place));
+        t.row(
+            "",
+            &format!("{star} is on the rod when"),
+            plain(on_the_rod_when(s, o.threshold_mass.as_ref())),
+        );
         let at = match o.argmax {
-            Argmax::AStar => "max |omega|, reached at the optimum",
-            Argmax::End => "max |omega|, reached at the end",
+            Argmax::AStar => format!("max |omega|, reached at {star}"),
+            Argmax::End => "max |omega|, reached at the end".to_string(),
         };
-        t.row("", at, o.omega_max.to_string(), o.omega_max.decimal(digits));
+        t.row(
+            "",
+            &at,
+            cells(
+                o.omega_max.to_string(),
+                o.omega_max.decimal(digits),
+                "rad/s",
+            ),
+        );
         let ratio = o.end_to_max();
         t.row(
             "",
             "omega(end)/omega_max",
-            ratio.to_string(),
-            ratio.decimal(digits),
-        );
-        let form = PaperForm::of(s);
-        let x = match s.support() {
-            Support::Free => "x = a",
-            Support::Pivot(_) => "x = a - p",
-        };
-        t.row(
-            "K",
-            &format!("omega = K x/(b^2 + c^2 x^2), {x}"),
-            form.k.to_string(),
-            String::new(),
-        );
-        let verdict = if form.verify(s) {
-            "identity in x: checked"
-        } else {
-            "identity in x: FAILS"
-        };
-        t.row(
-            "b^2",
-            &format!("c = {}; {verdict}", form.c),
-            form.b_squared.to_string(),
-            String::new(),
+            cells(ratio.to_string(), ratio.decimal(digits), ""),
         );
         out.push_str(&t.render());
         out
     }
+}
+
+/// "M ≤ 2m (here M = m)": the rod masses for which a* lies on the rod, in the scene's terms.
+fn on_the_rod_when(s: &Scene, threshold: Option<&Q>) -> String {
+    let Some(t) = threshold else {
+        return "never: with r_G = l, a* lies beyond the end for every M".into();
+    };
+    let times_m = |k: &Q| {
+        if k.is_one() {
+            "m".to_string()
+        } else if k.is_integer() {
+            format!("{}m", number::compact(k))
+        } else {
+            format!("({})m", number::compact(k))
+        }
+    };
+    format!(
+        "M ≤ {} (here M = {})",
+        times_m(&(t / s.m())),
+        times_m(&(s.rod_mass() / s.m()))
+    )
+}
+
+/// The exact and decimal cells of a rational with its unit.
+fn rational_cells(x: &Q, unit: &str, digits: usize) -> [String; 2] {
+    let decimal = number::decimal(x, digits);
+    match number::compact(x) {
+        c if c.starts_with('≈') => cells(x.to_string(), decimal, unit),
+        c => cells(c, decimal, unit),
+    }
+}
+
+/// The exact and decimal cells with the unit after the exact value; an exact value too long
+/// to read becomes `≈ decimal`.
+fn cells(exact: String, decimal: String, unit: &str) -> [String; 2] {
+    let unit = if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    if exact.chars().count() > number::COMPACT_CHARS {
+        [format!("≈ {decimal}{unit}"), String::new()]
+    } else if exact == decimal {
+        [format!("{exact}{unit}"), String::new()]
+    } else {
+        [format!("{exact}{unit}"), decimal]
+    }
+}
+
+/// A text cell with no decimal.
+fn plain(text: String) -> [String; 2] {
+    [text, String::new()]
 }
 
 /// The `{"exact": "...", "decimal": "..."}` form of an element of Q(sqrt d).
@@ -292,12 +328,15 @@ fn scene_json(s: &Scene) -> Value {
 fn describe(s: &Scene) -> String {
     let support = match s.support() {
         Support::Free => "free rod on a frictionless table".to_string(),
-        Support::Pivot(p) => format!("rod on a fixed pivot at p = {p}"),
+        Support::Pivot(p) => format!("rod on a fixed pivot at p = {} m", number::compact(p)),
     };
     let rod = match s.rod() {
         RodInertia::Uniform => "uniform rod, I = M l^2/3".to_string(),
         RodInertia::Dumbbell => "dumbbell, I = M l^2".to_string(),
-        RodInertia::Gyration(r) => format!("radius of gyration r_G = {r}, I = M r_G^2"),
+        RodInertia::Gyration(r) => format!(
+            "radius of gyration r_G = {} m, I = M r_G^2",
+            number::compact(r)
+        ),
         RodInertia::Moment(_) => "given moment of inertia".to_string(),
     };
     let law = if s.e().is_one() {
@@ -307,7 +346,10 @@ fn describe(s: &Scene) -> String {
     } else {
         format!("restitution e = {}", s.e())
     };
-    format!("{support}; {rod} = {}; {law}", s.inertia())
+    format!(
+        "{support}; {rod} = {} kg m^2; {law}",
+        number::compact(&s.inertia())
+    )
 }
 
 /// A small aligned table of (symbol, meaning, exact, decimal) rows under section headings.
@@ -322,7 +364,7 @@ impl Table {
         self.headings.push((self.lines.len(), title.to_string()));
     }
 
-    fn row(&mut self, symbol: &str, meaning: &str, exact: String, decimal: String) {
+    fn row(&mut self, symbol: &str, meaning: &str, [exact, decimal]: [String; 2]) {
         self.lines
             .push([symbol.to_string(), meaning.to_string(), exact, decimal]);
     }
@@ -346,7 +388,7 @@ impl Table {
                 out.push('\n');
             }
             let [sym, meaning, exact, decimal] = line;
-            let approx = if decimal.is_empty() || decimal == exact {
+            let approx = if decimal.is_empty() {
                 String::new()
             } else {
                 format!("  ~ {decimal}")

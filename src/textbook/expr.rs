@@ -2,14 +2,15 @@
 //! and `r` rational functions ([`RatFn`]).
 //!
 //! Grammar: `+ - * /`, `^` with an integer exponent, parentheses, `sqrt(...)`, numbers (as
-//! [`crate::number::parse`] reads them) and the symbols `m M l L a d v0 e p`. There is no
+//! [`crate::number::parse`] reads them) and the symbols `m M l L a d v0 e p I r` (`I` the rod's moment of inertia
+//! about its centre, `r` its radius of gyration). There is no
 //! implicit multiplication (`2m` is an error; write `2*m`). Inputs longer than [`MAX_LEN`]
 //! characters or nested deeper than [`MAX_DEPTH`] are refused before any deep recursion, and
 //! intermediate results are capped ([`MAX_DEGREE`], [`MAX_TERMS`], [`MAX_COEFF_BITS`]), and so is
 //! the total work of the evaluation ([`MAX_WORK`]), so no input runs for long.
 
 use crate::error::{Error, ErrorKind};
-use crate::field::{Field, Q, RatFn};
+use crate::field::{Field, Poly, Q, RatFn};
 use crate::number;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
@@ -32,9 +33,95 @@ pub const MAX_COEFF_BITS: u64 = 66_440;
 /// coefficient of its polynomials. A count, not a clock, so a refusal does not depend on the
 /// machine; textbook formulas cost a few hundred units.
 pub const MAX_WORK: u64 = 4_000_000;
+/// The most work all the expressions and identity decisions of one run may cost together
+/// (every claim on the command line, or every problem of a file): ten expressions at
+/// [`MAX_WORK`], about ten seconds at worst.
+pub const MAX_RUN_WORK: u64 = 10 * MAX_WORK;
+
+/// The work left for one run, charged by every expression parsed and every identity decided
+/// (see [`MAX_RUN_WORK`]); the field being worked on when it runs out is named in the error.
+///
+/// # Examples
+/// ```
+/// use rodimpact::textbook::expr::{parse_within, Budget, MAX_RUN_WORK};
+/// let mut budget = Budget::new(MAX_RUN_WORK);
+/// parse_within("claim v", "m/(m+M)", &mut budget).unwrap();
+/// assert!(budget.spent() > 0);
+/// let mut tiny = Budget::new(1);
+/// let err = parse_within("claim v", "m/(m+M)", &mut tiny).unwrap_err().to_string();
+/// assert!(err.starts_with("claim v: the claims of this run together cost more than"), "{err}");
+/// ```
+#[derive(Debug, Clone)]
+pub struct Budget {
+    spent: u64,
+    limit: u64,
+}
+
+impl Budget {
+    /// A budget of `limit` work units.
+    ///
+    /// # Examples
+    /// ```
+    /// assert_eq!(rodimpact::textbook::expr::Budget::new(5).spent(), 0);
+    /// ```
+    pub fn new(limit: u64) -> Budget {
+        Budget { spent: 0, limit }
+    }
+
+    /// The budget of one run: [`MAX_RUN_WORK`].
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::expr::Budget;
+    /// assert_eq!(Budget::run().spent(), 0);
+    /// ```
+    pub fn run() -> Budget {
+        Budget::new(MAX_RUN_WORK)
+    }
+
+    /// The work charged so far.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::expr::Budget;
+    /// let mut b = Budget::new(10);
+    /// b.charge("claim v", 4).unwrap();
+    /// assert_eq!(b.spent(), 4);
+    /// ```
+    pub fn spent(&self) -> u64 {
+        self.spent
+    }
+
+    /// Charges `units` of work done on `field`.
+    ///
+    /// # Errors
+    /// `field: the claims of this run together cost more than ... (limit)` once the total
+    /// passes the limit.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::expr::Budget;
+    /// let mut b = Budget::new(10);
+    /// assert!(b.charge("claim v", 10).is_ok());
+    /// assert!(b.charge("claim V", 1).unwrap_err().to_string().starts_with("claim V: "));
+    /// ```
+    pub fn charge(&mut self, field: &str, units: u64) -> Result<(), Error> {
+        self.spent = self.spent.saturating_add(units);
+        if self.spent > self.limit {
+            return Err(Error::out_of_range(
+                field,
+                format!(
+                    "the claims of this run together cost more than {} work units (limit); check them in smaller runs",
+                    self.limit
+                ),
+            ));
+        }
+        Ok(())
+    }
+}
 
 /// The symbols an expression may use.
-pub const SYMBOLS: [&str; 9] = ["m", "M", "l", "L", "a", "d", "v0", "e", "p"];
+pub const SYMBOLS: [&str; 11] = ["m", "M", "l", "L", "a", "d", "v0", "e", "p", "I", "r"];
 
 /// An exact value `coeff * sqrt(radicand)`; rational when `radicand` is 1.
 ///
@@ -147,6 +234,21 @@ impl std::fmt::Display for Radical {
 /// assert!(parse("omega", &"(".repeat(100_000)).is_err());
 /// ```
 pub fn parse(field: &str, text: &str) -> Result<Radical, Error> {
+    parse_within(field, text, &mut Budget::new(MAX_WORK))
+}
+
+/// [`parse`], charging the work to a run's `budget` as well as to the expression's own limit.
+///
+/// # Errors
+/// Those of [`parse`], and an exhausted budget.
+///
+/// # Examples
+/// ```
+/// use rodimpact::textbook::expr::{parse_within, Budget};
+/// let mut budget = Budget::run();
+/// assert_eq!(parse_within("x", "2*m", &mut budget).unwrap().to_string(), "2*m");
+/// ```
+pub fn parse_within(field: &str, text: &str, budget: &mut Budget) -> Result<Radical, Error> {
     if text.chars().count() > MAX_LEN {
         return Err(invalid(
             field,
@@ -159,6 +261,7 @@ pub fn parse(field: &str, text: &str) -> Result<Radical, Error> {
         pos: 0,
         depth: 0,
         work: 0,
+        budget,
     };
     let value = p.expr()?;
     p.skip_space();
@@ -174,6 +277,8 @@ fn invalid(field: &str, why: String) -> Error {
 
 struct Parser<'a> {
     field: &'a str,
+    /// The run's budget, charged alongside [`Parser::work`].
+    budget: &'a mut Budget,
     chars: Vec<char>,
     pos: usize,
     depth: usize,
@@ -385,7 +490,7 @@ impl Parser<'_> {
             Err(invalid(
                 self.field,
                 format!(
-                    "unknown symbol '{}' at character {} (symbols: m M l L a d v0 e p, function sqrt)",
+                    "unknown symbol '{}' at character {} (symbols: m M l L a d v0 e p I r, function sqrt)",
                     name.chars().take(20).collect::<String>(),
                     start + 1
                 ),
@@ -395,14 +500,15 @@ impl Parser<'_> {
 
     /// Charges an operation on `x` and `y` against [`MAX_WORK`] before it is carried out.
     fn charge(&mut self, x: &Radical, y: &Radical) -> Result<(), Error> {
-        self.work = self.work.saturating_add(size(x).saturating_mul(size(y)));
+        let units = pair_cost(x, y);
+        self.work = self.work.saturating_add(units);
         if self.work > MAX_WORK {
             return Err(invalid(
                 self.field,
                 format!("expression too costly to evaluate (work beyond {MAX_WORK} units, limit)"),
             ));
         }
-        Ok(())
+        self.budget.charge(self.field, units)
     }
 
     fn checked(&self, value: Result<Radical, String>) -> Result<Radical, Error> {
@@ -435,10 +541,19 @@ impl Parser<'_> {
     }
 }
 
-/// The size of a value for [`MAX_WORK`]: the 64-bit words of every coefficient of its four
-/// polynomials.
-fn size(x: &Radical) -> u64 {
-    let words = |c: &Q| c.numer().bits() / 64 + c.denom().bits() / 64 + 2;
+/// The work of combining `x` and `y` term by term: every pair of coefficients of `w_i` and
+/// `w_j` words costs `(w_i + w_j)^2` (a product, then a reduction by GCD, quadratic in the
+/// size of the result), summed without enumerating the pairs.
+fn pair_cost(x: &Radical, y: &Radical) -> u64 {
+    let (tx, s1x, s2x) = moments(x);
+    let (ty, s1y, s2y) = moments(y);
+    tx.saturating_mul(s2y)
+        .saturating_add(s1x.saturating_mul(s1y).saturating_mul(2))
+        .saturating_add(ty.saturating_mul(s2x))
+}
+
+/// (terms, sum of words, sum of squared words) over the four polynomials of `x`.
+fn moments(x: &Radical) -> (u64, u64, u64) {
     [
         x.coeff.num(),
         x.coeff.den(),
@@ -447,8 +562,47 @@ fn size(x: &Radical) -> u64 {
     ]
     .iter()
     .flat_map(|p| p.terms())
-    .map(|(_, c)| words(c))
-    .sum()
+    .map(|(_, c)| c.numer().bits() / 64 + c.denom().bits() / 64 + 2)
+    .fold((0, 0, 0), |(t, s1, s2), w| {
+        (t + 1, s1.saturating_add(w), s2.saturating_add(w * w))
+    })
+}
+
+/// The size of a value for [`MAX_WORK`]: the 64-bit words of every coefficient of its four
+/// polynomials.
+///
+/// # Examples
+/// ```
+/// use rodimpact::textbook::expr::{parse, size};
+/// assert_eq!(size(&parse("x", "m").unwrap()), 8); // m/1 and 1/1: two words a coefficient
+/// ```
+pub fn size(x: &Radical) -> u64 {
+    size_of(&x.coeff).saturating_add(size_of(&x.radicand))
+}
+
+/// The size of a rational function: the 64-bit words of every coefficient of its numerator
+/// and denominator.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{field::RatFn, textbook::expr::size_of};
+/// assert_eq!(size_of(&RatFn::symbol("m")), 4);
+/// ```
+pub fn size_of(f: &RatFn) -> u64 {
+    words(f.num()).saturating_add(words(f.den()))
+}
+
+/// The 64-bit words of every coefficient of a polynomial (two at least for each).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{field::RatFn, textbook::expr::words};
+/// assert_eq!(words(RatFn::symbol("m").num()), 2);
+/// ```
+pub fn words(p: &Poly) -> u64 {
+    p.terms()
+        .map(|(_, c)| c.numer().bits() / 64 + c.denom().bits() / 64 + 2)
+        .sum()
 }
 
 fn neg(x: Radical) -> Radical {

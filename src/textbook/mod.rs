@@ -33,7 +33,7 @@ use crate::field::{Field, QSqrt};
 use crate::optimum::optimum;
 use crate::scene::{Params, SceneInput};
 use crate::solve::{Outcome, solve};
-use expr::Radical;
+use expr::{Budget, Radical};
 use units::{Dimension, Measured};
 pub use verdict::{Decision, Report, Verdict};
 
@@ -224,6 +224,22 @@ impl Claim {
     /// assert_eq!(Claim::parse("v").unwrap_err().to_string(), "claim: expected NAME=VALUE, got 'v'");
     /// ```
     pub fn parse(spec: &str) -> Result<Claim, Error> {
+        Claim::parse_within(spec, &mut Budget::new(expr::MAX_WORK))
+    }
+
+    /// [`Claim::parse`], charging a formula's work to a run's `budget`.
+    ///
+    /// # Errors
+    /// Those of [`Claim::parse`], and an exhausted budget.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::{Claim, expr::Budget};
+    /// let mut budget = Budget::run();
+    /// assert!(Claim::parse_within("v=m/(m+M)", &mut budget).unwrap().is_symbolic());
+    /// assert!(budget.spent() > 0);
+    /// ```
+    pub fn parse_within(spec: &str, budget: &mut Budget) -> Result<Claim, Error> {
         let Some((name, value)) = spec.split_once('=') else {
             return Err(Error::new(
                 "claim",
@@ -233,7 +249,7 @@ impl Claim {
                 )),
             ));
         };
-        Claim::new(name.trim(), value)
+        Claim::new_within(name.trim(), value, budget)
     }
 
     /// A claim from its name and value text.
@@ -250,6 +266,20 @@ impl Claim {
     ///     "claim V: unit 'J' is an energy, expected a speed");
     /// ```
     pub fn new(name: &str, text: &str) -> Result<Claim, Error> {
+        Claim::new_within(name, text, &mut Budget::new(expr::MAX_WORK))
+    }
+
+    /// [`Claim::new`], charging a formula's work to a run's `budget`.
+    ///
+    /// # Errors
+    /// Those of [`Claim::new`], and an exhausted budget.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::{Claim, expr::Budget};
+    /// assert!(Claim::new_within("V", "2*m", &mut Budget::run()).is_ok());
+    /// ```
+    pub fn new_within(name: &str, text: &str, budget: &mut Budget) -> Result<Claim, Error> {
         let quantity = Quantity::parse(name).ok_or_else(|| {
             Error::new(
                 "claim",
@@ -261,7 +291,7 @@ impl Claim {
             )
         })?;
         let field = format!("claim {name}");
-        let value = read_value(&field, text, quantity.dimension())?;
+        let value = read_value(&field, text, quantity.dimension(), budget)?;
         Ok(Claim {
             quantity,
             text: text.trim().to_string(),
@@ -282,11 +312,17 @@ impl Claim {
     }
 }
 
-/// A printed number with an optional unit, or else a formula.
-fn read_value(field: &str, text: &str, dimension: Dimension) -> Result<ClaimValue, Error> {
+/// A printed number with an optional unit, or else a formula (charged to `budget`); when
+/// neither reads, the error of the form the text looks like.
+pub(crate) fn read_value(
+    field: &str,
+    text: &str,
+    dimension: Dimension,
+    budget: &mut Budget,
+) -> Result<ClaimValue, Error> {
     match Measured::parse(field, text, dimension) {
         Ok(m) => Ok(ClaimValue::Printed(m)),
-        Err(numeric) => match expr::parse(field, text) {
+        Err(numeric) => match expr::parse_within(field, text, budget) {
             Ok(r) => Ok(ClaimValue::Formula(r)),
             Err(formula) => {
                 let looks_formula = text.trim_start().starts_with(|c: char| c.is_alphabetic())
@@ -306,8 +342,72 @@ pub enum Exact {
     Surd(QSqrt),
 }
 
-/// Checks claims about one scene given as typed (numbers may carry units; any symbolic flag or
-/// claim makes the whole check symbolic). `sig` overrides the claims' significant figures.
+impl Exact {
+    /// `c * sqrt(r)` (`r >= 0`), rational when the root is.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, textbook::Exact};
+    /// assert_eq!(Exact::radical(q(2, 1), q(9, 4)), Exact::Rational(q(3, 1)));
+    /// assert!(matches!(Exact::radical(q(1, 1), q(2, 1)), Exact::Surd(_)));
+    /// ```
+    pub fn radical(c: crate::field::Q, r: crate::field::Q) -> Exact {
+        use crate::field::TrySqrt;
+        match r.try_sqrt() {
+            Some(root) => Exact::Rational(c * root),
+            None => Exact::Surd(QSqrt::new(crate::field::Q::default(), c, r)),
+        }
+    }
+
+    /// Correctly rounded to `digits` significant digits.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, textbook::Exact};
+    /// assert_eq!(Exact::Rational(q(36, 19)).decimal(6), "1.89474");
+    /// ```
+    pub fn decimal(&self, digits: usize) -> String {
+        match self {
+            Exact::Rational(x) => crate::number::decimal(x, digits),
+            Exact::Surd(s) => s.decimal(digits),
+        }
+    }
+
+    /// For a text report: the exact form, or a decimal when the fraction is very long
+    /// ([`crate::number::compact`]).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, textbook::Exact};
+    /// assert_eq!(Exact::Rational(q(36, 19)).compact(), "36/19");
+    /// ```
+    pub fn compact(&self) -> String {
+        match self {
+            Exact::Rational(x) => crate::number::compact(x),
+            Exact::Surd(s) => {
+                let text = s.to_string();
+                if text.chars().count() <= crate::number::COMPACT_CHARS {
+                    text
+                } else {
+                    format!("≈ {}", s.decimal(6))
+                }
+            }
+        }
+    }
+}
+
+impl std::fmt::Display for Exact {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Exact::Rational(x) => write!(f, "{x}"),
+            Exact::Surd(s) => write!(f, "{s}"),
+        }
+    }
+}
+
+/// Checks claims about one scene given as typed (numbers may carry units; any formula in a
+/// scene flag or a claim makes the whole check symbolic). `sig` overrides the claims'
+/// significant figures.
 ///
 /// # Errors
 /// Bad scene or claim input, naming the field.
@@ -317,21 +417,44 @@ pub enum Exact {
 /// use rodimpact::{scene::SceneInput, textbook::{check_scene, Claim}};
 /// let s = SceneInput { m: Some("1".into()), rod_mass: Some("1".into()), ..Default::default() };
 /// let r = check_scene(&s, &[Claim::parse("omega=6/5").unwrap()], None).unwrap();
-/// assert!(r.all_agree() && !r.symbolic);
+/// assert!(r.all_agree() && r.symbolic.is_none());
 /// ```
 pub fn check_scene(
     input: &SceneInput,
     claims: &[Claim],
     sig: Option<u32>,
 ) -> Result<Report, Error> {
+    check_scene_within(input, claims, sig, &mut Budget::run())
+}
+
+/// [`check_scene`], charging the work of the scene's and the claims' formulas to a run's
+/// `budget` (shared by every scene of a problem file).
+///
+/// # Errors
+/// Those of [`check_scene`], and an exhausted budget.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::SceneInput, textbook::{check_scene_within, expr::Budget, Claim}};
+/// let s = SceneInput { rod_mass: Some("4*m".into()), a: Some("l".into()), ..Default::default() };
+/// let mut budget = Budget::run();
+/// let r = check_scene_within(&s, &[Claim::parse("v=0").unwrap()], None, &mut budget).unwrap();
+/// assert!(r.all_agree()); // M = 4m hit at the end, elastic: the projectile stops
+/// ```
+pub fn check_scene_within(
+    input: &SceneInput,
+    claims: &[Claim],
+    sig: Option<u32>,
+    budget: &mut Budget,
+) -> Result<Report, Error> {
     if let Some(n) = sig {
         sigfig::check_sig(n)?;
     }
-    let symbolic_scene = symbolic::any_symbolic(input);
-    if symbolic_scene || claims.iter().any(Claim::is_symbolic) {
-        return symbolic::check(input, claims, sig);
+    let given = symbolic::GivenScene::read(input, budget)?;
+    if given.has_formula() || claims.iter().any(Claim::is_symbolic) {
+        return symbolic::check(&given, claims, sig, budget);
     }
-    let scene = symbolic::si_input(input)?.build()?;
+    let scene = input.build().map_err(|e| numeric_scene_needed(e, claims))?;
     let params = scene.params::<crate::field::Q>();
     let out = solve(&params).ok_or_else(|| {
         Error::new(
@@ -355,7 +478,24 @@ pub fn check_scene(
         decisions.push(verdict::decide(claim, &exact, sig));
     }
     Ok(Report {
-        symbolic: false,
+        symbolic: None,
         decisions,
     })
+}
+
+/// A missing mass in a scene of numbers only: numeric claims need a numeric scene.
+fn numeric_scene_needed(e: Error, claims: &[Claim]) -> Error {
+    if e.kind != ErrorKind::Missing {
+        return e;
+    }
+    let example = claims
+        .first()
+        .map(|c| format!(" ({}={})", c.quantity.name(), c.text))
+        .unwrap_or_default();
+    Error::new(
+        e.field,
+        ErrorKind::Invalid(format!(
+            "not given; a numeric claim{example} needs a numeric scene: give m and M as numbers (--m, --M), or claim a formula in the scene's symbols"
+        )),
+    )
 }

@@ -19,7 +19,8 @@
 //! ```
 //! Unknown keys are errors naming the key.
 
-use super::{Claim, Report, check_scene};
+use super::expr::Budget;
+use super::{Claim, Quantity, Report, check_scene_within};
 use crate::error::{Error, ErrorKind};
 use crate::scene::SceneInput;
 use serde::Deserialize;
@@ -86,15 +87,18 @@ pub struct Problem {
     pub sig: Option<u32>,
     /// The scene as given.
     pub scene: SceneInput,
-    /// The printed answers.
-    pub claims: Vec<Claim>,
+    /// The printed answers as written, `(name, value)`: names are checked when the file is
+    /// read, values when the problem is checked (so that only one problem's formulas are in
+    /// memory at a time, and their work is charged to the run's budget).
+    pub claims: Vec<(String, String)>,
 }
 
-/// Parses a problem file; `label` (the path) starts every error message.
+/// Parses a problem file; `label` (the path) starts every error message. Claimed values are
+/// read by [`check_problems`].
 ///
 /// # Errors
-/// TOML syntax, unknown keys, wrong value types (with line and key), a value that is not a
-/// number, unit or formula, an unknown claim name, or a limit.
+/// TOML syntax, unknown keys, wrong value types (with line and key), an unknown claim name,
+/// or a limit.
 ///
 /// # Examples
 /// ```
@@ -212,10 +216,17 @@ fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
                 ),
             ));
         };
-        claims.push(
-            Claim::new(name, text)
-                .map_err(|e| Error::new(at(&format!("claims.{name}")), e.kind))?,
-        );
+        if Quantity::parse(name).is_none() {
+            return Err(Error::new(
+                at(&format!("claims.{name}")),
+                ErrorKind::Invalid(format!(
+                    "unknown name '{}' (accepted: {})",
+                    name.chars().take(40).collect::<String>(),
+                    Quantity::all_names()
+                )),
+            ));
+        }
+        claims.push((name.clone(), text.to_string()));
     }
     Ok(Problem {
         id,
@@ -231,16 +242,23 @@ fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
 /// The verdicts for one problem.
 #[derive(Debug, Clone)]
 pub struct ProblemReport {
-    /// The problem checked.
-    pub problem: Problem,
+    /// The problem's id.
+    pub id: String,
+    /// Its citation.
+    pub source: String,
+    /// Its remark, if any.
+    pub note: Option<String>,
     /// Its claims' decisions.
     pub report: Report,
 }
 
-/// Checks every problem; `sig` (if given) overrides each problem's figures.
+/// Checks every problem, one at a time (its claims read, decided and dropped before the next
+/// problem's); `sig` (if given) overrides each problem's figures. The work of every formula
+/// of the file is charged to one budget ([`super::expr::MAX_RUN_WORK`]).
 ///
 /// # Errors
-/// The first problem whose scene or claims are bad input, naming the problem and field.
+/// The first problem whose scene or claims are bad input, or that exhausts the budget, naming
+/// the problem and field.
 ///
 /// # Examples
 /// ```
@@ -254,14 +272,25 @@ pub fn check_problems(
     problems: &[Problem],
     sig: Option<u32>,
 ) -> Result<Vec<ProblemReport>, Error> {
+    let mut budget = Budget::run();
     problems
         .iter()
         .map(|p| {
-            let report = check_scene(&p.scene, &p.claims, sig.or(p.sig)).map_err(|e| {
-                Error::new(format!("{label}: problem '{}': {}", p.id, e.field), e.kind)
-            })?;
+            let at = |field: &str| format!("{label}: problem '{}': {field}", p.id);
+            let claims = p
+                .claims
+                .iter()
+                .map(|(name, text)| {
+                    Claim::new_within(name, text, &mut budget)
+                        .map_err(|e| Error::new(at(&format!("claims.{name}")), e.kind))
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            let report = check_scene_within(&p.scene, &claims, sig.or(p.sig), &mut budget)
+                .map_err(|e| Error::new(at(&e.field), e.kind))?;
             Ok(ProblemReport {
-                problem: p.clone(),
+                id: p.id.clone(),
+                source: p.source.clone(),
+                note: p.note.clone(),
                 report,
             })
         })
@@ -278,14 +307,14 @@ fn totals(reports: &[ProblemReport]) -> (usize, usize) {
 ///
 /// # Examples
 /// ```
-/// assert_eq!(rodimpact::textbook::problems::problems_text(&[]), "0 problems; 0 of 0 claims agree\n");
+/// assert_eq!(rodimpact::textbook::problems::problems_text(&[]), "0 problems; no claims\n");
 /// ```
 pub fn problems_text(reports: &[ProblemReport]) -> String {
     let mut out = String::new();
     for r in reports {
-        let _ = writeln!(out, "{}  ({})", r.problem.id, r.problem.source);
+        let _ = writeln!(out, "{}  ({})", r.id, r.source);
         out.push_str(&r.report.to_text());
-        if let Some(note) = &r.problem.note {
+        if let Some(note) = &r.note {
             let _ = writeln!(out, "  about: {note}");
         }
         let _ = writeln!(out, "  {}\n", r.report.summary());
@@ -294,12 +323,12 @@ pub fn problems_text(reports: &[ProblemReport]) -> String {
     let wrong: Vec<&str> = reports
         .iter()
         .filter(|r| !r.report.all_agree())
-        .map(|r| r.problem.id.as_str())
+        .map(|r| r.id.as_str())
         .collect();
     let _ = write!(
         out,
-        "{} problems; {}",
-        reports.len(),
+        "{}; {}",
+        super::verdict::count(reports.len(), "problem"),
         super::verdict::summary_line(agree, total)
     );
     if !wrong.is_empty() {
@@ -321,8 +350,8 @@ pub fn problems_json(reports: &[ProblemReport]) -> Value {
     json!({
         "problems": reports.iter().map(|r| {
             let mut j = r.report.to_json();
-            j["id"] = json!(r.problem.id);
-            j["source"] = json!(r.problem.source);
+            j["id"] = json!(r.id);
+            j["source"] = json!(r.source);
             j
         }).collect::<Vec<_>>(),
         "summary": super::verdict::summary_json(agree, total),

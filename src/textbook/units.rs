@@ -3,92 +3,12 @@
 //! Every unit is an exact rational multiple of its SI unit except `rpm` (`2 pi / 60` rad/s):
 //! values in rpm are compared with exact rational bounds on pi ([`pi_bounds`]).
 
-use crate::error::{Error, ErrorKind};
+use crate::error::Error;
 use crate::field::Q;
 use crate::textbook::sigfig::{Printed, pow10};
+use crate::units::split_unit;
+pub use crate::units::{Dimension, Scale, Unit};
 use num_bigint::BigInt;
-use std::fmt;
-
-/// What a quantity measures.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Dimension {
-    /// kg.
-    Mass,
-    /// m.
-    Length,
-    /// m/s.
-    Speed,
-    /// rad/s.
-    AngularSpeed,
-    /// J.
-    Energy,
-    /// N s = kg m/s.
-    Impulse,
-    /// A pure number (the coefficient of restitution).
-    Pure,
-}
-
-impl fmt::Display for Dimension {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Dimension::Mass => "a mass",
-            Dimension::Length => "a length",
-            Dimension::Speed => "a speed",
-            Dimension::AngularSpeed => "an angular speed",
-            Dimension::Energy => "an energy",
-            Dimension::Impulse => "an impulse",
-            Dimension::Pure => "a pure number",
-        })
-    }
-}
-
-/// The SI value of one unit: a rational factor, or a rational multiple of pi.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Scale {
-    /// `factor` SI units.
-    Rational(Q),
-    /// `factor * pi` SI units.
-    Pi(Q),
-}
-
-/// A unit a printed value may carry.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Unit {
-    /// As written (`km/h`).
-    pub name: &'static str,
-    /// What it measures.
-    pub dimension: Dimension,
-    /// Its size in SI units.
-    pub scale: Scale,
-}
-
-/// The accepted units, longest spelling first so that `cm/s` is not read as `s`.
-fn units() -> Vec<Unit> {
-    use Dimension::*;
-    let r = |n: i64, d: i64| Scale::Rational(Q::new(n.into(), d.into()));
-    let u = |name, dimension, scale| Unit {
-        name,
-        dimension,
-        scale,
-    };
-    vec![
-        u("kg*m/s", Impulse, r(1, 1)),
-        u("kg m/s", Impulse, r(1, 1)),
-        u("rad/s", AngularSpeed, r(1, 1)),
-        u("km/h", Speed, r(5, 18)),
-        u("cm/s", Speed, r(1, 100)),
-        u("m/s", Speed, r(1, 1)),
-        u("rpm", AngularSpeed, Scale::Pi(Q::new(1.into(), 30.into()))),
-        u("N*s", Impulse, r(1, 1)),
-        u("N s", Impulse, r(1, 1)),
-        u("kg", Mass, r(1, 1)),
-        u("cm", Length, r(1, 100)),
-        u("mm", Length, r(1, 1000)),
-        u("g", Mass, r(1, 1000)),
-        u("m", Length, r(1, 1)),
-        u("J", Energy, r(1, 1)),
-    ]
-}
 
 /// A printed value with its optional unit.
 ///
@@ -122,38 +42,7 @@ impl Measured {
     /// assert_eq!(err.to_string(), "m: unit 'm/s' is a speed, expected a mass");
     /// ```
     pub fn parse(field: &str, text: &str, dimension: Dimension) -> Result<Measured, Error> {
-        let text = text.trim();
-        let found = units().into_iter().find(|u| {
-            text.strip_suffix(u.name).is_some_and(|rest| {
-                rest.ends_with(|c: char| c.is_ascii_digit() || c == '.' || c == ' ')
-            })
-        });
-        let (number, unit) = match found {
-            Some(u) => (text[..text.len() - u.name.len()].trim_end(), Some(u)),
-            None => {
-                if let Some((_, tail)) = text.rsplit_once(' ') {
-                    return Err(Error::new(
-                        field,
-                        ErrorKind::Invalid(format!(
-                            "unknown unit '{}' (accepted: kg, g, m, cm, mm, m/s, cm/s, km/h, rad/s, rpm, J, N*s)",
-                            tail.chars().take(20).collect::<String>()
-                        )),
-                    ));
-                }
-                (text, None)
-            }
-        };
-        if let Some(u) = &unit
-            && u.dimension != dimension
-        {
-            return Err(Error::new(
-                field,
-                ErrorKind::Invalid(format!(
-                    "unit '{}' is {}, expected {dimension}",
-                    u.name, u.dimension
-                )),
-            ));
-        }
+        let (number, unit) = split_unit(field, text, dimension)?;
         Ok(Measured {
             printed: Printed::parse(field, number)?,
             unit,
@@ -172,9 +61,7 @@ impl Measured {
     pub fn scale(&self) -> Scale {
         self.unit
             .as_ref()
-            .map_or(Scale::Rational(Q::from_integer(1.into())), |u| {
-                u.scale.clone()
-            })
+            .map_or(Scale::Rational(Q::from_integer(1.into())), Unit::scale)
     }
 
     /// The exact SI value; `None` for a unit with a factor of pi (rpm).
