@@ -15,6 +15,19 @@ use serde_json::{Map, Value, json};
 
 /// A reliable float is within this many cond·u of the exact value (the stable formulas stay
 /// within it on every in-range scene of the stability suite and sweeps).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::{ERROR_BOUND, backend_values}, scene::Scene, field::q};
+/// use rodimpact::{float::Formula, stability::Backend};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
+/// let j = backend_values(&s, Backend::F64(Formula::Sq))?;
+/// // omega = 12/11: error 7.40e-17 <= 4 cond u, cond = 2.91.
+/// assert_eq!(ERROR_BOUND, 4);
+/// assert_eq!((j["omega"]["rel_error"].as_str(), j["omega"]["reliable"].as_bool()),
+///            (Some("7.40e-17"), Some(true)));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
 pub const ERROR_BOUND: u32 = 4;
 
 /// The `v`, `V`, `omega` entries of `scene` solved in `backend` (`solve --backend` passes the
@@ -181,7 +194,7 @@ fn doubts_about_output(
             "ill-conditioned: cond is infinite (v = 0 exactly: only exact arithmetic decides it)"
                 .into(),
         ),
-        Some(c) if !Measured::reliable(Some(c), &u) => doubts.push(format!(
+        Some(c) if !Measured::well_conditioned(Some(c), &u) => doubts.push(format!(
             "ill-conditioned: cond u = {} > 1e-3",
             number::decimal(&(c * &u), 3)
         )),
