@@ -35,7 +35,7 @@ impl BackendArg {
 pub(crate) struct SolveArgs {
     #[command(flatten)]
     pub(crate) scene: SceneFlags,
-    /// Print one JSON object (the contract of DESIGN.md §3) instead of the text report.
+    /// Print one JSON object (keys in docs/conventions.md) instead of the text report.
     #[arg(long)]
     pub(crate) json: bool,
     /// Significant digits of the printed decimals and of the a* bounds [default: 30 in JSON,
