@@ -130,9 +130,9 @@ proptest! {
     }
 }
 
-/// Suite scenes 3, 4, 7 (docs/stability.md): v = 0 exactly. The exact path says 0 (sign Equal); f64 sq gives
-/// exactly 0 on scene 3 (binary inputs) and |v| <= 4u v0 on scenes 4 and 7, with an arbitrary
-/// sign, and flags v as unreliable (cond infinite).
+/// Suite scenes 3, 4, 7 (docs/stability.md): v = 0 exactly. The exact path says 0 (sign Equal); f64
+/// sq gives exactly 0 on scene 3 (binary inputs) and |v| <= 4u v0 on scenes 4 and 7, with an
+/// arbitrary sign, and flags v as unreliable (cond infinite).
 #[test]
 fn only_the_exact_path_decides_that_the_projectile_stops() {
     let s = suite();

@@ -3,6 +3,7 @@
 //! variant ("scomp"). `docs/stability.md` describes them and their measured errors.
 
 use super::{Ext, Real, compensated};
+use crate::field::Q;
 use crate::mechanics::Motion;
 use crate::scene::{Params, Scene, Support};
 use crate::solve::closed_form;
@@ -109,7 +110,7 @@ impl Formula {
         match self {
             Formula::Naive => self.eval(&scene.params::<T>()),
             Formula::Sq | Formula::Scomp => {
-                let p = scene.params::<crate::field::Q>();
+                let p = scene.params::<Q>();
                 if p.support != Support::Free {
                     return None;
                 }
@@ -302,16 +303,16 @@ mod tests {
         let two = |k: i32| {
             let p = num_bigint::BigInt::from(2).pow(k.unsigned_abs());
             if k >= 0 {
-                crate::field::Q::from_integer(p)
+                Q::from_integer(p)
             } else {
-                crate::field::Q::new(1.into(), p)
+                Q::new(1.into(), p)
             }
         };
-        let inertia = two(-88) / crate::field::Q::from_integer(3.into());
+        let inertia = two(-88) / Q::from_integer(3.into());
         let s = crate::scene::Scene::builder(crate::field::q(1, 1), two(36))
             .rod(crate::scene::RodInertia::Moment(inertia))
             .half_length(crate::field::q(1, 1))
-            .a(-two(-45) / crate::field::Q::from_integer(7.into()))
+            .a(-two(-45) / Q::from_integer(7.into()))
             .build()
             .unwrap();
         let p = s.params::<f32>();
