@@ -3,12 +3,12 @@
 # evaluating the same closed form (uniform rod, elastic), checking the same three laws and the
 # file's claimed v, V, omega, and writing the same rows. Not part of the tests.
 #
-#   bench/compare.sh [FILE.csv] [ROUNDS]     (default ../shared/data/bench-1e6.csv, 3 rounds)
+#   bench/compare.sh [FILE.csv] [ROUNDS]     (default tests/data/bench-1e6.csv, 3 rounds)
 #
 # Prints the median wall time of each and the ratios. A missing Python module is skipped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-file="${1:-../shared/data/bench-1e6.csv}"
+file="${1:-tests/data/bench-1e6.csv}"
 rounds="${2:-3}"
 cargo build --release --quiet
 bin="target/release/rodimpact"

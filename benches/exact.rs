@@ -4,14 +4,15 @@
 //! growth of the fast exact cost with the size of the inputs. Throughput is in scenes; the
 //! ratios to f64 are the figures of the README.
 
-#[path = "support/scenes.rs"]
-mod scenes;
+mod support;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use rodimpact::fast;
 use rodimpact::field::Q;
 use rodimpact::float::Formula;
+use rodimpact::samples::sized_scene;
 use rodimpact::solve::{closed_form, outcome, solve};
+use rodimpact::stability::SplitMix64;
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -19,7 +20,7 @@ const SCENES: usize = 1000;
 
 fn per_scene(c: &mut Criterion) {
     for (label, file) in [("1e6", "bench-1e6.csv"), ("textbook", "bench-textbook.csv")] {
-        let batch = scenes::reference(file, SCENES);
+        let batch = support::reference(file, SCENES);
         let floats: Vec<_> = batch.iter().map(|s| s.params::<f64>()).collect();
         let exact: Vec<_> = batch.iter().map(|s| s.params::<Q>()).collect();
         let mut group = c.benchmark_group(format!("exact/{label}"));
@@ -74,12 +75,10 @@ fn growth(c: &mut Criterion) {
     group.sample_size(10);
     group.warm_up_time(Duration::from_millis(300));
     group.measurement_time(Duration::from_secs(2));
-    let mut rng = scenes::Rng(20240611);
+    let mut rng = SplitMix64::new(20240611);
     for bits in [10u64, 100, 1000, 10_000] {
         let count = (20_000 / bits).clamp(2, 100) as usize;
-        let batch: Vec<_> = (0..count)
-            .map(|_| scenes::random_scene(&mut rng, bits))
-            .collect();
+        let batch: Vec<_> = (0..count).map(|_| sized_scene(&mut rng, bits)).collect();
         group.throughput(Throughput::Elements(count as u64));
         group.bench_with_input(BenchmarkId::new("fast exact", bits), &batch, |b, batch| {
             b.iter(|| {

@@ -1,6 +1,6 @@
 //! The cost of exactness, measured side by side: `cargo run --release --example exact_cost`.
 //!
-//! 1. Per scene (solve + the conservation laws) on both reference batches of `../shared/data/`:
+//! 1. Per scene (solve + the conservation laws) on both reference batches of `tests/data/`:
 //!    f64 closed form, the straightforward `BigRational` path (generic solver over Q) and the
 //!    fast exact path, interleaved on 1000-scene chunks; medians of per-chunk times and ratios.
 //! 2. Growth of the fast exact cost with the size of the inputs: random scenes whose numerators
@@ -9,13 +9,12 @@
 //! Pass `--quick` to stop the growth curve at 10,000 bits; add `--features malachite` to run the
 //! big-integer fallback on malachite-nz.
 
-#[path = "../benches/support/scenes.rs"]
-mod scenes;
-
 use rodimpact::fast;
 use rodimpact::field::Q;
+use rodimpact::samples::{read_batch, sized_scene};
 use rodimpact::scene::Scene;
 use rodimpact::solve::{closed_form, outcome, solve};
+use rodimpact::stability::SplitMix64;
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -26,7 +25,7 @@ fn main() {
         "batch     | f64 ns | BigRational us | fast us | BigRational/f64 | fast/f64 | BigRational/fast"
     );
     for (label, file) in [("1e6", "bench-1e6.csv"), ("textbook", "bench-textbook.csv")] {
-        side_by_side(label, &scenes::reference(file, usize::MAX));
+        side_by_side(label, &reference(file));
     }
     println!();
     println!("== growth of the fast exact cost with input size ==");
@@ -38,6 +37,16 @@ fn main() {
     };
     println!("(big-integer fallback on {big})");
     growth(if quick { 10_000 } else { 100_000 });
+}
+
+/// Every scene of the reference batch `file` of `tests/data/` (see `tests/data/README.md`).
+fn reference(file: &str) -> Vec<Scene> {
+    let path = format!("{}/tests/data/{file}", env!("CARGO_MANIFEST_DIR"));
+    read_batch(path.as_ref(), usize::MAX)
+        .unwrap_or_else(|e| panic!("the reference batch {file}: {e}"))
+        .into_iter()
+        .map(|row| row.scene)
+        .collect()
 }
 
 fn median(mut xs: Vec<f64>) -> f64 {
@@ -95,16 +104,14 @@ fn side_by_side(label: &str, scenes: &[Scene]) {
 
 fn growth(max_bits: u64) {
     println!("bits    | fast exact us/scene | BigRational us/scene");
-    let mut rng = scenes::Rng(20240611);
+    let mut rng = SplitMix64::new(20240611);
     let mut points = vec![];
     for bits in [10u64, 32, 100, 316, 1000, 3162, 10_000, 31_623, 100_000] {
         if bits > max_bits {
             break;
         }
         let count = (200_000 / bits).clamp(1, 200) as usize;
-        let scenes: Vec<Scene> = (0..count)
-            .map(|_| scenes::random_scene(&mut rng, bits))
-            .collect();
+        let scenes: Vec<Scene> = (0..count).map(|_| sized_scene(&mut rng, bits)).collect();
         let t_fast = per_scene(1, count, || {
             for s in &scenes {
                 black_box(fast::solve(black_box(s)));

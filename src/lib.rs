@@ -36,6 +36,7 @@ pub mod mechanics;
 pub mod number;
 pub mod optimum;
 pub mod report;
+pub mod samples;
 pub mod scene;
 pub mod solve;
 pub mod stability;

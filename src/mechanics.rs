@@ -1,11 +1,11 @@
 //! Mechanics vocabulary over any field: the motion of the two bodies and the quantities that the
 //! conservation laws balance.
 //!
-//! The solver's residuals and the proofs of the claims use these same functions, so a law is
-//! stated once. Conventions (DESIGN.md §1): x is the projectile's direction before the impact;
-//! the rod lies along y with its centre at the origin; a rod point at y moves with `V + omega*y`.
-//! Angular momentum about a point (0, y_ref) of the rod's line is `sum (y - y_ref) * p_x`, the
-//! sign for which the paper's Eq. (angular) reads `m v0 a = m v a + I omega`.
+//! The solver's residuals and the proofs of the claims use these same functions, so a law is stated
+//! once. Conventions (docs/conventions.md): x is the projectile's direction before the impact; the
+//! rod lies along y with its centre at the origin; a rod point at y moves with `V + omega*y`.
+//! Angular momentum about a point (0, y_ref) of the rod's line is `sum (y - y_ref) * p_x`, the sign
+//! for which the paper's Eq. (angular) reads `m v0 a = m v a + I omega`.
 
 use crate::field::Field;
 use crate::scene::Params;

@@ -107,8 +107,8 @@ pub enum Support<F = Q> {
 
 /// A validated, exact scene.
 ///
-/// Conventions (DESIGN.md §1): the projectile moves along +x with speed `v0` and hits the rod,
-/// which lies along y with its centre at the origin, at signed distance `a` from the centre.
+/// Conventions (docs/conventions.md): the projectile moves along +x with speed `v0` and hits the
+/// rod, which lies along y with its centre at the origin, at signed distance `a` from the centre.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
     m: Q,

@@ -1,7 +1,7 @@
 //! The generic impulse solver, and the paper's closed forms as a second, independent path.
 //!
-//! [`solve`] builds the impulse equations of DESIGN.md §1 as a linear system and solves it by
-//! elimination over any [`Field`]:
+//! [`solve`] builds the impulse equations of docs/conventions.md as a linear system and solves it
+//! by elimination over any [`Field`]:
 //!
 //! - free rod, unknowns (v, V, omega):
 //!   `m v + M V = m v0` (linear momentum), `m a v + I omega = m a v0` (angular momentum about

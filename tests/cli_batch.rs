@@ -3,17 +3,13 @@
 
 mod common;
 
-use common::rodimpact;
+use common::{data_file, rodimpact};
 use std::path::{Path, PathBuf};
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("rodimpact-batch-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     dir
-}
-
-fn data(file: &str) -> String {
-    format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"))
 }
 
 fn leftovers(dir: &Path) -> Vec<String> {
@@ -29,7 +25,7 @@ fn every_claim_of_the_1e6_batch_is_confirmed_in_order() {
     let out = dir.join("out.csv");
     let (code, stdout, stderr) = rodimpact(&[
         "batch",
-        &data("bench-1e6.csv"),
+        &data_file("bench-1e6.csv"),
         "--jobs",
         "2",
         "--out",
@@ -45,7 +41,7 @@ fn every_claim_of_the_1e6_batch_is_confirmed_in_order() {
             "{stderr}"
         );
     }
-    let input = std::fs::read_to_string(data("bench-1e6.csv")).unwrap();
+    let input = std::fs::read_to_string(data_file("bench-1e6.csv")).unwrap();
     let output = std::fs::read_to_string(&out).unwrap();
     let (inputs, outputs): (Vec<_>, Vec<_>) = (input.lines().collect(), output.lines().collect());
     assert_eq!(outputs.len(), inputs.len());
@@ -69,7 +65,7 @@ fn every_claim_of_the_1e6_batch_is_confirmed_in_order() {
 #[test]
 fn an_altered_value_is_reported_with_its_row_and_exit_1() {
     let dir = scratch("altered");
-    let input = std::fs::read_to_string(data("bench-textbook.csv")).unwrap();
+    let input = std::fs::read_to_string(data_file("bench-textbook.csv")).unwrap();
     let mut lines: Vec<String> = input.lines().take(101).map(String::from).collect();
     // Row 17 (line 18): omega off by 1 in the last digit of the numerator.
     let mut cells: Vec<String> = lines[17].split(',').map(String::from).collect();

@@ -237,7 +237,7 @@ fn plots_are_written_and_bad_figures_refused() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// DESIGN.md §3 done-when: v = 0 exactly (q = e), so the f64 v is flagged unreliable while V
+/// docs/stability.md: v = 0 exactly (q = e), so the f64 v is flagged unreliable while V
 /// and omega stay reliable; every value carries float, exact, rel_error and cond.
 #[test]
 fn backend_f64_flags_the_stopping_projectile_as_unreliable() {

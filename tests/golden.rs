@@ -8,8 +8,8 @@
 use rodimpact::claims::{Paper, decide_all};
 use rodimpact::field::q;
 use rodimpact::report::{
-    Format, TableOptions, all_tables, claim_markdown, index_markdown, plot_figure1, plot_omega,
-    plot_optimum, render_document,
+    Format, TableOptions, all_tables, claim_markdown, claims_markdown, index_markdown,
+    plot_figure1, plot_omega, plot_optimum, render_document,
 };
 use rodimpact::scene::{RodInertia, Scene};
 use std::collections::BTreeSet;
@@ -72,6 +72,18 @@ fn committed_certificates_match_the_regenerated_ones() {
         "{}\n(re-bless with RODIMPACT_BLESS=1 if the change is intended)",
         problems.join("\n")
     );
+}
+
+/// `docs/claims.md` is written from the claims registry: every id, place and statement as the
+/// verifier decides them, so the documented list cannot go stale.
+#[test]
+fn the_documented_list_of_claims_matches_the_registry() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/claims.md");
+    let decided = decide_all(&Paper::as_printed());
+    let problems = compare(&path, &claims_markdown(&decided))
+        .into_iter()
+        .collect();
+    assert_all(problems);
 }
 
 fn golden(name: &str) -> std::path::PathBuf {

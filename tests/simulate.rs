@@ -44,7 +44,8 @@ fn exact_geometry_converges_as_one_over_k_and_lateral_as_root_k() {
         let slope = fit_slope(&ks, &lateral).unwrap();
         assert!((-0.6..=-0.4).contains(&slope), "lateral slope {slope}");
     }
-    // STABILITY.md §3 at k = 1e6 (M = m, a = l/2): 1.4e-7, 2.7e-7, 7.2e-7 for omega, V, v.
+    // docs/stability.md (stiff contact) at k = 1e6 (M = m, a = l/2): 1.4e-7, 2.7e-7, 7.2e-7
+    // for omega, V, v.
     let row = &sweep_k(
         &textbook(),
         &[1e6],

@@ -12,7 +12,7 @@ use rodimpact::mechanics::Motion;
 use rodimpact::solve::closed_form;
 use rodimpact::stability::{Backend, Case, Class, Measured, Reference, in_range, suite, sweep};
 
-/// Asserts the goals of STABILITY.md §5 for a stable formula on `cases` in range for `T`:
+/// Asserts the goals of docs/stability.md for a stable formula on `cases` in range for `T`:
 /// never NaN or inf; error <= 4 cond u and no spurious zero for V and omega, and for v while
 /// cond u < 1e-3 (beyond that, rounding the inputs alone can put q exactly on e). Returns how many cases were in range.
 fn assert_stable<T: Real>(backend: Backend, cases: &[Case]) -> usize {
@@ -39,7 +39,7 @@ fn assert_stable<T: Real>(backend: Backend, cases: &[Case]) -> usize {
                 !matches!(measured.class, Class::Nan | Class::Infinite),
                 "{label}: {measured:?}"
             );
-            if Measured::reliable(cond.as_ref(), &u) {
+            if Measured::well_conditioned(cond.as_ref(), &u) {
                 if !exact.is_zero() {
                     assert_eq!(measured.class, Class::Number, "{label}: {measured:?}");
                 }
@@ -130,9 +130,9 @@ proptest! {
     }
 }
 
-/// STABILITY.md scenes 3, 4, 7: v = 0 exactly. The exact path says 0 (sign Equal); f64 sq gives
-/// exactly 0 on scene 3 (binary inputs) and |v| <= 4u v0 on scenes 4 and 7, with an arbitrary
-/// sign, and flags v as unreliable (cond infinite).
+/// Suite scenes 3, 4, 7 (docs/stability.md): v = 0 exactly. The exact path says 0 (sign Equal); f64
+/// sq gives exactly 0 on scene 3 (binary inputs) and |v| <= 4u v0 on scenes 4 and 7, with an
+/// arbitrary sign, and flags v as unreliable (cond infinite).
 #[test]
 fn only_the_exact_path_decides_that_the_projectile_stops() {
     let s = suite();
@@ -144,7 +144,7 @@ fn only_the_exact_path_decides_that_the_projectile_stops() {
         let x: Motion<f64> = Formula::Sq.eval(&case.scene.params::<f64>()).unwrap();
         assert!(x.v.abs() <= 2.0 * f64::EPSILON, "scene {id}: v = {}", x.v);
         let cond = Backend::F64(Formula::Sq).condition(&reference);
-        assert!(!Measured::reliable(
+        assert!(!Measured::well_conditioned(
             cond.v.as_ref(),
             &<f64 as Real>::unit_roundoff()
         ));

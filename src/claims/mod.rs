@@ -118,13 +118,13 @@ pub enum Decision {
 /// One claim, formalised and decided.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Claim {
-    /// The id of CLAIMS.md (`C15`, `X4`).
+    /// The id in `docs/claims.md` (`C15`, `X4`).
     pub id: &'static str,
     /// Where it stands in the paper (`Eq. (omega)`), or `beyond the paper`.
     pub location: &'static str,
     /// The report group.
     pub group: Group,
-    /// The claim in words, as CLAIMS.md states it.
+    /// The claim in words, as `docs/claims.md` lists it.
     pub statement: &'static str,
     /// The claim as formalised here, every assumption explicit.
     pub formal: String,
@@ -290,7 +290,7 @@ pub struct Entry {
     pub build: fn(&Paper) -> Claim,
 }
 
-/// Every claim, in the order of CLAIMS.md: C1-C46, then X1-X26.
+/// Every claim, in the order of `docs/claims.md`: C1-C46, then X1-X26.
 ///
 /// # Examples
 /// ```

@@ -419,7 +419,7 @@ fn c8(paper: &Paper) -> Claim {
                  the elastic solution has v = -v0/2 < 0, and the paper's own Eq. (v) gives a \
                  negative v there: the projectile bounces back. Correct statement: v and V are the \
                  x-components of the velocities (positive along v0), with V > 0 always, and the \
-                 signed omega (DESIGN.md) is >= 0 on the paper's domain 0 <= a <= l, so it equals \
+                 signed omega (docs/conventions.md) is >= 0 on the paper's domain 0 <= a <= l, so it equals \
                  its magnitude there."
             .into(),
         reason: "Eq. (v) is signed: at M = 3m, a = 0 it gives v = -v0/2 (the projectile bounces back); V > 0 and omega >= 0 for a >= 0".into(),
@@ -630,7 +630,7 @@ fn elastic_formula(
         formal: format!(
             "For m, M, I > 0 and any a, v0, the elastic (e = 1) solution of the impulse equations \
              has {statement}, where D = 1 + m/M + m a^2/I > 0 (velocities are signed x-components \
-             and omega is signed as in DESIGN.md: the struck point moves forward for a > 0)."
+             and omega is signed as in docs/conventions.md: the struck point moves forward for a > 0)."
         ),
         reason: format!(
             "the generic solver's {quantity} equals {location} identically, and D is visibly positive"

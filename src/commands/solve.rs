@@ -49,7 +49,7 @@ impl BackendArg {
 pub(crate) struct SolveArgs {
     #[command(flatten)]
     pub(crate) scene: SceneFlags,
-    /// Print one JSON object (the contract of DESIGN.md §3) instead of the text report.
+    /// Print one JSON object (keys in docs/conventions.md) instead of the text report.
     #[arg(long)]
     pub(crate) json: bool,
     /// Significant digits of the printed decimals and of the a* bounds [default: 30 in JSON,
@@ -83,7 +83,7 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
         let mut text = solution.to_text(digits);
         if let Some(floats) = floats {
             text.push_str(&format!(
-                "\nBackend {}\n  against the exact values: rel_error = |float - exact|/|exact|, cond = condition number,\n  reliable = cond * unit roundoff <= 1e-3\n",
+                "\nBackend {}\n  against the exact values: rel_error = |float - exact|/|exact|, cond = condition number,\n  reliable = every input and the exact value fit the format, cond * unit roundoff <= 1e-3\n  and rel_error <= 4 cond * unit roundoff\n",
                 args.backend.describe()
             ));
             for (name, value) in floats {

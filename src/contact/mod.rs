@@ -1,4 +1,4 @@
-//! The time-resolved compliant-contact model (STABILITY.md §3): a penalty spring of stiffness k
+//! The time-resolved compliant-contact model (docs/stability.md): a penalty spring of stiffness k
 //! (and, for e < 1, a dashpot) acts while the projectile's point penetrates the rod's line.
 //!
 //! Two forms: [`Geometry::Frozen`] keeps the normal and the lever arm fixed (a linear oscillator

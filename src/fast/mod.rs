@@ -2,9 +2,9 @@
 //! [`Q`], bit for bit, without a GCD after every operation.
 //!
 //! The straightforward path spends about 91 % of its time in num-bigint's GCD, because
-//! `BigRational` reduces after every operation (PERFORMANCE.md). Here, for a free rod, the scene's
-//! numbers are split once into integer numerators and denominators, the closed form is evaluated
-//! on integers over one common denominator, the conservation laws are checked as integer
+//! `BigRational` reduces after every operation (README, Performance). Here, for a free rod, the
+//! scene's numbers are split once into integer numerators and denominators, the closed form is
+//! evaluated on integers over one common denominator, the conservation laws are checked as integer
 //! identities, and each output is reduced once.
 //!
 //! With I = M g (g = l^2/3 uniform, l^2 dumbbell, r_G^2 by radius of gyration, I/M given) every

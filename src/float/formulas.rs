@@ -1,10 +1,11 @@
 //! The float formulas for the free rod, side by side: the paper's closed form ("naive"), the
 //! exponent-carried stable form ("sq", the library's default float path) and its compensated
-//! variant ("scomp"). STABILITY.md §2 defines them and measures their errors.
+//! variant ("scomp"). `docs/stability.md` describes them and their measured errors.
 
 use super::{Ext, Real, compensated};
+use crate::field::Q;
 use crate::mechanics::Motion;
-use crate::scene::{Params, Support};
+use crate::scene::{Params, Scene, Support};
 use crate::solve::closed_form;
 
 /// A float formula for (v, V, omega) of a free rod.
@@ -78,13 +79,57 @@ impl Formula {
                     omega: nan,
                 }
             }),
-            Formula::Sq => scaled(p).unwrap_or_else(|| stable(p, false)),
-            Formula::Scomp => stable(p, true),
+            Formula::Sq => scaled(p).unwrap_or_else(|| stable(carried(p), false)),
+            Formula::Scomp => stable(carried(p), true),
         })
+    }
+
+    /// (v, V, omega) of a free-rod `scene`, from its exact rational inputs, in the float format
+    /// `T`; `None` for a pivoted rod. The naive formula rounds each input to `T`, as a program
+    /// reading them into `T` would (an input beyond the format's range becomes 0, a subnormal
+    /// or infinity). The stable formulas rescale each input exactly by a power of two before
+    /// rounding it ([`Ext::from_rational`]), so no input overflows or underflows: their answer
+    /// is right wherever the output itself is a normal number of `T`. On scenes whose inputs
+    /// are normal numbers of `T` both agree bit for bit with [`Formula::eval`].
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{float::Formula, scene::Scene, field::q, number::parse};
+    /// // l = a = 10^-200: I = M l^2/3 = 10^-400/3 underflows f64 to 0.
+    /// let l = parse("1e-200").expect("a number");
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).half_length(l.clone()).a(l).build()?;
+    /// assert_eq!(s.params::<f64>().inertia, 0.0);
+    /// assert!(Formula::Sq.eval(&s.params::<f64>()).unwrap().omega.is_nan());
+    /// // From the exact inputs: v = 3/5, V = 2/5, omega = 6/5 10^200.
+    /// let x = Formula::Sq.eval_scene::<f64>(&s).unwrap();
+    /// assert_eq!((x.v, x.rod_v), (0.6, 0.4));
+    /// assert!((x.omega / 1.2e200 - 1.0).abs() <= 2.0 * f64::EPSILON);
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn eval_scene<T: Real>(self, scene: &Scene) -> Option<Motion<T>> {
+        match self {
+            Formula::Naive => self.eval(&scene.params::<T>()),
+            Formula::Sq | Formula::Scomp => {
+                let p = scene.params::<Q>();
+                if p.support != Support::Free {
+                    return None;
+                }
+                let inputs = [&p.m, &p.rod_mass, &p.inertia, &p.a, &p.v0, &p.e];
+                Some(stable(
+                    inputs.map(Ext::from_rational),
+                    self == Formula::Scomp,
+                ))
+            }
+        }
     }
 }
 
-/// The fast path of "sq" (STABILITY.md §2): one exact power-of-two rescaling up front (masses
+/// The inputs (m, M, I, a, v0, e) with their exponents carried (exact).
+fn carried<T: Real>(p: &Params<T>) -> [Ext<T>; 6] {
+    [p.m, p.rod_mass, p.inertia, p.a, p.v0, p.e].map(Ext::new)
+}
+
+/// The fast path of "sq": one exact power-of-two rescaling up front (masses
 /// so that M is in [1/2, 1), lengths so that I/M is near 1), then the same operations as
 /// [`stable`] in plain floats. While every intermediate is a normal number, each operation
 /// rounds exactly like its [`Ext`] twin, so the result is bit-identical; otherwise `None` and
@@ -92,15 +137,14 @@ impl Formula {
 fn scaled<T: Real>(p: &Params<T>) -> Option<Motion<T>> {
     let ok = |x: T| x.normal();
     let ok_or_zero = |x: T| x.normal() || x.is_zero();
-    let mass_scale = T::pow2(-p.rod_mass.frexp().1);
-    let (m, rod_mass, inertia) = (
-        p.m * mass_scale,
-        p.rod_mass * mass_scale,
-        p.inertia * mass_scale,
-    );
-    let half = (rod_mass.frexp().1 - inertia.frexp().1) / 2;
-    let (length_scale, area_scale) = (T::pow2(half), T::pow2(2 * half));
-    let (inertia, a) = (inertia * area_scale, p.a * length_scale);
+    let mass_exponent = p.rod_mass.frexp().1;
+    let half = (mass_exponent - p.inertia.frexp().1) / 2;
+    let (mass_scale, length_scale) = (T::pow2(-mass_exponent), T::pow2(half));
+    // I is scaled as a mass times an area in one exact product: scaled as a mass first, it
+    // could pass through the subnormals and lose bits.
+    let inertia_scale = T::pow2(2 * half - mass_exponent);
+    let (m, rod_mass) = (p.m * mass_scale, p.rod_mass * mass_scale);
+    let (inertia, a) = (p.inertia * inertia_scale, p.a * length_scale);
     let one = T::one();
     let r = m / rod_mass;
     let ma_over_i = m * a / inertia;
@@ -114,7 +158,7 @@ fn scaled<T: Real>(p: &Params<T>) -> Option<Motion<T>> {
     let inputs = [
         mass_scale,
         length_scale,
-        area_scale,
+        inertia_scale,
         m,
         rod_mass,
         inertia,
@@ -133,10 +177,10 @@ fn scaled<T: Real>(p: &Params<T>) -> Option<Motion<T>> {
     })
 }
 
-/// The exponent-carried closed form; `compensated` takes q - e from error-free transforms.
-fn stable<T: Real>(p: &Params<T>, compensated: bool) -> Motion<T> {
-    let [m, rod_mass, inertia, a, v0, e] =
-        [p.m, p.rod_mass, p.inertia, p.a, p.v0, p.e].map(Ext::new);
+/// The exponent-carried closed form of the inputs (m, M, I, a, v0, e); `compensated` takes
+/// q - e from error-free transforms.
+fn stable<T: Real>(inputs: [Ext<T>; 6], compensated: bool) -> Motion<T> {
+    let [m, rod_mass, inertia, a, v0, e] = inputs;
     let one = Ext::new(T::one());
     let r = m / rod_mass;
     let ma_over_i = m * a / inertia;
@@ -163,7 +207,10 @@ mod tests {
     /// The fast path is bit-identical to the exponent-carried one wherever it answers, and it
     /// answers on the ordinary scenes (the point of having it).
     fn fast_path_matches<T: Real + std::fmt::Debug>(decades: i64) -> usize {
-        let cases = suite().into_iter().chain(sweep(5, 300, decades));
+        let cases = suite()
+            .into_iter()
+            .chain(sweep(5, 300, decades))
+            .chain(sweep(11, 300, decades));
         let mut taken = 0;
         for case in cases {
             let p = case.scene.params::<T>();
@@ -171,7 +218,7 @@ mod tests {
                 continue;
             }
             if let Some(fast) = scaled(&p) {
-                let slow = stable(&p, false);
+                let slow = stable(carried(&p), false);
                 let same = |x: T, y: T| x == y && x.sign() == y.sign();
                 assert!(
                     same(fast.v, slow.v) && same(fast.rod_v, slow.rod_v),
@@ -191,6 +238,90 @@ mod tests {
             }
         }
         taken
+    }
+
+    /// On scenes whose inputs are normal numbers of the format, evaluating from the exact
+    /// inputs (each rounded once, exponent carried) is bit-identical to evaluating the rounded
+    /// inputs, for every formula; so the stability report measures the same floats either way.
+    fn exact_inputs_change_nothing_in_range<T: Real + std::fmt::Debug>(decades: i64) -> usize {
+        let cases = suite().into_iter().chain(sweep(11, 300, decades));
+        let mut compared = 0;
+        for case in cases.filter(|c| crate::stability::in_range::<T>(&c.scene)) {
+            for formula in Formula::ALL {
+                let plain = formula.eval(&case.scene.params::<T>()).unwrap();
+                let exact = formula.eval_scene::<T>(&case.scene).unwrap();
+                let nan = |x: T| x.sign().is_none();
+                let same = |x: T, y: T| (x == y && x.sign() == y.sign()) || (nan(x) && nan(y));
+                assert!(
+                    same(plain.v, exact.v)
+                        && same(plain.rod_v, exact.rod_v)
+                        && same(plain.omega, exact.omega),
+                    "{} {}: {plain:?} {exact:?}",
+                    case.id,
+                    formula.name()
+                );
+            }
+            compared += 1;
+        }
+        compared
+    }
+
+    #[test]
+    fn evaluating_from_the_exact_inputs_is_bit_identical_in_range() {
+        assert!(exact_inputs_change_nothing_in_range::<f64>(300) >= 100);
+        assert!(exact_inputs_change_nothing_in_range::<f32>(36) >= 100);
+    }
+
+    /// Regression (issue 12): with a = 7.9e-343 the f64 input a underflowed to 0, so omega came
+    /// out 0. From the exact inputs, every output that is a normal f64 is right: here the
+    /// scene is scaled so that omega = 6/5 (a = l = 10^-400 with I = M l^2/3, v0 = 10^-400).
+    #[test]
+    fn outputs_in_range_are_right_whatever_the_inputs() {
+        let tiny = crate::number::parse("1e-400").unwrap();
+        let s = crate::scene::Scene::builder(crate::field::q(1, 1), crate::field::q(1, 1))
+            .half_length(tiny.clone())
+            .a(tiny.clone())
+            .v0(tiny)
+            .build()
+            .unwrap();
+        for formula in [Formula::Sq, Formula::Scomp] {
+            let x = formula.eval_scene::<f64>(&s).unwrap();
+            // v = 3/5 10^-400 and V = 2/5 10^-400 underflow to 0; omega = 6/5 exactly in Q.
+            assert_eq!((x.v, x.rod_v), (0.0, 0.0), "{}", formula.name());
+            assert!((x.omega - 1.2).abs() <= 2.0 * f64::EPSILON, "{}", x.omega);
+        }
+        let naive = Formula::Naive.eval_scene::<f64>(&s).unwrap();
+        assert!(naive.omega.is_nan(), "every input underflowed: 0/0");
+    }
+
+    /// Regression: the fast path scaled I by 2^-k(M) first and by the area scale after, so in
+    /// f32 with M = 2^36 and I = 2^-88/3 (both normal) the intermediate I 2^-37 was subnormal
+    /// and lost bits, and the outputs came out ulps away from the exponent-carried path (found
+    /// by a seeded sweep). I is now scaled in one exact product.
+    #[test]
+    fn the_fast_path_never_scales_the_inertia_through_the_subnormals() {
+        let two = |k: i32| {
+            let p = num_bigint::BigInt::from(2).pow(k.unsigned_abs());
+            if k >= 0 {
+                Q::from_integer(p)
+            } else {
+                Q::new(1.into(), p)
+            }
+        };
+        let inertia = two(-88) / Q::from_integer(3.into());
+        let s = crate::scene::Scene::builder(crate::field::q(1, 1), two(36))
+            .rod(crate::scene::RodInertia::Moment(inertia))
+            .half_length(crate::field::q(1, 1))
+            .a(-two(-45) / Q::from_integer(7.into()))
+            .build()
+            .unwrap();
+        let p = s.params::<f32>();
+        // frexp: M = 0.5 2^37, I = (2/3) 2^-89, so the area scale is 2^126 and I's is 2^89.
+        let two_steps = p.inertia * f32::pow2(-37);
+        assert!(!two_steps.normal());
+        assert_ne!(two_steps * f32::pow2(126), p.inertia * f32::pow2(89));
+        let fast = scaled(&p).expect("every scaled input is normal");
+        assert_eq!(fast, stable(carried(&p), false));
     }
 
     #[test]

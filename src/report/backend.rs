@@ -1,6 +1,7 @@
 //! The float-backend values of `solve --backend`: each of v, V, omega as
-//! `{"float", "exact", "rel_error", "cond", "reliable"}` (DESIGN.md §3), or for the interval
-//! backend `{"lower", "upper", "exact", "encloses"}`.
+//! `{"float", "exact", "rel_error", "cond", "reliable"}`, plus `"because"` saying why when it is
+//! not reliable, or for the interval backend `{"lower", "upper", "exact", "encloses"}`.
+//! `docs/stability.md` explains the condition numbers and what `reliable` promises.
 
 use crate::error::{Error, ErrorKind};
 use crate::field::{Interval, Q};
@@ -8,12 +9,35 @@ use crate::float::Real;
 use crate::number;
 use crate::scene::Scene;
 use crate::solve::closed_form;
-use crate::stability::{Backend, Measured, Reference};
+use crate::stability::{Backend, Class, Measured, Reference};
+use num_traits::Zero;
 use serde_json::{Map, Value, json};
 
+/// A reliable float is within this many cond·u of the exact value (the stable formulas stay
+/// within it on every in-range scene of the stability suite and sweeps).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::{ERROR_BOUND, backend_values}, scene::Scene, field::q};
+/// use rodimpact::{float::Formula, stability::Backend};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
+/// let j = backend_values(&s, Backend::F64(Formula::Sq))?;
+/// // omega = 12/11: error 7.40e-17 <= 4 cond u, cond = 2.91.
+/// assert_eq!(ERROR_BOUND, 4);
+/// assert_eq!((j["omega"]["rel_error"].as_str(), j["omega"]["reliable"].as_bool()),
+///            (Some("7.40e-17"), Some(true)));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub const ERROR_BOUND: u32 = 4;
+
 /// The `v`, `V`, `omega` entries of `scene` solved in `backend` (`solve --backend` passes the
-/// library's stable formula, [`crate::float::Formula::DEFAULT`]; the interval runs the closed
-/// form).
+/// library's stable formula, [`crate::float::Formula::DEFAULT`], evaluated from the exact
+/// inputs by [`crate::float::Formula::eval_scene`]; the interval runs the closed form).
+///
+/// A float value is `reliable` only when all of these hold: every input (m, M, I, a, v0, e)
+/// is 0 or a normal number of the format; the exact value is 0 or a normal number of the
+/// format; the problem is well conditioned, cond·u <= 1e-3; and the float's exact relative
+/// error is at most [`ERROR_BOUND`] cond·u. Otherwise `"because"` lists what failed.
 ///
 /// # Errors
 /// A pivoted rod with a float backend (the float formulas and condition numbers cover the free
@@ -27,7 +51,20 @@ use serde_json::{Map, Value, json};
 /// let j = backend_values(&s, Backend::F64(Formula::Sq))?;
 /// assert_eq!(j["v"]["exact"], "0");
 /// assert_eq!(j["v"]["reliable"], false);
+/// assert!(j["v"]["because"].as_str().unwrap().starts_with("ill-conditioned: cond is infinite"));
 /// assert_eq!(j["V"]["reliable"], true);
+/// assert!(j["V"].get("because").is_none());
+/// // a = 7.9e-343 underflows f64: nothing is reliable, and omega (2.37e-342) underflows too.
+/// let a = rodimpact::number::parse("7.9e-343").expect("a number");
+/// let s = Scene::builder(q(1, 1), q(1, 1)).a(a).build()?;
+/// let j = backend_values(&s, Backend::F64(Formula::Sq))?;
+/// assert_eq!(j["omega"]["float"], "0");
+/// assert_eq!(j["omega"]["reliable"], false);
+/// assert_eq!(
+///     j["omega"]["because"],
+///     "input a = 7.90e-343 underflows f64; the exact value 2.37e-342 underflows f64; \
+///      error 1.00 exceeds 4 cond u = 1.78e-15"
+/// );
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn backend_values(scene: &Scene, backend: Backend) -> Result<Map<String, Value>, Error> {
@@ -63,28 +100,125 @@ pub fn backend_values(scene: &Scene, backend: Backend) -> Result<Map<String, Val
         .measure(scene, &reference)
         .expect("a free rod is measured");
     let floats: [String; 3] = match backend {
-        Backend::F32(f) => motion_strings(f.eval(&scene.params::<f32>())),
-        Backend::F64(f) => motion_strings(f.eval(&scene.params::<f64>())),
+        Backend::F32(f) => motion_strings(f.eval_scene::<f32>(scene)),
+        Backend::F64(f) => motion_strings(f.eval_scene::<f64>(scene)),
         Backend::Interval | Backend::Exact => unreachable!("handled above"),
     };
     let cond = backend.condition(&reference);
     let conds = [&cond.v, &cond.rod_v, &cond.omega];
     let measures = [&measured.v, &measured.rod_v, &measured.omega];
-    let u = backend.unit_roundoff();
+    let inputs = unrepresentable_inputs(backend, &reference);
     for i in 0..3 {
         let text = |x: Option<&Q>| x.map_or("inf".to_string(), |x| number::decimal(x, 3));
-        out.insert(
-            names[i].into(),
-            json!({
-                "float": floats[i],
-                "exact": exacts[i].to_string(),
-                "rel_error": text(measures[i].rel_error.as_ref()),
-                "cond": text(conds[i].as_ref()),
-                "reliable": Measured::reliable(conds[i].as_ref(), &u),
-            }),
-        );
+        let mut doubts = inputs.clone();
+        doubts.extend(doubts_about_output(
+            backend,
+            exacts[i],
+            measures[i],
+            conds[i].as_ref(),
+        ));
+        let mut entry = json!({
+            "float": floats[i],
+            "exact": exacts[i].to_string(),
+            "rel_error": text(measures[i].rel_error.as_ref()),
+            "cond": text(conds[i].as_ref()),
+            "reliable": doubts.is_empty(),
+        });
+        if !doubts.is_empty() {
+            entry["because"] = Value::String(doubts.join("; "));
+        }
+        out.insert(names[i].into(), entry);
     }
     Ok(out)
+}
+
+/// The format's name and how `x` fares when rounded into it: `None` when it is 0 or a normal
+/// number, else "overflows" or "underflows" (to a subnormal or 0).
+fn fit(backend: Backend, x: &Q) -> (&'static str, Option<&'static str>) {
+    fn judge<T: Real>(x: &Q) -> Option<&'static str> {
+        let rounded = T::from_rational(x);
+        if x.is_zero() || rounded.normal() {
+            None
+        } else if rounded.finite() {
+            Some("underflows")
+        } else {
+            Some("overflows")
+        }
+    }
+    match backend {
+        Backend::F32(_) => ("f32", judge::<f32>(x)),
+        _ => ("f64", judge::<f64>(x)),
+    }
+}
+
+/// "input a = 7.90e-343 underflows f64", for each input of the float formulas (m, M, I, a,
+/// v0, e) that the format cannot hold.
+fn unrepresentable_inputs(backend: Backend, reference: &Reference) -> Vec<String> {
+    let p = &reference.params;
+    let inputs = [
+        ("m", &p.m),
+        ("M", &p.rod_mass),
+        ("I", &p.inertia),
+        ("a", &p.a),
+        ("v0", &p.v0),
+        ("e", &p.e),
+    ];
+    inputs
+        .iter()
+        .filter_map(|(name, x)| {
+            let (format, verdict) = fit(backend, x);
+            verdict.map(|v| format!("input {name} = {} {v} {format}", number::decimal(x, 3)))
+        })
+        .collect()
+}
+
+/// Why one float output, measured against `exact` with condition number `cond` (`None`:
+/// infinite), cannot be trusted: the exact value out of the format's range, an ill-conditioned
+/// problem, a NaN/infinite/wrong-zero float, or an error above [`ERROR_BOUND`] cond·u.
+fn doubts_about_output(
+    backend: Backend,
+    exact: &Q,
+    measured: &Measured,
+    cond: Option<&Q>,
+) -> Vec<String> {
+    let mut doubts = Vec::new();
+    if let (format, Some(verdict)) = fit(backend, exact) {
+        doubts.push(format!(
+            "the exact value {} {verdict} {format}",
+            number::decimal(exact, 3)
+        ));
+    }
+    let u = backend.unit_roundoff();
+    match cond {
+        None => doubts.push(
+            "ill-conditioned: cond is infinite (v = 0 exactly: only exact arithmetic decides it)"
+                .into(),
+        ),
+        Some(c) if !Measured::well_conditioned(Some(c), &u) => doubts.push(format!(
+            "ill-conditioned: cond u = {} > 1e-3",
+            number::decimal(&(c * &u), 3)
+        )),
+        Some(_) => {}
+    }
+    match (&measured.rel_error, measured.class) {
+        (_, Class::Nan) => doubts.push("the float is NaN".into()),
+        (_, Class::Infinite) => doubts.push("the float is infinite".into()),
+        (_, Class::MissedZero) => doubts.push("the float is not 0, the exact value is".into()),
+        (Some(error), _) => {
+            if let Some(c) = cond {
+                let bound = c * &u * Q::from_integer(ERROR_BOUND.into());
+                if *error > bound {
+                    doubts.push(format!(
+                        "error {} exceeds {ERROR_BOUND} cond u = {}",
+                        number::decimal(error, 3),
+                        number::decimal(&bound, 3)
+                    ));
+                }
+            }
+        }
+        (None, _) => doubts.push("the error is undefined".into()),
+    }
+    doubts
 }
 
 fn motion_strings<T: Real>(x: Option<crate::mechanics::Motion<T>>) -> [String; 3] {

@@ -2,6 +2,7 @@
 //! CSV and SVG).
 
 mod backend;
+mod claims_doc;
 mod files;
 mod paper_tables;
 mod plot;
@@ -9,7 +10,8 @@ mod proofs;
 mod solution;
 mod table;
 
-pub use backend::backend_values;
+pub use backend::{ERROR_BOUND, backend_values};
+pub use claims_doc::claims_markdown;
 pub use files::{AtomicFile, create_output_dir, write_atomic};
 pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
 pub use plot::{plot_figure1, plot_omega, plot_optimum, plot_stability};

@@ -1,4 +1,4 @@
-//! The answer to one scene, as `rodimpact solve` prints it: JSON (the contract of DESIGN.md §3)
+//! The answer to one scene, as `rodimpact solve` prints it: JSON (the keys of docs/conventions.md)
 //! and an aligned text report.
 
 use super::value_json;

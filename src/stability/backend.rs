@@ -118,8 +118,9 @@ impl Backend {
         condition(&reference.params, e_rounds)
     }
 
-    /// Evaluates `scene` and measures (v, V, omega) against the reference; for the interval
-    /// also whether each enclosure holds the exact value. `None` for a pivoted rod.
+    /// Evaluates `scene` from its exact inputs ([`Formula::eval_scene`]) and measures (v, V,
+    /// omega) against the reference; for the interval also whether each enclosure holds the
+    /// exact value. `None` for a pivoted rod.
     ///
     /// # Examples
     /// ```
@@ -150,9 +151,9 @@ impl Backend {
             )
         };
         match self {
-            Backend::F64(formula) => Some(floats(&formula.eval(&scene.params::<f64>())?)),
+            Backend::F64(formula) => Some(floats(&formula.eval_scene::<f64>(scene)?)),
             Backend::F32(formula) => {
-                let x = formula.eval(&scene.params::<f32>())?;
+                let x = formula.eval_scene::<f32>(scene)?;
                 // f32 -> f64 is exact, so the measurement is unchanged.
                 Some(floats(&Motion {
                     v: f64::from(x.v),

@@ -1,5 +1,5 @@
 //! Exact componentwise relative condition numbers of v, V and omega for a free rod
-//! (STABILITY.md §1), in the inputs m, M, I, a, v0 (and e when e is not a float of the format).
+//! (`docs/stability.md`), in the inputs m, M, I, a, v0 (and e when e is not a float of the format).
 
 use crate::field::Q;
 use crate::mechanics::Motion;

@@ -128,17 +128,18 @@ impl Measured {
         }
     }
 
-    /// `cond u > 1e-3`: the float cannot be trusted (DESIGN.md §3 `reliable: false`).
+    /// `cond u <= 1e-3`: well enough conditioned to trust a float (one of the conditions of
+    /// `reliable` in `docs/stability.md`; [`crate::report::backend_values`] checks the others).
     ///
     /// # Examples
     /// ```
     /// use rodimpact::{field::q, stability::Measured};
     /// let u = q(1, 1 << 20);
-    /// assert!(Measured::reliable(Some(&q(1, 1)), &u));
-    /// assert!(!Measured::reliable(Some(&q(10_000, 1)), &u));
-    /// assert!(!Measured::reliable(None, &u));
+    /// assert!(Measured::well_conditioned(Some(&q(1, 1)), &u));
+    /// assert!(!Measured::well_conditioned(Some(&q(10_000, 1)), &u));
+    /// assert!(!Measured::well_conditioned(None, &u));
     /// ```
-    pub fn reliable(cond: Option<&Q>, u: &Q) -> bool {
+    pub fn well_conditioned(cond: Option<&Q>, u: &Q) -> bool {
         cond.is_some_and(|c| c * u <= Q::new(1.into(), 1000.into()))
     }
 }

@@ -128,7 +128,7 @@ fn time(backend: Backend, case: &Case) -> f64 {
 pub fn markdown(rows: &[Row]) -> String {
     let mut out = String::from(
         "Error in units of cond*u (u = 2^-53 for f64 and interval, 2^-24 for f32) over the scenes \
-         in range for each format: the 27 suite scenes (STABILITY.md §5 items 1-22) plus a seeded \
+         in range for each format: the 27 suite scenes (items 1-22 of docs/stability.md) plus a seeded \
          sweep (f64: +-300 decades, f32: +-36). The interval's error is its worst end (inf when an end overflows). Spurious 0 counts v in \
          the stop zone too (cond u > 1e-3), where no float formula can decide v. Times: \
          median over the suite scenes of the median time per evaluation.\n\n\

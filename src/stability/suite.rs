@@ -1,4 +1,4 @@
-//! The stiff/extreme scene suite of STABILITY.md §5 (items 1-22; item 22 is six f32 scenes),
+//! The stiff/extreme scene suite of docs/stability.md (items 1-22; item 22 is six f32 scenes),
 //! with exact rational inputs, and a seeded random sweep over many decades.
 
 use crate::field::Q;
@@ -100,7 +100,7 @@ fn scene_of(text: &str) -> Scene {
     s.build().expect("suite scenes are valid")
 }
 
-/// The suite: STABILITY.md §5 items 1-22 (item 23, the compliant-contact models, belongs to
+/// The suite: docs/stability.md items 1-22 (item 23, the compliant-contact models, belongs to
 /// `simulate`, which is not implemented).
 ///
 /// # Examples

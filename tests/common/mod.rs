@@ -3,7 +3,6 @@
 #![allow(dead_code)]
 
 use proptest::prelude::*;
-use rodimpact::batch::{Backend, Batch};
 use rodimpact::field::Q;
 use rodimpact::scene::{RodInertia, Scene, SceneInput};
 
@@ -91,21 +90,23 @@ pub fn rodimpact(args: &[&str]) -> (i32, String, String) {
     )
 }
 
-/// The first `limit` rows of a reference batch of `../shared/data/`: the line, its scene
+/// The path of a file of `tests/data/` (the reference batches; see `tests/data/README.md`).
+pub fn data_file(file: &str) -> String {
+    format!("{}/tests/data/{file}", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The first `limit` rows of a reference batch of `tests/data/`: the line, its scene
 /// (columns m, M, l, a, v0) and its exact v, V, omega, read as `rodimpact batch` reads them.
 pub fn reference_rows(file: &str, limit: usize) -> Vec<(String, Scene, [Q; 3])> {
-    let path = format!("{}/../shared/data/{file}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(path).expect("shared/data beside the project");
-    let mut lines = text.lines();
-    let header = lines.next().expect("a header line");
-    let batch = Batch::new(header, Backend::Exact).expect("the reference header");
-    lines
-        .take(limit)
-        .enumerate()
-        .map(|(i, line)| {
-            let (scene, claimed) = batch.scene(i + 1, line).expect("reference rows are valid");
-            let expected = claimed.map(|x| x.expect("the reference gives v, V and omega"));
-            (line.to_string(), scene, expected)
+    let path = data_file(file);
+    rodimpact::samples::read_batch(path.as_ref(), limit)
+        .unwrap_or_else(|e| panic!("the reference batch {file}: {e}"))
+        .into_iter()
+        .map(|row| {
+            let expected = row
+                .claimed
+                .map(|x| x.expect("the reference gives v, V and omega"));
+            (row.line, row.scene, expected)
         })
         .collect()
 }
