@@ -136,7 +136,7 @@ impl Measured {
                         field,
                         ErrorKind::Invalid(format!(
                             "unknown unit '{}' (accepted: kg, g, m, cm, mm, m/s, cm/s, km/h, rad/s, rpm, J, N*s)",
-                            tail.chars().take(20).collect::<String>()
+                            crate::echo::echo(tail)
                         )),
                     ));
                 }
