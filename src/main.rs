@@ -51,7 +51,9 @@ fn main() -> ExitCode {
                 err.kind(),
                 K::DisplayHelp | K::DisplayVersion | K::DisplayHelpOnMissingArgumentOrSubcommand
             ) {
-                let _ = err.print();
+                if let Err(why) = err.print() {
+                    commands::stdout_failed(&why);
+                }
                 return ExitCode::from(
                     if err.kind() == K::DisplayHelpOnMissingArgumentOrSubcommand {
                         2
@@ -60,10 +62,15 @@ fn main() -> ExitCode {
                     },
                 );
             }
-            eprintln!("{} (try --help)", first_paragraph(&err.to_string()));
+            let line = rodimpact::echo::one_line(&first_paragraph(&err.to_string()));
+            commands::print_err(&format!("{line} (try --help)\n"));
             return ExitCode::from(2);
         }
     };
+    if let Err(e) = rodimpact::report::remove_temporaries_on_signals() {
+        commands::print_err(&format!("error: {e}\n"));
+        return ExitCode::from(2);
+    }
     let result = match &cli.command {
         Command::Solve(args) => commands::solve::run_solve(args),
         Command::Prove(args) => commands::claims::run_prove(args),
@@ -79,7 +86,7 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure::Check) => ExitCode::from(1),
         Err(Failure::Input(e)) => {
-            eprintln!("error: {e}");
+            commands::print_err(&format!("error: {e}\n"));
             ExitCode::from(2)
         }
     }
