@@ -4,8 +4,9 @@
 //! The header names columns among `m, M, l, a, v0, rod, e, pivot` (m and M required, the others
 //! take the `solve` defaults, also when a cell is empty) and optionally `v, V, omega`: claimed
 //! results, each compared with the computed value. Appended columns: `v, V, omega` (named
-//! `v_exact`, ... when the input already has a claim of that name), `laws_held`, and for each
-//! claim `<name>_ok, <name>_rel_error`.
+//! `v_exact`, ... when the input already has a claim of that name; `v_f64, V_f64, omega_f64`
+//! with the f64 backend), `laws_held` (`-` with the f64 backend, which decides no law), and for
+//! each claim `<name>_ok, <name>_rel_error`.
 //!
 //! Limits: at most [`MAX_ROWS`] rows and [`MAX_LINE`] bytes per line; each number at most
 //! [`number::MAX_DIGITS`](crate::number::MAX_DIGITS) digits. Memory stays flat in the number of
@@ -129,13 +130,16 @@ impl Batch {
                 .ok_or_else(|| {
                     bad(format!(
                         "unknown column '{}' (expected {}, {})",
-                        name.chars().take(40).collect::<String>(),
+                        crate::echo::echo(name),
                         SCENE_COLUMNS.join(", "),
                         OUTPUTS.join(", ")
                     ))
                 })?;
             if columns.contains(&index) {
-                return Err(bad(format!("column '{name}' given twice")));
+                return Err(bad(format!(
+                    "column '{}' given twice",
+                    crate::echo::echo(name)
+                )));
             }
             columns.push(index);
         }
@@ -156,21 +160,25 @@ impl Batch {
         })
     }
 
-    /// The header of the output file (with its newline).
+    /// The header of the output file (with its newline). The computed columns are named for
+    /// what they hold: `v, V, omega` exactly (`v_exact`, ... beside a claim of that name), or
+    /// `v_f64, V_f64, omega_f64` from the f64 backend.
     ///
     /// # Examples
     /// ```
     /// use rodimpact::batch::{Batch, Backend};
     /// let b = Batch::new("m,M,omega", Backend::Exact).unwrap();
     /// assert_eq!(b.output_header(), "m,M,omega,v,V,omega_exact,laws_held,omega_ok,omega_rel_error\n");
+    /// let f = Batch::new("m,M", Backend::F64).unwrap();
+    /// assert_eq!(f.output_header(), "m,M,v_f64,V_f64,omega_f64,laws_held\n");
     /// ```
     pub fn output_header(&self) -> String {
         let mut out = self.header.clone();
         for (k, name) in OUTPUTS.iter().enumerate() {
-            let suffix = if self.claims.contains(&k) {
-                "_exact"
-            } else {
-                ""
+            let suffix = match self.backend {
+                Backend::F64 => "_f64",
+                Backend::Exact if self.claims.contains(&k) => "_exact",
+                Backend::Exact => "",
             };
             out.push_str(&format!(",{name}{suffix}"));
         }
@@ -302,7 +310,8 @@ impl Batch {
     }
 }
 
-/// v, V, omega by the closed form in f64, as exact dyadic rationals and shortest round-trip text.
+/// v, V, omega by the closed form in f64, as exact dyadic rationals and shortest round-trip text
+/// (a zero is written `0.0`, whatever its sign: `-0.0` only says which way the float rounded).
 fn float_values(scene: &crate::scene::Scene) -> ([Q; 3], [String; 3]) {
     let nan = Motion {
         v: f64::NAN,
@@ -312,7 +321,14 @@ fn float_values(scene: &crate::scene::Scene) -> ([Q; 3], [String; 3]) {
     let m = crate::solve::closed_form(&scene.params::<f64>()).unwrap_or(nan);
     let xs = [m.v, m.rod_v, m.omega];
     let exact = xs.map(|x| Q::from_float(x).unwrap_or_else(Q::zero));
-    (exact, xs.map(|x| format!("{x:?}")))
+    let text = |x: f64| {
+        if x == 0.0 {
+            "0.0".to_string()
+        } else {
+            format!("{x:?}")
+        }
+    };
+    (exact, xs.map(text))
 }
 
 /// A claimed value as read: on machine words (compared without reducing), or exact.
@@ -399,6 +415,8 @@ pub struct Summary {
     pub rows: usize,
     /// Rows whose laws did not hold exactly (exact backend).
     pub laws_failed: usize,
+    /// Rows whose laws were not checked (f64 backend).
+    pub laws_unchecked: usize,
     claims: [ClaimStats; 3],
 }
 
@@ -421,8 +439,10 @@ impl Summary {
     /// Adds one row (see the type's example).
     pub fn add(&mut self, row: &Row) {
         self.rows += 1;
-        if row.laws_held == Some(false) {
-            self.laws_failed += 1;
+        match row.laws_held {
+            Some(true) => {}
+            Some(false) => self.laws_failed += 1,
+            None => self.laws_unchecked += 1,
         }
         for v in &row.verdicts {
             let s = &mut self.claims[v.output];
@@ -465,8 +485,9 @@ impl Summary {
         self.claims.iter().map(|c| c.wrong).sum()
     }
 
-    /// The report for stderr: rows, laws, and per claimed output the count wrong (naming the
-    /// first [`WRONG_ROWS_SHOWN`] rows), the maximum and the median relative error.
+    /// The report for stderr: rows, laws (or that they were not checked, with the f64 backend),
+    /// and per claimed output the count wrong (naming the first [`WRONG_ROWS_SHOWN`] rows), the
+    /// maximum and the median relative error.
     ///
     /// # Examples
     /// ```
@@ -478,13 +499,22 @@ impl Summary {
     /// s.add(&b.row(2, "1,1,0.6").unwrap());
     /// s.add(&b.row(3, "1,1,0.61").unwrap());
     /// assert!(s.report().contains("v: 3 claims, 1 wrong (row 3), max rel error 0.0167, median 0"));
+    ///
+    /// let f = Batch::new("m,M", Backend::F64).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&f.row(1, "1,1").unwrap());
+    /// assert_eq!(s.report(), "1 rows (f64: conservation laws not checked)\n");
     /// ```
     pub fn report(&self) -> String {
-        let mut out = format!(
-            "{} rows, laws held exactly on {}\n",
-            self.rows,
-            self.rows - self.laws_failed
-        );
+        let mut out = if self.laws_unchecked > 0 {
+            format!("{} rows (f64: conservation laws not checked)\n", self.rows)
+        } else {
+            format!(
+                "{} rows, laws held exactly on {}\n",
+                self.rows,
+                self.rows - self.laws_failed
+            )
+        };
         for (k, s) in self.claims.iter().enumerate() {
             if s.compared == 0 {
                 continue;
@@ -543,8 +573,9 @@ impl ClaimStats {
 ///
 /// # Errors
 /// The first bad row in input order (`row N, column X: ...`), an over-long line or too many
-/// rows, `input: ...` when reading fails, `out: ...` when writing fails. Rows before the bad one
-/// may already be written: write to an [`crate::report::AtomicFile`] to publish all or nothing.
+/// rows, `row N: cannot read: ...` when reading fails, `out: ...` when writing fails. Every row
+/// before the bad one is written first (so a stream shows all the good rows up to it): write to
+/// an [`crate::report::AtomicFile`] to publish all or nothing.
 ///
 /// # Examples
 /// ```
@@ -554,6 +585,11 @@ impl ClaimStats {
 /// let summary = run("1,1\n2,1\n".as_bytes(), &mut out, &b, |_| {}).unwrap();
 /// assert_eq!(String::from_utf8(out).unwrap(), "1,1,3/5,2/5,6/5,true\n2,1,7/9,4/9,4/3,true\n");
 /// assert_eq!(summary.rows, 2);
+///
+/// let mut out = Vec::new();
+/// let err = run("1,1\n2,-1\n3,1\n".as_bytes(), &mut out, &b, |_| {}).unwrap_err();
+/// assert_eq!(err.to_string(), "row 2, column M: must be > 0, got -1");
+/// assert_eq!(String::from_utf8(out).unwrap(), "1,1,3/5,2/5,6/5,true\n"); // row 1 is out
 /// ```
 pub fn run(
     input: impl BufRead,
@@ -568,10 +604,12 @@ pub fn run(
         number: 0,
     };
     let mut solved: Vec<Row> = Vec::new();
-    let mut current = reader.next_chunk()?;
+    // `stop`: the error that ended reading, after the lines of `current`.
+    let (mut current, mut stop) = reader.next_chunk();
     while !current.is_empty() {
         let mut rows = Vec::new();
-        let (mut written, mut next) = (Ok(()), Ok(Vec::new()));
+        let (mut written, mut next) = (Ok(()), (Vec::new(), None));
+        let reading = stop.is_none();
         rayon::in_place_scope(|scope| {
             scope.spawn(|_| {
                 rows = current
@@ -580,16 +618,35 @@ pub fn run(
                     .collect();
             });
             written = write_rows(out, &solved, &mut summary);
-            next = reader.next_chunk();
+            if reading {
+                next = reader.next_chunk();
+            }
         });
         written?;
         progress(reader.bytes);
-        // The current chunk's first bad row comes before any error in the next chunk.
-        solved = rows.into_iter().collect::<Result<_, _>>()?;
-        current = next?;
+        // The current chunk's first bad row comes before any error in the next chunk, and the
+        // rows before it are written before it is reported.
+        let mut good = Vec::with_capacity(rows.len());
+        for row in rows {
+            match row {
+                Ok(row) => good.push(row),
+                Err(e) => {
+                    write_rows(out, &good, &mut summary)?;
+                    return Err(e);
+                }
+            }
+        }
+        solved = good;
+        if !reading {
+            break;
+        }
+        (current, stop) = next;
     }
     write_rows(out, &solved, &mut summary)?;
-    Ok(summary)
+    match stop {
+        Some(e) => Err(e),
+        None => Ok(summary),
+    }
 }
 
 fn write_rows(out: &mut impl Write, rows: &[Row], summary: &mut Summary) -> Result<(), Error> {
@@ -611,10 +668,23 @@ struct ChunkReader<R> {
 }
 
 impl<R: BufRead> ChunkReader<R> {
-    /// Up to [`CHUNK`] non-blank rows with their numbers; empty at the end of the input.
-    fn next_chunk(&mut self) -> Result<Vec<(usize, String)>, Error> {
+    /// Up to [`CHUNK`] non-blank rows with their numbers (empty at the end of the input), and
+    /// the error that stopped reading after them, if any.
+    fn next_chunk(&mut self) -> (Vec<(usize, String)>, Option<Error>) {
         let mut lines = Vec::with_capacity(CHUNK);
         while lines.len() < CHUNK {
+            match self.next_line() {
+                Ok(Some(line)) => lines.push(line),
+                Ok(None) => break,
+                Err(e) => return (lines, Some(e)),
+            }
+        }
+        (lines, None)
+    }
+
+    /// The next non-blank row with its number, or `None` at the end of the input.
+    fn next_line(&mut self) -> Result<Option<(usize, String)>, Error> {
+        loop {
             let mut line = String::new();
             let n = (&mut self.input)
                 .take(MAX_LINE as u64 + 1)
@@ -626,7 +696,7 @@ impl<R: BufRead> ChunkReader<R> {
                     )
                 })?;
             if n == 0 {
-                break;
+                return Ok(None);
             }
             self.bytes += n as u64;
             self.number += 1;
@@ -642,12 +712,10 @@ impl<R: BufRead> ChunkReader<R> {
                     ErrorKind::Invalid(format!("more than {MAX_ROWS} rows (limit per batch)")),
                 ));
             }
-            if line.trim().is_empty() {
-                continue;
+            if !line.trim().is_empty() {
+                return Ok(Some((self.number, line)));
             }
-            lines.push((self.number, line));
         }
-        Ok(lines)
     }
 }
 

@@ -52,20 +52,34 @@ pub enum ErrorKind {
 
 /// An input error: the field it concerns (`m`, `M`, `a`, `rod`, ...) and the reason.
 ///
+/// Displayed as `field: reason` on one line: whatever control character the field or the
+/// reason still holds (a newline, ESC, CR, NUL from the input) is escaped
+/// ([`crate::echo::one_line`]), so the message is one line and inert in a terminal.
+///
 /// # Examples
 /// ```
 /// use rodimpact::{Error, ErrorKind};
 /// let err = Error::new("m", ErrorKind::DivisionByZero);
 /// assert_eq!(err.to_string(), "m: division by zero");
+/// let raw = Error::new("id", ErrorKind::Invalid("unknown claim 'C1\nC2'".into()));
+/// assert_eq!(raw.to_string(), "id: unknown claim 'C1\\nC2'");
 /// ```
-#[derive(Debug, Clone, PartialEq, Eq, ThisError)]
-#[error("{field}: {kind}")]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Error {
     /// The input field the error concerns, as the user wrote it (`m`, `M`, `l`, `a`, ...).
     pub field: String,
     /// What is wrong with it.
     pub kind: ErrorKind,
 }
+
+impl std::fmt::Display for Error {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let message = format!("{}: {}", self.field, self.kind);
+        f.write_str(&crate::echo::one_line(&message))
+    }
+}
+
+impl std::error::Error for Error {}
 
 impl Error {
     /// An error about `field` of the given kind.

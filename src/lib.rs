@@ -28,6 +28,7 @@
 pub mod batch;
 pub mod claims;
 pub mod contact;
+pub mod echo;
 pub mod error;
 pub mod fast;
 pub mod field;

@@ -51,7 +51,9 @@ fn main() -> ExitCode {
                 err.kind(),
                 K::DisplayHelp | K::DisplayVersion | K::DisplayHelpOnMissingArgumentOrSubcommand
             ) {
-                let _ = err.print();
+                if let Err(why) = err.print() {
+                    commands::stdout_failed(&why);
+                }
                 return ExitCode::from(
                     if err.kind() == K::DisplayHelpOnMissingArgumentOrSubcommand {
                         2
@@ -60,10 +62,15 @@ fn main() -> ExitCode {
                     },
                 );
             }
-            eprintln!("{} (try --help)", one_line(&err.to_string()));
+            let line = rodimpact::echo::one_line(&usage_line(&err.to_string()));
+            commands::print_err(&format!("{line} (try --help)\n"));
             return ExitCode::from(2);
         }
     };
+    if let Err(e) = rodimpact::report::remove_temporaries_on_signals() {
+        commands::print_err(&format!("error: {e}\n"));
+        return ExitCode::from(2);
+    }
     let result = match &cli.command {
         Command::Solve(args) => commands::solve::run_solve(args),
         Command::Prove(args) => commands::claims::run_prove(args),
@@ -79,7 +86,7 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure::Check) => ExitCode::from(1),
         Err(Failure::Input(e)) => {
-            eprintln!("error: {e}");
+            commands::print_err(&format!("error: {e}\n"));
             ExitCode::from(2)
         }
     }
@@ -88,7 +95,7 @@ fn main() -> ExitCode {
 /// A clap error as one line: its first paragraph (clap lists missing arguments on the lines
 /// after "the following required arguments were not provided:", and those name the field),
 /// then its tips ("a similar subcommand exists: 'solve'"), joined by "; ".
-fn one_line(rendered: &str) -> String {
+fn usage_line(rendered: &str) -> String {
     let words: Vec<&str> = rendered
         .lines()
         .take_while(|line| !line.trim().is_empty())
@@ -127,7 +134,7 @@ mod tests {
     #[test]
     fn a_missing_argument_is_named_on_the_one_line() {
         let err = Cli::try_parse_from(["rodimpact", "plot", "omega"]).unwrap_err();
-        let line = one_line(&err.to_string());
+        let line = usage_line(&err.to_string());
         assert!(line.contains("not provided: --out <FILE.svg>"), "{line}");
         assert!(!line.contains('\n'));
     }
@@ -138,7 +145,7 @@ mod tests {
     #[test]
     fn a_typo_keeps_clap_tip_on_the_one_line() {
         let err = Cli::try_parse_from(["rodimpact", "slove"]).unwrap_err();
-        let line = one_line(&err.to_string());
+        let line = usage_line(&err.to_string());
         assert!(
             line.starts_with("error: unrecognized subcommand 'slove'"),
             "{line}"
@@ -149,7 +156,7 @@ mod tests {
         );
         assert!(!line.contains('\n'));
         let err = Cli::try_parse_from(["rodimpact", "solve", "--mm", "1"]).unwrap_err();
-        assert!(one_line(&err.to_string()).contains("a similar argument exists: '--m'"));
+        assert!(usage_line(&err.to_string()).contains("a similar argument exists: '--m'"));
     }
 
     #[test]

@@ -9,6 +9,7 @@
 //! significant digits, [`sqrt_bounds`] encloses a square root between decimal rationals, and
 //! [`decimal_sqrt`] rounds a square root correctly. All of it uses integer arithmetic only.
 
+use crate::echo::echo;
 use crate::error::ErrorKind;
 use crate::fast::U256;
 use crate::field::{Q, TrySqrt};
@@ -24,9 +25,6 @@ pub const MAX_DIGITS: usize = 10_000;
 /// The largest accepted magnitude of a written decimal exponent (`1e10000` is accepted,
 /// `1e10001` is not).
 pub const MAX_EXPONENT: u64 = 10_000;
-
-/// How many characters of the input an error message echoes.
-const ECHO_CHARS: usize = 40;
 
 /// Parses an exact rational number.
 ///
@@ -173,15 +171,6 @@ fn is_non_finite_word(part: &str) -> bool {
     ["nan", "inf", "infinity"]
         .iter()
         .any(|w| word.eq_ignore_ascii_case(w))
-}
-
-/// The input for an error message: one line (escaped), at most [`ECHO_CHARS`] characters.
-fn echo(text: &str) -> String {
-    let mut short: String = text.chars().take(ECHO_CHARS).collect();
-    if text.chars().nth(ECHO_CHARS).is_some() {
-        short.push_str("...");
-    }
-    short.escape_debug().to_string()
 }
 
 fn malformed(text: &str, why: &str) -> ErrorKind {

@@ -76,7 +76,7 @@ impl RodInertia {
                         "rod",
                         ErrorKind::Invalid(format!(
                             "expected uniform, dumbbell, rg=<radius> or I=<inertia>, got '{}'",
-                            truncate(text)
+                            crate::echo::echo(text)
                         )),
                     ))
                 }
@@ -605,15 +605,6 @@ fn check_on_rod(field: &str, x: &Q, l: &Q) -> Result<(), Error> {
             field,
             format!("must lie on the rod, |{field}| <= l = {l}, got {x}"),
         ))
-    }
-}
-
-fn truncate(text: &str) -> String {
-    const MAX: usize = 40;
-    if text.chars().count() <= MAX {
-        text.to_string()
-    } else {
-        format!("{}...", text.chars().take(MAX).collect::<String>())
     }
 }
 

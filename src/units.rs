@@ -214,7 +214,7 @@ pub fn split_unit<'t>(
                 field,
                 ErrorKind::Invalid(format!(
                     "unknown unit '{}' ({} takes {})",
-                    tail.chars().take(20).collect::<String>(),
+                    crate::echo::echo(tail),
                     dimension,
                     dimension.accepted()
                 )),

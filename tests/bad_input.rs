@@ -28,6 +28,11 @@ const MEMORY_KIB: u64 = 1 << 20;
 
 /// The exit code, stdout and stderr of the binary, or `None` when it had to be killed.
 fn run(args: &[OsString]) -> Option<(i32, String, String)> {
+    run_to(args, Stdio::piped(), Stdio::piped())
+}
+
+/// [`run`] with stdout and stderr sent where given (what is not piped reads as "").
+fn run_to(args: &[OsString], stdout: Stdio, stderr: Stdio) -> Option<(i32, String, String)> {
     // Through `sh` to cap the address space: an input that makes the binary allocate beyond
     // MEMORY fails (an allocation abort is not exit 2) instead of passing unnoticed.
     let mut child = Command::new("sh")
@@ -36,19 +41,21 @@ fn run(args: &[OsString]) -> Option<(i32, String, String)> {
         .arg(env!("CARGO_BIN_EXE_rodimpact"))
         .args(args)
         .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
+        .stdout(stdout)
+        .stderr(stderr)
         .spawn()
         .expect("the binary runs");
-    let drain = |mut pipe: Box<dyn Read + Send>| {
+    let drain = |pipe: Option<Box<dyn Read + Send>>| {
         std::thread::spawn(move || {
             let mut bytes = Vec::new();
-            let _ = pipe.read_to_end(&mut bytes);
+            if let Some(mut pipe) = pipe {
+                let _ = pipe.read_to_end(&mut bytes);
+            }
             String::from_utf8_lossy(&bytes).into_owned()
         })
     };
-    let out = drain(Box::new(child.stdout.take().unwrap()));
-    let err = drain(Box::new(child.stderr.take().unwrap()));
+    let out = drain(child.stdout.take().map(|p| Box::new(p) as _));
+    let err = drain(child.stderr.take().map(|p| Box::new(p) as _));
     let start = Instant::now();
     let status = loop {
         if let Some(status) = child.try_wait().unwrap() {
@@ -685,5 +692,416 @@ fn batch_files() {
         "header (line 1): line longer than".into(),
     ));
     matrix(cases);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Regression (F7 of the hostile-input review): numbers were echoed escaped, but file paths,
+/// `--jobs`, `--digits`, `--rod`, `--only`, `--format`, `prove` ids, `--claim` names, CSV header
+/// names and TOML ids were copied raw into the message. A value with a newline gave a two-line
+/// error (against "one line on stderr"); ESC, CR and NUL in a CSV header reached the terminal
+/// raw (`\e[2J` cleared the screen, CR overwrote the message). Every echo now goes through
+/// `rodimpact::echo`, and each case below must give one line with no control character in it;
+/// TOML ids, sources, statements and notes with control characters (they reach the report on
+/// stdout) are refused.
+#[test]
+fn control_characters_in_input_never_reach_the_terminal() {
+    let dir = scratch("control");
+    let toml = |from: &str, to: &str| {
+        let text = PROBLEM.replace(from, to);
+        write(&dir, &format!("p{}.toml", text.len()), text.as_bytes())
+    };
+    let mut cases: Vec<(String, Vec<OsString>, String)> = [
+        ("jobs", vec!["batch", "x.csv", "--jobs", "1\n2"], "jobs: "),
+        (
+            "digits",
+            vec!["solve", "--m", "1", "--M", "1", "--digits", "1\n2"],
+            "digits: ",
+        ),
+        (
+            "rod",
+            vec!["solve", "--m", "1", "--M", "1", "--rod", "wood\n\u{1b}[2J"],
+            "rod: ",
+        ),
+        ("only", vec!["table", "--only", "T\n9"], "only: "),
+        ("format", vec!["table", "--format", "md\rx"], "format: "),
+        ("prove id", vec!["prove", "C1\nC2"], "id: "),
+        (
+            "claim name",
+            vec!["check", "--m", "1", "--M", "1", "--claim", "sp\u{1b}in=1"],
+            "claim: ",
+        ),
+        (
+            "claim unit",
+            vec!["check", "--m", "1", "--M", "1", "--claim", "v=1 m\u{1b}s"],
+            "claim v: ",
+        ),
+        (
+            "expression",
+            vec![
+                "check",
+                "--m",
+                "1",
+                "--M",
+                "1",
+                "--claim",
+                "omega=6/\u{1b}5",
+            ],
+            "omega: ",
+        ),
+        (
+            "number",
+            vec!["solve", "--m", "1\r\u{1b}", "--M", "1"],
+            "m: ",
+        ),
+        ("batch path", vec!["batch", "/nonexistent\n.csv"], "FILE: "),
+        (
+            "check path",
+            vec!["check", "/nonexistent\r.toml"],
+            "nonexistent",
+        ),
+        (
+            "out path",
+            vec!["table", "--out", "/nonexistent-dir/a\nb.md"],
+            "out: ",
+        ),
+        (
+            "unknown flag (clap)",
+            vec!["solve", "--m", "1", "--M", "1", "--ma\u{1b}ss"],
+            "--ma",
+        ),
+    ]
+    .into_iter()
+    .map(|(n, a, f)| (n.to_string(), os(&a), f.to_string()))
+    .collect();
+    let header = write(&dir, "header.csv", b"m,M,\x1b[2J\r\0x\n1,1\n");
+    cases.push((
+        "CSV header".into(),
+        vec!["batch".into(), header],
+        "header: unknown column".into(),
+    ));
+    let twice = write(&dir, "twice.csv", b"m,M,\x1b,\x1b\n1,1,1,1\n");
+    cases.push((
+        "CSV header twice".into(),
+        vec!["batch".into(), twice],
+        "header: ".into(),
+    ));
+    for (name, from, to, field) in [
+        (
+            "TOML id",
+            "id = \"p1\"",
+            "id = \"a\\nb\"",
+            "id: control character",
+        ),
+        (
+            "TOML source",
+            "source = \"test\"",
+            "source = \"t\\u001b]0;x\\u0007\"",
+            "source: control character",
+        ),
+        (
+            "TOML note",
+            "source = \"test\"",
+            "source = \"test\"\nnote = \"a\\rb\"",
+            "note: control character",
+        ),
+        (
+            "TOML statement",
+            "source = \"test\"",
+            "source = \"test\"\nstatement = \"\\u0000\"",
+            "statement: control character",
+        ),
+        (
+            "TOML claim name",
+            "omega = \"6/5\"",
+            "\"om\\u001bega\" = \"6/5\"",
+            "claims.om\\u{1b}ega",
+        ),
+        (
+            "TOML collision",
+            "a = \"1\"",
+            "collision = \"el\\nastic\"",
+            "collision",
+        ),
+    ] {
+        cases.push((
+            name.into(),
+            vec!["check".into(), toml(from, to)],
+            field.into(),
+        ));
+    }
+    // The review's case: two problems with the id "a\nb" (a repeated id is refused first).
+    let twice = format!("{PROBLEM}{PROBLEM}").replace("id = \"p1\"", "id = \"a\\nb\"");
+    cases.push((
+        "TOML id twice".into(),
+        vec!["check".into(), write(&dir, "twice.toml", twice.as_bytes())],
+        "problem 'a\\nb': the id is used by two problems".into(),
+    ));
+    let failures: Vec<String> = cases
+        .iter()
+        .filter_map(|(name, args, field)| {
+            let Some((_, _, stderr)) = run(args) else {
+                return Some(format!("{name}: hang"));
+            };
+            let body = stderr.strip_suffix('\n').unwrap_or(&stderr);
+            if body.chars().any(char::is_control) {
+                return Some(format!(
+                    "{name}: a control character reached stderr: {stderr:?}"
+                ));
+            }
+            verdict(name, args, field)
+        })
+        .collect();
+    assert!(failures.is_empty(), "\n{}", failures.join("\n"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The exit code and stdout of a case that must finish (killed after [`HANG`]: a failure).
+fn finished(args: &[&str]) -> (i32, String) {
+    let (code, out, err) = run(&os(args)).unwrap_or_else(|| panic!("{args:?}: still running"));
+    assert!(!err.contains("panicked"), "{args:?}: {err}");
+    (code, out)
+}
+
+/// Regression (F1): the exact optimum a* = sqrt((M+m) I/(m M)) took 22-139 CPU s for numbers
+/// inside the documented limits (10,000 digits, |exponent| <= 10,000): pulling each square
+/// factor p^2 out of the radicand multiplied a ~33,000-bit rational by p and reduced it by GCD,
+/// 10,000 times for 10^10000. The factor is now built once and reduced once; each case below
+/// must end within the kill timer (20 s; each takes a few seconds of ordinary 33,000-bit
+/// arithmetic) with the right a*.
+#[test]
+fn exact_square_roots_at_the_limits() {
+    // m = 10^10000 or M = 10^-10000 (uniform rod, l = 1): a*^2 = (1 + 10^-10000)/3, whose root
+    // agrees with 1/sqrt(3) to 30 digits.
+    for args in [
+        ["solve", "--m", "1e10000", "--M", "1", "--json"],
+        ["solve", "--m", "1", "--M", "1e-10000", "--json"],
+    ] {
+        let (code, out) = finished(&args);
+        assert_eq!(code, 0, "{args:?}");
+        assert!(
+            out.contains("\"decimal\": \"0.577350269189625764509148780502\""),
+            "{args:?}"
+        );
+    }
+    // l = 10^10000, m = M: a* = sqrt(2/3) l, on the rod.
+    let (code, out) = finished(&[
+        "solve", "--m", "1", "--M", "1", "--l", "1e10000", "--a", "1", "--json",
+    ]);
+    assert_eq!(code, 0);
+    assert!(out.contains("\"within_rod\": true"));
+    // r_G = 10^-10000, m = M: a* = sqrt(2) r_G.
+    let (code, out) = finished(&["solve", "--m", "1", "--M", "1", "--rod", "rg=1e-10000"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("sqrt(2)"), "{}", &out[..out.len().min(2000)]);
+    // a* = 1/sqrt(3) (to 9000 digits), not 1: the claim disagrees (exit 1), decided in time.
+    let (code, out) = finished(&["check", "--m", "1e9000", "--M", "1", "--claim", "a_star=1"]);
+    assert_eq!(code, 1);
+    assert!(out.contains("DISAGREES"));
+}
+
+/// Regression (F2): `print_out` ended with exit 0 on *any* stdout error, meant for a closed pipe
+/// (`| head`): `check problems.toml > /dev/full` exited 0 although a claim disagrees, and every
+/// command reported a lost report as success. Errors went to stderr with `eprintln!`, which
+/// panics (exit 101) when stderr cannot be written. Now a failed write to stdout exits 2 with
+/// one line naming `out`, only a broken pipe ends quietly, and stderr failures are ignored.
+#[test]
+fn a_failed_write_to_stdout_or_stderr_is_an_error() {
+    let dir = scratch("full");
+    let textbook = format!("{}/examples/textbook.toml", env!("CARGO_MANIFEST_DIR"));
+    let csv = write(&dir, "in.csv", b"m,M\n1,1\n");
+    let full = || {
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap()
+    };
+    let mut commands: Vec<Vec<OsString>> = [
+        &["solve", "--m", "1", "--M", "1"][..],
+        &["solve", "--m", "1", "--M", "1", "--json"],
+        &["table"],
+        &["prove", "C1", "--json"],
+        &["paper"],
+        &["check", &textbook],
+        &["check", "--m", "1", "--M", "1", "--claim", "omega=1"],
+        &[
+            "simulate",
+            "--m",
+            "1",
+            "--M",
+            "1",
+            "--a",
+            "1/2",
+            "--stiffness",
+            "1e4",
+        ],
+        &["--help"],
+    ]
+    .iter()
+    .map(|a| os(a))
+    .collect();
+    commands.push(vec!["batch".into(), csv.clone()]);
+    for args in &commands {
+        let (code, _, stderr) = run_to(args, Stdio::from(full()), Stdio::piped()).unwrap();
+        assert_eq!(code, 2, "{args:?}: {stderr}");
+        assert_eq!(
+            stderr,
+            "error: out: cannot write standard output: No space left on device (os error 28)\n",
+            "{args:?}"
+        );
+    }
+    // stderr on a full device: the exit code still tells, and nothing panics.
+    for (args, want) in [
+        (os(&["solve", "--m", "0", "--M", "1"]), 2),
+        (os(&["solve", "--bogus"]), 2),
+        (
+            vec![
+                "batch".into(),
+                csv.clone(),
+                "--out".into(),
+                dir.join("out.csv").into(),
+            ],
+            0,
+        ),
+    ] {
+        let (code, _, _) = run_to(&args, Stdio::null(), Stdio::from(full())).unwrap();
+        assert_eq!(code, want, "{args:?}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The quiet case of F2: a reader that goes away (`rodimpact batch big.csv | head -1`) ends the
+/// run with exit 0 and nothing on stderr.
+#[test]
+fn a_closed_pipe_ends_quietly() {
+    let dir = scratch("pipe");
+    let mut text = String::from("m,M\n");
+    for i in 0..50_000 {
+        text.push_str(&format!("{},{}\n", i % 7 + 1, i % 5 + 1));
+    }
+    let csv = write(&dir, "in.csv", text.as_bytes());
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .arg("batch")
+        .arg(&csv)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 16];
+    child.stdout.take().unwrap().read_exact(&mut first).unwrap();
+    // The read end is closed here (dropped); the rest of the 1.3 MB cannot be written.
+    let mut stderr = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut stderr)
+        .unwrap();
+    let status = child.wait().unwrap();
+    assert_eq!(&first, b"m,M,v,V,omega,la");
+    assert_eq!((status.code(), stderr.as_str()), (Some(0), ""));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Regression (F13): `prove` accepted any number of ids, duplicates included (`prove C1 C1`
+/// decided C1 twice; 20,000 ids took 28 s and 1.15 GB), and `--ratios` had no cap (20,000
+/// ratios: 22 s for `plot omega`). Ids are now decided once each, in the order given, at most
+/// as many as the registry holds; a ratio list holds at most 1,000.
+#[test]
+fn argument_lists_are_bounded() {
+    let (code, out) = finished(&["prove", "X1", "c1", " C1 ", "X1"]);
+    assert_eq!(code, 0);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 3, "{out}");
+    assert!(
+        lines[0].starts_with("X1 ") && lines[1].starts_with("C1 "),
+        "{out}"
+    );
+    assert!(lines[2].starts_with("2 claims: 2 PROVED"), "{out}");
+
+    let ids = vec!["C1"; 73];
+    let ratios = vec!["1"; 1001].join(",");
+    let matrix_cases = [
+        (
+            "73 prove ids",
+            [&["prove"][..], &ids].concat(),
+            "id: more than 72 ids",
+        ),
+        (
+            "1001 table ratios",
+            vec!["table", "--ratios", &ratios],
+            "ratios: more than 1000 ratios",
+        ),
+        (
+            "1001 plot ratios",
+            vec![
+                "plot",
+                "omega",
+                "--out",
+                "/nonexistent-dir/x.svg",
+                "--ratios",
+                &ratios,
+            ],
+            "ratios: more than 1000 ratios",
+        ),
+    ];
+    matrix(
+        matrix_cases
+            .into_iter()
+            .map(|(n, a, f)| (n.to_string(), os(&a), f.to_string()))
+            .collect(),
+    );
+    let (code, out) = finished(&[
+        "table",
+        "--only",
+        "T1",
+        "--ratios",
+        &vec!["2"; 1000].join(","),
+    ]);
+    assert_eq!(code, 0);
+    assert!(out.lines().count() > 1000, "{}", out.lines().count());
+}
+
+/// Regression (NEWCOMER #27): without `--out`, README promised the rows "up to a bad row", but
+/// a bad row discarded the good rows of its whole chunk (8,192 rows): `m,M\n1,1\n1,-1\n`
+/// printed only the header. A read error (bytes that are not UTF-8) discarded the chunk before
+/// it too. Every good row before the bad one is now written before the error is reported.
+#[test]
+fn rows_before_a_bad_row_reach_stdout() {
+    let dir = scratch("stream");
+    let mut late = String::from("m,M\n");
+    for _ in 0..8_200 {
+        late.push_str("1,1\n");
+    }
+    late.push_str("1,0\n");
+    let cases: [(&str, Vec<u8>, usize, &str); 3] = [
+        (
+            "bad row 2",
+            b"m,M\n1,1\n1,-1\n1,1\n".to_vec(),
+            1,
+            "row 2, column M",
+        ),
+        (
+            "bad bytes in row 3",
+            b"m,M\n1,1\n2,1\n1,\xff\n".to_vec(),
+            2,
+            "row 3",
+        ),
+        (
+            "bad row 8201",
+            late.into_bytes(),
+            8_200,
+            "row 8201, column M",
+        ),
+    ];
+    for (name, bytes, good, field) in cases {
+        let path = write(&dir, "in.csv", &bytes);
+        let (code, out, err) = run(&[OsString::from("batch"), path]).unwrap();
+        assert_eq!(code, 2, "{name}: {err}");
+        assert!(err.starts_with(&format!("error: {field}")), "{name}: {err}");
+        let lines: Vec<&str> = out.lines().collect();
+        assert_eq!(lines.len(), 1 + good, "{name}");
+        assert_eq!(lines[0], "m,M,v,V,omega,laws_held");
+        assert_eq!(lines[1], "1,1,3/5,2/5,6/5,true", "{name}");
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }

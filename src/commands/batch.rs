@@ -4,6 +4,7 @@ use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use rodimpact::batch::{Backend, Batch, MAX_LINE, Summary, run};
+use rodimpact::echo::{echo, echo_path};
 use rodimpact::report::AtomicFile;
 use rodimpact::{Error, ErrorKind};
 use std::io::{BufRead, BufReader, IsTerminal, Read, Write};
@@ -41,7 +42,7 @@ fn parse_jobs(text: &str) -> Result<usize, Error> {
             "jobs",
             format!(
                 "must be a whole number from 1 to {MAX_JOBS}, got '{}'",
-                text.chars().take(40).collect::<String>()
+                echo(text)
             ),
         )),
     }
@@ -56,7 +57,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     let read_error = |why: std::io::Error| {
         Error::new(
             "FILE",
-            ErrorKind::Io(format!("cannot read {}: {why}", args.file.display())),
+            ErrorKind::Io(format!("cannot read {}: {why}", echo_path(&args.file))),
         )
     };
     let file = std::fs::File::open(&args.file).map_err(read_error)?;
@@ -71,7 +72,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         .map_err(|why| {
             Error::new(
                 "header (line 1)",
-                ErrorKind::Io(format!("cannot read {}: {why}", args.file.display())),
+                ErrorKind::Io(format!("cannot read {}: {why}", echo_path(&args.file))),
             )
         })?;
     if n > MAX_LINE {
@@ -86,7 +87,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
             "FILE",
             ErrorKind::Invalid(format!(
                 "{} has no header line (expected columns among m,M,l,a,v0,rod,e,pivot,v,V,omega)",
-                args.file.display()
+                echo_path(&args.file)
             )),
         )
         .into());
@@ -122,20 +123,19 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
             summary
         }
         None => {
-            let mut out = std::io::BufWriter::new(std::io::stdout());
+            let mut out = Recorded::new(std::io::BufWriter::new(std::io::stdout()));
             let streamed = write_header(&mut out, &batch)
-                .and_then(|()| pool.install(|| run(input, &mut out, &batch, progress)))
-                .and_then(|s| {
-                    out.flush()
-                        .map(|()| s)
-                        .map_err(|why| Error::new("out", ErrorKind::Io(why.to_string())))
-                });
-            match streamed {
-                Ok(summary) => summary,
-                // The reader has gone (`rodimpact batch f.csv | head`): end quietly.
-                Err(e) if e.field == "out" => std::process::exit(0),
-                Err(e) => return Err(e.into()),
+                .and_then(|()| pool.install(|| run(input, &mut out, &batch, progress)));
+            // Rows before a bad one are written out before the error is told; a failed write
+            // is reported as such (quietly for a closed pipe, `| head`).
+            let flushed = out.flush();
+            if let Some(why) = out.failure.take() {
+                super::stdout_failed(&why);
             }
+            if let Err(why) = flushed {
+                super::stdout_failed(&why);
+            }
+            streamed?
         }
     };
     if let Some(bar) = bar {
@@ -144,13 +144,51 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     report(&summary)
 }
 
+/// A writer that keeps its first error, so that the command can tell a failed write to
+/// standard output (a closed pipe, a full disk) from a bad input row after `run` has turned
+/// both into an [`Error`].
+struct Recorded<W> {
+    inner: W,
+    failure: Option<std::io::Error>,
+}
+
+impl<W: Write> Recorded<W> {
+    fn new(inner: W) -> Self {
+        Recorded {
+            inner,
+            failure: None,
+        }
+    }
+
+    fn keep<T>(&mut self, result: std::io::Result<T>) -> std::io::Result<T> {
+        if let Err(why) = &result
+            && why.kind() != std::io::ErrorKind::Interrupted
+            && self.failure.is_none()
+        {
+            self.failure = Some(std::io::Error::new(why.kind(), why.to_string()));
+        }
+        result
+    }
+}
+
+impl<W: Write> Write for Recorded<W> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        let written = self.inner.write(buf);
+        self.keep(written)
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        let flushed = self.inner.flush();
+        self.keep(flushed)
+    }
+}
+
 fn write_header(out: &mut impl Write, batch: &Batch) -> Result<(), Error> {
     out.write_all(batch.output_header().as_bytes())
         .map_err(|why| Error::new("out", ErrorKind::Io(format!("cannot write: {why}"))))
 }
 
 fn report(summary: &Summary) -> Result<(), Failure> {
-    eprint!("{}", summary.report());
+    super::print_err(&summary.report());
     if summary.wrong() > 0 || summary.laws_failed > 0 {
         Err(Failure::Check)
     } else {

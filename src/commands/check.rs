@@ -46,7 +46,7 @@ pub(crate) fn run_check(args: &CheckArgs) -> Result<(), Failure> {
 }
 
 fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
-    let label = path.display().to_string();
+    let label = rodimpact::echo::echo_path(path);
     let s = args.scene.input();
     let scene_given = [
         &s.m,

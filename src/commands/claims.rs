@@ -29,29 +29,41 @@ pub(crate) struct PaperArgs {
     pub(crate) out: Option<PathBuf>,
 }
 
-/// The registered entries for the requested ids (all of them when none is given).
+/// The registered entries for the requested ids (all of them when none is given), each once,
+/// in the order first given. At most as many ids as the registry holds are accepted.
 fn select_claims(ids: &[String]) -> Result<Vec<claims::Entry>, Error> {
     let registry = claims::registry();
     if ids.is_empty() {
         return Ok(registry);
     }
-    ids.iter()
-        .map(|id| {
-            registry
-                .iter()
-                .find(|e| e.id.eq_ignore_ascii_case(id.trim()))
-                .copied()
-                .ok_or_else(|| {
-                    Error::new(
-                        "id",
-                        ErrorKind::Invalid(format!(
-                            "unknown claim '{}'; the ids are C1-C46 and X1-X26",
-                            id.chars().take(40).collect::<String>()
-                        )),
-                    )
-                })
-        })
-        .collect()
+    if ids.len() > registry.len() {
+        return Err(Error::out_of_range(
+            "id",
+            format!(
+                "more than {} ids (limit: the number of claims; a repeated id is decided once)",
+                registry.len()
+            ),
+        ));
+    }
+    let mut selected: Vec<claims::Entry> = Vec::new();
+    for id in ids {
+        let entry = registry
+            .iter()
+            .find(|e| e.id.eq_ignore_ascii_case(id.trim()))
+            .ok_or_else(|| {
+                Error::new(
+                    "id",
+                    ErrorKind::Invalid(format!(
+                        "unknown claim '{}'; the ids are C1-C46 and X1-X26",
+                        rodimpact::echo::echo(id)
+                    )),
+                )
+            })?;
+        if !selected.iter().any(|e| e.id == entry.id) {
+            selected.push(*entry);
+        }
+    }
+    Ok(selected)
 }
 
 /// Writes one certificate per decided claim into `dir`, and the index when `complete`.

@@ -110,13 +110,24 @@ pub(crate) fn parse_digits(text: Option<&str>, default: usize) -> Result<usize, 
             "digits",
             format!(
                 "must be a whole number from 1 to {MAX_DIGITS_OUT}, got '{}'",
-                text.chars().take(40).collect::<String>()
+                rodimpact::echo::echo(text)
             ),
         )),
     }
 }
 
+/// The most mass ratios one `--ratios` list may hold.
+pub(crate) const MAX_RATIOS: usize = 1_000;
+
+/// A comma-separated list of positive mass ratios (at most [`MAX_RATIOS`], counted before any
+/// is parsed).
 pub(crate) fn parse_ratios(field: &str, list: &str) -> Result<Vec<rodimpact::field::Q>, Error> {
+    if list.split(',').nth(MAX_RATIOS).is_some() {
+        return Err(Error::out_of_range(
+            field,
+            format!("more than {MAX_RATIOS} ratios (limit)"),
+        ));
+    }
     list.split(',')
         .map(|text| {
             let x = parse_field(field, text)?;
@@ -132,16 +143,38 @@ pub(crate) fn parse_ratios(field: &str, list: &str) -> Result<Vec<rodimpact::fie
         .collect()
 }
 
-/// Writes `text` to standard output. When the reader has gone (`rodimpact paper | head`), the
-/// program ends quietly instead of panicking on the broken pipe.
+/// Writes `text` to standard output. When the reader has gone (`rodimpact paper | head`, a
+/// broken pipe), the program ends quietly (exit 0); any other failure (a full disk, `/dev/full`)
+/// ends it with exit 2 and one line, so a lost report never passes for success.
 pub(crate) fn print_out(text: &str) {
     use std::io::Write;
     let mut stdout = std::io::stdout().lock();
-    if stdout
+    if let Err(why) = stdout
         .write_all(text.as_bytes())
         .and_then(|()| stdout.flush())
-        .is_err()
     {
+        stdout_failed(&why);
+    }
+}
+
+/// Ends the program after a write to standard output failed: quietly for a broken pipe (the
+/// reader has all it wanted), otherwise with `error: out: cannot write standard output: <reason>`
+/// and exit 2.
+pub(crate) fn stdout_failed(why: &std::io::Error) -> ! {
+    if why.kind() == std::io::ErrorKind::BrokenPipe {
         std::process::exit(0);
     }
+    let error = Error::new(
+        "out",
+        rodimpact::ErrorKind::Io(format!("cannot write standard output: {why}")),
+    );
+    print_err(&format!("error: {error}\n"));
+    std::process::exit(2)
+}
+
+/// Writes `text` to standard error. A failure there cannot be reported anywhere, so it is
+/// ignored (never a panic): the exit code still tells.
+pub(crate) fn print_err(text: &str) {
+    use std::io::Write;
+    let _ = std::io::stderr().lock().write_all(text.as_bytes());
 }

@@ -61,7 +61,7 @@ fn parse_format(text: &str) -> Result<Format, Error> {
             "format",
             ErrorKind::Invalid(format!(
                 "expected md, latex or csv, got '{}'",
-                text.chars().take(40).collect::<String>()
+                rodimpact::echo::echo(text)
             )),
         )
     })
@@ -84,7 +84,7 @@ pub(crate) fn run_table(args: &TableArgs) -> Result<(), Failure> {
                 "only",
                 ErrorKind::Invalid(format!(
                     "unknown table '{}'; the tables are T1-T5",
-                    bad.chars().take(40).collect::<String>()
+                    rodimpact::echo::echo(bad)
                 )),
             )
             .into());

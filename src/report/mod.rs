@@ -12,7 +12,7 @@ mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
 pub use claims_doc::claims_markdown;
-pub use files::{AtomicFile, create_output_dir, write_atomic};
+pub use files::{AtomicFile, create_output_dir, remove_temporaries_on_signals, write_atomic};
 pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
 pub use plot::{plot_figure1, plot_omega, plot_optimum, plot_stability};
 pub use proofs::{

@@ -289,7 +289,7 @@ struct Parser<'a> {
 impl Parser<'_> {
     fn error(&self, why: &str) -> Error {
         let found = match self.chars.get(self.pos) {
-            Some(c) => format!("'{c}'"),
+            Some(c) => format!("'{}'", c.escape_debug()),
             None => "the end".to_string(),
         };
         invalid(
@@ -491,7 +491,7 @@ impl Parser<'_> {
                 self.field,
                 format!(
                     "unknown symbol '{}' at character {} (symbols: m M l L a d v0 e p I r, function sqrt)",
-                    name.chars().take(20).collect::<String>(),
+                    crate::echo::echo(&name),
                     start + 1
                 ),
             ))

@@ -245,7 +245,7 @@ impl Claim {
                 "claim",
                 ErrorKind::Invalid(format!(
                     "expected NAME=VALUE, got '{}'",
-                    spec.chars().take(40).collect::<String>()
+                    crate::echo::echo(spec)
                 )),
             ));
         };
@@ -285,7 +285,7 @@ impl Claim {
                 "claim",
                 ErrorKind::Invalid(format!(
                     "unknown name '{}' (accepted: {})",
-                    name.chars().take(40).collect::<String>(),
+                    crate::echo::echo(name),
                     Quantity::all_names()
                 )),
             )

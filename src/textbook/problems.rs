@@ -152,7 +152,7 @@ pub fn parse_problems(label: &str, text: &str) -> Result<Vec<Problem>, Error> {
     let mut ids = std::collections::HashSet::new();
     if let Some(twice) = doc.problem.iter().find(|p| !ids.insert(p.id.as_str())) {
         return Err(Error::new(
-            format!("{label}: problem '{}'", twice.id),
+            format!("{label}: problem '{}'", crate::echo::echo(&twice.id)),
             ErrorKind::Conflict("the id is used by two problems".into()),
         ));
     }
@@ -161,8 +161,24 @@ pub fn parse_problems(label: &str, text: &str) -> Result<Vec<Problem>, Error> {
 
 fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
     let id = p.id;
-    let at = |field: &str| format!("{label}: problem '{id}': {field}");
+    let at = |field: &str| format!("{label}: problem '{}': {field}", crate::echo::echo(&id));
     let wrap = |e: Error| Error::new(at(&e.field), e.kind);
+    let texts = [("id", Some(&id)), ("source", Some(&p.source))];
+    let notes = [
+        ("statement", p.statement.as_ref()),
+        ("note", p.note.as_ref()),
+    ];
+    for (field, text) in texts.into_iter().chain(notes) {
+        if let Some(c) = text.and_then(|t| t.chars().find(|&c| c.is_control() && c != '\t')) {
+            return Err(Error::new(
+                at(field),
+                ErrorKind::Invalid(format!(
+                    "control character '{}' (it would reach the report raw; write the text on one line)",
+                    c.escape_debug()
+                )),
+            ));
+        }
+    }
     if let Some(n) = p.sig {
         super::sigfig::check_sig(n).map_err(wrap)?;
     }
@@ -182,7 +198,7 @@ fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
                 at("given.collision"),
                 ErrorKind::Invalid(format!(
                     "expected elastic, inelastic or sticking, got '{}'",
-                    other.chars().take(40).collect::<String>()
+                    crate::echo::echo(other)
                 )),
             ));
         }
@@ -209,7 +225,7 @@ fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
     for (name, value) in &p.claims {
         let Some(text) = value.as_str() else {
             return Err(Error::new(
-                at(&format!("claims.{name}")),
+                at(&format!("claims.{}", crate::echo::echo(name))),
                 ErrorKind::Invalid(
                     "write the value as a string (\"1.50\"), so its significant figures survive"
                         .into(),
@@ -218,10 +234,10 @@ fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
         };
         if Quantity::parse(name).is_none() {
             return Err(Error::new(
-                at(&format!("claims.{name}")),
+                at(&format!("claims.{}", crate::echo::echo(name))),
                 ErrorKind::Invalid(format!(
                     "unknown name '{}' (accepted: {})",
-                    name.chars().take(40).collect::<String>(),
+                    crate::echo::echo(name),
                     Quantity::all_names()
                 )),
             ));
@@ -276,13 +292,15 @@ pub fn check_problems(
     problems
         .iter()
         .map(|p| {
-            let at = |field: &str| format!("{label}: problem '{}': {field}", p.id);
+            let at =
+                |field: &str| format!("{label}: problem '{}': {field}", crate::echo::echo(&p.id));
             let claims = p
                 .claims
                 .iter()
                 .map(|(name, text)| {
-                    Claim::new_within(name, text, &mut budget)
-                        .map_err(|e| Error::new(at(&format!("claims.{name}")), e.kind))
+                    Claim::new_within(name, text, &mut budget).map_err(|e| {
+                        Error::new(at(&format!("claims.{}", crate::echo::echo(name))), e.kind)
+                    })
                 })
                 .collect::<Result<Vec<_>, _>>()?;
             let report = check_scene_within(&p.scene, &claims, sig.or(p.sig), &mut budget)
