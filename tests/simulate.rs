@@ -4,8 +4,8 @@
 //! over a sample of scenes, and the runs it must flag.
 
 use rodimpact::contact::{
-    Contact, Ending, Geometry, Integrator, MAX_WORK, Miss, Slopes, fit_slope, simulate, sweep_k,
-    work,
+    Contact, Ending, Geometry, Integrator, LOOSEST, MAX_WORK, Miss, Slopes, fit_slope, simulate,
+    sweep_k, work,
 };
 use rodimpact::field::{Q, q};
 use rodimpact::scene::{RodInertia, Scene};
@@ -282,7 +282,9 @@ fn explicit_integrators_gain_energy_beyond_their_stability_limits() {
     for h_omega in [4.0, 10.0] {
         let rk4 = run(Integrator::Rk4, h_omega);
         assert!(rk4.energy_change > 1.0, "rk4 at {h_omega}: {rk4:?}");
-        assert!(matches!(rk4.miss, Some(Miss::Unstable { limit, .. }) if limit == 2.78));
+        assert!(
+            matches!(rk4.miss, Some(Miss::Unstable { limit, .. }) if (limit - 2.828).abs() < 1e-3)
+        );
     }
 }
 
@@ -323,9 +325,13 @@ fn stated_tolerance_bounds_the_errors_over_a_sample_of_scenes() {
     while checked < 300 {
         let rod_mass = Q::from_float(10f64.powf(-3.0 + 6.0 * uniform())).unwrap();
         let a = thousandths(1.98 * uniform() - 0.99);
-        let e = match (uniform() * 3.0) as u32 {
+        let e = match (uniform() * 4.0) as u32 {
             0 => q(0, 1),
             1 => thousandths(uniform()),
+            2 => Q::new(
+                1.into(),
+                num_bigint::BigInt::from(10).pow(1 + (uniform() * 300.0) as u32),
+            ),
             _ => q(1, 1),
         };
         let rod = match (uniform() * 3.0) as u32 {
@@ -357,8 +363,14 @@ fn stated_tolerance_bounds_the_errors_over_a_sample_of_scenes() {
         let Ok(s) = builder.build() else { continue };
         let c = Contact::new(&s, k, geometry).unwrap();
         let run = simulate(&c, method, h_omega / c.frequency()).unwrap();
-        if run.ending == Ending::SlidOff {
-            continue; // a real slide-off near the end: flagged, not a tolerance question
+        // Runs the verdict does not judge on their errors: a real slide-off near the end, an
+        // explicit method beyond its stability limit, a tolerance above 10 % (a soft k, whose
+        // strongly turning contact the O(1/k) bound does not describe, or a coarse step).
+        let unjudged = matches!(run.miss, Some(Miss::SlidOff | Miss::Unstable { .. }))
+            || run.tolerance.total() > LOOSEST;
+        if unjudged {
+            assert!(run.miss.is_some(), "{run:?}");
+            continue;
         }
         let worst = run
             .errors
@@ -369,6 +381,7 @@ fn stated_tolerance_bounds_the_errors_over_a_sample_of_scenes() {
             worst <= run.tolerance.total(),
             "{s:?} {geometry:?} {method:?} k {k:e} h Omega {h_omega}: {run:?}"
         );
+        assert_eq!(run.miss, None, "{run:?}");
         checked += 1;
     }
 }
@@ -402,11 +415,12 @@ fn hits_at_or_sliding_off_the_end_are_refused_or_flagged() {
 #[test]
 fn work_is_capped_per_integrator_cost() {
     let c = Contact::new(&textbook(), 1e4, Geometry::Exact).unwrap();
-    // RELIABILITY F12's case: 9.8e6 steps through the approach (0.1 s) and three contact
-    // times (3 x 18.9 ms), fine for RK4 (3.9e7 evaluations), not for backward Euler (5.9e8).
+    // RELIABILITY F12's case: at most 1.1e7 steps through the approach (0.1 s) and four
+    // contact times (4 x 18.9 ms), fine for RK4 (4.4e7 evaluations), not for backward Euler
+    // (6.6e8).
     let h = 1.6e-8;
     let steps = work(&c, Integrator::Rk4, h) / 4.0;
-    assert!((9.8e6..9.9e6).contains(&steps), "{steps}");
+    assert!((1.098e7..1.099e7).contains(&steps), "{steps}");
     assert!(work(&c, Integrator::Rk4, h) <= MAX_WORK);
     assert!(work(&c, Integrator::BackwardEuler, h) > MAX_WORK);
     let err = simulate(&c, Integrator::BackwardEuler, h).unwrap_err();

@@ -14,16 +14,17 @@ use rodimpact::scene::parse_field;
 
 /// The stiffnesses of `--sweep-k`: 1e2 to 1e10, one per decade.
 const SWEEP_K: [f64; 9] = [1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10];
-/// Default steps per contact time of one stiffness: h Omega = pi/100 for an elastic contact.
+/// Steps per pi/Omega (an elastic contact time) by default: h Omega = pi/100.
 const STEPS: u32 = 100;
-/// Default steps per contact time of `--sweep-k`, ten times finer.
+/// Steps per pi/Omega by default for `--sweep-k`, ten times finer.
 const SWEEP_STEPS: u32 = 1000;
 
-/// The default steps per contact time: `base`, or ten times more for a sticking contact, whose
-/// settle time T_s (about 34/Omega) is about ten times an elastic contact time (pi/Omega), so
-/// that h Omega is about the same.
+/// The default steps per contact time: `base` per pi/Omega, so that h Omega = pi/base whatever
+/// the law (a damped contact lasts longer than pi/Omega, a sticking one's settle time T_s about
+/// 34/Omega).
 fn default_steps(contact: &Contact, base: u32) -> u32 {
-    if contact.sticking() { 10 * base } else { base }
+    let halves = contact.contact_time() * contact.frequency() / std::f64::consts::PI;
+    (f64::from(base) * halves).ceil().min(1e6) as u32
 }
 
 #[derive(ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
@@ -68,9 +69,10 @@ pub(crate) struct SimulateArgs {
     /// One integrator [default: all five for one k, event-rk4 for --sweep-k].
     #[arg(long, value_enum)]
     pub(crate) integrator: Option<IntegratorArg>,
-    /// Steps per contact time T_c (the settle time T_s for e = 0) [default: 100, ten times more
-    /// for e = 0, and ten times more again for --sweep-k so that the integrator's error stays
-    /// below the model's O(1/k) up to k = 1e10].
+    /// Steps per contact time T_c (the settle time T_s for e = 0) [default: h Omega = pi/100,
+    /// which is 100 steps for an elastic contact and more for damped or sticking ones;
+    /// pi/1000 for --sweep-k so that the integrator's error stays below the model's O(1/k) up to
+    /// k = 1e10].
     #[arg(long, value_name = "N", conflicts_with = "dt",
           value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     pub(crate) steps: Option<u32>,

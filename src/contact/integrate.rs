@@ -85,7 +85,9 @@ impl Integrator {
 pub enum Ending {
     /// The point left the rod's line (bouncing contact, e > 0).
     Separated,
-    /// The sticking contact (e = 0) was read at its settle time.
+    /// The contact was read settled: a sticking contact (e = 0) at its settle time, or a nearly
+    /// critically damped bouncing one whose relative motion had decayed below
+    /// [`SETTLE_TOLERANCE`](super::SETTLE_TOLERANCE) v0 without the penetration returning to 0.
     Settled,
     /// The point slid past the rod's end while pressing on the rod (exact geometry): the
     /// contact broke off early and the impulse is incomplete.
@@ -140,28 +142,30 @@ pub struct Run {
 /// ```
 pub const MAX_WORK: f64 = 3e8;
 
-/// The time after the onset that a run covers: the separation plus two more contact times
-/// (bouncing, so that departure is integrated too), or the settle time (sticking).
-fn contact_span(c: &Contact, integrator: Integrator) -> f64 {
-    match (c.sticking, integrator.fixed_step()) {
-        (true, _) | (false, false) => c.contact_time(),
-        (false, true) => 3.0 * c.contact_time(),
+/// The longest time after the onset that a run covers: the settle time of a sticking contact
+/// (where it is read), four contact times of a bouncing one (which ends at its separation,
+/// normally after one).
+fn contact_span(c: &Contact) -> f64 {
+    if c.sticking {
+        c.contact_time()
+    } else {
+        4.0 * c.contact_time()
     }
 }
 
-/// The steps a run of `integrator` with step `h` takes: fixed-step runs cover the approach
-/// (l/10 at v0) and [`contact_span`]; the event-driven one only the contact.
+/// The most steps a run of `integrator` with step `h` takes: fixed-step runs cover the approach
+/// (l/10 at v0) and [`contact_span`]; the event-driven one only the latter.
 fn steps_needed(c: &Contact, integrator: Integrator, h: f64) -> f64 {
     let approach = if integrator.fixed_step() {
         c.gap() / c.v0
     } else {
         0.0
     };
-    ((approach + contact_span(c, integrator)) / h).ceil()
+    ((approach + contact_span(c)) / h).ceil()
 }
 
-/// The work of one run of `integrator` with step `h`, in force evaluations, for comparison with
-/// [`MAX_WORK`] before running.
+/// The most work one run of `integrator` with step `h` can take, in force evaluations, for
+/// comparison with [`MAX_WORK`] before running.
 ///
 /// # Examples
 /// ```
@@ -170,7 +174,8 @@ fn steps_needed(c: &Contact, integrator: Integrator, h: f64) -> f64 {
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let c = Contact::new(&scene, 1e6, Geometry::Exact)?;
 /// let units = work(&c, Integrator::EventRk4, c.contact_time() / 100.0);
-/// assert!((400.0..=408.0).contains(&units)); // 100 steps of 4 evaluations
+/// // At most 4 T_c of steps of 4 evaluations (the contact separates after about 100).
+/// assert!((1600.0..=1604.0).contains(&units));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn work(c: &Contact, integrator: Integrator, h: f64) -> f64 {
@@ -219,6 +224,7 @@ pub fn simulate(c: &Contact, integrator: Integrator, h: f64) -> Result<Run, Erro
     let (errors, pivot_error) = accuracy::errors(c, &velocities, pivot_impulse);
     let tolerance = Tolerance::of(c, integrator, h, steps);
     let miss = accuracy::judge(
+        c,
         integrator,
         h * c.frequency(),
         ending,
@@ -244,30 +250,43 @@ pub fn simulate(c: &Contact, integrator: Integrator, h: f64) -> Result<Run, Erro
     })
 }
 
-/// A fixed-step run from rest, the point l/10 short of the rod, through [`contact_span`].
+/// A fixed-step run from rest, the point l/10 short of the rod, through the approach and the
+/// contact: to the first step after separation (bouncing) or over the settle time (sticking).
+/// A pivoted rod's centre turns on after the contact, so the velocities are read when it ends.
 fn fixed_step(c: &Contact, integrator: Integrator, h: f64) -> (State, usize, Ending) {
-    let n = steps_needed(c, integrator, h) as usize;
+    let limit = steps_needed(c, integrator, h) as usize;
     let mut s = c.start(c.gap());
-    let mut slid_off = false;
-    for _ in 0..n {
+    let mut touched = false;
+    for taken in 1..=limit {
         s = match integrator {
             Integrator::Verlet => verlet(c, &s, h),
             Integrator::Rk4 => rk4(c, &s, h, true),
             Integrator::Midpoint => implicit(c, &s, h, 0.5),
             _ => implicit(c, &s, h, 1.0),
         };
-        slid_off |= c.slid_off(&s);
+        if c.slid_off(&s) {
+            return (s, taken, Ending::SlidOff);
+        }
+        if !c.sticking {
+            let in_contact = c.gap_function(&s) > 0.0;
+            if touched && !in_contact {
+                return (s, taken, Ending::Separated);
+            }
+            touched |= in_contact;
+        }
     }
-    let ending = if slid_off {
-        Ending::SlidOff
-    } else if c.sticking {
+    (s, limit, unfinished(c, &s))
+}
+
+/// How a run that reached its last step without a separation ended: settled if the contact is
+/// sticking or its relative motion has decayed (a nearly critically damped bouncing contact
+/// whose penetration lingers at the rounding level), else still in contact.
+fn unfinished(c: &Contact, s: &State) -> Ending {
+    if c.sticking || c.settled(s) {
         Ending::Settled
-    } else if c.gap_function(&s) > 0.0 {
-        Ending::StillInContact
     } else {
-        Ending::Separated
-    };
-    (s, n, ending)
+        Ending::StillInContact
+    }
 }
 
 fn axpy(y: &State, h: f64, d: &State) -> State {
@@ -345,11 +364,12 @@ fn implicit(c: &Contact, y0: &State, h: f64, theta: f64) -> State {
 /// contact ended. A bouncing contact still acting after four contact times is given up.
 fn event_rk4(c: &Contact, h: f64) -> (State, usize, Ending) {
     let mut s = c.start(0.0);
+    let span = contact_span(c);
     let (steps, last, settles) = if c.sticking {
-        let n = (c.contact_time() / h).ceil().max(1.0);
-        (n as usize, c.contact_time() - (n - 1.0) * h, true)
+        let n = (span / h).ceil().max(1.0);
+        (n as usize, span - (n - 1.0) * h, true)
     } else {
-        ((4.0 * c.contact_time() / h).ceil() as usize, h, false)
+        ((span / h).ceil() as usize, h, false)
     };
     for taken in 1..=steps {
         let step = if taken == steps { last } else { h };
@@ -378,7 +398,7 @@ fn event_rk4(c: &Contact, h: f64) -> (State, usize, Ending) {
     let ending = if settles {
         Ending::Settled
     } else {
-        Ending::StillInContact
+        unfinished(c, &s)
     };
     (s, steps, ending)
 }

@@ -28,7 +28,7 @@ mod accuracy;
 mod integrate;
 mod sweep;
 
-pub use accuracy::{LOOSEST, Miss, Tolerance};
+pub use accuracy::{LOOSEST, Miss, Tolerance, stability_limit};
 pub use integrate::{Ending, Integrator, MAX_WORK, Run, simulate, work};
 pub use sweep::{Slopes, SweepRow, fit_slope, sweep_k};
 
@@ -402,10 +402,22 @@ impl Contact {
     /// ```
     pub fn contact_time(&self) -> f64 {
         if self.sticking {
-            settle_phase(SETTLE_TOLERANCE) / self.frequency()
+            self.settle_time()
         } else {
             std::f64::consts::PI / (self.frequency() * (1.0 - self.zeta * self.zeta).sqrt())
         }
+    }
+
+    /// T_s: when the critically damped oscillator's remaining relative motion is
+    /// [`SETTLE_TOLERANCE`] v0. A nearly critically damped bouncing contact (tiny e) has
+    /// delivered its impulse by then too, however long its penetration takes to return to 0.
+    fn settle_time(&self) -> f64 {
+        settle_phase(SETTLE_TOLERANCE) / self.frequency()
+    }
+
+    /// The time over which the contact delivers its impulse: T_c, or T_s where that is shorter.
+    pub(crate) fn active_time(&self) -> f64 {
+        self.contact_time().min(self.settle_time())
     }
 
     /// The approach distance of fixed-step runs: l/10, so that contact begins off the step grid.
@@ -471,6 +483,13 @@ impl Contact {
         } else {
             delta.min(self.on_rod(arm))
         }
+    }
+
+    /// `true` when the relative motion at the contact, Omega |delta| + |delta'|, is at most
+    /// [`SETTLE_TOLERANCE`] v0: whatever impulse is left to deliver is below it.
+    fn settled(&self, s: &State) -> bool {
+        let (delta, _, _, rate) = self.geometry_of(s);
+        self.frequency() * delta.abs() + rate.abs() <= SETTLE_TOLERANCE * self.v0
     }
 
     /// Whether the contact has engaged: the point penetrates the rod's line, or (sticking) the

@@ -5,6 +5,7 @@
 use super::solution::{describe, scene_json};
 use crate::contact::{
     Contact, Ending, Geometry, Integrator, LOOSEST, Run, Slopes, SweepRow, Tolerance,
+    stability_limit,
 };
 use crate::field::Q;
 use crate::number;
@@ -69,8 +70,12 @@ pub fn simulation_text(contact: &Contact, runs: &[Run]) -> String {
         );
     }
     out += "\nColumns\n";
-    out += "  h Omega     the step h times Omega, the integrators' accuracy parameter (Verlet is \
-            stable below 2, RK4 below 2.78)\n";
+    out += &format!(
+        "  h Omega     the step h times Omega, the integrators' accuracy parameter (for this \
+         contact Verlet is stable below {:.3}, RK4 below {:.3})\n",
+        stability_limit(contact, Integrator::Verlet).unwrap_or(f64::NAN),
+        stability_limit(contact, Integrator::Rk4).unwrap_or(f64::NAN)
+    );
     out += &format!("  steps       {}\n", steps_words(contact));
     out += &error_legend(pivoted);
     out += "  lateral/v0  the projectile's velocity along the rod afterwards, over v0 (0 in the \
@@ -367,8 +372,9 @@ fn steps_words(contact: &Contact) -> &'static str {
         "fixed-step methods run through the approach (l/10 at v0) and T_s; event-rk4 integrates \
          only the contact, from its onset to T_s"
     } else {
-        "fixed-step methods run through the approach (l/10 at v0) and 3 T_c; event-rk4 integrates \
-         only the contact, from its onset to the located separation"
+        "fixed-step methods run from rest through the approach (l/10 at v0) and the contact, to \
+         the first step after separation; event-rk4 integrates only the contact, from its onset \
+         to the located separation"
     }
 }
 
@@ -433,7 +439,8 @@ fn tolerance_legend(geometry: Geometry, contact: Option<&Contact>) -> String {
     });
     let floor = match geometry {
         Geometry::Exact => format!(
-            "the model's O(1/k) floor{value} (10 theta_c^2, theta_c = max(|omega|, v0/l) T_c)"
+            "the model's O(1/k) floor{value} (10 theta_c^2, theta_c = max(|omega|, v0/l) T_c, T_s \
+             where that is shorter)"
         ),
         Geometry::Frozen => "no model floor (the frozen oscillator is exact)".to_string(),
     };
