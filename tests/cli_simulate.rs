@@ -175,6 +175,11 @@ fn bad_input_names_the_field() {
              hit inside the rod (--a 999/1000) or use --geometry frozen",
         ),
         (vec!["--sweep-k", "--a", "-1"], "a", "(--a -999/1000)"),
+        (
+            vec!["--sweep-k", "--a", "1/2", "--integrator", "midpoint"],
+            "sweep-k",
+            "the runs would take 4.7e8 force evaluations, beyond the limit 3e8",
+        ),
     ] {
         let (code, out, err) = simulate(&args);
         assert_eq!(code, 2, "{args:?}: {err}");

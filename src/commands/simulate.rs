@@ -134,7 +134,7 @@ fn step(args: &SimulateArgs, contact: &Contact) -> Result<f64, Error> {
 }
 
 /// Refuses runs whose total work exceeds [`MAX_WORK`], before any is started; names the flag
-/// that set the step (or the stiffness, which set it through T_c).
+/// that set the step (or the stiffness or the sweep, which set it through T_c).
 fn check_work(args: &SimulateArgs, runs: &[(&Contact, Integrator, f64)]) -> Result<(), Error> {
     let total: f64 = runs.iter().map(|(c, m, h)| work(c, *m, *h)).sum();
     if total <= MAX_WORK {
@@ -144,6 +144,8 @@ fn check_work(args: &SimulateArgs, runs: &[(&Contact, Integrator, f64)]) -> Resu
         "dt"
     } else if args.steps.is_some() {
         "steps"
+    } else if args.sweep_k {
+        "sweep-k"
     } else {
         "stiffness"
     };
@@ -153,7 +155,7 @@ fn check_work(args: &SimulateArgs, runs: &[(&Contact, Integrator, f64)]) -> Resu
             "the runs would take {total:.1e} force evaluations, beyond the limit {MAX_WORK:.0e} \
              (about ten seconds; an implicit step costs 60, an RK4 step 4): use fewer --steps, a \
              larger --dt, a smaller --stiffness, or --integrator event-rk4, whose cost does not \
-             grow with k"
+             grow with k (the fixed-step methods integrate the approach at the contact's step)"
         ),
     ))
 }
