@@ -1,21 +1,31 @@
 //! `rodimpact simulate`: the compliant (penalty) contact integrated in time, against the exact
 //! impulsive result; `--sweep-k` prints the convergence in the stiffness with fitted slopes.
+//! The model lives in `rodimpact::contact`, the report in `rodimpact::report`.
 
 use super::{Failure, SceneFlags, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::Error;
-use rodimpact::contact::{
-    Contact, Geometry, Integrator, MAX_STEPS, Run, SweepRow, fit_slope, simulate, steps_needed,
-    sweep_k,
-};
+use rodimpact::contact::{Contact, Geometry, Integrator, MAX_WORK, simulate, sweep_k, work};
 use rodimpact::field::Field;
+use rodimpact::report::{
+    simulation_json, simulation_passes, simulation_text, sweep_json, sweep_passes, sweep_text,
+};
 use rodimpact::scene::parse_field;
-use serde_json::json;
 
 /// The stiffnesses of `--sweep-k`: 1e2 to 1e10, one per decade.
 const SWEEP_K: [f64; 9] = [1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10];
-/// Default steps per contact time of `--sweep-k`.
+/// Steps per pi/Omega (an elastic contact time) by default: h Omega = pi/100.
+const STEPS: u32 = 100;
+/// Steps per pi/Omega by default for `--sweep-k`, ten times finer.
 const SWEEP_STEPS: u32 = 1000;
+
+/// The default steps per contact time: `base` per pi/Omega, so that h Omega = pi/base whatever
+/// the law (a damped contact lasts longer than pi/Omega, a sticking one's settle time T_s about
+/// 34/Omega).
+fn default_steps(contact: &Contact, base: u32) -> u32 {
+    let halves = contact.contact_time() * contact.frequency() / std::f64::consts::PI;
+    (f64::from(base) * halves).ceil().min(1e6) as u32
+}
 
 #[derive(ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum IntegratorArg {
@@ -27,13 +37,14 @@ pub(crate) enum IntegratorArg {
     Midpoint,
     /// Backward Euler.
     BackwardEuler,
-    /// RK4 on the contact only, free flight analytic, separation located.
+    /// RK4 on the contact only, free flight analytic, the contact's end located.
     EventRk4,
 }
 
 #[derive(ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum GeometryArg {
-    /// The rod turns during contact (converges to the impulsive result as k grows).
+    /// The rod turns during contact (converges to the impulsive result as k grows; not for a
+    /// hit at the rod's end, where the point slides off).
     Exact,
     /// Normal and lever arm frozen: a linear oscillator (the impulsive result for every k).
     Frozen,
@@ -43,7 +54,8 @@ pub(crate) enum GeometryArg {
 pub(crate) struct SimulateArgs {
     #[command(flatten)]
     pub(crate) scene: SceneFlags,
-    /// Spring stiffness k (> 0); the dashpot for e < 1 follows from e.
+    /// Spring stiffness k (> 0). For 0 < e < 1 a dashpot follows from e; e = 0 glues the point
+    /// on (a critically damped spring that also pulls once engaged).
     #[arg(
         long,
         value_name = "Q",
@@ -57,12 +69,14 @@ pub(crate) struct SimulateArgs {
     /// One integrator [default: all five for one k, event-rk4 for --sweep-k].
     #[arg(long, value_enum)]
     pub(crate) integrator: Option<IntegratorArg>,
-    /// Steps per contact time T_c [default: 100, 1000 for --sweep-k so that the integrator's
-    /// error stays below the model's O(1/k) up to k = 1e10].
+    /// Steps per contact time T_c (the settle time T_s for e = 0) [default: h Omega = pi/100,
+    /// which is 100 steps for an elastic contact and more for damped or sticking ones;
+    /// pi/1000 for --sweep-k so that the integrator's error stays below the model's O(1/k) up to
+    /// k = 1e10].
     #[arg(long, value_name = "N", conflicts_with = "dt",
           value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     pub(crate) steps: Option<u32>,
-    /// Fixed time step h in seconds, instead of --steps.
+    /// Fixed time step h in seconds, at most T_c, instead of --steps.
     #[arg(long, value_name = "Q", allow_hyphen_values = true)]
     pub(crate) dt: Option<String>,
     /// Print the convergence table for k = 1e2 .. 1e10 with fitted log-log slopes.
@@ -96,31 +110,54 @@ fn positive_f64(field: &str, text: &str) -> Result<f64, Error> {
     }
 }
 
-/// The step for `contact`: --dt, or T_c / --steps; refused beyond MAX_STEPS steps.
-fn step(
-    args: &SimulateArgs,
-    contact: &Contact,
-    k: f64,
-    method: Integrator,
-    default_steps: u32,
-) -> Result<f64, Error> {
-    let (h, field) = match &args.dt {
-        Some(text) => (positive_f64("dt", text)?, "dt"),
-        None => (
-            contact.contact_time() / f64::from(args.steps.unwrap_or(default_steps)),
-            "steps",
-        ),
+/// The step for `contact`: --dt (refused beyond the contact time, where a step would jump over
+/// the contact), or T_c / --steps.
+fn step(args: &SimulateArgs, contact: &Contact) -> Result<f64, Error> {
+    let Some(text) = &args.dt else {
+        let steps = args.steps.unwrap_or_else(|| default_steps(contact, STEPS));
+        return Ok(contact.contact_time() / f64::from(steps));
     };
-    if steps_needed(contact, method, h) > MAX_STEPS as f64 {
+    let h = positive_f64("dt", text)?;
+    let t_c = contact.contact_time();
+    if h > t_c {
         return Err(Error::out_of_range(
-            field,
+            "dt",
             format!(
-                "{} needs more than {MAX_STEPS} steps at k = {k:e}",
-                method.name()
+                "{h:e} s is longer than the contact time T_c = {t_c:.3e} s at k = {:e}, so a step \
+                 would jump over the contact: use --dt {:.1e} (T_c/100) or --steps N",
+                contact.stiffness(),
+                t_c / 100.0
             ),
         ));
     }
     Ok(h)
+}
+
+/// Refuses runs whose total work exceeds [`MAX_WORK`], before any is started; names the flag
+/// that set the step (or the stiffness or the sweep, which set it through T_c).
+fn check_work(args: &SimulateArgs, runs: &[(&Contact, Integrator, f64)]) -> Result<(), Error> {
+    let total: f64 = runs.iter().map(|(c, m, h)| work(c, *m, *h)).sum();
+    if total <= MAX_WORK {
+        return Ok(());
+    }
+    let field = if args.dt.is_some() {
+        "dt"
+    } else if args.steps.is_some() {
+        "steps"
+    } else if args.sweep_k {
+        "sweep-k"
+    } else {
+        "stiffness"
+    };
+    Err(Error::out_of_range(
+        field,
+        format!(
+            "the runs would take {total:.1e} force evaluations, beyond the limit {MAX_WORK:.0e} \
+             (about ten seconds; an implicit step costs 60, an RK4 step 4): use fewer --steps, a \
+             larger --dt, a smaller --stiffness, or --integrator event-rk4, whose cost does not \
+             grow with k (the fixed-step methods integrate the approach at the contact's step)"
+        ),
+    ))
 }
 
 pub(crate) fn run_simulate(args: &SimulateArgs) -> Result<(), Failure> {
@@ -131,18 +168,26 @@ pub(crate) fn run_simulate(args: &SimulateArgs) -> Result<(), Failure> {
     };
     if args.sweep_k {
         let method = args.integrator.map_or(Integrator::EventRk4, integrator);
-        let k = SWEEP_K[SWEEP_K.len() - 1];
-        step(
-            args,
-            &Contact::new(&scene, k, geometry)?,
-            k,
-            method,
-            SWEEP_STEPS,
-        )?;
-        let steps = args.steps.unwrap_or(SWEEP_STEPS) as usize;
-        let rows = sweep_k(&scene, &SWEEP_K, geometry, method, steps)?;
-        print_out(&sweep_report(&rows, method, args.json));
-        return Ok(());
+        let contacts = SWEEP_K
+            .iter()
+            .map(|&k| Contact::new(&scene, k, geometry))
+            .collect::<Result<Vec<_>, _>>()?;
+        let steps = args
+            .steps
+            .unwrap_or_else(|| default_steps(&contacts[0], SWEEP_STEPS));
+        let planned: Vec<_> = contacts
+            .iter()
+            .map(|c| (c, method, c.contact_time() / f64::from(steps)))
+            .collect();
+        check_work(args, &planned)?;
+        let rows = sweep_k(&scene, &SWEEP_K, geometry, method, steps as usize)?;
+        let ok = sweep_passes(&rows);
+        print_out(&if args.json {
+            json_text(&sweep_json(&rows, steps as usize))
+        } else {
+            sweep_text(&rows, steps as usize)
+        });
+        return if ok { Ok(()) } else { Err(Failure::Check) };
     }
     let k = positive_f64("stiffness", args.stiffness.as_deref().unwrap_or_default())?;
     let contact = Contact::new(&scene, k, geometry)?;
@@ -150,114 +195,25 @@ pub(crate) fn run_simulate(args: &SimulateArgs) -> Result<(), Failure> {
         Some(arg) => vec![integrator(arg)],
         None => Integrator::ALL.to_vec(),
     };
-    let mut runs = Vec::new();
-    for method in methods {
-        let h = step(args, &contact, k, method, 100)?;
-        runs.push((method, h, simulate(&contact, method, h)));
-    }
-    print_out(&run_report(&contact, k, &runs, args.json));
-    Ok(())
+    let h = step(args, &contact)?;
+    let planned: Vec<_> = methods.iter().map(|&m| (&contact, m, h)).collect();
+    check_work(args, &planned)?;
+    let runs = methods
+        .iter()
+        .map(|&m| simulate(&contact, m, h))
+        .collect::<Result<Vec<_>, _>>()?;
+    let ok = simulation_passes(&runs);
+    print_out(&if args.json {
+        json_text(&simulation_json(&contact, &runs))
+    } else {
+        simulation_text(&contact, &runs)
+    });
+    if ok { Ok(()) } else { Err(Failure::Check) }
 }
 
-fn run_report(contact: &Contact, k: f64, runs: &[(Integrator, f64, Run)], as_json: bool) -> String {
-    let [v, rod_v, omega] = contact.reference();
-    let omega_c = contact.frequency();
-    if as_json {
-        let rows: Vec<_> = runs
-            .iter()
-            .map(|(method, h, run)| {
-                json!({
-                    "integrator": method.name(), "h": h, "h_omega": h * omega_c,
-                    "steps": run.steps,
-                    "v": run.velocities[0], "V": run.velocities[1], "omega": run.velocities[2],
-                    "rel_err": {"v": run.errors[0], "V": run.errors[1], "omega": run.errors[2]},
-                    "lateral": run.lateral, "energy_change": run.energy_change,
-                    "seconds": run.seconds,
-                })
-            })
-            .collect();
-        let doc = json!({
-            "stiffness": k, "contact_time": contact.contact_time(), "frequency": omega_c,
-            "exact": {"v": v, "V": rod_v, "omega": omega}, "runs": rows,
-        });
-        return format!(
-            "{}\n",
-            serde_json::to_string_pretty(&doc).expect("JSON of numbers")
-        );
-    }
-    let mut out = format!(
-        "compliant contact: k = {k:e}, T_c = {:.4e} s, Omega = {omega_c:.4e} 1/s\n\
-         exact impulsive: v = {v:.15e}, V = {rod_v:.15e}, omega = {omega:.15e}\n\n\
-         | integrator | h Omega | steps | err v | err V | err omega | lateral/v0 | dE/E | time (s) |\n\
-         |---|---|---|---|---|---|---|---|---|\n",
-        contact.contact_time()
-    );
-    for (method, h, run) in runs {
-        out += &format!(
-            "| {} | {:.3} | {} | {:.2e} | {:.2e} | {:.2e} | {:.2e} | {:+.2e} | {:.2e} |\n",
-            method.name(),
-            h * omega_c,
-            run.steps,
-            run.errors[0],
-            run.errors[1],
-            run.errors[2],
-            run.lateral,
-            run.energy_change,
-            run.seconds
-        );
-    }
-    out
-}
-
-fn sweep_report(rows: &[SweepRow], method: Integrator, as_json: bool) -> String {
-    let ks: Vec<f64> = rows.iter().map(|r| r.k).collect();
-    let slopes: Vec<Option<f64>> = (0..4)
-        .map(|i| fit_slope(&ks, &rows.iter().map(|r| r.errors[i]).collect::<Vec<_>>()))
-        .collect();
-    if as_json {
-        let table: Vec<_> = rows
-            .iter()
-            .map(|r| {
-                json!({"k": r.k, "contact_time": r.contact_time, "turn": r.turn,
-                       "rel_err": {"v": r.errors[0], "V": r.errors[1], "omega": r.errors[2]},
-                       "lateral": r.errors[3], "seconds": r.seconds})
-            })
-            .collect();
-        let doc = json!({
-            "integrator": method.name(), "rows": table,
-            "slopes": {"v": slopes[0], "V": slopes[1], "omega": slopes[2], "lateral": slopes[3]},
-        });
-        return format!(
-            "{}\n",
-            serde_json::to_string_pretty(&doc).expect("JSON of numbers")
-        );
-    }
-    let mut out = format!(
-        "convergence in k ({}): relative error against the exact impulsive values\n\n\
-         | k | T_c (s) | turn (rad) | err v | err V | err omega | lateral/v0 | time (s) |\n\
-         |---|---|---|---|---|---|---|---|\n",
-        method.name()
-    );
-    for r in rows {
-        out += &format!(
-            "| {:.0e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {:.2e} |\n",
-            r.k,
-            r.contact_time,
-            r.turn,
-            r.errors[0],
-            r.errors[1],
-            r.errors[2],
-            r.errors[3],
-            r.seconds
-        );
-    }
-    let show = |s: Option<f64>| s.map_or("n/a".to_string(), |s| format!("{s:.3}"));
-    out += &format!(
-        "\nfitted log-log slopes (least squares): v {}, V {}, omega {}, lateral {}\n",
-        show(slopes[0]),
-        show(slopes[1]),
-        show(slopes[2]),
-        show(slopes[3])
-    );
-    out
+fn json_text(doc: &serde_json::Value) -> String {
+    format!(
+        "{}\n",
+        serde_json::to_string_pretty(doc).expect("JSON of numbers and strings")
+    )
 }

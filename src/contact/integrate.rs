@@ -1,7 +1,11 @@
 //! The integrators: four fixed-step ones over the whole run (approach, contact, departure) and
-//! the event-driven RK4 (free flight analytic, only the contact integrated, separation located).
+//! the event-driven RK4 (free flight analytic, only the contact integrated, its end located),
+//! with the work each costs.
 
+use super::accuracy::{self, Miss, Tolerance};
+use super::slot::{PIVOT_X, POSITIONS, VY};
 use super::{Contact, State};
+use crate::error::Error;
 use crate::solve::solve_linear;
 use std::time::Instant;
 
@@ -16,8 +20,8 @@ pub enum Integrator {
     Midpoint,
     /// Backward Euler (Newton iteration; turns elastic hits plastic once h > T_c).
     BackwardEuler,
-    /// RK4 on the contact only, starting at the exact onset and stopping at the separation
-    /// event located to the method's order; free flight is analytic.
+    /// RK4 on the contact only, starting at the exact onset and stopping at the contact's end
+    /// (separation or settle time), located to the method's order; free flight is analytic.
     EventRk4,
 }
 
@@ -51,103 +55,237 @@ impl Integrator {
             Integrator::EventRk4 => "event-rk4",
         }
     }
+
+    /// The work of one step, in units of one force evaluation (about 30 ns here): 2 for Verlet,
+    /// 4 for the RK4s, 60 for the implicit methods (measured: mostly one Newton iteration of 13
+    /// evaluations for the finite-difference Jacobian and a 12 x 12 solve).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::contact::Integrator;
+    /// assert_eq!(Integrator::Midpoint.cost_per_step(), 60.0);
+    /// ```
+    pub fn cost_per_step(self) -> f64 {
+        match self {
+            Integrator::Verlet => 2.0,
+            Integrator::Rk4 | Integrator::EventRk4 => 4.0,
+            Integrator::Midpoint | Integrator::BackwardEuler => 60.0,
+        }
+    }
+
+    /// `true` for the fixed-step integrators, which run through approach, contact and
+    /// departure.
+    fn fixed_step(self) -> bool {
+        self != Integrator::EventRk4
+    }
+}
+
+/// How a run's contact ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ending {
+    /// The point left the rod's line (bouncing contact, e > 0).
+    Separated,
+    /// The contact was read settled: a sticking contact (e = 0) at its settle time, or a nearly
+    /// critically damped bouncing one whose relative motion had decayed below
+    /// [`SETTLE_TOLERANCE`](super::SETTLE_TOLERANCE) v0 without the penetration returning to 0.
+    Settled,
+    /// The point slid past the rod's end while pressing on the rod (exact geometry): the
+    /// contact broke off early and the impulse is incomplete.
+    SlidOff,
+    /// The run ended with the contact still acting (a step or damping that never lets go).
+    StillInContact,
 }
 
 /// The result of one simulated impact.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Run {
+    /// The integrator.
+    pub integrator: Integrator,
+    /// The time step h (seconds).
+    pub h: f64,
     /// Final velocities (v, V, omega), comparable with [`Contact::reference`].
     pub velocities: [f64; 3],
-    /// The projectile's final lateral velocity over v0 (0 in the impulsive model).
+    /// The pivot's impulse on the rod (x-component) integrated while the contact acted;
+    /// `None` for a free rod.
+    pub pivot_impulse: Option<f64>,
+    /// The projectile's final lateral velocity (along the rod) over v0 (0 in the impulsive
+    /// model).
     pub lateral: f64,
-    /// Relative errors of (v, V, omega) against the exact impulsive values (|v| / v0 where the
-    /// exact value is 0).
+    /// Relative errors of (v, V, omega) against the exact impulsive values, as [`Tolerance`]
+    /// defines them (v against max(|v|, |v0 - v|)).
     pub errors: [f64; 3],
-    /// (E_end - E_0) / E_0.
+    /// The pivot impulse's relative error (against max(|P|, J)); `None` for a free rod.
+    pub pivot_error: Option<f64>,
+    /// (E_end - E_0) / E_0, kinetic plus spring energy.
     pub energy_change: f64,
+    /// How the contact ended.
+    pub ending: Ending,
+    /// The error the run may have.
+    pub tolerance: Tolerance,
+    /// Why the run does not reproduce the exact values; `None` when every error is within the
+    /// tolerance.
+    pub miss: Option<Miss>,
     /// Integration steps taken.
     pub steps: usize,
     /// Wall-clock run time in seconds (reported, never asserted).
     pub seconds: f64,
 }
 
-/// The largest number of steps one run may take.
-pub const MAX_STEPS: usize = 100_000_000;
-
-/// Number of steps a run of `integrator` with step `h` needs: fixed-step runs cover the approach
-/// and three contact times.
+/// The largest work one command may do, summed over its runs, in force evaluations (see
+/// [`Integrator::cost_per_step`]): 3e8, about ten seconds here, so 5e6 implicit steps or
+/// 7.5e7 RK4 steps.
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Contact, Geometry, Integrator, steps_needed};
+/// use rodimpact::contact::{Integrator, MAX_WORK};
+/// assert_eq!(MAX_WORK / Integrator::BackwardEuler.cost_per_step(), 5e6);
+/// ```
+pub const MAX_WORK: f64 = 3e8;
+
+/// The longest time after the onset that a run covers: the settle time of a sticking contact
+/// (where it is read), four contact times of a bouncing one (which ends at its separation,
+/// normally after one).
+fn contact_span(c: &Contact) -> f64 {
+    if c.sticking {
+        c.contact_time()
+    } else {
+        4.0 * c.contact_time()
+    }
+}
+
+/// The most steps a run of `integrator` with step `h` takes: fixed-step runs cover the approach
+/// (l/10 at v0) and [`contact_span`]; the event-driven one only the latter.
+fn steps_needed(c: &Contact, integrator: Integrator, h: f64) -> f64 {
+    let approach = if integrator.fixed_step() {
+        c.gap() / c.v0
+    } else {
+        0.0
+    };
+    ((approach + contact_span(c)) / h).ceil()
+}
+
+/// The most work one run of `integrator` with step `h` can take, in force evaluations, for
+/// comparison with [`MAX_WORK`] before running.
+///
+/// # Examples
+/// ```
+/// use rodimpact::contact::{Contact, Geometry, Integrator, work};
 /// use rodimpact::{field::q, scene::Scene};
-/// let c = Contact::new(&Scene::builder(q(1, 1), q(1, 1)).build()?, 1e6, Geometry::Exact)?;
-/// let n = steps_needed(&c, Integrator::EventRk4, c.contact_time() / 100.0);
-/// assert!((100.0..=101.0).contains(&n)); // ceil(T_c / h) in f64
+/// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
+/// let c = Contact::new(&scene, 1e6, Geometry::Exact)?;
+/// let units = work(&c, Integrator::EventRk4, c.contact_time() / 100.0);
+/// // At most 4 T_c of steps of 4 evaluations (the contact separates after about 100).
+/// assert!((1600.0..=1604.0).contains(&units));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn steps_needed(c: &Contact, integrator: Integrator, h: f64) -> f64 {
-    let span = match integrator {
-        Integrator::EventRk4 => c.contact_time(),
-        _ => c.gap() / c.v0 + 3.0 * c.contact_time(),
-    };
-    (span / h).ceil()
+pub fn work(c: &Contact, integrator: Integrator, h: f64) -> f64 {
+    steps_needed(c, integrator, h) * integrator.cost_per_step()
 }
 
 /// Simulates the impact with step `h` (seconds).
 ///
-/// # Panics
-/// If the run would take more than [`MAX_STEPS`] steps (check with [`steps_needed`] first) or
-/// `h` is not positive.
+/// # Errors
+/// `dt` when `h` is not a positive finite number or the run's [`work`] exceeds [`MAX_WORK`].
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Contact, Geometry, Integrator, simulate};
+/// use rodimpact::contact::{Contact, Ending, Geometry, Integrator, simulate};
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let c = Contact::new(&scene, 1e6, Geometry::Frozen)?;
-/// let run = simulate(&c, Integrator::EventRk4, c.contact_time() / 100.0);
+/// let run = simulate(&c, Integrator::EventRk4, c.contact_time() / 100.0)?;
 /// assert!(run.errors.iter().all(|e| *e < 1e-8));
+/// assert_eq!(run.ending, Ending::Separated);
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn simulate(c: &Contact, integrator: Integrator, h: f64) -> Run {
-    assert!(h > 0.0 && steps_needed(c, integrator, h) <= MAX_STEPS as f64);
+pub fn simulate(c: &Contact, integrator: Integrator, h: f64) -> Result<Run, Error> {
+    if !(h.is_finite() && h > 0.0) {
+        return Err(Error::out_of_range("dt", "must be a positive finite step"));
+    }
+    let units = work(c, integrator, h);
+    if units > MAX_WORK {
+        return Err(Error::out_of_range(
+            "dt",
+            format!(
+                "{} would do {units:.1e} force evaluations, more than the limit {MAX_WORK:.0e}",
+                integrator.name()
+            ),
+        ));
+    }
     let clock = Instant::now();
-    let (state, steps) = match integrator {
-        Integrator::EventRk4 => event_rk4(c, h),
-        _ => {
-            let n = steps_needed(c, integrator, h) as usize;
-            let mut s = c.start(c.gap());
-            for _ in 0..n {
-                s = match integrator {
-                    Integrator::Verlet => verlet(c, &s, h),
-                    Integrator::Rk4 => rk4(c, &s, h, true),
-                    Integrator::Midpoint => implicit(c, &s, h, 0.5),
-                    _ => implicit(c, &s, h, 1.0),
-                };
-            }
-            (s, n)
-        }
+    let (state, steps, ending) = if integrator.fixed_step() {
+        fixed_step(c, integrator, h)
+    } else {
+        event_rk4(c, h)
     };
     let seconds = clock.elapsed().as_secs_f64();
-    let velocities = [state[5], state[7], state[9]];
-    let reference = c.reference();
-    let errors = std::array::from_fn(|i| {
-        let scale = if reference[i] == 0.0 {
-            c.v0
-        } else {
-            reference[i].abs()
-        };
-        (velocities[i] - reference[i]).abs() / scale
-    });
+    let velocities = c.outputs(&state);
+    let pivot_impulse = c.pivot.map(|_| state[PIVOT_X]);
+    let (errors, pivot_error) = accuracy::errors(c, &velocities, pivot_impulse);
+    let tolerance = Tolerance::of(c, integrator, h, steps);
+    let miss = accuracy::judge(
+        c,
+        integrator,
+        h * c.frequency(),
+        ending,
+        &errors,
+        pivot_error,
+        &tolerance,
+    );
     let e0 = c.energy(&c.start(c.gap()));
-    Run {
+    Ok(Run {
+        integrator,
+        h,
         velocities,
-        lateral: state[6] / c.v0,
+        pivot_impulse,
+        lateral: state[VY] / c.v0,
         errors,
+        pivot_error,
         energy_change: (c.energy(&state) - e0) / e0,
+        ending,
+        tolerance,
+        miss,
         steps,
         seconds,
+    })
+}
+
+/// A fixed-step run from rest, the point l/10 short of the rod, through the approach and the
+/// contact: to the first step after separation (bouncing) or over the settle time (sticking).
+/// A pivoted rod's centre turns on after the contact, so the velocities are read when it ends.
+fn fixed_step(c: &Contact, integrator: Integrator, h: f64) -> (State, usize, Ending) {
+    let limit = steps_needed(c, integrator, h) as usize;
+    let mut s = c.start(c.gap());
+    let mut touched = false;
+    for taken in 1..=limit {
+        s = match integrator {
+            Integrator::Verlet => verlet(c, &s, h),
+            Integrator::Rk4 => rk4(c, &s, h, true),
+            Integrator::Midpoint => implicit(c, &s, h, 0.5),
+            _ => implicit(c, &s, h, 1.0),
+        };
+        if c.slid_off(&s) {
+            return (s, taken, Ending::SlidOff);
+        }
+        if !c.sticking {
+            let in_contact = c.gap_function(&s) > 0.0;
+            if touched && !in_contact {
+                return (s, taken, Ending::Separated);
+            }
+            touched |= in_contact;
+        }
+    }
+    (s, limit, unfinished(c, &s))
+}
+
+/// How a run that reached its last step without a separation ended: settled if the contact is
+/// sticking or its relative motion has decayed (a nearly critically damped bouncing contact
+/// whose penetration lingers at the rounding level), else still in contact.
+fn unfinished(c: &Contact, s: &State) -> Ending {
+    if c.sticking || c.settled(s) {
+        Ending::Settled
+    } else {
+        Ending::StillInContact
     }
 }
 
@@ -163,19 +301,20 @@ fn rk4(c: &Contact, s: &State, h: f64, switched: bool) -> State {
     std::array::from_fn(|i| s[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
 }
 
-/// Velocity Verlet; the dashpot's velocity is taken at the half step (explicit).
+/// Velocity Verlet; the dashpot's velocity is taken at the half step (explicit). The pivot's
+/// impulse is kicked like a velocity (the trapezoidal rule).
 fn verlet(c: &Contact, s: &State, h: f64) -> State {
     let half = |s: &State| {
         let d = c.derivative(s, true);
         let mut out = *s;
-        for i in 5..10 {
+        for i in POSITIONS..out.len() {
             out[i] += h / 2.0 * d[i];
         }
         out
     };
     let mut t = half(s);
-    for i in 0..5 {
-        t[i] += h * t[i + 5];
+    for i in 0..POSITIONS {
+        t[i] += h * t[i + POSITIONS];
     }
     half(&t)
 }
@@ -188,11 +327,12 @@ fn implicit(c: &Contact, y0: &State, h: f64, theta: f64) -> State {
         let f = c.derivative(&mid, true);
         std::array::from_fn(|i| y1[i] - y0[i] - h * f[i])
     };
+    let n = y0.len();
     let mut y1 = axpy(y0, h, &c.derivative(y0, true));
     for _ in 0..30 {
         let g = residual(&y1);
-        let mut jacobian = vec![vec![0.0; 10]; 10];
-        for j in 0..10 {
+        let mut jacobian = vec![vec![0.0; n]; n];
+        for j in 0..n {
             let eps = 1e-7 * (y1[j].abs() + c.gap() * 1e-3);
             let mut shifted = y1;
             shifted[j] += eps;
@@ -217,28 +357,48 @@ fn implicit(c: &Contact, y0: &State, h: f64, theta: f64) -> State {
 }
 
 /// Event-driven RK4: the rod is at rest until the exact onset (delta = 0), the contact branch is
-/// integrated with step h, and the last step is shortened by bisection on the event function
-/// so that it ends on the separation. Returns the state at separation (free flight after it
-/// does not change the velocities) and the number of full steps.
-fn event_rk4(c: &Contact, h: f64) -> (State, usize) {
+/// integrated with step h, and the last step is shortened so that it ends on the contact's end:
+/// the separation or slide-off event, located by bisection on the event function, or the
+/// settle time of a sticking contact (the last step shortened to end on it). Returns the state
+/// then (free flight after it does not change the velocities), the number of steps and how the
+/// contact ended. A bouncing contact still acting after four contact times is given up.
+fn event_rk4(c: &Contact, h: f64) -> (State, usize, Ending) {
     let mut s = c.start(0.0);
-    let mut steps = 0;
-    loop {
-        let next = rk4(c, &s, h, false);
-        steps += 1;
-        if c.gap_function(&next) > 0.0 && steps < MAX_STEPS {
-            s = next;
-            continue;
-        }
-        let (mut lo, mut hi) = (0.0, 1.0);
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            if c.gap_function(&rk4(c, &s, mid * h, false)) > 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
+    let span = contact_span(c);
+    let (steps, last, settles) = if c.sticking {
+        let n = (span / h).ceil().max(1.0);
+        (n as usize, span - (n - 1.0) * h, true)
+    } else {
+        ((span / h).ceil() as usize, h, false)
+    };
+    for taken in 1..=steps {
+        let step = if taken == steps { last } else { h };
+        let next = rk4(c, &s, step, false);
+        if c.gap_function(&next) <= 0.0 {
+            let (mut lo, mut hi) = (0.0, 1.0);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if c.gap_function(&rk4(c, &s, mid * step, false)) > 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
             }
+            let end = rk4(c, &s, hi * step, false);
+            let (delta, arm, _, _) = c.geometry_of(&end);
+            let ending = if c.sticking || c.on_rod(arm) < delta {
+                Ending::SlidOff
+            } else {
+                Ending::Separated
+            };
+            return (end, taken, ending);
         }
-        return (rk4(c, &s, hi * h, false), steps);
+        s = next;
     }
+    let ending = if settles {
+        Ending::Settled
+    } else {
+        unfinished(c, &s)
+    };
+    (s, steps, ending)
 }

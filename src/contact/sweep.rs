@@ -1,30 +1,86 @@
 //! Convergence in the stiffness: the exact-geometry model against the impulsive values for a
 //! range of k, with least-squares slopes on log-log axes.
 
-use super::{Contact, Geometry, Integrator, simulate};
+use super::{Contact, Geometry, Integrator, Run, simulate};
 use crate::error::Error;
 use crate::scene::Scene;
 
-/// One stiffness of a [`sweep_k`].
+/// One stiffness of a [`sweep_k`]: the model and its run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepRow {
-    /// The spring stiffness k.
-    pub k: f64,
-    /// The contact duration T_c.
-    pub contact_time: f64,
-    /// The rod's turn during contact, omega T_c (radians).
-    pub turn: f64,
-    /// Relative errors of v, V, omega and |lateral velocity| / v0.
-    pub errors: [f64; 4],
-    /// Wall-clock seconds of the run.
-    pub seconds: f64,
+    /// The model at this stiffness (its k, T_c and exact values).
+    pub contact: Contact,
+    /// The run at this stiffness.
+    pub run: Run,
+}
+
+impl SweepRow {
+    /// The rod's turn during the contact, |omega| T_c (radians), omega the exact value.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::contact::{Geometry, Integrator, sweep_k};
+    /// use rodimpact::{field::q, scene::Scene};
+    /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
+    /// let row = &sweep_k(&scene, &[1e6], Geometry::Exact, Integrator::EventRk4, 100)?[0];
+    /// assert!((row.turn() - 12.0 / 11.0 * row.contact.contact_time()).abs() < 1e-18);
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn turn(&self) -> f64 {
+        self.contact.reference()[2].abs() * self.contact.contact_time()
+    }
+}
+
+/// Least-squares slopes of log10(error) against log10(k) over a sweep: the convergence orders.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Slopes {
+    /// Slopes for the errors of v, V and omega (`None` where an error is 0 or not finite).
+    pub errors: [Option<f64>; 3],
+    /// Slope for the pivot impulse's error; `None` for a free rod.
+    pub pivot: Option<f64>,
+    /// Slope for |lateral velocity| / v0.
+    pub lateral: Option<f64>,
+}
+
+impl Slopes {
+    /// The slopes of `rows`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::contact::{Geometry, Integrator, Slopes, sweep_k};
+    /// use rodimpact::{field::q, scene::Scene};
+    /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
+    /// let rows = sweep_k(&scene, &[1e4, 1e6, 1e8], Geometry::Exact, Integrator::EventRk4, 400)?;
+    /// let slopes = Slopes::of(&rows);
+    /// assert!((slopes.errors[2].unwrap() + 1.0).abs() < 0.01); // omega: O(1/k)
+    /// assert!((slopes.lateral.unwrap() + 0.5).abs() < 0.01); // lateral: O(k^-1/2)
+    /// assert_eq!(slopes.pivot, None);
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn of(rows: &[SweepRow]) -> Slopes {
+        let ks: Vec<f64> = rows.iter().map(|r| r.contact.stiffness()).collect();
+        let fit = |value: &dyn Fn(&Run) -> f64| {
+            let ys: Vec<f64> = rows.iter().map(|r| value(&r.run)).collect();
+            fit_slope(&ks, &ys)
+        };
+        let pivoted = rows.iter().all(|r| r.run.pivot_error.is_some()) && !rows.is_empty();
+        Slopes {
+            errors: std::array::from_fn(|i| fit(&|run: &Run| run.errors[i])),
+            pivot: if pivoted {
+                fit(&|run: &Run| run.pivot_error.unwrap_or(f64::NAN))
+            } else {
+                None
+            },
+            lateral: fit(&|run: &Run| run.lateral.abs()),
+        }
+    }
 }
 
 /// Simulates `scene` for each stiffness in `ks` with `integrator`, `steps` steps per contact
 /// time T_c.
 ///
 /// # Errors
-/// Those of [`Contact::new`].
+/// Those of [`Contact::new`] and [`simulate`].
 ///
 /// # Examples
 /// ```
@@ -32,7 +88,7 @@ pub struct SweepRow {
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let rows = sweep_k(&scene, &[1e4, 1e6], Geometry::Exact, Integrator::EventRk4, 200)?;
-/// assert!(rows[1].errors[2] < rows[0].errors[2] / 50.0); // omega: O(1/k)
+/// assert!(rows[1].run.errors[2] < rows[0].run.errors[2] / 50.0); // omega: O(1/k)
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn sweep_k(
@@ -44,16 +100,9 @@ pub fn sweep_k(
 ) -> Result<Vec<SweepRow>, Error> {
     ks.iter()
         .map(|&k| {
-            let c = Contact::new(scene, k, geometry)?;
-            let run = simulate(&c, integrator, c.contact_time() / steps as f64);
-            let [ev, erv, eo] = run.errors;
-            Ok(SweepRow {
-                k,
-                contact_time: c.contact_time(),
-                turn: c.reference()[2] * c.contact_time(),
-                errors: [ev, erv, eo, run.lateral.abs()],
-                seconds: run.seconds,
-            })
+            let contact = Contact::new(scene, k, geometry)?;
+            let run = simulate(&contact, integrator, contact.contact_time() / steps as f64)?;
+            Ok(SweepRow { contact, run })
         })
         .collect()
 }

@@ -7,6 +7,7 @@ mod files;
 mod paper_tables;
 mod plot;
 mod proofs;
+mod simulate;
 mod solution;
 mod table;
 
@@ -18,6 +19,9 @@ pub use plot::{plot_figure1, plot_omega, plot_optimum, plot_stability};
 pub use proofs::{
     claim_markdown, index_markdown, paper_report, prove_json, prove_line, summary_line,
     verdict_label,
+};
+pub use simulate::{
+    simulation_json, simulation_passes, simulation_text, sweep_json, sweep_passes, sweep_text,
 };
 pub use solution::Solution;
 pub use table::{Cell, Format, Header, Table, render_document};

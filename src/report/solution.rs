@@ -301,7 +301,7 @@ fn surd_json(x: &QSqrt, digits: usize) -> Value {
     json!({ "exact": x.to_string(), "decimal": x.decimal(digits) })
 }
 
-fn scene_json(s: &Scene) -> Value {
+pub(super) fn scene_json(s: &Scene) -> Value {
     let mut out = Map::new();
     let mut put = |k: &str, v: String| {
         out.insert(k.into(), Value::String(v));
@@ -325,7 +325,7 @@ fn scene_json(s: &Scene) -> Value {
 }
 
 /// One line describing the scene in words.
-fn describe(s: &Scene) -> String {
+pub(super) fn describe(s: &Scene) -> String {
     let support = match s.support() {
         Support::Free => "free rod on a frictionless table".to_string(),
         Support::Pivot(p) => format!("rod on a fixed pivot at p = {} m", number::compact(p)),
