@@ -74,7 +74,7 @@ fn plot_and_simulate_read_units_exactly() {
     assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
     std::fs::remove_dir_all(&dir).unwrap();
     let sim = |base: &[&str]| -> Value {
-        let args = with(&["simulate", "--json", "--stiffness", "1e4"], base);
+        let args = with(&["simulate", "--json", "--stiffness", "1e8"], base);
         serde_json::from_str(&run(&args)).unwrap()
     };
     assert_eq!(sim(&WITH_UNITS)["exact"], sim(&IN_SI)["exact"]);
