@@ -12,7 +12,10 @@ mod table;
 pub use backend::backend_values;
 pub use files::{AtomicFile, create_output_dir, write_atomic};
 pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
-pub use plot::{plot_figure1, plot_omega, plot_optimum, plot_stability};
+pub use plot::{
+    Figure, PlotData, PlotValue, energy_figure, mass_ratio_family, omega_figure, optimum_figure,
+    plot_figure1, plot_omega, plot_optimum, plot_stability, quantities_figure, velocity_figure,
+};
 pub use proofs::{
     claim_markdown, index_markdown, paper_report, prove_json, prove_line, summary_line,
     verdict_label,
