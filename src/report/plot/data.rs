@@ -7,6 +7,13 @@ use crate::number;
 const DIGITS: usize = 17;
 
 /// One value of a sample: an exact rational, or the square root of one (a*).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::PlotValue, field::q};
+/// let a_star = PlotValue::Root(q(2, 3));
+/// assert_ne!(a_star, PlotValue::Exact(q(2, 3)));
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub enum Value {
     /// An exact rational.
@@ -31,6 +38,15 @@ impl Value {
 }
 
 /// The data of a figure: named columns, one row per sample point.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::Scene, field::q};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+/// let data = rodimpact::report::quantities_figure(&s).unwrap().data.unwrap();
+/// assert_eq!(data.columns, ["a", "v", "V", "omega", "J", "lever_times_J"]);
+/// assert_eq!(data.rows.len(), 201);
+/// ```
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct PlotData {
     /// Column names (the CSV has `name` with the exact value and `name_decimal` beside it).

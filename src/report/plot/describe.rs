@@ -6,11 +6,6 @@ use crate::scene::{RodInertia, Scene, Support};
 use num_traits::{One, Signed, Zero};
 
 /// `q` times the symbol `unit` as a reader writes it: `l`, `−l/2`, `3l/10`, `0`.
-///
-/// # Examples
-/// ```ignore
-/// assert_eq!(multiple(&q(-3, 2), "l"), "−3l/2");
-/// ```
 pub(crate) fn multiple(q: &Q, unit: &str) -> String {
     if q.is_zero() {
         return "0".into();

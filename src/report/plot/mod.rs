@@ -36,6 +36,14 @@ const PALETTE: [&str; 6] = [
 ];
 
 /// A drawn figure and the sampled values behind it (for `--data`).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::Scene, field::q};
+/// let s = Scene::builder(q(1, 1), q(2, 1)).build().unwrap();
+/// let fig = rodimpact::report::energy_figure(&s).unwrap();
+/// assert!(fig.svg.starts_with("<svg") && fig.data.is_some());
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
     /// The SVG document.

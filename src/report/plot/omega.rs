@@ -57,11 +57,21 @@ fn curve(scene: &Scene, data: &mut PlotData) -> Result<Curve, Error> {
     })
 }
 
-/// omega(a) l/v0 against a/l for each scene (all with the same rod, support and collision law;
-/// typically one mass ratio each), with the data sampled at a = k l/200.
+/// omega(a) l/v0 against a/l for each scene (drawn with the rod, support and collision law of
+/// the first; typically one mass ratio each), with the data sampled at a = k l/200.
 ///
 /// # Errors
-/// Scenes that disagree on rod, support or law (not drawn on one chart).
+/// An empty list of scenes.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::Scene, field::q};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).pivot(q(-1, 2)).build().unwrap();
+/// let fig = rodimpact::report::omega_figure(&[s]).unwrap();
+/// assert!(fig.svg.contains("on a fixed pivot at p = −l/2"));
+/// // omega at a = l: (1 + e) m d v0/(I_p + m d^2) = 2 (3/2)/(7/12 + 9/4) = 18/17.
+/// assert!(fig.data.unwrap().to_csv().lines().last().unwrap().starts_with("1,1.0000000000000000,1,1.0000000000000000,18/17,"));
+/// ```
 pub fn omega_figure(scenes: &[Scene]) -> Result<Figure, Error> {
     let Some(first) = scenes.first() else {
         return Err(Error::new(

@@ -61,6 +61,15 @@ fn root_multiple(k: &Q, unit: &str) -> String {
 ///
 /// # Errors
 /// A rod that makes an invalid scene.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::{RodInertia, Scene}, field::q};
+/// let s = Scene::builder(q(1, 1), q(3, 1)).rod(RodInertia::Gyration(q(1, 10))).build().unwrap();
+/// let fig = rodimpact::report::optimum_figure(&s, true).unwrap();
+/// assert!(fig.svg.contains("M = 99m: a* reaches the end"));
+/// assert!(fig.svg.contains("this scene"));
+/// ```
 pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
     let l = base.half_length().clone();
     let pivoted = pivot_of(base).is_some();

@@ -21,20 +21,41 @@ pub(crate) struct Tick {
 const TARGET_TICKS: f64 = 6.0;
 
 /// The nice step (1, 2 or 5 times a power of ten) for `span` split in about `TARGET_TICKS`.
-fn nice_step(span: f64) -> f64 {
+fn nice_step(span: f64) -> Step {
     let raw = span / TARGET_TICKS;
-    let power = 10f64.powf(raw.log10().floor());
-    let mantissa = raw / power;
-    let nice = if mantissa < 1.5 {
-        1.0
+    let power = raw.log10().floor() as i32;
+    let mantissa = raw / 10f64.powi(power);
+    let (nice, power) = if mantissa < 1.5 {
+        (1.0, power)
     } else if mantissa < 3.5 {
-        2.0
+        (2.0, power)
     } else if mantissa < 7.5 {
-        5.0
+        (5.0, power)
     } else {
-        10.0
+        (1.0, power + 1)
     };
-    nice * power
+    Step { nice, power }
+}
+
+/// A step `nice * 10^power`, multiplied without the rounding of a binary 0.1 (6 × 0.2 is 1.2,
+/// not 1.2000000000000002).
+#[derive(Debug, Clone, Copy)]
+struct Step {
+    nice: f64,
+    power: i32,
+}
+
+impl Step {
+    fn times(self, k: f64) -> f64 {
+        if self.power >= 0 {
+            k * self.nice * 10f64.powi(self.power)
+        } else {
+            k * self.nice / 10f64.powi(-self.power)
+        }
+    }
+    fn size(self) -> f64 {
+        self.times(1.0)
+    }
 }
 
 /// `x` with the decimals that `step` needs; negatives with a true minus sign.
@@ -67,8 +88,8 @@ impl Scale {
         };
         let step = nice_step(hi - lo);
         Scale::Linear {
-            lo: (lo / step + 1e-9).floor() * step,
-            hi: (hi / step - 1e-9).ceil() * step,
+            lo: step.times((lo / step.size() + 1e-9).floor()),
+            hi: step.times((hi / step.size() - 1e-9).ceil()),
         }
     }
 
@@ -101,14 +122,14 @@ impl Scale {
         match *self {
             Scale::Linear { lo, hi } => {
                 let step = nice_step(hi - lo);
-                let first = (lo / step - 1e-9).ceil() as i64;
-                let last = (hi / step + 1e-9).floor() as i64;
+                let first = (lo / step.size() - 1e-9).ceil() as i64;
+                let last = (hi / step.size() + 1e-9).floor() as i64;
                 (first..=last)
                     .map(|k| {
-                        let value = k as f64 * step;
+                        let value = step.times(k as f64);
                         Tick {
                             value,
-                            label: Some(linear_label(value, step)),
+                            label: Some(linear_label(value, step.size())),
                         }
                     })
                     .collect()

@@ -80,11 +80,6 @@ fn runs(markup: &str) -> Vec<(Shift, String)> {
 }
 
 /// The width in pixels of `markup` set at `size` px.
-///
-/// # Examples
-/// ```ignore
-/// assert!(text_width("ω_{max}", 10.0) < text_width("ωmax", 10.0));
-/// ```
 pub(crate) fn text_width(markup: &str, size: f64) -> f64 {
     runs(markup)
         .iter()
@@ -302,12 +297,10 @@ impl Rect {
                 }
             }
         }
-        (t0 <= t1).then(|| {
-            (
-                (p.0 + t0 * dx, p.1 + t0 * dy),
-                (p.0 + t1 * dx, p.1 + t1 * dy),
-            )
-        })
+        (t0 <= t1).then_some((
+            (p.0 + t0 * dx, p.1 + t0 * dy),
+            (p.0 + t1 * dx, p.1 + t1 * dy),
+        ))
     }
 }
 
