@@ -107,6 +107,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
     }
     let x_scale = Scale::log_decades(10f64.powi(first / 100), 10f64.powi(last / 100));
     let y_scale = Scale::linear_nice(0.0, 2.0 * arm);
+    let star = if pivoted { "d*" } else { "a*" };
     let (star_name, best_name) = if pivoted {
         (
             "d* = √(I_{p}/m), from the pivot",
@@ -132,7 +133,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
     if threshold.is_some() {
         legend.push((
             Swatch::Line(Stroke::dashed(PALETTE[1], 1.8)),
-            "threshold: a* reaches the end".into(),
+            format!("threshold: {star} reaches the end"),
         ));
     }
     let light = (!pivoted).then(|| base.inertia() / (base.rod_mass() * &l * &l));
@@ -149,7 +150,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
         ));
     }
     let subtitle = vec![format!(
-        "{}{}; a* depends on neither e nor v_{{0}}",
+        "{}{}; {star} depends on neither e nor v_{{0}}",
         rod(base),
         if pivoted {
             format!(
@@ -208,7 +209,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
         chart.rule((x, 0.0), (x, y_hi), &Stroke::dashed(PALETTE[1], 1.8));
         chart.svg.close();
         labels.push((
-            format!("M = {}: a* reaches the end", multiple(t, "m")),
+            format!("M = {}: {star} reaches the end", multiple(t, "m")),
             (x, 0.7 * y_hi),
             PALETTE[1],
         ));
