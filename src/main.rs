@@ -29,7 +29,8 @@ enum Command {
     Paper(commands::claims::PaperArgs),
     /// Exact tables of the paper's results (T1-T5) in Markdown, LaTeX or CSV.
     Table(commands::table::TableArgs),
-    /// Figures as SVG: omega against a, a* against M/m, or the paper's Figure 1.
+    /// Figures as SVG (and their data as CSV): omega against a, a* against M/m, Figure 1,
+    /// velocities before/after, quantities and energy along the rod.
     Plot(Box<commands::plot::PlotArgs>),
     /// Check published answers (printed numbers, fractions, formulas) against the exact ones.
     Check(Box<commands::check::CheckArgs>),

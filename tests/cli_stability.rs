@@ -42,6 +42,10 @@ fn stability_prints_every_backend_and_writes_the_plot() {
         }
     }
     let text = std::fs::read_to_string(&svg).unwrap();
-    assert!(text.contains("median run time per scene (ns)"));
+    assert!(text.contains("median time per evaluation (ns)"));
+    // NEWCOMER #18: error 0 and an unbounded error in marked bands, not at fake values.
+    assert!(text.contains("off scale: error exactly 0"));
+    assert!(text.contains("off scale: unbounded"));
+    assert!(text.contains(r#"class="legend""#));
     std::fs::remove_dir_all(&dir).unwrap();
 }

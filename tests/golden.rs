@@ -9,7 +9,7 @@ use rodimpact::claims::{Paper, decide_all};
 use rodimpact::field::q;
 use rodimpact::report::{
     Format, TableOptions, all_tables, claim_markdown, claims_markdown, index_markdown,
-    plot_figure1, plot_omega, plot_optimum, render_document,
+    plot_figure1, plot_omega, plot_optimum, render_document, velocity_figure,
 };
 use rodimpact::scene::{RodInertia, Scene};
 use std::collections::BTreeSet;
@@ -124,6 +124,7 @@ fn figures_match_the_committed_svgs() {
         ),
         ("optimum.svg", plot_optimum(&RodInertia::Uniform).unwrap()),
         ("figure1.svg", plot_figure1(&scene).unwrap()),
+        ("velocities.svg", velocity_figure(&scene).unwrap()),
     ];
     let problems = figures
         .iter()

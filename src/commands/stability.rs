@@ -29,6 +29,9 @@ pub(crate) struct StabilityArgs {
 }
 
 pub(crate) fn run_stability(args: &StabilityArgs) -> Result<(), Failure> {
+    if let Some(path) = &args.plot {
+        super::plot::check_extension("plot", path, "svg", "")?;
+    }
     let rows = report(SWEEP);
     if let Some(path) = &args.plot {
         write_atomic("plot", path, &plot_stability(&rows)?)?;

@@ -15,7 +15,10 @@ pub use backend::{ERROR_BOUND, backend_values};
 pub use claims_doc::claims_markdown;
 pub use files::{AtomicFile, create_output_dir, remove_temporaries_on_signals, write_atomic};
 pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
-pub use plot::{plot_figure1, plot_omega, plot_optimum, plot_stability};
+pub use plot::{
+    Figure, PlotData, PlotValue, energy_figure, mass_ratio_family, omega_figure, optimum_figure,
+    plot_figure1, plot_omega, plot_optimum, plot_stability, quantities_figure, velocity_figure,
+};
 pub use proofs::{
     claim_markdown, index_markdown, paper_report, prove_json, prove_line, summary_line,
     verdict_label,

@@ -129,7 +129,14 @@ pub fn markdown(rows: &[Row]) -> String {
     let mut out = String::from(
         "Error in units of cond*u (u = 2^-53 for f64 and interval, 2^-24 for f32) over the scenes \
          in range for each format: the 27 suite scenes (items 1-22 of docs/stability.md) plus a seeded \
-         sweep (f64: +-300 decades, f32: +-36). The interval's error is its worst end (inf when an end overflows). Spurious 0 counts v in \
+         sweep (f64: +-300 decades, f32: +-36). The formulas: naive is the paper's closed form \
+         (its intermediate products overflow and underflow on extreme scenes); sq is the same \
+         formulas with binary exponents carried as integers (exact power-of-two rescaling, \
+         the library's float path); scomp is sq with q - e computed by error-free transforms, \
+         so v stays accurate where the projectile nearly stops. scenes counts the scenes in \
+         range for the format (every input and exact output a normal number of it): exact \
+         arithmetic has no range, so it counts every scene (suite and f64 sweep), the floats \
+         only those they can hold. The interval's error is its worst end (inf when an end overflows). Spurious 0 counts v in \
          the stop zone too (cond u > 1e-3), where no float formula can decide v. Times: \
          median over the suite scenes of the median time per evaluation.\n\n\
          | backend | scenes | max err/(cond u) | median err/(cond u) | NaN | inf | spurious 0 | not enclosed | median time (ns) |\n\
