@@ -3,6 +3,8 @@
 
 mod backend;
 mod files;
+pub mod markup;
+mod output_dir;
 mod paper_tables;
 mod plot;
 mod proofs;
@@ -11,14 +13,15 @@ mod table;
 
 pub use backend::backend_values;
 pub use files::{AtomicFile, create_output_dir, write_atomic};
+pub use output_dir::write_directory;
 pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
 pub use plot::{plot_figure1, plot_omega, plot_optimum, plot_stability};
 pub use proofs::{
-    claim_markdown, index_markdown, paper_report, prove_json, prove_line, summary_line,
-    verdict_label,
+    Figure, claim_markdown, hand_step_note, index_markdown, paper_files, paper_markdown,
+    paper_report, prove_json, prove_line, summary_line, verdict_label, verdict_mark,
 };
 pub use solution::Solution;
-pub use table::{Cell, Format, Header, Table, render_document};
+pub use table::{Cell, Column, Format, Table, render_document};
 
 use crate::field::Q;
 use crate::number;
