@@ -351,7 +351,7 @@ mod tests {
         }
         for math in [
             r"$a^* < l$",
-            r"$\lvert p\rvert$",
+            r"$d = I_p/(M \lvert p\rvert)$",
             r"$v_0$",
             r"$\omega(\mathrm{end})/\omega_{\max}$",
             r"$d^* = \sqrt{I_p/m}$",
