@@ -126,7 +126,17 @@ impl Formula {
         }
     }
 
-    /// The names the expression uses for computed values, with what each stands for.
+    /// The names the expression uses for computed values, with what each stands for, in
+    /// order of first use (a certificate lists them under `where`).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::claims::Formula;
+    /// let v = Formula::named("v", Formula::sym("v0") / &Formula::int(2));
+    /// let x = v.clone() - &Formula::named("V", Formula::sym("v0")) + &v;
+    /// let names: Vec<&str> = x.names().iter().map(|(n, _)| n.as_str()).collect();
+    /// assert_eq!(names, ["v", "V"]);
+    /// ```
     pub fn names(&self) -> &[(String, Formula)] {
         &self.names
     }

@@ -64,13 +64,13 @@ fn table_options(args: &TableArgs) -> Result<TableOptions, Error> {
 /// I in absolute units, which differ from one mass ratio to the next).
 fn relative_rod(text: &str) -> Result<RodInertia, Error> {
     let rod = RodInertia::parse(text)?;
-    if let RodInertia::Moment(x) = &rod {
-        if !(x.is_positive() && *x <= Q::one()) {
-            return Err(Error::out_of_range(
-                "rod",
-                format!("I=X means I = X M l^2 and needs 0 < X <= 1, got {x}"),
-            ));
-        }
+    if let RodInertia::Moment(x) = &rod
+        && !(x.is_positive() && *x <= Q::one())
+    {
+        return Err(Error::out_of_range(
+            "rod",
+            format!("I=X means I = X M l^2 and needs 0 < X <= 1, got {x}"),
+        ));
     }
     Ok(rod)
 }

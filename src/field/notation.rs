@@ -15,6 +15,15 @@ use super::{Q, QSqrt};
 use num_traits::{One, Signed, Zero};
 
 /// A notation for exact numbers.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{q, QSqrt, notation::{surd, Notation}};
+/// let x = QSqrt::sqrt_of(&q(125, 1));
+/// let all: Vec<String> = [Notation::Ascii, Notation::Unicode, Notation::Latex]
+///     .into_iter().map(|n| surd(&x, n)).collect();
+/// assert_eq!(all, ["5*sqrt(5)", "5√5", r"5\sqrt{5}"]);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Notation {
     /// Plain ASCII that the expression parser reads back: `2*sqrt(6)/5`.

@@ -108,6 +108,20 @@ pub fn ascii_math(text: &str) -> String {
             }
             let word: String = chars[start..i].iter().collect();
             let joined_before = start > 0 && chars[start - 1].is_ascii_alphanumeric();
+            if word == "sqrt" && !joined_before && chars.get(i) == Some(&' ') {
+                // `sqrt 6`, `Q(sqrt d)`: the root of the next word.
+                let start = i + 1;
+                let mut end = start;
+                while end < chars.len() && chars[end].is_ascii_alphanumeric() {
+                    end += 1;
+                }
+                if end > start {
+                    out.push('√');
+                    out.extend(&chars[start..end]);
+                    i = end;
+                    continue;
+                }
+            }
             if word == "sqrt" && !joined_before && chars.get(i) == Some(&'(') {
                 let (arg, next) = balanced(&chars, i);
                 let inner = ascii_math(&arg);
@@ -126,9 +140,19 @@ pub fn ascii_math(text: &str) -> String {
                 "tau" => Some("τ"),
                 "kappa" => Some("κ"),
                 "oo" => Some("∞"),
-                "sqrt3" => Some("√3"),
                 _ => None,
             };
+            // `sqrt3`, `2sqrt6`: a root of digits, also right after a coefficient.
+            let after_letter = start > 0 && chars[start - 1].is_ascii_alphabetic();
+            if let Some(digits) = word
+                .strip_prefix("sqrt")
+                .filter(|d| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit()))
+                && !after_letter
+            {
+                out.push('√');
+                out.push_str(digits);
+                continue;
+            }
             match greek {
                 Some(g) if !joined_before => out.push_str(g),
                 _ => out.push_str(&word),
@@ -413,6 +437,11 @@ mod tests {
             ("x^n and x^10 and r_G^2", "x^n and x^10 and r_G²"),
             ("sqrt((M+m)/(3m)) l", "√((M+m)/(3m)) l"),
             ("l/sqrt3, t = pi a*/v0", "l/√3, t = π a*/v0"),
+            ("exactly in Q(sqrt 6), Q(sqrt d)", "exactly in Q(√6), Q(√d)"),
+            (
+                "the ratio is 2sqrt6/5, not xsqrt6",
+                "the ratio is 2√6/5, not xsqrt6",
+            ),
             ("M << m, M >> m, M -> oo", "M ≪ m, M ≫ m, M → ∞"),
             (
                 "a0, v0, epsilon, pivot, topic",

@@ -69,13 +69,24 @@ fn unit_scene(ratio: &Q, rod: &RodInertia, e: &Q, pivot: Option<&Q>) -> Result<S
     b.build()
 }
 
+/// `x` times `unit` in math: `l`, `-l`, `1/10\,l` (for x = 1, -1, 1/10).
+fn times(x: &Q, unit: &str) -> String {
+    if x.is_one() {
+        unit.to_string()
+    } else if (-x).is_one() {
+        format!("-{unit}")
+    } else {
+        format!("{x}\\,{unit}")
+    }
+}
+
 /// The rod of the options, in words and math: `uniform`, `$r_G = 1/10\,l$`.
 fn rod_markup(rod: &RodInertia) -> String {
     match rod {
         RodInertia::Uniform => "uniform".into(),
         RodInertia::Dumbbell => "dumbbell".into(),
-        RodInertia::Gyration(r) => format!("$r_G = {r}\\,l$"),
-        RodInertia::Moment(x) => format!("$I = {x}\\,M l^2$"),
+        RodInertia::Gyration(r) => format!("$r_G = {}$", times(r, "l")),
+        RodInertia::Moment(x) => format!("$I = {}$", times(x, "M l^2")),
     }
 }
 
@@ -104,7 +115,7 @@ pub fn t1(opts: &TableOptions) -> Result<Table, Error> {
         ]);
     }
     let from = match &opts.pivot {
-        Some(p) => format!("from the pivot at $p = {p}\\,l$"),
+        Some(p) => format!("from the pivot at $p = {}$", times(p, "l")),
         None => "from the centre".into(),
     };
     Ok(Table {

@@ -285,7 +285,7 @@ pub fn hand_step_note(all: &[Decided]) -> Option<String> {
 const TITLE: &str =
     "Verification of N. A. Lemos, \"Failure of intuition in elementary rigid body dynamics\"";
 
-const METHOD: &str = "Every verdict comes from re-checking its certificates by exact computation (rational functions, Q(sqrt d)).";
+const METHOD: &str = "Every verdict comes from re-checking its certificates by exact computation (rational functions, Q(√d)).";
 
 /// One claim's reason, qualification and failure, each with its label.
 fn notes(d: &Decided) -> Vec<(&'static str, String)> {
@@ -351,6 +351,13 @@ pub fn paper_report(all: &[Decided]) -> String {
 }
 
 /// A figure of the report: its file name, a caption ([`markup`](super::markup)) and the SVG.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::Figure;
+/// let f = Figure { file: "omega.svg", caption: "$\\omega(a)$".into(), svg: "<svg/>".into() };
+/// assert_eq!(rodimpact::report::markup::unicode(&f.caption), "ω(a)");
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
     /// The file name (`omega.svg`).

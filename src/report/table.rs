@@ -143,6 +143,13 @@ impl Cell {
 
 /// A column: its heading ([`markup`](super::markup)), its CSV name, and whether Markdown and
 /// LaTeX show its decimals beside it.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::Column;
+/// let c = Column::with_decimals("$v/v_0$", "v/v0");
+/// assert_eq!((c.heading.as_str(), c.csv.as_str(), c.approx), ("$v/v_0$", "v/v0", true));
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Column {
     /// The heading, plain text with `$…$` math (`$a^*/l$`).
