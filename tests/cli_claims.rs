@@ -302,3 +302,22 @@ fn the_headline_counts_the_refuted_intuition_apart_and_marks_hand_steps() {
         .collect();
     assert_eq!(intuitions, ["C3"]);
 }
+
+/// `paper --out .` would replace the current directory as a whole (moving the user's files
+/// across and back) and leave the shell in a removed directory: refused, nothing written.
+#[test]
+fn the_current_directory_is_not_an_output_directory() {
+    let root = scratch("paper-dot");
+    std::fs::write(root.join("notes.txt"), "mine\n").unwrap();
+    let before = snapshot(&root);
+    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .args(["paper", "--out", "."])
+        .current_dir(&root)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("holds the current directory"), "{stderr}");
+    assert_eq!(snapshot(&root), before);
+    std::fs::remove_dir_all(&root).unwrap();
+}

@@ -11,7 +11,8 @@
 //!   Every step that fails is undone, so a failing run leaves `DIR` as it was.
 //!
 //! Before anything is written, a target name that exists in `DIR` as a directory (or another
-//! non-file) is refused, since replacing it would delete what it holds. A run killed between
+//! non-file) is refused, since replacing it would delete what it holds, and so is a `DIR` that
+//! holds the current directory (`--out .`). A run killed between
 //! the two renames leaves `DIR` missing and both hidden directories beside it; nothing is lost.
 
 use crate::error::{Error, ErrorKind};
@@ -68,6 +69,15 @@ pub fn write_directory(field: &str, dir: &Path, files: &[(String, String)]) -> R
     };
     if exists && !dir.is_dir() {
         return Err(io_error(field, &dir, "not a directory"));
+    }
+    // The directory is replaced as a whole: a shell inside it would be left in a removed one.
+    let cwd = std::env::current_dir().and_then(fs::canonicalize);
+    if exists && cwd.is_ok_and(|cwd| cwd.starts_with(&dir)) {
+        return Err(io_error(
+            field,
+            &dir,
+            "it holds the current directory, and is replaced as a whole: name a subdirectory",
+        ));
     }
     let name = dir
         .file_name()
