@@ -543,25 +543,24 @@ pub fn sqrt_bounds(x: &Q, digits: usize) -> (Q, Q) {
     (scale(m), hi)
 }
 
-/// The exact square root of `x >= 0` as text: the rational root when there is one (`"2/3"`,
-/// `"2"`, `"0"`), otherwise `"sqrt(p/q)"` or `"sqrt(n)"`.
+/// The exact square root of `x >= 0` as text, in the one canonical ASCII form of every surd
+/// ([`notation::root`](crate::field::notation::root)): the rational root when there is one
+/// (`"2/3"`, `"2"`, `"0"`), otherwise square factors pulled out and no denominator under the
+/// root (`"sqrt(6)/3"`, `"2*sqrt(2)"`).
 ///
-/// No factor is pulled out of the root. A negative `x` prints as `"sqrt(-2)"` (outside the
-/// precondition; no panic).
+/// # Panics
+/// **Panics if `x < 0`** (no real root; a programming error).
 ///
 /// # Examples
 /// ```
 /// use rodimpact::field::q;
 /// use rodimpact::number::surd;
-/// assert_eq!(surd(&q(2, 3)), "sqrt(2/3)");
+/// assert_eq!(surd(&q(2, 3)), "sqrt(6)/3");
 /// assert_eq!(surd(&q(4, 9)), "2/3");
-/// assert_eq!(surd(&q(8, 1)), "sqrt(8)");
+/// assert_eq!(surd(&q(8, 1)), "2*sqrt(2)");
 /// ```
 pub fn surd(x: &Q) -> String {
-    match x.try_sqrt() {
-        Some(root) => root.to_string(),
-        None => format!("sqrt({x})"),
-    }
+    crate::field::notation::root(x, crate::field::notation::Notation::Ascii)
 }
 
 /// `sqrt(x)` correctly rounded to `digits` significant digits, formatted as [`decimal`] does.
@@ -924,13 +923,15 @@ mod tests {
     #[test]
     fn surd_table() {
         let table = [
-            (q(2, 3), "sqrt(2/3)"),
+            (q(2, 3), "sqrt(6)/3"),
             (q(4, 9), "2/3"),
             (q(4, 1), "2"),
             (q(0, 1), "0"),
-            (q(8, 1), "sqrt(8)"),
-            (q(3, 2), "sqrt(3/2)"),
+            (q(8, 1), "2*sqrt(2)"),
+            (q(3, 2), "sqrt(6)/2"),
             (q(1, 4), "1/2"),
+            (q(11, 400), "sqrt(11)/20"),
+            (q(125, 1), "5*sqrt(5)"),
         ];
         for (x, want) in table {
             assert_eq!(surd(&x), want);

@@ -96,7 +96,7 @@ impl Optimum {
     /// ```
     /// use rodimpact::{scene::Scene, optimum::optimum, field::q};
     /// let o = optimum(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap());
-    /// assert_eq!(o.end_to_max().to_string(), "2/5*sqrt(6)");
+    /// assert_eq!(o.end_to_max().to_string(), "2*sqrt(6)/5");
     /// ```
     pub fn end_to_max(&self) -> QSqrt {
         QSqrt::rational(self.omega_end.clone()) / &self.omega_max
@@ -108,7 +108,7 @@ impl Optimum {
     /// ```
     /// use rodimpact::{scene::Scene, optimum::optimum, field::q};
     /// let o = optimum(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap());
-    /// assert_eq!(o.gain().to_string(), "-1 + 5/12*sqrt(6)"); // about 2.06 %
+    /// assert_eq!(o.gain().to_string(), "-1 + 5*sqrt(6)/12"); // about 2.06 %
     /// ```
     pub fn gain(&self) -> QSqrt {
         self.omega_max.clone() / &QSqrt::rational(self.omega_end.clone()) - &QSqrt::one()
@@ -199,7 +199,7 @@ pub fn a_star_squared<F: Field>(p: &Params<F>) -> F {
 /// assert_eq!(o.squared, q(2, 3));
 /// assert!(o.within_rod);
 /// assert_eq!(o.argmax, Argmax::AStar);
-/// assert_eq!(o.omega_max.to_string(), "1/2*sqrt(6)");
+/// assert_eq!(o.omega_max.to_string(), "sqrt(6)/2");
 /// ```
 pub fn optimum(scene: &Scene) -> Optimum {
     let (m, big_m) = (scene.m(), scene.rod_mass());

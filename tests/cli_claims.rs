@@ -81,7 +81,7 @@ fn unknown_claims_and_unwritable_directories_exit_2() {
     let (code, _, stderr) = rodimpact(&["prove", "C1", "--write", "/proc/rodimpact-cannot-write"]);
     assert_eq!(code, 2);
     assert!(
-        stderr.starts_with("error: write: cannot create"),
+        stderr.starts_with("error: write: cannot write /proc/rodimpact-cannot-write: "),
         "{stderr}"
     );
     assert_eq!(stderr.trim_end().lines().count(), 1);
@@ -100,4 +100,224 @@ fn a_closed_pipe_ends_the_program_quietly() {
     let out = child.wait_with_output().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!stderr.contains("panicked"), "{stderr}");
+}
+
+/// A fresh scratch directory for one test.
+fn scratch(tag: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("rodimpact-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Every file under `dir` (recursively) with its contents, and the names of hidden entries
+/// beside it: a snapshot to compare before and after a run.
+fn snapshot(dir: &std::path::Path) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for entry in std::fs::read_dir(&d).unwrap() {
+            let path = entry.unwrap().path();
+            let name = path.strip_prefix(dir).unwrap().display().to_string();
+            if path.is_dir() {
+                out.push((format!("{name}/"), String::new()));
+                stack.push(path);
+            } else {
+                out.push((name, std::fs::read_to_string(&path).unwrap()));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// Regression (RELIABILITY F6): `paper --out DIR` wrote the certificates and README.md one by
+/// one, so when `DIR/report.md` could not be written (here it is a directory) the run failed
+/// after 73 files had already replaced the previous ones: an old report beside new
+/// certificates. Now every file is staged beside DIR and moved in only when all are complete;
+/// a target in the way is refused before anything is written.
+#[test]
+fn a_failing_paper_out_leaves_the_previous_directory_untouched() {
+    let root = scratch("paper-f6");
+    let dir = root.join("out");
+    std::fs::create_dir_all(dir.join("report.md")).unwrap();
+    std::fs::write(dir.join("report.md/kept.txt"), "inside the way").unwrap();
+    std::fs::write(dir.join("C1.md"), "the previous run's C1\n").unwrap();
+    let before = snapshot(&root);
+
+    let (code, _, stderr) = rodimpact(&["paper", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code, 2, "{stderr}");
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.starts_with("error: out: cannot write ") && stderr.contains("report.md"),
+        "{stderr}"
+    );
+    // DIR as it was, and nothing new beside it (no staging directory left over).
+    assert_eq!(snapshot(&root), before);
+    std::fs::remove_dir_all(&root).unwrap();
+}
+
+/// Regression (RELIABILITY F6): `prove C1 C2 C3 --write W` with `W/C2.md` unwritable wrote
+/// `C1.md`, then failed. Now nothing is written.
+#[test]
+fn a_failing_prove_write_writes_nothing() {
+    let root = scratch("prove-f6");
+    let dir = root.join("w");
+    std::fs::create_dir_all(dir.join("C2.md")).unwrap();
+    let before = snapshot(&root);
+    let (code, _, stderr) =
+        rodimpact(&["prove", "C1", "C2", "C3", "--write", dir.to_str().unwrap()]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("C2.md"), "{stderr}");
+    assert_eq!(snapshot(&root), before);
+    std::fs::remove_dir_all(&root).unwrap();
+}
+
+/// What `paper --help` promises is exactly what `paper --out` writes, and a re-run replaces
+/// its own files while keeping the user's.
+#[test]
+fn paper_out_writes_what_its_help_lists_and_keeps_other_files() {
+    let root = scratch("paper-out");
+    let dir = root.join("report dir");
+    let (code, _, stderr) = rodimpact(&["paper", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stderr}");
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    let certificates = (1..=46)
+        .map(|i| format!("C{i}.md"))
+        .chain((1..=26).map(|i| format!("X{i}.md")));
+    let others = [
+        "README.md",
+        "report.md",
+        "tables.md",
+        "tables.tex",
+        "T1.csv",
+        "T2.csv",
+        "T3.csv",
+        "T4.csv",
+        "T5.csv",
+        "omega.svg",
+        "optimum.svg",
+        "figure1.svg",
+    ];
+    let mut expected: Vec<String> = certificates
+        .chain(others.iter().map(|s| s.to_string()))
+        .collect();
+    expected.sort();
+    assert_eq!(names, expected);
+
+    let (_, help, _) = rodimpact(&["paper", "--help"]);
+    for name in others.iter().filter(|n| !n.ends_with(".csv")) {
+        assert!(help.contains(name), "--help does not list {name}:\n{help}");
+    }
+    assert!(help.contains("T1.csv ... T5.csv"), "{help}");
+    assert!(
+        help.contains("C1.md ... C46.md, X1.md ... X26.md"),
+        "{help}"
+    );
+
+    // report.md embeds the figures and every table; the index describes this directory.
+    let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    for svg in ["omega.svg", "optimum.svg", "figure1.svg"] {
+        assert!(
+            report.contains(&format!("]({svg})\n")),
+            "{svg} not embedded"
+        );
+    }
+    for t in ["T1", "T2", "T3", "T4", "T5"] {
+        assert!(report.contains(&format!("### {t}. ")), "{t} missing");
+    }
+    let index = std::fs::read_to_string(dir.join("README.md")).unwrap();
+    assert!(index.contains("Written by `rodimpact paper --out DIR`"));
+    assert!(!index.contains("prove --write proofs"));
+    for name in others.iter().filter(|n| **n != "README.md") {
+        assert!(index.contains(&format!("[{name}]({name})")), "{name}");
+    }
+    let t2 = std::fs::read_to_string(dir.join("T2.csv")).unwrap();
+    assert!(t2.starts_with("a/l,a/l_decimal,v/v0,v/v0_decimal,V/v0,V/v0_decimal,"));
+
+    // A re-run: the user's file stays, a stale copy of ours is replaced.
+    std::fs::write(dir.join("notes.txt"), "mine\n").unwrap();
+    std::fs::write(dir.join("report.md"), "stale\n").unwrap();
+    let (code, _, stderr) = rodimpact(&["paper", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(
+        std::fs::read_to_string(dir.join("notes.txt")).unwrap(),
+        "mine\n"
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("report.md")).unwrap(),
+        report
+    );
+    let beside: Vec<_> = std::fs::read_dir(&root).unwrap().collect();
+    assert_eq!(
+        beside.len(),
+        1,
+        "staging or backup directories left beside DIR"
+    );
+    std::fs::remove_dir_all(&root).unwrap();
+}
+
+/// Regression (NEWCOMER #12): the headline read "66 PROVED, 1 REFUTED, 5 QUALIFIED", and a
+/// teacher took the REFUTED for an error in the paper, though it is C3, the intuition the paper
+/// itself refutes; and verdicts resting on a step argued by hand looked like the others.
+#[test]
+fn the_headline_counts_the_refuted_intuition_apart_and_marks_hand_steps() {
+    let (code, stdout, _) = rodimpact(&["paper"]);
+    assert_eq!(code, 0);
+    assert!(stdout.contains(
+        "72 claims: 66 PROVED, 0 REFUTED, 5 QUALIFIED, and 1 intuition REFUTED as the paper argues (C3)."
+    ));
+    assert!(stdout.contains(
+        "† 6 verdicts (C18, C40, C46, X12, X19, X26) also rest on a step argued by hand, not machine-checked"
+    ));
+    for id in ["C18", "C40", "C46", "X12", "X19", "X26"] {
+        let line = stdout
+            .lines()
+            .find(|l| l.trim_start().starts_with(&format!("{id} ")))
+            .unwrap();
+        assert!(line.contains("PROVED †"), "{line}");
+    }
+    let c3 = stdout
+        .lines()
+        .find(|l| l.trim_start().starts_with("C3 "))
+        .unwrap();
+    assert!(c3.contains("REFUTED (as the paper argues)"), "{c3}");
+
+    let (_, json, _) = rodimpact(&["prove", "--json"]);
+    let list: Vec<Value> = serde_json::from_str(&json).unwrap();
+    let by_hand: Vec<&str> = list
+        .iter()
+        .filter(|c| c["hand_step"] == true)
+        .map(|c| c["id"].as_str().unwrap())
+        .collect();
+    assert_eq!(by_hand, ["C18", "C40", "C46", "X12", "X19", "X26"]);
+    let intuitions: Vec<&str> = list
+        .iter()
+        .filter(|c| c["intuition"] == true)
+        .map(|c| c["id"].as_str().unwrap())
+        .collect();
+    assert_eq!(intuitions, ["C3"]);
+}
+
+/// `paper --out .` would replace the current directory as a whole (moving the user's files
+/// across and back) and leave the shell in a removed directory: refused, nothing written.
+#[test]
+fn the_current_directory_is_not_an_output_directory() {
+    let root = scratch("paper-dot");
+    std::fs::write(root.join("notes.txt"), "mine\n").unwrap();
+    let before = snapshot(&root);
+    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .args(["paper", "--out", "."])
+        .current_dir(&root)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("holds the current directory"), "{stderr}");
+    assert_eq!(snapshot(&root), before);
+    std::fs::remove_dir_all(&root).unwrap();
 }

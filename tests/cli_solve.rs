@@ -24,11 +24,12 @@ fn paper_example_m_equals_m_hit_at_the_end() {
         assert_eq!(j["residuals"][law], "0", "{law}");
     }
     assert_eq!(j["a_star"]["squared"], "2/3");
-    assert_eq!(j["a_star"]["exact"], "sqrt(2/3)");
+    // Surds in the one canonical form: square factors out, no denominator under the root.
+    assert_eq!(j["a_star"]["exact"], "sqrt(6)/3");
     assert_eq!(j["a_star"]["decimal"], "0.816496580927726032732428024902");
     assert_eq!(j["a_star"]["within_rod"], true);
     assert_eq!(j["argmax"], "a_star");
-    assert_eq!(j["omega_max"]["exact"], "1/2*sqrt(6)");
+    assert_eq!(j["omega_max"]["exact"], "sqrt(6)/2");
     assert_eq!(j["omega_max"]["decimal"], "1.22474487139158904909864203735");
     assert_eq!(j["energy"]["before"]["exact"], "1/2");
     assert_eq!(j["energy"]["lost"]["exact"], "0");
@@ -36,8 +37,8 @@ fn paper_example_m_equals_m_hit_at_the_end() {
     // Beyond the contract: placement, threshold, the end-hit ratio and the paper's f(x) form.
     assert_eq!(j["a_star"]["placement"], "inside");
     assert_eq!(j["a_star"]["threshold_M"], "2");
-    assert_eq!(j["end_over_max"]["exact"], "2/5*sqrt(6)");
-    assert_eq!(j["gain"]["exact"], "-1 + 5/12*sqrt(6)");
+    assert_eq!(j["end_over_max"]["exact"], "2*sqrt(6)/5");
+    assert_eq!(j["gain"]["exact"], "-1 + 5*sqrt(6)/12");
     assert_eq!(j["paper_form"]["b_squared"], "2/3");
     assert_eq!(j["paper_form"]["verified"], true);
 }
@@ -128,7 +129,7 @@ fn text_report_is_readable() {
         "elastic",
         "3/5",
         "6/5",
-        "sqrt(2/3)",
+        "sqrt(6)/3",
         "on the rod",
     ] {
         assert!(stdout.contains(needle), "missing {needle} in\n{stdout}");
@@ -190,19 +191,45 @@ fn bad_inputs_exit_2_with_one_line_naming_the_field() {
     }
 }
 
+/// The CSV of one table is a rectangular file whose header names each column with its units;
+/// every exact value has its decimal beside it.
 #[test]
 fn table_csv_gives_the_paper_case_exactly() {
     let (code, stdout, stderr) =
         rodimpact(&["table", "--format", "csv", "--only", "T1", "--ratios", "1"]);
     assert_eq!(code, 0, "{stderr}");
-    let row = stdout
-        .lines()
-        .find(|l| l.starts_with("1,"))
-        .expect("the M/m = 1 row");
-    let cells: Vec<&str> = row.split(',').collect();
-    assert_eq!(cells[1], "2/3", "a*^2/l^2");
-    assert_eq!(cells[4], "inside");
-    assert_eq!(cells[5], "2/5*sqrt(6)", "omega(l)/omega_max");
+    let mut lines = stdout.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(
+        header,
+        [
+            "M/m",
+            "M/m_decimal",
+            "a_star^2/l^2",
+            "a_star^2/l^2_decimal",
+            "a_star/l",
+            "a_star/l_decimal",
+            "a_star_position",
+            "omega_end/omega_max",
+            "omega_end/omega_max_decimal"
+        ]
+    );
+    let row: Vec<&str> = lines.next().expect("the M/m = 1 row").split(',').collect();
+    assert_eq!(
+        row,
+        [
+            "1",
+            "1.0000000000000000",
+            "2/3",
+            "0.66666666666666667",
+            "sqrt(6)/3",
+            "0.81649658092772603",
+            "inside",
+            "2*sqrt(6)/5",
+            "0.97979589711327124"
+        ]
+    );
+    assert_eq!(lines.next(), None);
 }
 
 #[test]

@@ -160,3 +160,38 @@ fn textbook_collection_verdicts_match_the_committed_ones() {
         mismatches.join("\n")
     );
 }
+
+/// Regression (NEWCOMER #13): identity certificates printed the two sides after reduction to
+/// the same canonical form (`lhs = v0`, `rhs = v0`; `lhs = A^2`, `rhs = A^2`), so a referee saw
+/// a tautology and could not tell what had been compared. Every identity now shows its sides
+/// as built (the solver's quantities by name, the paper's formula as printed), the
+/// substitution, and only then the form both reduce to.
+#[test]
+fn identity_certificates_show_what_was_compared() {
+    use rodimpact::claims::Certificate;
+    let decided = decide_all(&Paper::as_printed());
+    let mut identities = 0;
+    for d in &decided {
+        for cert in d.claim.certificates() {
+            if let Certificate::Identity { lhs, rhs, .. } = cert {
+                identities += 1;
+                assert_ne!(
+                    lhs.to_string(),
+                    rhs.to_string(),
+                    "{}: {}",
+                    d.claim.id,
+                    cert.title()
+                );
+            }
+        }
+    }
+    assert!(identities > 100, "{identities}");
+    let c15 = claim_markdown(&decided[14]);
+    assert!(c15.contains(
+        "lhs     = omega\nrhs     = (2*m*a/I)/(1 + m/M + m*a^2/I)*v0\nwhere     omega = 2*M*a*m*v0/(M*a^2*m + I*M + I*m)\nreduced = 2*M*a*m*v0/(M*a^2*m + I*M + I*m)   (both sides)\n"
+    ), "{c15}");
+    let x19 = claim_markdown(decided.iter().find(|d| d.claim.id == "X19").unwrap());
+    assert!(x19.contains(
+        "lhs     = omega*a\nrhs     = v0\nwhere     omega = 2*M*a*m*v0/(M*a^2*m + I*M + I*m)\nat        I = M*a^2*m/(M + m)\nreduced = v0   (both sides)\n"
+    ), "{x19}");
+}

@@ -41,7 +41,7 @@ fn a_wrong_rod_velocity_is_caught() {
 #[test]
 fn a_wrong_threshold_is_caught() {
     let mut paper = Paper::as_printed();
-    paper.threshold = k(1, 1); // "M > m implies a* > l": false
+    paper.threshold = k(1, 1).into(); // "M > m implies a* > l": false
     let failed = failing(&paper);
     assert!(failed.contains(&"C23"), "{failed:?}");
 }
@@ -49,7 +49,7 @@ fn a_wrong_threshold_is_caught() {
 #[test]
 fn a_wrong_inertia_is_caught() {
     let mut paper = Paper::as_printed();
-    paper.uniform_inertia = sym("M") * &sym("l") * &sym("l") / k(12, 1); // length l taken for 2l
+    paper.uniform_inertia = (sym("M") * &sym("l") * &sym("l") / k(12, 1)).into(); // length l taken for 2l
     let failed = failing(&paper);
     assert!(failed.contains(&"C21"), "{failed:?}");
 }

@@ -7,7 +7,9 @@
 
 use super::build::*;
 use super::model::*;
-use super::{Certificate, Claim, Decision, Entry, Expected, Group, Paper, PosExpr, Relation};
+use super::{
+    Certificate, Claim, Decision, Entry, Expected, Formula, Group, Paper, PosExpr, Relation,
+};
 use crate::field::ratfunc::Point;
 use crate::field::{RatFn, Sym};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
@@ -75,23 +77,60 @@ const WHERE: &str = "beyond the paper";
 // ---------------------------------------------------------------------------------------------
 // Small builders shared by the claims.
 
-fn id(title: &str, lhs: RatFn, rhs: RatFn) -> Certificate {
+fn id(title: &str, lhs: impl Into<Formula>, rhs: impl Into<Formula>) -> Certificate {
     Certificate::identity(title, lhs, rhs)
+}
+
+/// An identity at a* (see [`a_star_at`]).
+fn id_at_star(
+    paper: &Paper,
+    title: &str,
+    lhs: impl Into<Formula>,
+    rhs: impl Into<Formula>,
+) -> Certificate {
+    Certificate::identity_at(title, lhs, rhs, &a_star_at(paper))
+}
+
+/// A symbol as a [`Formula`].
+fn f(name: &str) -> Formula {
+    Formula::sym(name)
+}
+
+/// A computed value under a name (the solver's `omega`, ...).
+fn n(name: &str, value: impl Into<Formula>) -> Formula {
+    Formula::named(name, value)
+}
+
+/// `(1 + e)` as a [`Formula`].
+fn one_plus_e_f() -> Formula {
+    Formula::int(1) + &f("e")
+}
+
+/// `mu` (= m M/(M + m)) under its name.
+fn mu_f() -> Formula {
+    n("mu", mu())
+}
+
+/// `m_eff` (= 1/(1/m + 1/M + a^2/I)) under its name, for moment of inertia `inertia`.
+fn m_eff_f(inertia: &RatFn) -> Formula {
+    let one = Formula::int(1);
+    n(
+        "m_eff",
+        one.clone()
+            / &(one.clone() / &f("m")
+                + &(one / &f("M"))
+                + &(f("a").pow(2) / &Formula::from(inertia))),
+    )
+}
+
+/// `m v0^2/2`.
+fn k0_f() -> Formula {
+    f("m") * &f("v0").pow(2) / &Formula::int(2)
 }
 
 /// `mu = m M/(M + m)`.
 fn mu() -> RatFn {
     sym("m") * &sym("M") / (sym("M") + &sym("m"))
-}
-
-/// `m_eff = 1/(1/m + 1/M + a^2/I)`.
-fn m_eff(inertia: &RatFn) -> RatFn {
-    one() / (one() / sym("m") + &(one() / sym("M")) + &(sq(&sym("a")) / inertia.clone()))
-}
-
-/// `1 + e`.
-fn one_plus_e() -> RatFn {
-    one() + &sym("e")
 }
 
 /// The solver's velocities after the impact for moment of inertia `inertia`, restitution `e`.
@@ -104,11 +143,6 @@ fn impulse(m: &Motion<RatFn>) -> RatFn {
     sym("m") * &(sym("v0") - &m.v)
 }
 
-/// Kinetic energy before the impact, `m v0^2/2`.
-fn k0() -> RatFn {
-    sym("m") * &sq(&sym("v0")) / k(2, 1)
-}
-
 /// The energy the solver's motion loses, for inertia I and restitution e.
 fn energy_lost(inertia: &RatFn, e: RatFn) -> RatFn {
     solved(&free_rod(inertia.clone(), e)).energy.lost
@@ -116,13 +150,13 @@ fn energy_lost(inertia: &RatFn, e: RatFn) -> RatFn {
 
 /// `I` in terms of `A` = a*, from the paper's a*^2 (linear in I): `I = A^2 I / a*^2`.
 fn inertia_of_a_star(paper: &Paper) -> RatFn {
-    sq(&sym("A")) * &sym("I") / paper.a_star_squared.clone()
+    sq(&sym("A")) * &sym("I") / paper.a_star_squared.value().clone()
 }
 
-/// `x` at a = a*: `I := A^2 m M/(M + m)`, then `a := A`.
-fn at_a_star(paper: &Paper, x: &RatFn) -> RatFn {
-    let with_i = subs(x, &[("I", inertia_of_a_star(paper))]);
-    subs(&with_i, &[("a", sym("A"))])
+/// The substitution that puts the impact at a*: `I := A^2 m M/(M + m)` (from the paper's
+/// a*^2, free of `a` and `I`) and `a := A`, simultaneously.
+fn a_star_at(paper: &Paper) -> Vec<(&'static str, RatFn)> {
+    vec![("I", inertia_of_a_star(paper)), ("a", sym("A"))]
 }
 
 /// `x`, a rational function even in `a`, with `a^2` replaced by `a2` (used to evaluate at an
@@ -224,8 +258,8 @@ fn energy_loss_identity() -> Certificate {
     let e = sym("e");
     id(
         "energy lost (K0 minus the kinetic energy of the solver's motion) = (1 - e^2) m_eff v0^2/2, m_eff = 1/(1/m + 1/M + a^2/I)",
-        energy_lost(&i, e.clone()),
-        (one() - &sq(&e)) * &m_eff(&i) * &sq(&sym("v0")) / k(2, 1),
+        n("K_lost", energy_lost(&i, e)),
+        (Formula::int(1) - &f("e").pow(2)) * &m_eff_f(&i) * &f("v0").pow(2) / &Formula::int(2),
     )
 }
 
@@ -257,7 +291,8 @@ fn x1(_paper: &Paper) -> Claim {
     let (m, big_m, a) = (sym("m"), sym("M"), sym("a"));
     let gram = m.clone() * &i + &(big_m.clone() * &i) + &(big_m.clone() * &m * &sq(&a));
     let mo = motion(&p);
-    let j = one_plus_e() * &sym("v0") * &m_eff(&i);
+    let j = n("J", one_plus_e_f() * &f("v0") * &m_eff_f(&i));
+    let gram_f = f("m") * &f("I") + &(f("M") * &f("I")) + &(f("M") * &f("m") * &f("a").pow(2));
     proved(
         "X1",
         "General restitution e in [0,1] (Newton's law at the contact): the solution is unique (det = -(mI + MI + Mma^2)), with J = (1+e) v0/(1/m + 1/M + a^2/I), v = v0 - J/m, V = J/M, omega = J a/I",
@@ -270,8 +305,8 @@ fn x1(_paper: &Paper) -> Claim {
         vec![
             id(
                 "determinant of the impulse-equation matrix (solve::impulse_equations) = -(mI + MI + Mma^2)",
-                det3(&matrix),
-                -gram.clone(),
+                n("det", det3(&matrix)),
+                -gram_f,
             ),
             positive(
                 "mI + MI + Mma^2 > 0 for m, M, I > 0 and any a",
@@ -288,16 +323,24 @@ fn x1(_paper: &Paper) -> Claim {
             ),
             id(
                 "J = m (v0 - v) from the solver = (1+e) v0/(1/m + 1/M + a^2/I)",
-                impulse(&mo),
+                f("m") * &(f("v0") - &n("v", mo.v.clone())),
                 j.clone(),
             ),
             id(
                 "v from the solver = v0 - J/m",
-                mo.v,
-                sym("v0") - &(j.clone() / m),
+                n("v", mo.v),
+                f("v0") - &(j.clone() / &f("m")),
             ),
-            id("V from the solver = J/M", mo.rod_v, j.clone() / big_m),
-            id("omega from the solver = J a/I", mo.omega, j * &a / i),
+            id(
+                "V from the solver = J/M",
+                n("V", mo.rod_v),
+                j.clone() / &f("M"),
+            ),
+            id(
+                "omega from the solver = J a/I",
+                n("omega", mo.omega),
+                j * &f("a") / &f("I"),
+            ),
         ],
     )
 }
@@ -333,23 +376,26 @@ fn x2(paper: &Paper) -> Claim {
         vec![
             id(
                 "v from the solver (e = 1) = Eq. (v)",
-                el.v.clone(),
+                n("v", el.v.clone()),
                 paper.v.clone(),
             ),
             id(
                 "V from the solver (e = 1) = Eq. (V)",
-                el.rod_v.clone(),
+                n("V", el.rod_v.clone()),
                 paper.big_v.clone(),
             ),
             id(
                 "omega from the solver (e = 1) = Eq. (omega)",
-                el.omega.clone(),
+                n("omega", el.omega.clone()),
                 paper.omega.clone(),
             ),
             id(
                 "kinetic energy after the elastic impact (solver) = m v0^2/2",
-                kinetic_energy(&free_rod(i.clone(), k(1, 1)), &el),
-                k0(),
+                n(
+                    "K_after",
+                    kinetic_energy(&free_rod(i.clone(), k(1, 1)), &el),
+                ),
+                k0_f(),
             ),
             energy_loss_identity(),
             positive(
@@ -373,9 +419,10 @@ fn x3(_paper: &Paper) -> Claim {
     // The claimed composite body.
     let y_c = m.clone() * &a / total.clone();
     let v_c = m.clone() * &v0 / total.clone();
-    let i_c = i.clone() + &(mu() * &sq(&a));
-    let omega = mu() * &a * &v0 / i_c.clone();
     let inel = motion(&p);
+    let (mu, y_c_f, v_c_f) = (mu_f(), n("y_c", y_c.clone()), n("V_c", v_c.clone()));
+    let i_c_f = n("I_c", f("I") + &(mu.clone() * &f("a").pow(2)));
+    let omega_f = n("omega_c", mu.clone() * &f("a") * &f("v0") / &i_c_f);
     proved(
         "X3",
         "Sticking model: y_c = ma/(M+m), V_c = m v0/(M+m), I_c = I + mu a^2, omega = mu a v0/(I + mu a^2). It is identical to Newton e = 0 at the impact instant",
@@ -390,38 +437,38 @@ fn x3(_paper: &Paper) -> Claim {
         vec![
             id(
                 "first moment of the masses about y_c = ma/(M+m) vanishes: M (0 - y_c) + m (a - y_c) = 0",
-                big_m.clone() * &(-y_c.clone()) + &(m.clone() * &(a.clone() - &y_c)),
+                f("M") * &(Formula::int(0) - &y_c_f) + &(f("m") * &(f("a") - &y_c_f)),
                 RatFn::zero(),
             ),
             id(
                 "(M + m) V_c = momentum before (mechanics::linear_momentum)",
-                total * &v_c,
-                linear_momentum(&p, &before),
+                (f("M") + &f("m")) * &v_c_f,
+                n("p_before", linear_momentum(&p, &before)),
             ),
             id(
                 "parallel axes: I + M y_c^2 + m (a - y_c)^2 = I + mu a^2",
-                i.clone() + &(big_m * &sq(&y_c)) + &(m * &sq(&(a.clone() - &y_c))),
-                i_c.clone(),
+                f("I") + &(f("M") * &y_c_f.pow(2)) + &(f("m") * &(f("a") - &y_c_f).pow(2)),
+                i_c_f.clone(),
             ),
             id(
                 "angular momentum about y_c before the impact (mechanics::angular_momentum) = I_c omega",
-                angular_momentum(&p, &before, &y_c),
-                i_c * &omega,
+                n("L_before", angular_momentum(&p, &before, &y_c)),
+                i_c_f * &omega_f,
             ),
             id(
                 "omega of the solver's e = 0 solution = mu a v0/(I + mu a^2)",
-                inel.omega,
-                omega.clone(),
+                n("omega", inel.omega),
+                omega_f.clone(),
             ),
             id(
                 "rod-centre velocity of the solver's e = 0 solution = V_c - omega y_c",
-                inel.rod_v,
-                v_c.clone() - &(omega.clone() * &y_c),
+                n("V", inel.rod_v),
+                v_c_f.clone() - &(omega_f.clone() * &y_c_f),
             ),
             id(
                 "projectile velocity of the solver's e = 0 solution = V_c + omega (a - y_c)",
-                inel.v,
-                v_c + &(omega * &(a - &y_c)),
+                n("v", inel.v),
+                v_c_f + &(omega_f * &(f("a") - &y_c_f)),
             ),
         ],
     )
@@ -438,18 +485,19 @@ fn x4(paper: &Paper) -> Claim {
         vec![
             id(
                 "omega_e from the solver = (1+e)/2 * Eq. (omega)",
-                after(&i, sym("e")).omega,
-                one_plus_e() / k(2, 1) * &paper.omega,
+                n("omega_e", after(&i, sym("e")).omega),
+                one_plus_e_f() / &Formula::int(2) * &paper.omega,
             ),
             id(
                 "Eq. (omega) = 2 * omega of the solver's e = 0 solution",
                 paper.omega.clone(),
-                k(2, 1) * &after(&i, k(0, 1)).omega,
+                Formula::int(2) * &n("omega_0", after(&i, k(0, 1)).omega),
             ),
             id(
                 "Eq. (omega) = 2 * omega of the sticking body, mu a v0/(I + mu a^2) (X3)",
                 paper.omega.clone(),
-                k(2, 1) * &mu() * &sym("a") * &sym("v0") / (i.clone() + &(mu() * &sq(&sym("a")))),
+                Formula::int(2) * &mu_f() * &f("a") * &f("v0")
+                    / &(f("I") + &(mu_f() * &f("a").pow(2))),
             ),
         ],
     )
@@ -460,32 +508,34 @@ fn x4(paper: &Paper) -> Claim {
 
 fn x5(paper: &Paper) -> Claim {
     let i = sym("I");
-    let (a, big_a) = (sym("a"), sym("A"));
     let omega = after(&i, sym("e")).omega;
-    let omega_at = subs(&omega, &[("I", inertia_of_a_star(paper))]);
     let j = impulse(&after(&i, sym("e")));
+    let (a2, big_a2) = (f("a").pow(2), f("A").pow(2));
     let mut certs = vec![
         id(
             "omega_e from the solver = (1+e) v0 a/(a*^2 + a^2), a*^2 = Eq. (maximal-a-general) squared",
-            omega,
-            one_plus_e() * &sym("v0") * &a / (paper.a_star_squared.clone() + &sq(&a)),
+            n("omega_e", omega.clone()),
+            one_plus_e_f() * &f("v0") * &f("a") / &(n("a*^2", paper.a_star_squared.clone()) + &a2),
         ),
-        id(
+        Certificate::identity_at(
             "with I = A^2 mM/(M+m): d omega_e/da = (1+e) v0 (A^2 - a^2)/(A^2 + a^2)^2 (no m, M; the sign does not involve e or v0)",
-            omega_at.derivative(Sym::new("a")),
-            one_plus_e() * &sym("v0") * &(sq(&big_a) - &sq(&a)) / sq(&(sq(&big_a) + &sq(&a))),
+            n("omega_e'", omega.derivative(Sym::new("a"))),
+            one_plus_e_f() * &f("v0") * &(big_a2.clone() - &a2) / &(big_a2 + &a2).pow(2),
+            &[("I", inertia_of_a_star(paper))],
         ),
     ];
     certs.extend(omega_monotonicity(paper));
+    let one_f = Formula::int(1);
     certs.push(id(
         "rotational compliance at a*: a*^2/I = 1/m + 1/M",
-        paper.a_star_squared.clone() / i,
-        one() / sym("m") + &(one() / sym("M")),
+        paper.a_star_squared.clone() / &f("I"),
+        one_f.clone() / &f("m") + &(one_f / &f("M")),
     ));
-    certs.push(id(
+    certs.push(id_at_star(
+        paper,
         "J(a*) from the solver = J(0)/2",
-        at_a_star(paper, &j),
-        subs(&j, &[("a", k(0, 1))]) / k(2, 1),
+        n("J", j.clone()),
+        n("J_0", subs(&j, &[("a", k(0, 1))])) / &Formula::int(2),
     ));
     proved(
         "X5",
@@ -500,28 +550,29 @@ fn x5(paper: &Paper) -> Claim {
 }
 
 fn x6(paper: &Paper) -> Claim {
-    let (l, m, big_m, big_a) = (sym("l"), sym("m"), sym("M"), sym("A"));
-    let half_kick = one_plus_e() * &sym("v0") / k(2, 1);
+    let half_kick = one_plus_e_f() * &f("v0") / &Formula::int(2);
     let omega = after(&sym("I"), sym("e")).omega;
     let uniform = after(&uniform_inertia(), sym("e")).omega;
     let mut certs = vec![
-        id(
+        id_at_star(
+            paper,
             "omega_e (solver) at a = a* (I = A^2 mM/(M+m), a = A) = (1+e) v0/(2A)",
-            at_a_star(paper, &omega),
-            half_kick.clone() / big_a.clone(),
+            n("omega_e", omega),
+            half_kick.clone() / &f("A"),
         ),
-        id(
+        Certificate::identity_at(
             "((1+e) v0/(2a*))^2 = ((1+e) v0/2)^2 mu/I at I = A^2 mM/(M+m), so 1/a* = sqrt(mu/I)",
-            sq(&(half_kick.clone() / big_a)),
-            subs(
-                &(sq(&half_kick) * &mu() / sym("I")),
-                &[("I", inertia_of_a_star(paper))],
-            ),
+            (half_kick.clone() / &f("A")).pow(2),
+            half_kick.pow(2) * &mu_f() / &f("I"),
+            &[("I", inertia_of_a_star(paper))],
         ),
         id(
             "uniform rod: omega_e(a*)^2 (solver, a^2 = Eq. (maximal-a-homogeneous) squared) = ((1+e) v0/(2l))^2 3m/(M+m)",
-            even_at(&sq(&uniform), &paper.a_star_uniform_squared),
-            sq(&(half_kick / l)) * &k(3, 1) * &m / (big_m + &m),
+            n(
+                "omega_e(a*)^2",
+                even_at(&sq(&uniform), &paper.a_star_uniform_squared),
+            ),
+            (half_kick / &f("l")).pow(2) * &Formula::int(3) * &f("m") / &(f("M") + &f("m")),
         ),
     ];
     certs.extend(omega_monotonicity(paper));
@@ -541,9 +592,8 @@ fn x6(paper: &Paper) -> Claim {
 fn x7(paper: &Paper) -> Claim {
     let (a, big_a) = (sym("a"), sym("A"));
     let omega = after(&sym("I"), sym("e")).omega;
-    let omega_a = subs(&omega, &[("I", inertia_of_a_star(paper))]);
-    let s = a.clone() / big_a.clone();
-    let mirrored = subs(&omega, &[("a", paper.a_star_squared.clone() / a)]);
+    let s_f = n("s", a.clone() / big_a.clone());
+    let mirrored = subs(&omega, &[("a", paper.a_star_squared.value().clone() / a)]);
     proved(
         "X7",
         "Universal curve: omega(a)/omega(a*) = 2s/(1+s^2) with s = a/a*; reciprocity omega(a) = omega(a*^2/a)",
@@ -553,15 +603,16 @@ fn x7(paper: &Paper) -> Claim {
          off the rod).",
         "the ratio reduces identically to 2s/(1+s^2), which is invariant under s -> 1/s",
         vec![
-            id(
+            Certificate::identity_at(
                 "omega(a)/omega(a*) from the solver (I = A^2 mM/(M+m)) = 2s/(1+s^2), s = a/A",
-                omega_a.clone() / subs(&omega_a, &[("a", big_a)]),
-                k(2, 1) * &s / (one() + &sq(&s)),
+                n("omega", omega.clone()) / &n("omega(A)", subs(&omega, &[("a", big_a)])),
+                Formula::int(2) * &s_f / &(Formula::int(1) + &s_f.pow(2)),
+                &[("I", inertia_of_a_star(paper))],
             ),
             id(
                 "omega(a*^2/a) = omega(a) (solver's omega, a*^2 = Eq. (maximal-a-general) squared)",
-                mirrored,
-                omega,
+                n("omega(a*^2/a)", mirrored),
+                n("omega", omega),
             ),
         ],
     )
@@ -577,7 +628,7 @@ fn x8(paper: &Paper) -> Claim {
     let (m, big_m) = (sym("m"), sym("M"));
     let ratio = uniform_ratio_squared(paper);
     let kk = big_m.clone() / m.clone();
-    let claimed = k(12, 1) * &(one() + &kk) / sq(&(k(4, 1) + &kk));
+    let kk_f = n("k", kk.clone());
     let half_m = (big_m.clone() / k(2, 1) + &sym("s"), "M/2 + s");
     let light = [("m", half_m.0)];
     let four_m = sum([prod([pc(4, 1), ps("m")]), ps("M")]);
@@ -585,8 +636,8 @@ fn x8(paper: &Paper) -> Claim {
     let mut certs = vec![
         id(
             "uniform rod, any e: (omega(l)/omega(a*))^2 from the solver (a*^2 = Eq. (maximal-a-homogeneous) squared) = 12(1+k)/(4+k)^2, k = M/m",
-            ratio.clone(),
-            claimed,
+            n("(omega(l)/omega(a*))^2", ratio.clone()),
+            Formula::int(12) * &(Formula::int(1) + &kk_f) / &(Formula::int(4) + &kk_f).pow(2),
         ),
         positive(
             "1 - ratio^2 = (M - 2m)^2/(M + 4m)^2 >= 0 (so ratio <= 1, = 1 only at M = 2m)",
@@ -741,11 +792,10 @@ fn x9(paper: &Paper) -> Claim {
     let el = motion(&p);
     let total = m.clone() + &big_m;
     let v_cm = linear_momentum(&p, &Motion::before(v0.clone())) / total.clone();
-    let k_rot = |mo: &Motion<RatFn>, inertia: &RatFn| inertia.clone() * &sq(&mo.omega) / k(2, 1);
-    let cm_energy = mu() * &sq(&v0) / k(2, 1);
-    let internal = (m.clone() * &sq(&(el.v.clone() - &v_cm))
-        + &(big_m.clone() * &sq(&(el.rod_v.clone() - &v_cm))))
-        / k(2, 1);
+    let two = Formula::int(2);
+    let v_cm_f = n("v_cm", v_cm.clone());
+    let omega_f = n("omega", el.omega.clone());
+    let cm_energy_f = mu_f() * &f("v0").pow(2) / &two;
     let bound_form = quot(
         sum([
             prod([ps("m"), PosExpr::Square(el.v.clone() - &v_cm)]),
@@ -763,40 +813,46 @@ fn x9(paper: &Paper) -> Claim {
          v0^2/a*^2 - omega^2 = [m(v - v_cm)^2 + M(V - v_cm)^2]/I >= 0, i.e. |omega| <= v0/a*.",
         "at a* the solver gives v = V = v_cm, and König's identity bounds omega^2 by v0^2/a*^2 with a sum of squares",
         vec![
-            id(
+            id_at_star(
+                paper,
                 "v at a* (solver, e = 1) = v_cm",
-                at_a_star(paper, &el.v),
-                v_cm.clone(),
+                n("v", el.v.clone()),
+                v_cm_f.clone(),
             ),
-            id(
+            id_at_star(
+                paper,
                 "V at a* (solver, e = 1) = v_cm",
-                at_a_star(paper, &el.rod_v),
-                v_cm.clone(),
+                n("V", el.rod_v.clone()),
+                v_cm_f.clone(),
             ),
             id(
                 "v_cm = (total momentum)/(M + m) = m v0/(M+m)",
-                v_cm.clone(),
-                m.clone() * &v0 / total.clone(),
+                v_cm_f.clone(),
+                f("m") * &f("v0") / &(f("M") + &f("m")),
             ),
-            id(
+            id_at_star(
+                paper,
                 "rotational KE at a* (solver) = mu v0^2/2",
-                at_a_star(paper, &k_rot(&el, &i)),
-                cm_energy.clone(),
+                f("I") * &omega_f.pow(2) / &two,
+                cm_energy_f.clone(),
             ),
             id(
                 "CM-frame energy K0 - (M+m) v_cm^2/2 = mu v0^2/2",
-                k0() - &(total.clone() * &sq(&v_cm) / k(2, 1)),
-                cm_energy.clone(),
+                k0_f() - &((f("M") + &f("m")) * &v_cm_f.pow(2) / &two),
+                cm_energy_f.clone(),
             ),
             id(
                 "(mu v0^2/2)/K0 = M/(M+m)",
-                cm_energy.clone() / k0(),
-                big_m.clone() / total,
+                cm_energy_f.clone() / &k0_f(),
+                f("M") / &(f("M") + &f("m")),
             ),
             id(
                 "König, every a (solver, e = 1): I omega^2/2 = mu v0^2/2 - [m(v - v_cm)^2 + M(V - v_cm)^2]/2",
-                k_rot(&el, &i),
-                cm_energy - &internal,
+                f("I") * &omega_f.pow(2) / &two,
+                cm_energy_f
+                    - &((f("m") * &(n("v", el.v.clone()) - &v_cm_f).pow(2)
+                        + &(f("M") * &(n("V", el.rod_v.clone()) - &v_cm_f).pow(2)))
+                        / &two),
             ),
             positive(
                 "v0^2/a*^2 - omega^2 >= 0 for every a (a*^2 = Eq. (maximal-a-general) squared)",
@@ -812,9 +868,9 @@ fn x9(paper: &Paper) -> Claim {
 }
 
 fn x10(paper: &Paper) -> Claim {
-    let (m, big_m, i, v0, e) = (sym("m"), sym("M"), sym("I"), sym("v0"), sym("e"));
+    let (i, e) = (sym("I"), sym("e"));
     let mo = after(&i, e.clone());
-    let k_rot = i * &sq(&mo.omega) / k(2, 1);
+    let two = Formula::int(2);
     proved(
         "X10",
         "General e, at a*: v - V = (1-e) v0/2, V = (1+e) m v0/(2(M+m)), K_rot = ((1+e)/2)^2 mu v0^2/2",
@@ -822,27 +878,30 @@ fn x10(paper: &Paper) -> Claim {
          has v - V = (1-e) v0/2, V = (1+e) m v0/(2(M+m)) and I omega^2/2 = ((1+e)/2)^2 mu v0^2/2.",
         "the solver's velocities at a* reduce identically to the stated forms",
         vec![
-            id(
+            id_at_star(
+                paper,
                 "v - V at a* (solver) = (1-e) v0/2",
-                at_a_star(paper, &(mo.v.clone() - &mo.rod_v)),
-                (one() - &e) * &v0 / k(2, 1),
+                n("v", mo.v.clone()) - &n("V", mo.rod_v.clone()),
+                (Formula::int(1) - &f("e")) * &f("v0") / &two,
             ),
-            id(
+            id_at_star(
+                paper,
                 "V at a* (solver) = (1+e) m v0/(2(M+m))",
-                at_a_star(paper, &mo.rod_v),
-                one_plus_e() * &m * &v0 / (k(2, 1) * &(big_m + &m)),
+                n("V", mo.rod_v.clone()),
+                one_plus_e_f() * &f("m") * &f("v0") / &(two.clone() * &(f("M") + &f("m"))),
             ),
-            id(
+            id_at_star(
+                paper,
                 "I omega^2/2 at a* (solver) = ((1+e)/2)^2 mu v0^2/2",
-                at_a_star(paper, &k_rot),
-                sq(&(one_plus_e() / k(2, 1))) * &mu() * &sq(&v0) / k(2, 1),
+                f("I") * &n("omega", mo.omega).pow(2) / &two,
+                (one_plus_e_f() / &two).pow(2) * &mu_f() * &f("v0").pow(2) / &two,
             ),
         ],
     )
 }
 
 fn x11(paper: &Paper) -> Claim {
-    let (m, big_m, i, e) = (sym("m"), sym("M"), sym("I"), sym("e"));
+    let (i, e) = (sym("I"), sym("e"));
     let u = sym("u");
     // e = 2u/(1+u^2), u >= 0, runs over exactly [0, 1]; then 1 - e^2 = ((1-u)(1+u))^2/(1+u^2)^2.
     let e_of_u = k(2, 1) * &u / (one() + &sq(&u));
@@ -878,13 +937,18 @@ fn x11(paper: &Paper) -> Claim {
             ),
             id(
                 "e = 0: energy lost/K0 (solver) = 1/D",
-                energy_lost(&i, k(0, 1)) / k0(),
-                one() / paper_d(&i),
+                n("K_lost", energy_lost(&i, k(0, 1))) / &k0_f(),
+                Formula::int(1)
+                    / &(Formula::int(1)
+                        + &(f("m") / &f("M"))
+                        + &(f("m") * &f("a").pow(2) / &f("I"))),
             ),
-            id(
+            id_at_star(
+                paper,
                 "at a*: energy lost/K0 (solver) = (1 - e^2) M/(2(M+m))",
-                at_a_star(paper, &(energy_lost(&i, e.clone()) / k0())),
-                (one() - &sq(&e)) * &big_m / (k(2, 1) * &(big_m.clone() + &m)),
+                n("K_lost", energy_lost(&i, e.clone())) / &k0_f(),
+                (Formula::int(1) - &f("e").pow(2)) * &f("M")
+                    / &(Formula::int(2) * &(f("M") + &f("m"))),
             ),
         ],
     )
@@ -902,11 +966,12 @@ fn x12(paper: &Paper) -> Claim {
     let (m, e, v0) = (sym("m"), sym("e"), sym("v0"));
     let gyr = gyration_inertia();
     let m_eff_g = effective_mass(&gyr);
+    let m_eff_named = n("M_eff", m_eff_g.clone());
     let mut certs = vec![
         id(
             "v from the solver (I = M r_G^2) = v0 (m - e M_eff)/(m + M_eff), M_eff = M r_G^2/(r_G^2 + a^2)",
-            after(&gyr, e.clone()).v,
-            v0.clone() * &(m.clone() - &(e * &m_eff_g)) / (m.clone() + &m_eff_g),
+            n("v", after(&gyr, e.clone()).v),
+            f("v0") * &(f("m") - &(f("e") * &m_eff_named)) / &(f("m") + &m_eff_named),
         ),
         positive(
             "v0/(m + M_eff) > 0, so sign(v) = sign(m - e M_eff)",
@@ -957,15 +1022,17 @@ fn x12_uniform_range() -> Vec<Certificate> {
         prod([pc(3, 1), PosExpr::Square(sym("a"))]),
     ]);
     vec![
-        id(
+        Certificate::identity_at(
             "uniform rod: M_eff(0) = M",
-            subs(&meff, &[("a", k(0, 1))]),
+            n("M_eff", meff.clone()),
             big_m.clone(),
+            &[("a", k(0, 1))],
         ),
-        id(
+        Certificate::identity_at(
             "uniform rod: M_eff(l) = M/4",
-            subs(&meff, &[("a", l)]),
-            big_m / k(4, 1),
+            n("M_eff", meff.clone()),
+            f("M") / &Formula::int(4),
+            &[("a", l)],
         ),
         positive(
             "uniform rod: M - M_eff = 3 M a^2/(l^2 + 3a^2) >= 0",
@@ -1028,7 +1095,7 @@ fn x12_stop_point() -> Vec<Certificate> {
     vec![
         id(
             "uniform rod, e = 1: v (solver) at a^2 = a0^2 = l^2 (M - m)/(3m) is 0",
-            even_at(&v, &a0_sq),
+            n("v(a0)", even_at(&v, &a0_sq)),
             RatFn::zero(),
         ),
         pos(
@@ -1100,10 +1167,9 @@ fn x12_goes_on(paper: &Paper) -> Vec<Certificate> {
 }
 
 fn x13(_paper: &Paper) -> Claim {
-    let (a, l, r, e) = (sym("a"), sym("l"), sym("r_G"), sym("e"));
+    let (a, l, e) = (sym("a"), sym("l"), sym("e"));
     let gyr = gyration_inertia();
     let mo = after(&gyr, e);
-    let y0 = -(sq(&r) / a.clone());
     let uniform = after(&uniform_inertia(), sym("e"));
     // The solver's rest point: V + omega y = 0.
     let y_rest = -(uniform.rod_v.clone() / uniform.omega.clone());
@@ -1120,7 +1186,8 @@ fn x13(_paper: &Paper) -> Claim {
         vec![
             id(
                 "velocity of the rod point y0 = -r_G^2/a (solver, I = M r_G^2, any m, v0, e) = 0",
-                mo.rod_point_velocity(&y0),
+                n("V", mo.rod_v.clone())
+                    + &(n("omega", mo.omega.clone()) * &(-(f("r_G").pow(2) / &f("a")))),
                 RatFn::zero(),
             ),
             positive(
@@ -1163,10 +1230,11 @@ fn x13(_paper: &Paper) -> Claim {
                     prod([pc(3, 1), ps("a")]),
                 ),
             ),
-            id(
+            Certificate::identity_at(
                 "uniform rod, end hit a = l: y0 = -V/omega (solver) = -l/3",
-                subs(&y_rest, &[("a", l.clone())]),
-                -(l / k(3, 1)),
+                -(n("V", uniform.rod_v.clone()) / &n("omega", uniform.omega.clone())),
+                -(f("l") / &Formula::int(3)),
+                &[("a", l.clone())],
             ),
         ],
     )

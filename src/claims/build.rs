@@ -63,7 +63,7 @@ pub fn m_i_d_form() -> PosExpr {
 /// symbols `positive` > 0 and `nonnegative` >= 0.
 pub fn positive(
     title: impl Into<String>,
-    expr: RatFn,
+    expr: impl Into<RatFn>,
     strict: bool,
     substitutions: &[(&str, RatFn)],
     positive: &[&str],
@@ -72,7 +72,7 @@ pub fn positive(
 ) -> Certificate {
     Certificate::Positive {
         title: title.into(),
-        expr,
+        expr: expr.into(),
         strict,
         substitutions: substitutions
             .iter()

@@ -2,8 +2,10 @@
 //!
 //! A claim's verdict comes only from [`Certificate::check`]. The kinds:
 //!
-//! - [`Certificate::Identity`]: `lhs = rhs` for all values of the symbols: the numerator of
-//!   `lhs - rhs` expands to the zero polynomial.
+//! - [`Certificate::Identity`]: `lhs = rhs` for all values of the symbols (after an optional
+//!   substitution `at`): the numerator of `lhs - rhs` expands to the zero polynomial. The sides
+//!   are [`Formula`]s: they keep the expression as it was built (the solver's output, the
+//!   paper's formula as printed), which the certificate shows before the form both reduce to.
 //! - [`Certificate::Positive`]: `expr > 0` (or `>= 0`) on a domain: after the stated
 //!   substitutions (slack symbols that parametrise the domain, e.g. `M = 2m + q`), `expr`
 //!   equals, identically, a [`PosExpr`] built only from positive symbols, positive constants,
@@ -13,12 +15,14 @@
 //! - [`Certificate::Integral`]: an exact polynomial integral (mass, centre of mass, moment of
 //!   inertia of a density along the rod).
 
+use super::Formula;
 use crate::field::ratfunc::{Limit, Point};
 use crate::field::{Field, Q, QSqrt, RatFn, Sym};
 use num_traits::{One, Zero};
 use std::cmp::Ordering;
 use std::collections::BTreeSet;
 use std::fmt;
+use std::fmt::Write as _;
 
 /// An expression whose sign is visible from its shape.
 #[derive(Debug, Clone, PartialEq)]
@@ -262,14 +266,16 @@ pub enum Expected {
 /// A piece of evidence that a checker re-verifies.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Certificate {
-    /// `lhs = rhs` identically.
+    /// `lhs = rhs` identically, after the simultaneous substitution `at` (none: for all values).
     Identity {
         /// What the identity says, in words.
         title: String,
-        /// Left-hand side.
-        lhs: RatFn,
-        /// Right-hand side.
-        rhs: RatFn,
+        /// Left-hand side, as built.
+        lhs: Formula,
+        /// Right-hand side, as built.
+        rhs: Formula,
+        /// Symbols replaced in both sides before they are compared (`I = m M a^2/(M + m)`).
+        at: Vec<(Sym, RatFn)>,
     },
     /// `expr > 0` (strict) or `>= 0` on a domain parametrised by the substitutions.
     Positive {
@@ -334,22 +340,51 @@ pub enum Certificate {
 }
 
 impl Certificate {
-    /// An identity certificate.
+    /// An identity certificate: `lhs = rhs` for all values of the symbols.
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::claims::Certificate;
-    /// use rodimpact::field::RatFn;
-    /// let x = RatFn::symbol("x");
-    /// let c = Certificate::identity("(x+1)^2 expands", (x.clone() + &RatFn::from(1)) * &(x.clone() + &RatFn::from(1)),
-    ///     x.clone() * &x + &(RatFn::from(2) * &x) + &RatFn::from(1));
+    /// use rodimpact::claims::{Certificate, Formula};
+    /// let x = Formula::sym("x");
+    /// let one = Formula::int(1);
+    /// let c = Certificate::identity("(x+1)^2 expands", (x.clone() + &one).pow(2),
+    ///     x.pow(2) + &(Formula::int(2) * &x) + &one);
     /// assert!(c.check().is_ok());
+    /// assert!(c.to_markdown().contains("lhs     = (x + 1)^2\nrhs     = x^2 + 2*x + 1\n"));
     /// ```
-    pub fn identity(title: impl Into<String>, lhs: RatFn, rhs: RatFn) -> Certificate {
+    pub fn identity(
+        title: impl Into<String>,
+        lhs: impl Into<Formula>,
+        rhs: impl Into<Formula>,
+    ) -> Certificate {
+        Certificate::identity_at(title, lhs, rhs, &[])
+    }
+
+    /// An identity certificate after a substitution: `lhs = rhs` once the symbols of `at` are
+    /// replaced (simultaneously) in both sides. The sides are shown as built, then the
+    /// substitution, then the form both reduce to.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::claims::{Certificate, Formula};
+    /// use rodimpact::field::RatFn;
+    /// let a = Formula::sym("a");
+    /// let c = Certificate::identity_at("a^2 = 4 at a = 2", a.pow(2), Formula::int(4),
+    ///     &[("a", RatFn::from(2))]);
+    /// assert!(c.check().is_ok());
+    /// assert!(c.to_markdown().contains("at        a = 2\n"));
+    /// ```
+    pub fn identity_at(
+        title: impl Into<String>,
+        lhs: impl Into<Formula>,
+        rhs: impl Into<Formula>,
+        at: &[(&str, RatFn)],
+    ) -> Certificate {
         Certificate::Identity {
             title: title.into(),
-            lhs,
-            rhs,
+            lhs: lhs.into(),
+            rhs: rhs.into(),
+            at: at.iter().map(|(s, v)| (Sym::new(s), v.clone())).collect(),
         }
     }
 
@@ -357,33 +392,33 @@ impl Certificate {
     pub fn witness(
         title: impl Into<String>,
         instance: Vec<(Sym, QSqrt)>,
-        lhs: RatFn,
+        lhs: impl Into<RatFn>,
         relation: Relation,
-        rhs: RatFn,
+        rhs: impl Into<RatFn>,
     ) -> Certificate {
         Certificate::Witness {
             title: title.into(),
             instance,
-            lhs,
+            lhs: lhs.into(),
             relation,
-            rhs,
+            rhs: rhs.into(),
         }
     }
 
     /// A finite-limit certificate.
     pub fn limit(
         title: impl Into<String>,
-        expr: RatFn,
+        expr: impl Into<RatFn>,
         sym: &str,
         at: Point,
-        expected: RatFn,
+        expected: impl Into<RatFn>,
     ) -> Certificate {
         Certificate::Limit {
             title: title.into(),
-            expr,
+            expr: expr.into(),
             sym: Sym::new(sym),
             at,
-            expected: Expected::Finite(expected),
+            expected: Expected::Finite(expected.into()),
         }
     }
 
@@ -416,8 +451,9 @@ impl Certificate {
     /// sign, the limit actually found, the relation that fails at the instance).
     pub fn check(&self) -> Result<(), String> {
         match self {
-            Certificate::Identity { lhs, rhs, .. } => {
-                let diff = lhs.clone() - rhs;
+            Certificate::Identity { lhs, rhs, at, .. } => {
+                let (l, r) = reduced_sides(lhs, rhs, at)?;
+                let diff = l - &r;
                 if diff.is_identically_zero() {
                     Ok(())
                 } else {
@@ -537,9 +573,41 @@ impl Certificate {
     /// The certificate in Markdown: what it says, its data, and what the checker verified.
     pub fn to_markdown(&self) -> String {
         match self {
-            Certificate::Identity { lhs, rhs, .. } => format!(
-                "*Identity certificate.*\n\n```text\nlhs = {lhs}\nrhs = {rhs}\n```\n\nChecked: the numerator of lhs - rhs expands to the zero polynomial.\n"
-            ),
+            Certificate::Identity { lhs, rhs, at, .. } => {
+                let mut block = format!("lhs     = {lhs}\nrhs     = {rhs}\n");
+                let mut names: Vec<&(String, Formula)> = lhs.names().iter().collect();
+                for n in rhs.names() {
+                    if !names.iter().any(|(k, _)| *k == n.0) {
+                        names.push(n);
+                    }
+                }
+                for (i, (name, value)) in names.iter().enumerate() {
+                    let head = if i == 0 { "where" } else { "" };
+                    let _ = writeln!(block, "{head:<9} {name} = {value}");
+                }
+                if !at.is_empty() {
+                    let _ = writeln!(block, "at        {}", substitution_text(at));
+                }
+                let checked = match reduced_sides(lhs, rhs, at) {
+                    Ok((l, r)) if l == r => {
+                        let _ = writeln!(block, "reduced = {l}   (both sides)");
+                        "the numerator of lhs - rhs expands to the zero polynomial"
+                    }
+                    Ok((l, r)) => {
+                        let _ = writeln!(block, "reduced : lhs = {l}, rhs = {r}");
+                        "lhs - rhs is compared with 0"
+                    }
+                    Err(_) => "the substitution makes a denominator vanish",
+                };
+                let at_words = if at.is_empty() {
+                    ""
+                } else {
+                    "after the substitution in both sides, "
+                };
+                format!(
+                    "*Identity certificate.*\n\n```text\n{block}```\n\nChecked: {at_words}{checked}; the sides are shown as they were built.\n"
+                )
+            }
             Certificate::Positive {
                 expr,
                 strict,
@@ -552,11 +620,7 @@ impl Certificate {
                 let subs = if substitutions.is_empty() {
                     "(none)".to_string()
                 } else {
-                    substitutions
-                        .iter()
-                        .map(|(s, v)| format!("{s} = {v}"))
-                        .collect::<Vec<_>>()
-                        .join(", ")
+                    substitution_text(substitutions)
                 };
                 let names = |v: &[Sym]| {
                     if v.is_empty() {
@@ -628,6 +692,29 @@ impl Certificate {
             ),
         }
     }
+}
+
+/// Both sides of an identity after its substitution, in canonical form.
+fn reduced_sides(
+    lhs: &Formula,
+    rhs: &Formula,
+    at: &[(Sym, RatFn)],
+) -> Result<(RatFn, RatFn), String> {
+    if at.is_empty() {
+        return Ok((lhs.value().clone(), rhs.value().clone()));
+    }
+    let vanishing = || "the substitution makes a denominator vanish".to_string();
+    let l = lhs.value().subs_all(at).ok_or_else(vanishing)?;
+    let r = rhs.value().subs_all(at).ok_or_else(vanishing)?;
+    Ok((l, r))
+}
+
+/// `I = m*M*a^2/(M + m), e = 1`.
+fn substitution_text(at: &[(Sym, RatFn)]) -> String {
+    at.iter()
+        .map(|(s, v)| format!("{s} = {v}"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// `x` evaluated exactly at a witness instance; `None` where a denominator vanishes or a symbol

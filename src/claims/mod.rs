@@ -15,15 +15,15 @@ mod beyond_impulse;
 mod beyond_motion;
 mod build;
 mod certificate;
+mod formula;
 pub mod model;
 mod paper_equations;
 mod paper_intuition;
 mod paper_optimum;
 
 pub use certificate::{Certificate, Expected, PosExpr, Relation, SignClass};
+pub use formula::Formula;
 
-use crate::field::RatFn;
-use model::{k, sym};
 use std::time::Instant;
 
 /// Where in the paper a claim stands, for grouping the report as the paper runs.
@@ -217,66 +217,59 @@ impl Claim {
 
 /// The formulas as the paper prints them: the data the claims compare with independent
 /// computations. [`Paper::as_printed`] is the paper; tests mutate a field to check that the
-/// verifier notices.
+/// verifier notices. Each is a [`Formula`], so certificates show it as printed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Paper {
     /// Eq. (v): `v = -(1 - m/M - m a^2/I)/D v0`.
-    pub v: RatFn,
+    pub v: Formula,
     /// Eq. (V): `V = (2m/M)/D v0`.
-    pub big_v: RatFn,
+    pub big_v: Formula,
     /// Eq. (omega): `omega = (2ma/I)/D v0`.
-    pub omega: RatFn,
+    pub omega: Formula,
     /// Eq. (maximal-a-general), squared: `a*^2 = (M + m) I/(m M)`.
-    pub a_star_squared: RatFn,
+    pub a_star_squared: Formula,
     /// Eq. (inertia-homogeneous): `I = M (2l)^2/12`.
-    pub uniform_inertia: RatFn,
+    pub uniform_inertia: Formula,
     /// Eq. (maximal-a-homogeneous), squared: `a*^2 = (M + m) l^2/(3m)`.
-    pub a_star_uniform_squared: RatFn,
+    pub a_star_uniform_squared: Formula,
     /// The mass ratio M/m at which a* reaches the end of a uniform rod: 2.
-    pub threshold: RatFn,
+    pub threshold: Formula,
     /// Eq. (impulse-linear): `I_lin = 2 m v0/(1 + m/M + 3 m a^2/(M l^2))`.
-    pub impulse_linear: RatFn,
+    pub impulse_linear: Formula,
     /// Eq. (maximal-a-gyration), squared: `a*^2 = (M + m) r_G^2/m`.
-    pub a_star_gyration_squared: RatFn,
+    pub a_star_gyration_squared: Formula,
 }
 
 impl Paper {
-    /// The formulas exactly as printed in the paper.
+    /// The formulas exactly as printed in the paper (`D = 1 + m/M + m a^2/I` written out).
     ///
     /// # Examples
     /// ```
     /// use rodimpact::claims::Paper;
-    /// assert_eq!(Paper::as_printed().threshold.to_string(), "2");
+    /// let paper = Paper::as_printed();
+    /// assert_eq!(paper.threshold.to_string(), "2");
+    /// assert_eq!(paper.omega.to_string(), "(2*m*a/I)/(1 + m/M + m*a^2/I)*v0");
+    /// assert_eq!(paper.omega.value().to_string(), "2*M*a*m*v0/(M*a^2*m + I*M + I*m)");
     /// ```
     pub fn as_printed() -> Paper {
-        let (m, big_m, inertia, a, v0, l, r) = (
-            sym("m"),
-            sym("M"),
-            sym("I"),
-            sym("a"),
-            sym("v0"),
-            sym("l"),
-            sym("r_G"),
-        );
-        let one = k(1, 1);
-        let d = model::paper_d(&inertia);
+        let f = Formula::sym;
+        let (m, big_m, inertia, a, v0, l, r) =
+            (f("m"), f("M"), f("I"), f("a"), f("v0"), f("l"), f("r_G"));
+        let (one, two, three) = (Formula::int(1), Formula::int(2), Formula::int(3));
+        let m_over_big_m = m.clone() / &big_m;
+        let m_a2_over_i = m.clone() * &a.pow(2) / &inertia;
+        let d = one.clone() + &m_over_big_m + &m_a2_over_i;
         Paper {
-            v: -((one.clone()
-                - &(m.clone() / big_m.clone())
-                - &(m.clone() * &a * &a / inertia.clone()))
-                / d.clone())
-                * &v0,
-            big_v: (k(2, 1) * &m / big_m.clone()) / d.clone() * &v0,
-            omega: (k(2, 1) * &m * &a / inertia.clone()) / d * &v0,
-            a_star_squared: (big_m.clone() + &m) * &inertia / (m.clone() * &big_m),
-            uniform_inertia: big_m.clone() * &(k(2, 1) * &l) * &(k(2, 1) * &l) / k(12, 1),
-            a_star_uniform_squared: (big_m.clone() + &m) / (k(3, 1) * &m) * &l * &l,
-            threshold: k(2, 1),
-            impulse_linear: k(2, 1) * &m * &v0
-                / (one.clone()
-                    + &(m.clone() / big_m.clone())
-                    + &(k(3, 1) * &m * &a * &a / (big_m.clone() * &l * &l))),
-            a_star_gyration_squared: (big_m + &m) / m * &r * &r,
+            v: -((one.clone() - &m_over_big_m - &m_a2_over_i) / &d * &v0),
+            big_v: (two.clone() * &m / &big_m) / &d * &v0,
+            omega: (two.clone() * &m * &a / &inertia) / &d * &v0,
+            a_star_squared: (big_m.clone() + &m) * &inertia / &(m.clone() * &big_m),
+            uniform_inertia: big_m.clone() * &(two.clone() * &l).pow(2) / &Formula::int(12),
+            a_star_uniform_squared: (big_m.clone() + &m) / &(three.clone() * &m) * &l.pow(2),
+            threshold: two.clone(),
+            impulse_linear: two * &m * &v0
+                / &(one + &m_over_big_m + &(three * &m * &a.pow(2) / &(big_m.clone() * &l.pow(2)))),
+            a_star_gyration_squared: (big_m + &m) / &m * &r.pow(2),
         }
     }
 }

@@ -94,12 +94,12 @@ pub fn subs(x: &RatFn, pairs: &[(&str, RatFn)]) -> RatFn {
 /// let p = free_rod(sym("I"), sym("e"));
 /// assert_eq!(p.inertia.to_string(), "I");
 /// ```
-pub fn free_rod(inertia: RatFn, e: RatFn) -> Params<RatFn> {
+pub fn free_rod(inertia: impl Into<RatFn>, e: RatFn) -> Params<RatFn> {
     Params {
         m: sym("m"),
         rod_mass: sym("M"),
         half_length: sym("l"),
-        inertia,
+        inertia: inertia.into(),
         a: sym("a"),
         v0: sym("v0"),
         e,
@@ -108,7 +108,7 @@ pub fn free_rod(inertia: RatFn, e: RatFn) -> Params<RatFn> {
 }
 
 /// The pivoted-rod scene in symbols: pivot at p, moment of inertia `inertia` about the centre.
-pub fn pivoted_rod(inertia: RatFn, e: RatFn) -> Params<RatFn> {
+pub fn pivoted_rod(inertia: impl Into<RatFn>, e: RatFn) -> Params<RatFn> {
     Params {
         support: Support::Pivot(sym("p")),
         ..free_rod(inertia, e)

@@ -6,10 +6,12 @@
 
 use super::build::*;
 use super::model::*;
-use super::{Certificate, Claim, Decision, Entry, Expected, Group, Paper, PosExpr, Relation};
+use super::{
+    Certificate, Claim, Decision, Entry, Expected, Formula, Group, Paper, PosExpr, Relation,
+};
 use crate::field::ratfunc::Point;
 use crate::field::{RatFn, Sym};
-use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
+use crate::mechanics::{Motion, angular_momentum, kinetic_energy};
 
 /// The registered claims of this part of the paper.
 pub(super) const ENTRIES: &[Entry] = &[
@@ -118,31 +120,35 @@ fn d_positive() -> Certificate {
     )
 }
 
+/// A symbol as a [`Formula`].
+fn f(name: &str) -> Formula {
+    Formula::sym(name)
+}
+
 /// Eq. (linear-angular): V and omega as functions of the projectile's velocity `v`.
-fn momentum_split(v: &RatFn) -> (RatFn, RatFn) {
-    let (m, big_m, a, inertia, v0) = (sym("m"), sym("M"), sym("a"), sym("I"), sym("v0"));
-    let dv = v0 - v;
-    (m.clone() / big_m * &dv, m * &a / inertia * &dv)
+fn momentum_split(v: &Formula) -> (Formula, Formula) {
+    let dv = f("v0") - v;
+    (f("m") / &f("M") * &dv, f("m") * &f("a") / &f("I") * &dv)
 }
 
 /// `m/M + m a^2/I`, the coefficient in Eqs. (kinetic2) and (kinetic-divided) divided by m.
-fn compliance_ratio() -> RatFn {
-    let (m, a) = (sym("m"), sym("a"));
-    m.clone() / sym("M") + &(m * &a * &a / sym("I"))
+fn compliance_ratio() -> Formula {
+    f("m") / &f("M") + &(f("m") * &f("a").pow(2) / &f("I"))
 }
 
-/// Eq. (kinetic2) as printed, left side minus right side, at projectile velocity `v`.
-fn kinetic2(v: &RatFn) -> RatFn {
-    let (m, v0) = (sym("m"), sym("v0"));
-    let dv = v0.clone() - v;
-    m.clone() * &(v0.clone() * &v0 - &(v.clone() * v))
-        - &(m.clone() * &compliance_ratio() * &dv * &dv)
+/// Eq. (kinetic2) as printed, left side minus right side, at projectile velocity `v`:
+/// `m(v0^2 - v^2) - ((m^2/M)(v0 - v)^2 + (m^2 a^2/I)(v0 - v)^2)`.
+fn kinetic2(v: &Formula) -> Formula {
+    let (m, v0) = (f("m"), f("v0"));
+    let dv2 = (v0.clone() - v).pow(2);
+    m.clone() * &(v0.pow(2) - &v.pow(2))
+        - &(m.pow(2) / &f("M") * &dv2 + &(m.pow(2) * &f("a").pow(2) / &f("I") * &dv2))
 }
 
 /// Eq. (kinetic-divided) as printed, left side minus right side, at projectile velocity `v`.
-fn kinetic_divided(v: &RatFn) -> RatFn {
-    let (m, v0) = (sym("m"), sym("v0"));
-    m.clone() * &(v0.clone() + v) - &(m.clone() * &compliance_ratio() * &(v0 - v))
+fn kinetic_divided(v: &Formula) -> Formula {
+    let (m, v0) = (f("m"), f("v0"));
+    m.clone() * &(v0.clone() + v) - &(m * &compliance_ratio() * &(v0 - v))
 }
 
 /// Uniform rod, M = m (= l = v0 = 1): omega at a* = sqrt(2/3) l exceeds omega at the end.
@@ -197,8 +203,6 @@ fn c2(_paper: &Paper) -> Claim {
     let after = elastic();
     let at_centre = |x: &RatFn| subs(x, &[("a", k(0, 1))]);
     let big_v = at_centre(&after.rod_v);
-    let (m, big_m, v0) = (sym("m"), sym("M"), sym("v0"));
-    let expected = k(2, 1) * &m * &v0 / (big_m + &m);
     Claim {
         id: "C2",
         location: "intro ¶2",
@@ -211,15 +215,17 @@ fn c2(_paper: &Paper) -> Claim {
             .into(),
         reason: "at a = 0 the solver's omega is identically 0 and its V equals 2m v0/(M+m), visibly positive".into(),
         decision: Decision::Proved(vec![
-            Certificate::identity(
+            Certificate::identity_at(
                 "omega at a = 0 (generic solver, e = 1) is 0",
-                at_centre(&after.omega),
+                Formula::named("omega", after.omega),
                 k(0, 1),
+                &[("a", k(0, 1))],
             ),
-            Certificate::identity(
+            Certificate::identity_at(
                 "V at a = 0 (generic solver, e = 1) equals 2 m v0/(M + m)",
-                big_v.clone(),
-                expected,
+                Formula::named("V", after.rod_v.clone()),
+                Formula::int(2) * &f("m") * &f("v0") / &(f("M") + &f("m")),
+                &[("a", k(0, 1))],
             ),
             positive("V at a = 0 is > 0", big_v, true, &[], &["m", "M", "v0"], &[], PosExpr::quotient(
                     prod([pc(2, 1), ps("m"), ps("v0")]),
@@ -304,7 +310,8 @@ fn c4(paper: &Paper) -> Claim {
 fn c5(_paper: &Paper) -> Claim {
     let p = rod(sym("e"));
     let after = motion(&p);
-    let lhs = sym("m") * &after.v + &(sym("M") * &after.rod_v);
+    let lhs =
+        f("m") * &Formula::named("v", after.v) + &(f("M") * &Formula::named("V", after.rod_v));
     Claim {
         id: "C5",
         location: "Eq. (linear)",
@@ -319,7 +326,7 @@ fn c5(_paper: &Paper) -> Claim {
         decision: Decision::Proved(vec![Certificate::identity(
             "linear momentum after the impact equals m v0 (v, V from the generic solver over Q(m, M, I, a, v0, e))",
             lhs,
-            sym("m") * &sym("v0"),
+            f("m") * &f("v0"),
         )]),
     }
 }
@@ -327,10 +334,10 @@ fn c5(_paper: &Paper) -> Claim {
 fn c6(_paper: &Paper) -> Claim {
     let p = rod(sym("e"));
     let after = motion(&p);
-    let (m, a, v0) = (sym("m"), sym("a"), sym("v0"));
-    let printed = m.clone() * &after.v * &a + &(sym("I") * &after.omega);
+    let printed = f("m") * &Formula::named("v", after.v.clone()) * &f("a")
+        + &(f("I") * &Formula::named("omega", after.omega.clone()));
     let y = sym("y");
-    let before = Motion::before(v0.clone());
+    let before = Motion::before(sym("v0"));
     Claim {
         id: "C6",
         location: "Eq. (angular)",
@@ -349,12 +356,12 @@ fn c6(_paper: &Paper) -> Claim {
             Certificate::identity(
                 "m v a + I omega after the impact equals m v0 a (generic solver, any e)",
                 printed,
-                m * &v0 * &a,
+                f("m") * &f("v0") * &f("a"),
             ),
             Certificate::identity(
                 "angular momentum about an arbitrary fixed point (0, y) is the same after as before (generic solver, any e)",
-                angular_momentum(&p, &after, &y),
-                angular_momentum(&p, &before, &y),
+                Formula::named("L_after", angular_momentum(&p, &after, &y)),
+                Formula::named("L_before", angular_momentum(&p, &before, &y)),
             ),
         ]),
     }
@@ -380,8 +387,8 @@ fn c7(_paper: &Paper) -> Claim {
         decision: Decision::Proved(vec![
             Certificate::identity(
                 "kinetic energy after the impact (generic solver, e = 1) equals m v0^2/2",
-                solved(&rod(k(1, 1))).energy.after,
-                sym("m") * &sym("v0") * &sym("v0") / k(2, 1),
+                Formula::named("K_after", solved(&rod(k(1, 1))).energy.after),
+                f("m") * &f("v0").pow(2) / &Formula::int(2),
             ),
             positive("energy lost for 0 <= e < 1 (e = s/(s + t), s >= 0, t > 0) is > 0: conservation singles out e = 1", lost(sym("e")), true, &inelastic, &["t", "m", "M", "I", "v0"], &["s"], PosExpr::quotient(
                     prod([
@@ -460,17 +467,10 @@ fn c8(paper: &Paper) -> Claim {
 
 fn c9(_paper: &Paper) -> Claim {
     let p = rod(sym("e"));
-    let v = sym("v");
-    let (big_v, omega) = momentum_split(&v);
-    let trial = Motion {
-        v: v.clone(),
-        rod_v: big_v,
-        omega,
-    };
-    let before = Motion::before(sym("v0"));
+    let (big_v, omega) = momentum_split(&f("v"));
     let after = motion(&p);
-    let (solver_big_v, solver_omega) = momentum_split(&after.v);
-    let zero = k(0, 1);
+    let solver_v = Formula::named("v", after.v.clone());
+    let (solver_big_v, solver_omega) = momentum_split(&solver_v);
     Claim {
         id: "C9",
         location: "Eq. (linear-angular)",
@@ -485,22 +485,22 @@ fn c9(_paper: &Paper) -> Claim {
         decision: Decision::Proved(vec![
             Certificate::identity(
                 "linear momentum with V = (m/M)(v0 - v), v free, equals m v0",
-                linear_momentum(&p, &trial),
-                linear_momentum(&p, &before),
+                f("m") * &f("v") + &(f("M") * &Formula::named("V", big_v)),
+                f("m") * &f("v0"),
             ),
             Certificate::identity(
                 "angular momentum about the centre with omega = (ma/I)(v0 - v), v free, equals m v0 a",
-                angular_momentum(&p, &trial, &zero),
-                angular_momentum(&p, &before, &zero),
+                f("m") * &f("v") * &f("a") + &(f("I") * &Formula::named("omega", omega)),
+                f("m") * &f("v0") * &f("a"),
             ),
             Certificate::identity(
                 "the solver's V (any e) equals (m/M)(v0 - v) at the solver's v",
-                after.rod_v,
+                Formula::named("V", after.rod_v),
                 solver_big_v,
             ),
             Certificate::identity(
                 "the solver's omega (any e) equals (ma/I)(v0 - v) at the solver's v",
-                after.omega,
+                Formula::named("omega", after.omega),
                 solver_omega,
             ),
         ]),
@@ -509,15 +509,17 @@ fn c9(_paper: &Paper) -> Claim {
 
 fn c10(_paper: &Paper) -> Claim {
     let p = rod(k(1, 1));
-    let v = sym("v");
+    let v = f("v");
     let (big_v, omega) = momentum_split(&v);
     let trial = Motion {
-        v: v.clone(),
-        rod_v: big_v,
-        omega,
+        v: sym("v"),
+        rod_v: big_v.value().clone(),
+        omega: omega.value().clone(),
     };
     let before = Motion::before(sym("v0"));
-    let twice_lost = k(2, 1) * &(kinetic_energy(&p, &before) - &kinetic_energy(&p, &trial));
+    let twice_lost = Formula::int(2)
+        * &(Formula::named("K0", kinetic_energy(&p, &before))
+            - &Formula::named("K", kinetic_energy(&p, &trial)));
     Claim {
         id: "C10",
         location: "Eq. (kinetic2)",
@@ -538,7 +540,7 @@ fn c10(_paper: &Paper) -> Claim {
             ),
             Certificate::identity(
                 "the elastic v of the generic solver satisfies Eq. (kinetic2)",
-                kinetic2(&elastic().v),
+                kinetic2(&Formula::named("v", elastic().v)),
                 k(0, 1),
             ),
         ]),
@@ -546,9 +548,10 @@ fn c10(_paper: &Paper) -> Claim {
 }
 
 fn c11(paper: &Paper) -> Claim {
-    let (v, v0) = (sym("v"), sym("v0"));
-    let leading = sym("m") * &paper_d(&sym("I"));
-    let factored = -(leading * &(v.clone() - &v0) * &(v.clone() - &paper.v));
+    let (v, v0) = (f("v"), f("v0"));
+    let v_paper = Formula::named("v_paper", paper.v.clone());
+    let d = Formula::int(1) + &compliance_ratio();
+    let factored = -(f("m") * &d * &(v.clone() - &v0) * &(v.clone() - &v_paper));
     let (big_v, omega) = momentum_split(&v0);
     Claim {
         id: "C11",
@@ -570,7 +573,7 @@ fn c11(paper: &Paper) -> Claim {
                 factored,
             ),
             d_positive(),
-            positive("the two roots differ: v0 - v (Eq. (v)) = 2 v0/D > 0", v0.clone() - &paper.v, true, &[], &["m", "M", "I", "v0"], &[], PosExpr::quotient(prod([pc(2, 1), ps("v0"), ps("M"), ps("I")]), m_i_d_form())),
+            positive("the two roots differ: v0 - v (Eq. (v)) = 2 v0/D > 0", v0.clone() - &v_paper, true, &[], &["m", "M", "I", "v0"], &[], PosExpr::quotient(prod([pc(2, 1), ps("v0"), ps("M"), ps("I")]), m_i_d_form())),
             Certificate::identity("v = v0 in Eq. (linear-angular) gives V = 0", big_v, k(0, 1)),
             Certificate::identity(
                 "v = v0 in Eq. (linear-angular) gives omega = 0",
@@ -582,8 +585,10 @@ fn c11(paper: &Paper) -> Claim {
 }
 
 fn c12(paper: &Paper) -> Claim {
-    let (v, v0) = (sym("v"), sym("v0"));
-    let linear = sym("m") * &paper_d(&sym("I")) * &(v.clone() - &paper.v);
+    let (v, v0) = (f("v"), f("v0"));
+    let linear = f("m")
+        * &(Formula::int(1) + &compliance_ratio())
+        * &(v.clone() - &Formula::named("v_paper", paper.v.clone()));
     Claim {
         id: "C12",
         location: "Eq. (kinetic-divided)",
@@ -620,7 +625,7 @@ fn elastic_formula(
     statement: &'static str,
     quantity: &str,
     solver: RatFn,
-    printed: &RatFn,
+    printed: &Formula,
 ) -> Claim {
     Claim {
         id,
@@ -638,7 +643,7 @@ fn elastic_formula(
         decision: Decision::Proved(vec![
             Certificate::identity(
                 format!("{quantity} from the impulse equations (e = 1) equals {location}"),
-                solver,
+                Formula::named(quantity, solver),
                 printed.clone(),
             ),
             d_positive(),
@@ -683,7 +688,7 @@ fn c15(paper: &Paper) -> Claim {
 // The limiting cases.
 
 fn c16(paper: &Paper) -> Claim {
-    let at_centre = |x: &RatFn| subs(x, &[("a", k(0, 1))]);
+    let centre = [("a", k(0, 1))];
     Claim {
         id: "C16",
         location: "case (i)",
@@ -695,18 +700,19 @@ fn c16(paper: &Paper) -> Claim {
             .into(),
         reason: "Eq. (omega) and the solver's omega (any e) vanish identically at a = 0".into(),
         decision: Decision::Proved(vec![
-            Certificate::identity("Eq. (omega) at a = 0 is 0", at_centre(&paper.omega), k(0, 1)),
-            Certificate::identity(
+            Certificate::identity_at("Eq. (omega) at a = 0 is 0", paper.omega.clone(), k(0, 1), &centre),
+            Certificate::identity_at(
                 "the generic solver's omega at a = 0 is 0 for every e",
-                at_centre(&motion(&rod(sym("e"))).omega),
+                Formula::named("omega", motion(&rod(sym("e"))).omega),
                 k(0, 1),
+                &centre,
             ),
         ]),
     }
 }
 
 fn c17(paper: &Paper) -> Claim {
-    let head_on = |x: &RatFn| subs(x, &[("a", k(0, 1)), ("M", sym("m"))]);
+    let head_on = [("a", k(0, 1)), ("M", sym("m"))];
     let after = elastic();
     let v0 = sym("v0");
     Claim {
@@ -721,21 +727,24 @@ fn c17(paper: &Paper) -> Claim {
             .into(),
         reason: "Eqs. (v), (V) and the solver's elastic v, V reduce identically to 0 and v0 at a = 0, M = m".into(),
         decision: Decision::Proved(vec![
-            Certificate::identity("Eq. (v) at a = 0, M = m is 0", head_on(&paper.v), k(0, 1)),
-            Certificate::identity(
+            Certificate::identity_at("Eq. (v) at a = 0, M = m is 0", paper.v.clone(), k(0, 1), &head_on),
+            Certificate::identity_at(
                 "Eq. (V) at a = 0, M = m is v0",
-                head_on(&paper.big_v),
+                paper.big_v.clone(),
                 v0.clone(),
+                &head_on,
             ),
-            Certificate::identity(
+            Certificate::identity_at(
                 "the generic solver's v (e = 1) at a = 0, M = m is 0",
-                head_on(&after.v),
+                Formula::named("v", after.v),
                 k(0, 1),
+                &head_on,
             ),
-            Certificate::identity(
+            Certificate::identity_at(
                 "the generic solver's V (e = 1) at a = 0, M = m is v0",
-                head_on(&after.rod_v),
+                Formula::named("V", after.rod_v),
                 v0,
+                &head_on,
             ),
         ]),
     }
@@ -779,7 +788,7 @@ fn c18(paper: &Paper) -> Claim {
     let m_a2 = m * &a * &a;
     certificates.push(Certificate::Limit {
         title: "why I -> oo matters: with I held fixed, Eq. (v) tends to -(I - m a^2)/(I + m a^2) v0, not -v0 (a rod pivoted at its centre)".into(),
-        expr: paper.v.clone(),
+        expr: paper.v.value().clone(),
         sym: Sym::new("M"),
         at: Point::Infinity,
         expected: Expected::Finite(
@@ -868,7 +877,7 @@ mod tests {
         // v = -(1 - m/M)/D v0: wrong only for a != 0.
         let mut paper = Paper::as_printed();
         let d = paper_d(&sym("I"));
-        paper.v = -((k(1, 1) - &(sym("m") / sym("M"))) / d) * &sym("v0");
+        paper.v = (-((k(1, 1) - &(sym("m") / sym("M"))) / d) * &sym("v0")).into();
         assert_eq!(failing(&paper), ["C11", "C12", "C13", "C18"]);
     }
 
@@ -890,7 +899,7 @@ mod tests {
     fn a_wrong_uniform_a_star_is_caught() {
         let mut paper = Paper::as_printed();
         paper.a_star_uniform_squared =
-            (sym("M") + &sym("m")) / (k(2, 1) * &sym("m")) * &sym("l") * &sym("l");
+            ((sym("M") + &sym("m")) / (k(2, 1) * &sym("m")) * &sym("l") * &sym("l")).into();
         assert_eq!(failing(&paper), ["C4"]);
     }
 

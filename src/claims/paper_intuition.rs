@@ -2,7 +2,7 @@
 
 use super::build::*;
 use super::model::*;
-use super::{Certificate, Claim, Decision, Entry, Group, Paper, PosExpr, Relation};
+use super::{Certificate, Claim, Decision, Entry, Formula, Group, Paper, PosExpr, Relation};
 use crate::field::ratfunc::Point;
 use crate::field::{QSqrt, RatFn, Sym, q};
 
@@ -76,6 +76,11 @@ pub(super) const ENTRIES: &[Entry] = &[
 /// `x + y` for two symbols.
 fn plus(x: &str, y: &str) -> PosExpr {
     sum([ps(x), ps(y)])
+}
+
+/// A symbol as a [`Formula`].
+fn f(name: &str) -> Formula {
+    Formula::sym(name)
 }
 
 fn at_a(x: &RatFn, value: RatFn) -> RatFn {
@@ -310,9 +315,14 @@ fn c32(_paper: &Paper) -> Claim {
     let out = solved(&general);
     let omega = out.after.omega.clone();
     let i_p = general.inertia_about_axis();
-    let (m, v0, p, a) = (sym("m"), sym("v0"), sym("p"), sym("a"));
+    let (m, p, a) = (sym("m"), sym("p"), sym("a"));
     let arm = a.clone() - &p;
-    let closed = (one() + &sym("e")) * &m * &arm * &v0 / (i_p.clone() + &(m.clone() * &sq(&arm)));
+    let (d, i_p_named) = (
+        Formula::named("d", arm.clone()),
+        Formula::named("I_p", i_p.clone()),
+    );
+    let closed = (Formula::int(1) + &f("e")) * &f("m") * &d * &f("v0")
+        / &(i_p_named.clone() + &(f("m") * &d.pow(2)));
     let (x, t, w) = (sym("x"), sym("t"), sym("w"));
     let below = at_a(&omega, p.clone() + &x + &t) - &at_a(&omega, p.clone() + &x);
     let beyond = at_a(&omega, p.clone() + &w + &x) - &at_a(&omega, p.clone() + &w + &x + &t);
@@ -326,7 +336,7 @@ fn c32(_paper: &Paper) -> Claim {
     let proof = vec![
         Certificate::identity(
             "pivot at p, arm d = a - p: the solver's omega equals (1+e) m d v0/(I_p + m d^2), I_p = I + M p^2",
-            omega.clone(),
+            Formula::named("omega", omega.clone()),
             closed,
         ),
         positive(
@@ -393,8 +403,8 @@ fn c32(_paper: &Paper) -> Claim {
         ),
         Certificate::identity(
             "angular impulse about the pivot: the solver's omega equals J d/I_p with J = m (v0 - v)",
-            omega,
-            out.impulse(&general) * &arm / i_p,
+            Formula::named("omega", omega),
+            Formula::named("J", out.impulse(&general)) * &d / &i_p_named,
         ),
         positive(
             "for a given impulse J > 0, omega = J d/I_p grows with the arm: d omega/da = J/(I + M p^2) > 0",
@@ -466,8 +476,8 @@ fn c33(_paper: &Paper) -> Claim {
         decision: Decision::Proved(vec![
             Certificate::identity(
                 "the solver's omega equals J a/I with J = m (v0 - v) its own impulse (any I, any e)",
-                out.after.omega.clone(),
-                out.impulse(&p) * &a / inertia,
+                Formula::named("omega", out.after.omega.clone()),
+                Formula::named("J", out.impulse(&p)) * &f("a") / &Formula::from(inertia),
             ),
             positive("a given impulse J > 0: omega(l) - omega(a) = J (l - a)/I > 0 for a < l (l = a + s, s > 0)", at_a(&given, sym("l")) - &given, true, &[("l", a + &sym("s"))], &["J", "I", "s"], &[], quot(prod([ps("J"), ps("s")]), ps("I"))),
         ]),
@@ -475,9 +485,10 @@ fn c33(_paper: &Paper) -> Claim {
 }
 
 fn c34(_paper: &Paper) -> Claim {
-    let (m, big_m, inertia, a) = (sym("m"), sym("M"), sym("I"), sym("a"));
-    let closed = (one() + &sym("e")) * &sym("v0")
-        / (one() / m + &(one() / big_m) + &(sq(&a) / inertia.clone()));
+    let inertia = sym("I");
+    let one = Formula::int(1);
+    let closed = (one.clone() + &f("e")) * &f("v0")
+        / &(one.clone() / &f("m") + &(one / &f("M")) + &(f("a").pow(2) / &f("I")));
     Claim {
         id: "C34",
         location: "§intuition ¶1",
@@ -491,7 +502,7 @@ fn c34(_paper: &Paper) -> Claim {
         decision: Decision::Proved(vec![
             Certificate::identity(
                 "the solver's impulse m (v0 - v) equals (1+e) v0/(1/m + 1/M + a^2/I)",
-                free_impulse(inertia),
+                Formula::named("J", free_impulse(inertia)),
                 closed,
             ),
             impulse_decreasing(),
@@ -515,12 +526,12 @@ fn c35(paper: &Paper) -> Claim {
         decision: Decision::Proved(vec![
             Certificate::identity(
                 "M V from the solver (uniform rod, e = 1) equals Eq. (impulse-linear)",
-                sym("M") * &out.after.rod_v,
+                f("M") * &Formula::named("V", out.after.rod_v.clone()),
                 paper.impulse_linear.clone(),
             ),
             Certificate::identity(
                 "the projectile's loss of momentum m (v0 - v) (solver, uniform rod, e = 1) equals Eq. (impulse-linear)",
-                out.impulse(&p),
+                f("m") * &(f("v0") - &Formula::named("v", out.after.v.clone())),
                 paper.impulse_linear.clone(),
             ),
         ]),
@@ -571,7 +582,7 @@ fn c36(paper: &Paper) -> Claim {
 fn c37(paper: &Paper) -> Claim {
     let general = motion(&free_rod(uniform_inertia(), sym("e")));
     let elastic = motion(&free_rod(uniform_inertia(), one()));
-    let a = sym("a");
+    let a = f("a");
     Claim {
         id: "C37",
         location: "Eq. (impulse-angular)",
@@ -585,12 +596,12 @@ fn c37(paper: &Paper) -> Claim {
         decision: Decision::Proved(vec![
             Certificate::identity(
                 "Eq. (inertia-homogeneous) I times the solver's omega equals M a V (any e)",
-                paper.uniform_inertia.clone() * &general.omega,
-                sym("M") * &a * &general.rod_v,
+                paper.uniform_inertia.clone() * &Formula::named("omega", general.omega),
+                f("M") * &a * &Formula::named("V", general.rod_v),
             ),
             Certificate::identity(
                 "Eq. (inertia-homogeneous) I times the solver's omega (e = 1) equals a I_lin of Eq. (impulse-linear)",
-                paper.uniform_inertia.clone() * &elastic.omega,
+                paper.uniform_inertia.clone() * &Formula::named("omega", elastic.omega),
                 a * &paper.impulse_linear,
             ),
         ]),
@@ -625,8 +636,8 @@ fn c38(_paper: &Paper) -> Claim {
         decision: Decision::Proved(vec![
             Certificate::identity(
                 "I omega = a M V for the solver's velocities (any I, any e)",
-                sym("I") * &after.omega,
-                sym("a") * &sym("M") * &after.rod_v,
+                f("I") * &Formula::named("omega", after.omega.clone()),
+                f("a") * &f("M") * &Formula::named("V", after.rod_v.clone()),
             ),
             impulse_decreasing(),
             Certificate::witness(
@@ -681,7 +692,7 @@ fn c39(paper: &Paper) -> Claim {
                  uniquely. The threshold is sharp (for M < 2m the maximum is inside, C27)."
             .into(),
         reason: "with M = 2m + q (q >= 0) and l = a + s (s > 0), omega(l) - omega(a) is a visibly positive fraction".into(),
-        decision: Decision::Proved(vec![end_beats_interior("uniform rod, M = 2m + q (q >= 0, the paper's threshold): omega(l) - omega(a) > 0 for 0 <= a < l (l = a + s); omega from the solver", uniform_inertia(), &[("M", big_m)], &["m", "v0", "s"], &["a", "q", "e"], form)]),
+        decision: Decision::Proved(vec![end_beats_interior("uniform rod, M = 2m + q (q >= 0, the paper's threshold): omega(l) - omega(a) > 0 for 0 <= a < l (l = a + s); omega from the solver", uniform_inertia(), &[("M", big_m.into())], &["m", "v0", "s"], &["a", "q", "e"], form)]),
     }
 }
 
@@ -702,7 +713,6 @@ fn c40(_paper: &Paper) -> Claim {
     let right = (l.clone() - &h, l.clone());
     let left = (-l.clone(), h.clone() - &l);
     let end_rg2 = end_inertia.clone() / end_mass.clone();
-    let half = sym("M") / k(2, 1);
     Claim {
         id: "C40",
         location: "Eq. (inertia-general)",
@@ -780,10 +790,11 @@ fn c40(_paper: &Paper) -> Claim {
                 Point::Zero,
                 l2.clone(),
             ),
-            Certificate::identity(
+            Certificate::identity_at(
                 "dumbbell (point masses M/2 at y = -l and y = l): I = sum of (M/2) y^2 equals M r_G^2 with r_G = l",
-                half.clone() * &sq(&-l.clone()) + &(half * &l2),
-                subs(&gyration_inertia(), &[("r_G", l)]),
+                f("M") / &Formula::int(2) * &(-f("l")).pow(2) + &(f("M") / &Formula::int(2) * &f("l").pow(2)),
+                f("M") * &f("r_G").pow(2),
+                &[("r_G", l)],
             ),
         ]),
     }
@@ -791,10 +802,10 @@ fn c40(_paper: &Paper) -> Claim {
 
 fn c41(paper: &Paper) -> Claim {
     let omega = free_omega(gyration_inertia());
-    let a_star_sq = &paper.a_star_gyration_squared;
-    let a2 = sq(&sym("a"));
-    let slope = (one() + &sym("e")) * &sym("v0") * &(a_star_sq.clone() - &a2)
-        / sq(&(a_star_sq.clone() + &a2));
+    let a_star_sq = Formula::named("a*^2", paper.a_star_gyration_squared.clone());
+    let a2 = f("a").pow(2);
+    let slope = (Formula::int(1) + &f("e")) * &f("v0") * &(a_star_sq.clone() - &a2)
+        / &(a_star_sq + &a2).pow(2);
     Claim {
         id: "C41",
         location: "Eq. (maximal-a-gyration)",
@@ -809,13 +820,14 @@ fn c41(paper: &Paper) -> Claim {
         decision: Decision::Proved(vec![
             Certificate::identity(
                 "d omega/da of the solver's omega (I = M r_G^2, any e) equals (1+e) v0 (a*^2 - a^2)/(a*^2 + a^2)^2 with a*^2 from Eq. (maximal-a-gyration)",
-                omega.derivative(Sym::new("a")),
+                Formula::named("omega'", omega.derivative(Sym::new("a"))),
                 slope,
             ),
-            Certificate::identity(
+            Certificate::identity_at(
                 "Eq. (maximal-a-general) at I = M r_G^2 equals Eq. (maximal-a-gyration)",
-                subs(&paper.a_star_squared, &[("I", gyration_inertia())]),
-                a_star_sq.clone(),
+                paper.a_star_squared.clone(),
+                paper.a_star_gyration_squared.clone(),
+                &[("I", gyration_inertia())],
             ),
         ]),
     }
@@ -1025,15 +1037,16 @@ mod tests {
         let mut paper = Paper::as_printed();
         // 3 m a^2/(M l^2) printed as m a^2/(M l^2).
         let (m, big_m, a, l) = (sym("m"), sym("M"), sym("a"), sym("l"));
-        paper.impulse_linear = k(2, 1) * &m * &sym("v0")
-            / (one() + &(m.clone() / big_m.clone()) + &(m * &a * &a / (big_m * &l * &l)));
+        paper.impulse_linear = (k(2, 1) * &m * &sym("v0")
+            / (one() + &(m.clone() / big_m.clone()) + &(m * &a * &a / (big_m * &l * &l))))
+            .into();
         assert_eq!(failing(&paper), ["C35", "C36", "C37"]);
     }
 
     #[test]
     fn a_wrong_threshold_is_caught() {
         let mut paper = Paper::as_printed();
-        paper.threshold = k(1, 1);
+        paper.threshold = k(1, 1).into();
         assert_eq!(failing(&paper), ["C39"]);
     }
 
@@ -1042,21 +1055,21 @@ mod tests {
         let mut paper = Paper::as_printed();
         // (M + m)/M instead of (M + m)/m.
         paper.a_star_gyration_squared =
-            (sym("M") + &sym("m")) / sym("M") * &sym("r_G") * &sym("r_G");
+            ((sym("M") + &sym("m")) / sym("M") * &sym("r_G") * &sym("r_G")).into();
         assert_eq!(failing(&paper), ["C41", "C42", "C43", "C44", "C45"]);
     }
 
     #[test]
     fn a_wrong_uniform_inertia_is_caught() {
         let mut paper = Paper::as_printed();
-        paper.uniform_inertia = sym("M") * &sym("l") * &sym("l") / k(12, 1);
+        paper.uniform_inertia = (sym("M") * &sym("l") * &sym("l") / k(12, 1)).into();
         assert_eq!(failing(&paper), ["C37"]);
     }
 
     #[test]
     fn a_wrong_general_optimum_is_caught() {
         let mut paper = Paper::as_printed();
-        paper.a_star_squared = sym("I") * &(sym("M") + &sym("m")) / sym("m");
+        paper.a_star_squared = (sym("I") * &(sym("M") + &sym("m")) / sym("m")).into();
         assert_eq!(failing(&paper), ["C41"]);
     }
 

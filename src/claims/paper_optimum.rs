@@ -7,7 +7,7 @@
 
 use super::build::*;
 use super::model::*;
-use super::{Certificate, Claim, Decision, Entry, Group, Paper, PosExpr, Relation};
+use super::{Certificate, Claim, Decision, Entry, Formula, Group, Paper, PosExpr, Relation};
 use crate::field::{RatFn, Sym};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
 
@@ -105,13 +105,20 @@ fn mass_through_a_star() -> RatFn {
 }
 
 /// The claim `printed = A^2` once the model is written through A: A is the paper's a*.
-fn a_star_link(what: &str, printed: &RatFn, model: (&str, RatFn)) -> Certificate {
+fn a_star_link(what: &str, printed: &Formula, model: (&str, RatFn)) -> Certificate {
     let (name, value) = model;
-    Certificate::identity(
+    Certificate::identity_at(
         format!("the printed {what} equals A^2 when {name} = {value}, so A is the paper's a*"),
-        subs(printed, &[(name, value.clone())]),
-        sq(&sym("A")),
+        printed.clone(),
+        Formula::sym("A").pow(2),
+        &[(name, value.clone())],
     )
+}
+
+/// `2 v0 a/(a*^2 + a^2)`, the paper's shape of omega, for the given `a*^2`.
+fn peak_shape(a_star_squared: Formula) -> Formula {
+    let a = Formula::sym("a");
+    Formula::int(2) * &Formula::sym("v0") * &a / &(a_star_squared + &a.pow(2))
 }
 
 /// The composite body of the sticking model, from first principles (rod centre at y = 0,
@@ -355,7 +362,7 @@ fn increasing_on_rod(paper: &Paper, omega: &RatFn, scale: i64, what: &str) -> Ce
         true,
         &[
             ("l", a + &t + &s),
-            ("M", paper.threshold.clone() * &sym("m") + &sym("q")),
+            ("M", paper.threshold.value().clone() * &sym("m") + &sym("q")),
         ],
         &["m", "q", "t", "v0"],
         &["a", "s"],
@@ -381,7 +388,7 @@ fn room_at_the_end(paper: &Paper, strict: bool) -> Certificate {
         format!("l^2 - a*^2 {relation} when 2m = M + q, {q_sign} (uniform rod)"),
         expr,
         strict,
-        &[("m", m)],
+        &[("m", m.into())],
         domain.0,
         domain.1,
         form,
@@ -389,9 +396,10 @@ fn room_at_the_end(paper: &Paper, strict: bool) -> Certificate {
 }
 
 /// `2 v0 (X - a^2)/(X + a^2)^2`: the slope of 2 v0 a/(X + a^2), which vanishes at a^2 = X.
-fn slope_with_peak_at(x2: &RatFn) -> RatFn {
-    let a2 = sq(&sym("a"));
-    k(2, 1) * &sym("v0") * &(x2.clone() - &a2) / sq(&(x2.clone() + &a2))
+fn slope_with_peak_at(x2: &RatFn) -> Formula {
+    let a2 = Formula::sym("a").pow(2);
+    Formula::int(2) * &Formula::sym("v0") * &(Formula::from(x2) - &a2)
+        / &(Formula::from(x2) + &a2).pow(2)
 }
 
 /// d omega/da of the elastic uniform rod (generic solver) with M = `mass`.
@@ -401,13 +409,14 @@ fn uniform_slope(mass: &RatFn) -> RatFn {
 
 /// The solver's slope at M = `mass` vanishes exactly at a^2 = `x2` (and changes sign there).
 fn stationary_at(mass: &RatFn, mass_name: &str, x2: &RatFn) -> Certificate {
-    Certificate::identity(
+    Certificate::identity_at(
         format!(
             "at M = {mass_name}, d omega/da of the solver's omega (uniform rod) = \
              2 v0 ({x2} - a^2)/({x2} + a^2)^2: positive below, zero at, negative above a^2 = {x2}"
         ),
-        uniform_slope(mass),
+        Formula::named("omega'", uniform_slope(&sym("M"))),
         slope_with_peak_at(x2),
+        &[("M", mass.clone())],
     )
 }
 
@@ -428,10 +437,11 @@ fn c19(_paper: &Paper) -> Claim {
         model: vec![],
         positive: vec![],
     };
-    let value = Certificate::identity(
+    let value = Certificate::identity_at(
         "f(b/c) = 1/(2bc)",
-        subs(&f, &[("x", b.clone() / c.clone())]),
-        k(1, 2) / (b * &c),
+        Formula::named("f", f.clone()),
+        Formula::int(1) / &(Formula::int(2) * &b * &c),
+        &[("x", b.clone() / c.clone())],
     );
     let mut certs = vec![value];
     certs.extend(peak.certificates());
@@ -453,8 +463,7 @@ fn c19(_paper: &Paper) -> Claim {
 }
 
 fn c20(paper: &Paper) -> Claim {
-    let (a, v0) = (sym("a"), sym("v0"));
-    let shape = k(2, 1) * &v0 * &a / (paper.a_star_squared.clone() + &sq(&a));
+    let shape = peak_shape(Formula::named("a*^2", paper.a_star_squared.clone()));
     let rewritten = Certificate::identity(
         "Eq. (omega) as printed equals 2 v0 a/(a*^2 + a^2) with the printed a*^2 = (M + m) I/(m M)",
         paper.omega.clone(),
@@ -514,24 +523,19 @@ fn c21(paper: &Paper) -> Claim {
             integral(
                 "moment of inertia about the centre: integral of (M/(2l)) y^2 = the printed M (2l)^2/12",
                 2,
-                paper.uniform_inertia.clone(),
+                paper.uniform_inertia.value().clone(),
             ),
             Certificate::identity(
                 "the printed M (2l)^2/12 equals M l^2/3",
                 paper.uniform_inertia.clone(),
-                big_m * &sq(&l) / k(3, 1),
+                Formula::from(big_m) * &Formula::from(l).pow(2) / &Formula::int(3),
             ),
         ]),
     }
 }
 
 fn c22(paper: &Paper) -> Claim {
-    let a = sym("a");
-    let substituted = subs(
-        &paper.a_star_squared,
-        &[("I", paper.uniform_inertia.clone())],
-    );
-    let shape = k(2, 1) * &sym("v0") * &a / (paper.a_star_uniform_squared.clone() + &sq(&a));
+    let shape = peak_shape(Formula::named("a*^2", paper.a_star_uniform_squared.clone()));
     Claim {
         id: "C22",
         location: "Eq. (maximal-a-homogeneous)",
@@ -546,15 +550,16 @@ fn c22(paper: &Paper) -> Claim {
                  is 2 v0 a/(a*^2 + a^2) with it"
             .into(),
         decision: Decision::Proved(vec![
-            Certificate::identity(
+            Certificate::identity_at(
                 "the printed (M + m) I/(m M) at the printed I = M (2l)^2/12 equals the printed (M + m) l^2/(3m)",
-                substituted,
+                paper.a_star_squared.clone(),
                 paper.a_star_uniform_squared.clone(),
+                &[("I", paper.uniform_inertia.value().clone())],
             ),
             Certificate::identity(
                 "the solver's elastic omega for I = M l^2/3 equals 2 v0 a/(a*^2 + a^2) with the printed \
                  a*^2 = (M + m) l^2/(3m)",
-                uniform_omega(),
+                Formula::named("omega", uniform_omega()),
                 shape,
             ),
         ]),
@@ -578,7 +583,7 @@ fn c23(paper: &Paper) -> Claim {
             title: "a*^2 - l^2 > 0 for M = 2m + q, q > 0".into(),
             expr,
             strict: true,
-            substitutions: vec![(Sym::new("M"), threshold_mass)],
+            substitutions: vec![(Sym::new("M"), threshold_mass.into())],
             positive: vec![Sym::new("m"), Sym::new("q"), Sym::new("l")],
             nonnegative: vec![],
             form: PosExpr::quotient(
@@ -655,10 +660,11 @@ fn c26(paper: &Paper) -> Claim {
                  vanishes at a = l"
             .into(),
         decision: Decision::Proved(vec![
-            Certificate::identity(
+            Certificate::identity_at(
                 "the printed a*^2 = (M + m) l^2/(3m) at M = 2m equals l^2",
-                subs(&paper.a_star_uniform_squared, &[("M", mass.clone())]),
+                paper.a_star_uniform_squared.clone(),
                 l2.clone(),
+                &[("M", mass.clone().into())],
             ),
             stationary_at(&mass, "2m", &l2),
         ]),
@@ -748,10 +754,11 @@ fn c28(paper: &Paper) -> Claim {
             .into(),
         reason: "at M = m the printed a*^2 is 2 l^2/3, where the solver's slope vanishes".into(),
         decision: Decision::Proved(vec![
-            Certificate::identity(
+            Certificate::identity_at(
                 "the printed a*^2 = (M + m) l^2/(3m) at M = m equals 2 l^2/3",
-                subs(&paper.a_star_uniform_squared, &[("M", m.clone())]),
+                paper.a_star_uniform_squared.clone(),
                 target.clone(),
+                &[("M", m.clone())],
             ),
             stationary_at(&m, "m", &target),
         ]),
@@ -806,8 +813,8 @@ fn c30(paper: &Paper) -> Claim {
     let halved = Certificate::identity(
         "sticking (composite body: CM y_c = m a/(M + m), I_c by parallel axes, angular momentum about y_c) \
          gives omega_inel = omega_el/2 for every a, with omega_el from the generic solver (e = 1)",
-        stuck.omega.clone(),
-        elastic_omega(sym("I")) / k(2, 1),
+        Formula::named("omega_inel", stuck.omega.clone()),
+        Formula::named("omega_el", elastic_omega(sym("I"))) / &Formula::int(2),
     );
     let link = a_star_link(
         "a*^2 = (M + m) I/(m M)",
@@ -854,26 +861,32 @@ fn c31(_paper: &Paper) -> Claim {
         "omega from the rod-centre equations with the rod's own I (momentum, Eq. (angular) about the \
          rod's centre, sticking v = V + omega a: the generic solver at e = 0) equals omega of the composite \
          body (CM y_c, I_c)",
-        after.omega.clone(),
-        stuck.omega.clone(),
+        Formula::named("omega", after.omega.clone()),
+        Formula::named("omega_c", stuck.omega.clone()),
     );
+    let mu = Formula::named("mu", reduced_mass());
     let parallel_axes = Certificate::identity(
         "the composite's moment of inertia about y_c = m a/(M + m) is I_c = I + mu a^2, mu = m M/(M + m)",
-        stuck.i_c.clone(),
-        inertia + &(reduced_mass() * &sq(&sym("a"))),
+        Formula::named("I_c", stuck.i_c.clone()),
+        Formula::from(inertia) + &(mu * &Formula::sym("a").pow(2)),
+    );
+    let (omega, y_c) = (
+        Formula::named("omega", after.omega.clone()),
+        Formula::named("y_c", stuck.y_c.clone()),
     );
     let cm_moves_uniformly = Certificate::identity(
         "after the impact the rod point at y_c moves with V + omega y_c = V_c = m v0/(M + m): the stuck \
          pair's CM is y_c, not the rod's centre",
-        after.rod_point_velocity(&stuck.y_c),
-        stuck.v_c.clone(),
+        Formula::named("V", after.rod_v.clone()) + &(omega.clone() * &y_c),
+        Formula::named("V_c", stuck.v_c.clone()),
     );
+    let v_c = Formula::named("V_c", stuck.v_c.clone());
     let energy = Certificate::identity(
         "kinetic energy after the impact (rod and projectile) = (M + m) V_c^2/2 + I_c omega^2/2: I_c is \
          the stuck pair's rotational inertia",
-        kinetic_energy(&p, &after),
-        (sym("M") + &sym("m")) * &sq(&stuck.v_c) / k(2, 1)
-            + &(stuck.i_c * &sq(&after.omega) / k(2, 1)),
+        Formula::named("K", kinetic_energy(&p, &after)),
+        (Formula::sym("M") + &Formula::sym("m")) * &v_c.pow(2) / &Formula::int(2)
+            + &(Formula::named("I_c", stuck.i_c) * &omega.pow(2) / &Formula::int(2)),
     );
     Claim {
         id: "C31",
@@ -953,7 +966,7 @@ mod tests {
     #[test]
     fn a_wrong_threshold_is_caught() {
         let paper = Paper {
-            threshold: k(3, 1),
+            threshold: k(3, 1).into(),
             ..Paper::as_printed()
         };
         assert_eq!(failing(&paper), ["C23", "C24", "C25", "C26", "C27", "C30"]);
@@ -984,7 +997,7 @@ mod tests {
     fn a_wrong_inertia_or_omega_is_caught() {
         let printed = Paper::as_printed();
         let paper = Paper {
-            uniform_inertia: sym("M") * &sym("l") * &sym("l") / k(12, 1),
+            uniform_inertia: (sym("M") * &sym("l") * &sym("l") / k(12, 1)).into(),
             ..printed.clone()
         };
         assert_eq!(failing(&paper), ["C21", "C22"]);
@@ -1034,7 +1047,7 @@ mod tests {
         let naive = tampered("C31", |c| {
             if let Certificate::Identity { rhs, .. } = c {
                 let i_naive = sym("I") + &(sym("m") * &sq(&sym("a")));
-                *rhs = sym("m") * &sym("v0") * &sym("a") / i_naive;
+                *rhs = (sym("m") * &sym("v0") * &sym("a") / i_naive).into();
             }
         });
         assert!(naive.is_err());

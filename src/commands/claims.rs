@@ -14,7 +14,8 @@ pub(crate) struct ProveArgs {
     #[arg(value_name = "ID")]
     pub(crate) ids: Vec<String>,
     /// Write one Markdown certificate per claim into DIR (and the index README.md when all
-    /// claims are decided).
+    /// claims are decided). All or nothing: the files are written beside DIR, then moved in;
+    /// DIR's other files are kept.
     #[arg(long, value_name = "DIR")]
     pub(crate) write: Option<PathBuf>,
     /// Print a JSON list instead of one line per claim.
@@ -24,7 +25,10 @@ pub(crate) struct ProveArgs {
 
 #[derive(Args, Debug)]
 pub(crate) struct PaperArgs {
-    /// Also write the report as Markdown (report.md) with every certificate into DIR.
+    /// Also write into DIR: README.md (what each file holds), report.md (the report with
+    /// the tables and figures), one certificate per claim (C1.md ... C46.md, X1.md ... X26.md),
+    /// tables.md, tables.tex, T1.csv ... T5.csv, omega.svg, optimum.svg and figure1.svg. All
+    /// or nothing: the files are written beside DIR, then moved in; DIR's other files are kept.
     #[arg(long, value_name = "DIR")]
     pub(crate) out: Option<PathBuf>,
 }
@@ -66,26 +70,22 @@ fn select_claims(ids: &[String]) -> Result<Vec<claims::Entry>, Error> {
     Ok(selected)
 }
 
-/// Writes one certificate per decided claim into `dir`, and the index when `complete`.
+/// Writes one certificate per decided claim into `dir`, and the index when `complete`, all or
+/// nothing.
 fn write_certificates(
     field: &str,
     dir: &Path,
     decided: &[Decided],
     complete: bool,
 ) -> Result<(), Error> {
-    report::create_output_dir(field, dir)?;
-    for d in decided {
-        let path = dir.join(format!("{}.md", d.claim.id));
-        report::write_atomic(field, &path, &report::claim_markdown(d))?;
-    }
+    let mut files: Vec<(String, String)> = decided
+        .iter()
+        .map(|d| (format!("{}.md", d.claim.id), report::claim_markdown(d)))
+        .collect();
     if complete {
-        report::write_atomic(
-            field,
-            &dir.join("README.md"),
-            &report::index_markdown(decided),
-        )?;
+        files.push(("README.md".into(), report::index_markdown(decided)));
     }
-    Ok(())
+    report::write_directory(field, dir, &files)
 }
 
 fn all_checked(decided: &[Decided]) -> Result<(), Failure> {
@@ -112,6 +112,9 @@ pub(crate) fn run_prove(args: &ProveArgs) -> Result<(), Failure> {
             print_out(&format!("{}\n", report::prove_line(d)));
         }
         print_out(&format!("{}\n", report::summary_line(&decided)));
+        if let Some(note) = report::hand_step_note(&decided) {
+            print_out(&format!("{note}\n"));
+        }
     }
     if let Some(dir) = &args.write {
         write_certificates("write", dir, &decided, args.ids.is_empty())?;
@@ -123,26 +126,18 @@ pub(crate) fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     let paper = Paper::as_printed();
     let decided = claims::decide_all(&paper);
     let tables = report::all_tables(&TableOptions::default())?;
-    print_out(&report::paper_report(&decided, false));
+    print_out(&report::paper_report(&decided));
     print_out("Tables (exact; m = l = v0 = 1)\n\n");
     print_out(&report::render_document(&tables[..3], Format::Markdown));
     if let Some(dir) = &args.out {
-        write_certificates("out", dir, &decided, true)?;
-        let report_md = report::paper_report(&decided, true);
-        report::write_atomic("out", &dir.join("report.md"), &report_md)?;
-        for format in [Format::Markdown, Format::Latex, Format::Csv] {
-            let path = dir.join(format!("tables.{}", format.extension()));
-            report::write_atomic("out", &path, &report::render_document(&tables, format))?;
-        }
-        for (name, svg) in paper_figures()? {
-            report::write_atomic("out", &dir.join(name), &svg)?;
-        }
+        let files = report::paper_files(&decided, &tables, &paper_figures()?);
+        report::write_directory("out", dir, &files)?;
     }
     all_checked(&decided)
 }
 
 /// The figures `paper --out` writes: omega(a), a*(M/m) and Figure 1 (M = m, a = l/2).
-fn paper_figures() -> Result<[(&'static str, String); 3], Error> {
+fn paper_figures() -> Result<Vec<report::PaperFigure>, Error> {
     let ratios = parse_ratios("ratios", "1/2,1,2,3,10")?;
     let example = SceneInput {
         m: Some("1".into()),
@@ -150,12 +145,21 @@ fn paper_figures() -> Result<[(&'static str, String); 3], Error> {
         a: Some("1/2".into()),
         ..Default::default()
     };
-    Ok([
-        (
-            "omega.svg",
-            report::plot_omega(&ratios, &RodInertia::Uniform)?,
-        ),
-        ("optimum.svg", report::plot_optimum(&RodInertia::Uniform)?),
-        ("figure1.svg", report::plot_figure1(&example.build()?)?),
+    Ok(vec![
+        report::PaperFigure {
+            file: "omega.svg",
+            caption: "$\\omega(a)/\\omega_{\\max}$ along the rod for $M/m = 1/2, 1, 2, 3, 10$ (uniform rod, elastic), each curve's optimum $a^*$ marked; dashed beyond the end $a = l$.".into(),
+            svg: report::plot_omega(&ratios, &RodInertia::Uniform)?,
+        },
+        report::PaperFigure {
+            file: "optimum.svg",
+            caption: "The optimal impact distance $a^*/l$ against $M/m$ (uniform rod): on the rod exactly when $M \\le 2m$, tending to $l/\\sqrt{3}$ for a light rod.".into(),
+            svg: report::plot_optimum(&RodInertia::Uniform)?,
+        },
+        report::PaperFigure {
+            file: "figure1.svg",
+            caption: "The paper's Figure 1, to scale: the rod of length $2l$ at rest, the projectile $m$ with speed $v_0$ aimed at $a = l/2$ ($M = m$).".into(),
+            svg: report::plot_figure1(&example.build()?)?,
+        },
     ])
 }

@@ -2,6 +2,8 @@
 
 use super::{Failure, parse_ratios, print_out};
 use clap::Args;
+use num_traits::{One, Signed};
+use rodimpact::field::Q;
 use rodimpact::report::{self, Format, TableOptions};
 use rodimpact::scene::{RodInertia, parse_field};
 use rodimpact::{Error, ErrorKind};
@@ -15,7 +17,8 @@ pub(crate) struct TableArgs {
     /// The mass ratio M/m of T2 and T3 [default: 1].
     #[arg(long, value_name = "Q")]
     pub(crate) ratio: Option<String>,
-    /// Mass distribution, in units of l and M l^2: uniform, dumbbell, rg=R, I=X [default: uniform].
+    /// Mass distribution: uniform, dumbbell, rg=R (r_G = R l) or I=X (I = X M l^2), with
+    /// 0 < R, X <= 1 [default: uniform].
     #[arg(long, value_name = "KIND")]
     pub(crate) rod: Option<String>,
     /// Coefficient of restitution for T1, T2 and T5 [default: 1].
@@ -24,7 +27,9 @@ pub(crate) struct TableArgs {
     /// A pivot at p (in units of l) for T1.
     #[arg(long, value_name = "Q", allow_hyphen_values = true)]
     pub(crate) pivot: Option<String>,
-    /// Output format: md, latex or csv [default: md].
+    /// Output format: md, latex or csv. CSV: one table is one file (a header line, exact
+    /// strings and `_decimal` columns); several tables make one file with a leading `table`
+    /// column (T1-T5) and the union of their columns, empty where a table has none.
     #[arg(long, value_name = "FORMAT", default_value = "md")]
     pub(crate) format: String,
     /// Only these tables (T1-T5), comma separated [default: all].
@@ -44,7 +49,7 @@ fn table_options(args: &TableArgs) -> Result<TableOptions, Error> {
         opts.ratio = parse_ratios("ratio", r)?.remove(0);
     }
     if let Some(rod) = &args.rod {
-        opts.rod = RodInertia::parse(rod)?;
+        opts.rod = relative_rod(rod)?;
     }
     if let Some(e) = &args.e {
         opts.e = parse_field("e", e)?;
@@ -53,6 +58,21 @@ fn table_options(args: &TableArgs) -> Result<TableOptions, Error> {
         opts.pivot = Some(parse_field("pivot", p)?);
     }
     Ok(opts)
+}
+
+/// `--rod` in units of l and M l^2: `I=X` needs 0 < X <= 1 (the scene's own check would name
+/// I in absolute units, which differ from one mass ratio to the next).
+fn relative_rod(text: &str) -> Result<RodInertia, Error> {
+    let rod = RodInertia::parse(text)?;
+    if let RodInertia::Moment(x) = &rod
+        && !(x.is_positive() && *x <= Q::one())
+    {
+        return Err(Error::out_of_range(
+            "rod",
+            format!("I=X means I = X M l^2 and needs 0 < X <= 1, got {x}"),
+        ));
+    }
+    Ok(rod)
 }
 
 fn parse_format(text: &str) -> Result<Format, Error> {

@@ -23,6 +23,7 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 mod float;
 mod interval;
 pub mod laws;
+pub mod notation;
 pub mod poly;
 pub mod quadratic;
 pub mod ratfunc;

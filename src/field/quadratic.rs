@@ -32,10 +32,10 @@ use std::sync::{Arc, OnceLock};
 /// ```
 /// use rodimpact::field::{q, Field, QSqrt};
 /// let a = QSqrt::sqrt_of(&q(2, 3)); // a* of the paper's uniform rod with m = M
-/// assert_eq!(a.to_string(), "1/3*sqrt(6)");
+/// assert_eq!(a.to_string(), "sqrt(6)/3");
 /// let two = QSqrt::from_i64(2);
 /// let omega = two.clone() * &a / (QSqrt::from_rational(&q(2, 3)) + &(a.clone() * &a));
-/// assert_eq!(omega.to_string(), "1/2*sqrt(6)");
+/// assert_eq!(omega.to_string(), "sqrt(6)/2");
 /// assert_eq!(omega.decimal(5), "1.2247");
 /// ```
 #[derive(Clone)]
@@ -160,7 +160,7 @@ impl QSqrt {
     /// # Examples
     /// ```
     /// use rodimpact::field::{q, QSqrt};
-    /// assert_eq!(QSqrt::sqrt_of(&q(2, 3)).to_string(), "1/3*sqrt(6)");
+    /// assert_eq!(QSqrt::sqrt_of(&q(2, 3)).to_string(), "sqrt(6)/3");
     /// assert_eq!(QSqrt::sqrt_of(&q(4, 9)).to_string(), "2/3");
     /// assert_eq!(QSqrt::sqrt_of(&q(8, 1)), QSqrt::new(q(0, 1), q(2, 1), q(2, 1)));
     /// ```
@@ -477,25 +477,14 @@ impl PartialEq for QSqrt {
 
 impl Eq for QSqrt {}
 
-/// Canonical form: `3/2`, `sqrt(6)`, `-sqrt(2)`, `2/5*sqrt(6)`, `1/2 + 1/3*sqrt(6)`, `1 - sqrt(2)`.
+/// The canonical ASCII form ([`notation::surd`](super::notation::surd)): `3/2`, `sqrt(6)`,
+/// `-sqrt(2)`, `2*sqrt(6)/5`, `1/2 + sqrt(6)/3`, `1 - sqrt(2)`.
 impl fmt::Display for QSqrt {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let Some(d) = self.radicand() else {
-            return write!(f, "{}", self.x);
-        };
-        let magnitude = self.y.abs();
-        let term = if magnitude.is_one() {
-            format!("sqrt({d})")
-        } else {
-            format!("{magnitude}*sqrt({d})")
-        };
-        let negative = self.y.is_negative();
-        match (self.x.is_zero(), negative) {
-            (true, false) => write!(f, "{term}"),
-            (true, true) => write!(f, "-{term}"),
-            (false, false) => write!(f, "{} + {term}", self.x),
-            (false, true) => write!(f, "{} - {term}", self.x),
-        }
+        f.write_str(&super::notation::surd(
+            self,
+            super::notation::Notation::Ascii,
+        ))
     }
 }
 
@@ -676,9 +665,9 @@ mod tests {
             (r(-3, 2), "-3/2"),
             (root(6, 1), "sqrt(6)"),
             (-root(2, 1), "-sqrt(2)"),
-            (root(6, 1) * &r(2, 5), "2/5*sqrt(6)"),
-            (root(6, 1) * &r(-2, 5), "-2/5*sqrt(6)"),
-            (r(1, 2) + &(root(6, 1) / &r(3, 1)), "1/2 + 1/3*sqrt(6)"),
+            (root(6, 1) * &r(2, 5), "2*sqrt(6)/5"),
+            (root(6, 1) * &r(-2, 5), "-2*sqrt(6)/5"),
+            (r(1, 2) + &(root(6, 1) / &r(3, 1)), "1/2 + sqrt(6)/3"),
             (r(1, 1) - &root(2, 1), "1 - sqrt(2)"),
             (root(2, 1) - root(2, 1), "0"),
         ];

@@ -1,7 +1,7 @@
 //! `docs/claims.md`: the list of claims, written from the claims registry so that it cannot
 //! drift from what `rodimpact prove` decides (a golden test regenerates and compares it).
 
-use super::proofs::escape_cell;
+use super::markup::markdown_text;
 use crate::claims::{Decided, Group};
 use std::fmt::Write as _;
 
@@ -79,12 +79,12 @@ pub fn claims_markdown(all: &[Decided]) -> String {
                 let place = if beyond {
                     String::new()
                 } else {
-                    format!(" {} |", escape_cell(c.location))
+                    format!(" {} |", markdown_text(c.location))
                 };
                 let _ = writeln!(
                     out,
                     "| {id} |{place} {} | [{id}](../proofs/{id}.md) |",
-                    escape_cell(c.statement),
+                    markdown_text(c.statement),
                     id = c.id
                 );
             }

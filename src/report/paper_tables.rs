@@ -3,10 +3,10 @@
 //! Every scene is taken with m = 1, l = 1 and v0 = 1, so lengths are in units of l, velocities
 //! in units of v0 and angular velocities in units of v0/l; the mass ratio M/m is the parameter.
 
-use super::table::{Cell, Header, Table};
+use super::table::{Cell, Column, Table};
 use crate::error::Error;
+use crate::field::notation::{self, Notation};
 use crate::field::{Q, QSqrt, q};
-use crate::number;
 use crate::optimum::{Placement, optimum};
 use crate::scene::{Params, RodInertia, Scene};
 use crate::solve::{Outcome, solve};
@@ -53,30 +53,51 @@ impl Default for TableOptions {
     }
 }
 
-/// Decimal digits shown next to exact values.
-const DIGITS: usize = 12;
-
-fn decimal(x: &Q) -> Cell {
-    Cell::Text(number::decimal(x, DIGITS))
-}
-
-fn decimal_surd(x: &QSqrt) -> Cell {
-    Cell::Text(x.decimal(DIGITS))
-}
-
-fn decimal_root(x: &Q) -> Cell {
-    Cell::Text(number::decimal_sqrt(x, DIGITS))
-}
-
-/// The unit scene (m = l = v0 = 1) with rod mass `ratio`.
+/// The unit scene (m = l = v0 = 1) with rod mass `ratio`; `rod` is in units of l and M l^2, so
+/// `I=X` means I = X M l^2 = X * ratio here.
 fn unit_scene(ratio: &Q, rod: &RodInertia, e: &Q, pivot: Option<&Q>) -> Result<Scene, Error> {
+    let rod = match rod {
+        RodInertia::Moment(x) => RodInertia::Moment(x * ratio),
+        other => other.clone(),
+    };
     let mut b = Scene::builder(Q::one(), ratio.clone())
-        .rod(rod.clone())
+        .rod(rod)
         .e(e.clone());
     if let Some(p) = pivot {
         b = b.pivot(p.clone());
     }
     b.build()
+}
+
+/// `x` times `unit` in math: `l`, `-l`, `1/10\,l` (for x = 1, -1, 1/10).
+fn times(x: &Q, unit: &str) -> String {
+    if x.is_one() {
+        unit.to_string()
+    } else if (-x).is_one() {
+        format!("-{unit}")
+    } else {
+        format!("{x}\\,{unit}")
+    }
+}
+
+/// The rod of the options, in words and math: `uniform`, `$r_G = 1/10\,l$`.
+fn rod_markup(rod: &RodInertia) -> String {
+    match rod {
+        RodInertia::Uniform => "uniform".into(),
+        RodInertia::Dumbbell => "dumbbell".into(),
+        RodInertia::Gyration(r) => format!("$r_G = {}$", times(r, "l")),
+        RodInertia::Moment(x) => format!("$I = {}$", times(x, "M l^2")),
+    }
+}
+
+/// `Rod: uniform; $e = 1$.`: the end of every note that depends on the options.
+fn setting(opts: &TableOptions, with_e: bool) -> String {
+    let rod = rod_markup(&opts.rod);
+    if with_e {
+        format!("Rod: {rod}; $e = {}$.", opts.e)
+    } else {
+        format!("Rod: {rod}.")
+    }
 }
 
 /// T1: where omega peaks, against the mass ratio.
@@ -85,41 +106,34 @@ pub fn t1(opts: &TableOptions) -> Result<Table, Error> {
     for ratio in &opts.ratios {
         let s = unit_scene(ratio, &opts.rod, &opts.e, opts.pivot.as_ref())?;
         let o = optimum(&s);
-        let ratio_end = o.end_to_max();
         rows.push(vec![
             Cell::Rational(ratio.clone()),
             Cell::Rational(o.squared.clone()),
-            Cell::Root(o.squared.clone()),
-            decimal_root(&o.squared),
+            Cell::root(&o.squared),
             Cell::Text(o.placement.as_str().into()),
-            Cell::Surd(ratio_end.clone()),
-            decimal_surd(&ratio_end),
+            Cell::Surd(o.end_to_max()),
         ]);
     }
-    let from = if opts.pivot.is_some() {
-        "from the pivot"
-    } else {
-        "from the centre"
+    let from = match &opts.pivot {
+        Some(p) => format!("from the pivot at $p = {}$", times(p, "l")),
+        None => "from the centre".into(),
     };
     Ok(Table {
         id: "T1",
         title: "Where the rod spins fastest".into(),
         note: format!(
-            "a* = optimal impact distance {from}, in units of l; ω(end)/ω_max is the fraction of the best spin that an end hit gives. Rod: {}, e = {}.",
-            opts.rod, opts.e
+            "$a^*$ is the optimal impact distance {from}, in units of $l$; $\\omega(\\mathrm{{end}})/\\omega_{{\\max}}$ is the fraction of the best spin that an end hit gives. {}",
+            setting(opts, true)
         ),
-        headers: vec![
-            Header::new("M/m", "$M/m$", "M_over_m"),
-            Header::new("a*²/l²", "$a^{*2}/l^2$", "a_star_squared_over_l2"),
-            Header::new("a*/l", "$a^*/l$", "a_star_over_l"),
-            Header::new("≈", "$\\approx$", "a_star_over_l_decimal"),
-            Header::new("a*", "$a^*$", "a_star_position"),
-            Header::new(
-                "ω(end)/ω_max",
+        columns: vec![
+            Column::exact("$M/m$", "M/m"),
+            Column::exact("$a^{*2}/l^2$", "a_star^2/l^2"),
+            Column::with_decimals("$a^*/l$", "a_star/l"),
+            Column::exact("$a^*$", "a_star_position"),
+            Column::with_decimals(
                 "$\\omega(\\mathrm{end})/\\omega_{\\max}$",
-                "omega_end_over_max",
+                "omega_end/omega_max",
             ),
-            Header::new("≈", "$\\approx$", "omega_end_over_max_decimal"),
         ],
         rows,
     })
@@ -134,56 +148,57 @@ fn solve_at(scene: &Scene, a: QSqrt) -> Outcome<QSqrt> {
     solve(&params).expect("a valid scene is nonsingular")
 }
 
-/// T2: v, V and omega along the rod for one mass ratio, a* included.
+/// T2: v, V and omega along the rod for one mass ratio, a* included (once: when a* is one of
+/// the listed points, that row is the optimum).
 pub fn t2(opts: &TableOptions) -> Result<Table, Error> {
     let s = unit_scene(&opts.ratio, &opts.rod, &opts.e, None)?;
     let o = optimum(&s);
-    let mut points: Vec<(Cell, QSqrt)> = [(0, 1), (1, 4), (1, 2), (3, 4), (1, 1)]
+    let mut points: Vec<QSqrt> = [(0, 1), (1, 4), (1, 2), (3, 4), (1, 1)]
         .iter()
-        .map(|&(n, d)| (Cell::Rational(q(n, d)), QSqrt::rational(q(n, d))))
+        .map(|&(n, d)| QSqrt::rational(q(n, d)))
         .collect();
     let a_star = QSqrt::sqrt_of(&o.squared);
     if o.placement != Placement::Beyond {
         let at = points
             .iter()
-            .position(|(_, a)| a.cmp_exact(&a_star).is_ge())
+            .position(|a| a.cmp_exact(&a_star).is_ge())
             .unwrap_or(points.len());
-        points.insert(at, (Cell::Root(o.squared.clone()), a_star));
+        if points.get(at).is_none_or(|a| a.cmp_exact(&a_star).is_ne()) {
+            points.insert(at, a_star.clone());
+        }
     }
     let mut rows = Vec::new();
-    for (label, a) in points {
-        let after = solve_at(&s, a).after;
+    for a in points {
+        let after = solve_at(&s, a.clone()).after;
         rows.push(vec![
-            label,
+            Cell::Surd(a),
             Cell::Surd(after.v),
             Cell::Surd(after.rod_v),
-            Cell::Surd(after.omega.clone()),
-            decimal_surd(&after.omega),
+            Cell::Surd(after.omega),
         ]);
     }
     let star = match o.placement {
-        Placement::Beyond => "a* lies beyond the end and is not listed".to_string(),
+        Placement::Beyond => "$a^*$ lies beyond the end and is not listed".to_string(),
         _ => format!(
-            "the row a/l = {} is the optimum a*",
-            Cell::Root(o.squared.clone()).render(super::Format::Markdown)
+            "the row $a/l = {}$ is the optimum $a^*$",
+            notation::surd(&a_star, Notation::LatexInline)
         ),
     };
     Ok(Table {
         id: "T2",
         title: format!(
-            "Velocities after the impact along the rod, M/m = {}",
+            "Velocities after the impact along the rod, $M/m = {}$",
             opts.ratio
         ),
         note: format!(
-            "Velocities in units of v0, ω in units of v0/l; {star}. Rod: {}, e = {}.",
-            opts.rod, opts.e
+            "Velocities in units of $v_0$, $\\omega$ in units of $v_0/l$; {star}. {}",
+            setting(opts, true)
         ),
-        headers: vec![
-            Header::new("a/l", "$a/l$", "a_over_l"),
-            Header::new("v/v0", "$v/v_0$", "v"),
-            Header::new("V/v0", "$V/v_0$", "V"),
-            Header::new("ω l/v0", "$\\omega l/v_0$", "omega"),
-            Header::new("≈", "$\\approx$", "omega_decimal"),
+        columns: vec![
+            Column::exact("$a/l$", "a/l"),
+            Column::exact("$v/v_0$", "v/v0"),
+            Column::exact("$V/v_0$", "V/v0"),
+            Column::with_decimals("$\\omega\\, l/v_0$", "omega*l/v0"),
         ],
         rows,
     })
@@ -215,24 +230,20 @@ pub fn t3(opts: &TableOptions) -> Result<Table, Error> {
     Ok(Table {
         id: "T3",
         title: format!(
-            "Elastic, half-elastic and sticking impacts at the optimum, M/m = {}",
+            "Elastic, half-elastic and sticking impacts at the optimum, $M/m = {}$",
             opts.ratio
         ),
         note: format!(
-            "Struck at a* (or at the end when a* is beyond it); a* does not depend on e. Velocities in units of v0, ω in v0/l; ΔK/K0 is the fraction of the kinetic energy lost; ω/ω_el = (1 + e)/2 exactly, so ω_el = 2 ω_inel. Rod: {}.",
-            opts.rod
+            "Struck at $a^*$ (or at the end when $a^*$ is beyond it); $a^*$ does not depend on $e$. Velocities in units of $v_0$, $\\omega$ in units of $v_0/l$; $\\Delta K/K_0$ is the fraction of the kinetic energy lost; $\\omega/\\omega_{{\\mathrm{{el}}}} = (1 + e)/2$ exactly, so $\\omega_{{\\mathrm{{el}}}} = 2\\,\\omega_{{\\mathrm{{inel}}}}$. {}",
+            setting(opts, false)
         ),
-        headers: vec![
-            Header::new("e", "$e$", "e"),
-            Header::new("v/v0", "$v/v_0$", "v"),
-            Header::new("V/v0", "$V/v_0$", "V"),
-            Header::new("ω l/v0", "$\\omega l/v_0$", "omega"),
-            Header::new(
-                "ω/ω_el",
-                "$\\omega/\\omega_{\\mathrm{el}}$",
-                "omega_over_elastic",
-            ),
-            Header::new("ΔK/K0", "$\\Delta K/K_0$", "energy_lost_fraction"),
+        columns: vec![
+            Column::exact("$e$", "e"),
+            Column::exact("$v/v_0$", "v/v0"),
+            Column::exact("$V/v_0$", "V/v0"),
+            Column::with_decimals("$\\omega\\, l/v_0$", "omega*l/v0"),
+            Column::exact("$\\omega/\\omega_{\\mathrm{el}}$", "omega/omega_elastic"),
+            Column::exact("$\\Delta K/K_0$", "energy_lost/K0"),
         ],
         rows,
     })
@@ -245,33 +256,26 @@ pub fn t4() -> Result<Table, Error> {
         let r = q(tenths, 10);
         let s = unit_scene(&Q::one(), &RodInertia::Gyration(r.clone()), &Q::one(), None)?;
         let o = optimum(&s);
-        let (threshold, approx) = match &o.threshold_mass {
-            Some(t) => (Cell::Rational(t.clone()), decimal(t)),
-            None => (
-                Cell::Text("none".into()),
-                Cell::Text("a* beyond the end for every M".into()),
-            ),
-        };
         rows.push(vec![
             Cell::Rational(r.clone()),
             Cell::Rational(&r * &r),
-            threshold,
-            approx,
-            Cell::Root(o.squared.clone()),
+            o.threshold_mass
+                .clone()
+                .map_or(Cell::Absent, Cell::Rational),
+            Cell::root(&o.squared),
             Cell::Text(o.placement.as_str().into()),
         ]);
     }
     Ok(Table {
         id: "T4",
         title: "Inhomogeneous rods: where intuition fails".into(),
-        note: "Radius of gyration r_G (I = M r_G^2); a* < l exactly when M/m < (l/r_G)^2 - 1. r_G = l is the ideal dumbbell. The last two columns are for M = m.".into(),
-        headers: vec![
-            Header::new("r_G/l", "$r_G/l$", "rg_over_l"),
-            Header::new("I/(M l²)", "$I/(M l^2)$", "I_over_M_l2"),
-            Header::new("a* < l iff M/m <", "$a^*<l$ iff $M/m<$", "threshold_M_over_m"),
-            Header::new("≈", "$\\approx$", "threshold_decimal"),
-            Header::new("a*/l at M = m", "$a^*/l$ at $M=m$", "a_star_over_l_at_M_eq_m"),
-            Header::new("a* at M = m", "$a^*$ at $M=m$", "a_star_position_at_M_eq_m"),
+        note: "Radius of gyration $r_G$ ($I = M r_G^2$); $a^* < l$ exactly when $M/m < (l/r_G)^2 - 1$, so for $r_G = l$ (the ideal dumbbell) $a^*$ lies beyond the end for every $M$ and there is no threshold. The last two columns are for $M = m$.".into(),
+        columns: vec![
+            Column::exact("$r_G/l$", "r_G/l"),
+            Column::exact("$I/(M l^2)$", "I/(M*l^2)"),
+            Column::with_decimals("$a^* < l$ iff $M/m <$", "threshold_M/m"),
+            Column::with_decimals("$a^*/l$ at $M = m$", "a_star/l_at_M=m"),
+            Column::exact("$a^*$ at $M = m$", "a_star_position_at_M=m"),
         ],
         rows,
     })
@@ -286,15 +290,14 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
             let o = optimum(&s);
             let inertia_p = s.inertia() + ratio * &pivot * &pivot;
             let percussion = if pivot.is_zero() {
-                Cell::Text("none".into())
+                Cell::Absent
             } else {
                 Cell::Rational(inertia_p / (ratio * &pivot * &pivot))
             };
             rows.push(vec![
                 Cell::Text(name.into()),
                 Cell::Rational(ratio.clone()),
-                Cell::Root(o.squared.clone()),
-                decimal_root(&o.squared),
+                Cell::root(&o.squared),
                 Cell::Text(o.placement.as_str().into()),
                 percussion,
             ]);
@@ -304,20 +307,15 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
         id: "T5",
         title: "Rod on a fixed pivot: best impact distance and centre of percussion".into(),
         note: format!(
-            "d* = sqrt(I_p/m) from the pivot (I_p = I + M p^2), in units of l; the free arm is l (pivot at the centre) or 2l (pivot at an end). The centre of percussion d = I_p/(M |p|) is where the pivot feels no impulse. Rod: {}, e = {}.",
-            opts.rod, opts.e
+            "$d^* = \\sqrt{{I_p/m}}$ from the pivot ($I_p = I + M p^2$), in units of $l$; the free arm is $l$ (pivot at the centre) or $2l$ (pivot at an end). The centre of percussion $d = I_p/(M \\lvert p\\rvert)$ is where the pivot feels no impulse; a pivot at the centre has none. {}",
+            setting(opts, true)
         ),
-        headers: vec![
-            Header::new("pivot", "pivot", "pivot"),
-            Header::new("M/m", "$M/m$", "M_over_m"),
-            Header::new("d*/l", "$d^*/l$", "d_star_over_l"),
-            Header::new("≈", "$\\approx$", "d_star_decimal"),
-            Header::new("d*", "$d^*$", "d_star_position"),
-            Header::new(
-                "centre of percussion /l",
-                "c.\\ of percussion $/l$",
-                "percussion_over_l",
-            ),
+        columns: vec![
+            Column::exact("pivot", "pivot"),
+            Column::exact("$M/m$", "M/m"),
+            Column::with_decimals("$d^*/l$", "d_star/l"),
+            Column::exact("$d^*$", "d_star_position"),
+            Column::exact("centre of percussion / $l$", "percussion/l"),
         ],
         rows,
     })
@@ -336,4 +334,56 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
 /// ```
 pub fn all_tables(opts: &TableOptions) -> Result<Vec<Table>, Error> {
     Ok(vec![t1(opts)?, t2(opts)?, t3(opts)?, t4()?, t5(opts)?])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::{Format, render_document};
+
+    /// Regression (NEWCOMER #7): the captions put `<` and `|p|` in LaTeX's text mode, where OT1
+    /// prints `¡` and em dashes, and wrote `ω_max`, `v0` and `a*` as text. Outside `$…$` the
+    /// LaTeX now holds no character that text mode misprints, and the symbols are math.
+    #[test]
+    fn latex_keeps_math_in_math_mode() {
+        let tables = all_tables(&TableOptions::default()).unwrap();
+        let latex = render_document(&tables, Format::Latex);
+        for (i, text) in latex.split('$').enumerate().filter(|(i, _)| i % 2 == 0) {
+            for bad in ['<', '>', '|', '√', 'ω', '≈', '²', 'Δ'] {
+                assert!(
+                    !text.contains(bad),
+                    "{bad:?} in text mode: {text:?} (part {i})"
+                );
+            }
+            let unescaped_underscore = text
+                .match_indices('_')
+                .any(|(at, _)| !text[..at].ends_with('\\'));
+            assert!(!unescaped_underscore, "raw _ in text mode: {text:?}");
+        }
+        for math in [
+            r"$a^* < l$",
+            r"$d = I_p/(M \lvert p\rvert)$",
+            r"$v_0$",
+            r"$\omega(\mathrm{end})/\omega_{\max}$",
+            r"$d^* = \sqrt{I_p/m}$",
+        ] {
+            assert!(latex.contains(math), "{math}");
+        }
+        // Decimal columns are aligned on the point (dcolumn).
+        assert!(latex.contains(r"\usepackage{dcolumn}"));
+        assert!(latex.contains(r"D{.}{.}{1.12}"));
+    }
+
+    /// The end-hit fraction at M = m is 2√6/5 exactly; a* = √6/3 (the paper's sqrt(2/3)).
+    #[test]
+    fn t1_at_equal_masses() {
+        let opts = TableOptions {
+            ratios: vec![q(1, 1)],
+            ..TableOptions::default()
+        };
+        let row = &t1(&opts).unwrap().rows[0];
+        assert_eq!(row[1], Cell::Rational(q(2, 3)));
+        assert_eq!(row[2].render(Format::Markdown), "√6/3");
+        assert_eq!(row[4].render(Format::Csv), "2*sqrt(6)/5");
+    }
 }

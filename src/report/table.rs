@@ -1,21 +1,26 @@
 //! One table model, three formats: Markdown, LaTeX (booktabs) and CSV.
 //!
-//! Cells hold exact values ([`Cell::Rational`], [`Cell::Surd`], [`Cell::Root`]) and each
-//! format prints them its own way: `2/3`, `\frac{2}{3}`; `2√6/5`, `\frac{2\sqrt{6}}{5}`,
-//! `2/5*sqrt(6)`. Decimals are separate, correctly rounded cells.
+//! Cells hold exact values ([`Cell::Rational`], [`Cell::Surd`]); each format prints them in its
+//! notation (`2√6/5`, `\frac{2\sqrt{6}}{5}`, `2*sqrt(6)/5`, see [`crate::field::notation`]) and
+//! derives the decimals itself: a column marked [`Column::approx`] gets a `≈` column beside it
+//! in Markdown and LaTeX (decimal-aligned there), and in CSV *every* numeric column gets a
+//! `<name>_decimal` column. Titles, notes and headings are [`markup`](super::markup): plain
+//! text with `$…$` math.
 
-use crate::field::{Q, QSqrt, TrySqrt};
-use num_traits::{One, Signed, Zero};
+use super::markup;
+use crate::field::notation::{self, Notation};
+use crate::field::{Q, QSqrt};
+use crate::number;
 use std::fmt::Write as _;
 
 /// Output format of a table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Format {
-    /// GitHub-flavoured Markdown.
+    /// GitHub-flavoured Markdown, the math in Unicode (readable in a terminal too).
     Markdown,
-    /// LaTeX with booktabs; a complete document that compiles with plain `pdflatex`.
+    /// LaTeX with booktabs and dcolumn; a complete document that compiles with plain `pdflatex`.
     Latex,
-    /// Comma-separated values: exact strings and decimals, one header line per table.
+    /// Comma-separated values: exact strings beside decimals, one header line.
     Csv,
 }
 
@@ -38,6 +43,12 @@ impl Format {
     }
 
     /// The usual file extension: `md`, `tex`, `csv`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::Format;
+    /// assert_eq!(Format::Latex.extension(), "tex");
+    /// ```
     pub fn extension(self) -> &'static str {
         match self {
             Format::Markdown => "md",
@@ -47,6 +58,12 @@ impl Format {
     }
 }
 
+/// Significant digits of the `≈` columns in Markdown and LaTeX.
+const TABLE_DIGITS: usize = 12;
+
+/// Significant digits of the CSV decimals: enough to round-trip an `f64`.
+const CSV_DIGITS: usize = 17;
+
 /// One table cell.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Cell {
@@ -54,13 +71,25 @@ pub enum Cell {
     Rational(Q),
     /// An exact element x + y sqrt(d) of a quadratic field.
     Surd(QSqrt),
-    /// The square root of a nonnegative rational, printed as a root (`√(2/3)`).
-    Root(Q),
-    /// Plain text (`yes`, `none`).
+    /// Plain text (`inside`, `centre`).
     Text(String),
+    /// No value (a threshold that does not exist): `none` in Markdown and LaTeX, empty in CSV.
+    Absent,
 }
 
 impl Cell {
+    /// The square root of a rational `x >= 0`, exact.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::{Cell, Format};
+    /// use rodimpact::field::q;
+    /// assert_eq!(Cell::root(&q(2, 3)).render(Format::Markdown), "√6/3");
+    /// ```
+    pub fn root(x: &Q) -> Cell {
+        Cell::Surd(QSqrt::sqrt_of(x))
+    }
+
     /// The cell in `format`.
     ///
     /// # Examples
@@ -70,144 +99,330 @@ impl Cell {
     /// let c = Cell::Surd(QSqrt::sqrt_of(&q(24, 25)));
     /// assert_eq!(c.render(Format::Markdown), "2√6/5");
     /// assert_eq!(c.render(Format::Latex), r"$\frac{2\sqrt{6}}{5}$");
-    /// assert_eq!(c.render(Format::Csv), "2/5*sqrt(6)");
-    /// assert_eq!(Cell::Root(q(2, 3)).render(Format::Latex), r"$\sqrt{\frac{2}{3}}$");
+    /// assert_eq!(c.render(Format::Csv), "2*sqrt(6)/5");
+    /// assert_eq!(Cell::Absent.render(Format::Csv), "");
     /// ```
     pub fn render(&self, format: Format) -> String {
         match (self, format) {
-            (Cell::Text(t), Format::Latex) => latex_text(t),
+            (Cell::Text(t), Format::Latex) => markup::latex(t),
             (Cell::Text(t), _) => t.clone(),
-            (Cell::Rational(x), Format::Latex) => format!("${}$", latex_rational(x)),
+            (Cell::Absent, Format::Csv) => String::new(),
+            (Cell::Absent, _) => "none".into(),
+            (Cell::Rational(x), Format::Latex) => {
+                format!("${}$", notation::rational(x, Notation::Latex))
+            }
             (Cell::Rational(x), _) => x.to_string(),
-            (Cell::Surd(x), Format::Csv) => x.to_string(),
-            (Cell::Surd(x), Format::Markdown) => surd(x, &Markdown),
-            (Cell::Surd(x), Format::Latex) => format!("${}$", surd(x, &Latex)),
-            (Cell::Root(x), _) => match x.try_sqrt() {
-                Some(r) => Cell::Rational(r).render(format),
-                None => match format {
-                    Format::Csv => format!("sqrt({x})"),
-                    Format::Markdown if x.is_integer() => format!("√{x}"),
-                    Format::Markdown => format!("√({x})"),
-                    Format::Latex => format!("$\\sqrt{{{}}}$", latex_rational(x)),
-                },
-            },
+            (Cell::Surd(x), Format::Latex) => format!("${}$", notation::surd(x, Notation::Latex)),
+            (Cell::Surd(x), Format::Markdown) => notation::surd(x, Notation::Unicode),
+            (Cell::Surd(x), Format::Csv) => notation::surd(x, Notation::Ascii),
         }
+    }
+
+    /// The value correctly rounded to `digits` significant digits, for a number; `None` for
+    /// text and absent values.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::Cell;
+    /// use rodimpact::field::q;
+    /// assert_eq!(Cell::root(&q(2, 1)).decimal(5).as_deref(), Some("1.4142"));
+    /// assert_eq!(Cell::Absent.decimal(5), None);
+    /// ```
+    pub fn decimal(&self, digits: usize) -> Option<String> {
+        match self {
+            Cell::Rational(x) => Some(number::decimal(x, digits)),
+            Cell::Surd(x) => Some(x.decimal(digits)),
+            Cell::Text(_) | Cell::Absent => None,
+        }
+    }
+
+    fn is_number(&self) -> bool {
+        matches!(self, Cell::Rational(_) | Cell::Surd(_))
     }
 }
 
-/// A column heading in each format.
+/// A column: its heading ([`markup`](super::markup)), its CSV name, and whether Markdown and
+/// LaTeX show its decimals beside it.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::Column;
+/// let c = Column::with_decimals("$v/v_0$", "v/v0");
+/// assert_eq!((c.heading.as_str(), c.csv.as_str(), c.approx), ("$v/v_0$", "v/v0", true));
+/// ```
 #[derive(Debug, Clone, PartialEq)]
-pub struct Header {
-    /// Markdown / plain heading.
-    pub markdown: String,
-    /// LaTeX heading (math allowed).
-    pub latex: String,
-    /// CSV column name (no commas, no spaces).
+pub struct Column {
+    /// The heading, plain text with `$…$` math (`$a^*/l$`).
+    pub heading: String,
+    /// The CSV column name: ASCII, no commas, units in the name (`v/v0`, `a_star/l`).
     pub csv: String,
+    /// Show a `≈` column of decimals beside it (Markdown, LaTeX).
+    pub approx: bool,
 }
 
-impl Header {
-    /// A heading from its three spellings.
-    pub fn new(markdown: &str, latex: &str, csv: &str) -> Header {
-        Header {
-            markdown: markdown.into(),
-            latex: latex.into(),
+impl Column {
+    /// A column of exact values (or text) only.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::Column;
+    /// assert!(!Column::exact("$M/m$", "M/m").approx);
+    /// ```
+    pub fn exact(heading: &str, csv: &str) -> Column {
+        Column {
+            heading: heading.into(),
             csv: csv.into(),
+            approx: false,
+        }
+    }
+
+    /// A column of exact values followed by their decimals.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::Column;
+    /// assert!(Column::with_decimals("$a^*/l$", "a_star/l").approx);
+    /// ```
+    pub fn with_decimals(heading: &str, csv: &str) -> Column {
+        Column {
+            approx: true,
+            ..Column::exact(heading, csv)
         }
     }
 }
 
-/// A table: id, title, a note on units and conventions, headings and rows of cells.
+/// A table: id, title, a note on units and conventions, columns and rows of cells.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Table {
     /// Short id (`T1`).
     pub id: &'static str,
-    /// Title.
+    /// Title ([`markup`](super::markup)).
     pub title: String,
-    /// Units and conventions, printed under the title.
+    /// Units and conventions, printed under the title ([`markup`](super::markup)).
     pub note: String,
-    /// Column headings.
-    pub headers: Vec<Header>,
-    /// Rows; each as long as `headers`.
+    /// The columns.
+    pub columns: Vec<Column>,
+    /// Rows; each as long as `columns`.
     pub rows: Vec<Vec<Cell>>,
 }
 
 impl Table {
-    /// The table in `format` (a LaTeX `table` environment, without document preamble).
+    /// The table in `format`: a Markdown section, a LaTeX `table` environment (without the
+    /// document preamble), or a CSV file (header line, one line per row).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::{Cell, Column, Format, Table};
+    /// use rodimpact::field::q;
+    /// let t = Table { id: "T0", title: "Demo".into(), note: "$x$ exact.".into(),
+    ///     columns: vec![Column::with_decimals("$x$", "x")], rows: vec![vec![Cell::Rational(q(1, 3))]] };
+    /// assert_eq!(t.render(Format::Csv), "x,x_decimal\n1/3,0.33333333333333333\n");
+    /// assert!(t.render(Format::Markdown).contains("| 1/3 | 0.333333333333 |"));
+    /// ```
     pub fn render(&self, format: Format) -> String {
         match format {
             Format::Markdown => self.markdown(),
             Format::Latex => self.latex(),
-            Format::Csv => self.csv(),
+            Format::Csv => csv_document(&[self]),
         }
     }
 
+    /// The cell of `row` and its decimal when the column shows one (Markdown, LaTeX).
+    fn shown_cells(&self, row: &[Cell], format: Format) -> Vec<String> {
+        let mut out = Vec::new();
+        for (cell, column) in row.iter().zip(&self.columns) {
+            out.push(cell.render(format));
+            if column.approx {
+                out.push(cell.decimal(TABLE_DIGITS).unwrap_or_default());
+            }
+        }
+        out
+    }
+
+    /// The table in GitHub Markdown with its title, note and headings as GitHub math
+    /// (`` $`a^*/l`$ ``), for `report.md`; [`Format::Markdown`] spells the math in Unicode.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::{Cell, Column, Table};
+    /// use rodimpact::field::q;
+    /// let t = Table { id: "T0", title: "Demo".into(), note: "$x$ exact.".into(),
+    ///     columns: vec![Column::exact("$x$", "x")], rows: vec![vec![Cell::Rational(q(1, 3))]] };
+    /// assert!(t.github_markdown().starts_with("### T0. Demo\n\n$`x`$ exact."));
+    /// ```
+    pub fn github_markdown(&self) -> String {
+        self.markdown_with(markup::github)
+    }
+
     fn markdown(&self) -> String {
-        let mut out = format!("### {}. {}\n\n{}\n\n", self.id, self.title, self.note);
-        let heads: Vec<&str> = self.headers.iter().map(|h| h.markdown.as_str()).collect();
+        self.markdown_with(markup::unicode)
+    }
+
+    fn markdown_with(&self, math: fn(&str) -> String) -> String {
+        let mut out = format!(
+            "### {}. {}\n\n{}\n\n",
+            self.id,
+            math(&self.title),
+            math(&self.note)
+        );
+        let mut heads = Vec::new();
+        for column in &self.columns {
+            heads.push(math(&column.heading));
+            if column.approx {
+                heads.push("≈".into());
+            }
+        }
         let _ = writeln!(out, "| {} |", heads.join(" | "));
         let _ = writeln!(out, "|{}", "---|".repeat(heads.len()));
         for row in &self.rows {
-            let cells: Vec<String> = row
+            let cells: Vec<String> = self
+                .shown_cells(row, Format::Markdown)
                 .iter()
-                .map(|c| c.render(Format::Markdown).replace('|', "\\|"))
+                .map(|c| c.replace('|', "\\|"))
                 .collect();
             let _ = writeln!(out, "| {} |", cells.join(" | "));
         }
         out
     }
 
+    /// The dcolumn specification `D{.}{.}{b.a}` of a decimal column: `b` digits (and sign)
+    /// before the point, `a` after, the widest of the column.
+    fn decimal_spec(&self, index: usize) -> String {
+        let (mut before, mut after) = (1, 0);
+        for row in &self.rows {
+            if let Some(d) = row[index].decimal(TABLE_DIGITS) {
+                let (int, frac) = d.split_once('.').unwrap_or((&d, ""));
+                before = before.max(int.len());
+                after = after.max(frac.len());
+            }
+        }
+        format!("D{{.}}{{.}}{{{before}.{after}}}")
+    }
+
     fn latex(&self) -> String {
+        let mut spec = String::new();
+        let mut heads = Vec::new();
+        for (i, column) in self.columns.iter().enumerate() {
+            let numeric = self.rows.iter().any(|r| r[i].is_number());
+            spec.push(if numeric { 'c' } else { 'l' });
+            heads.push(markup::latex(&column.heading));
+            if column.approx {
+                spec.push_str(&self.decimal_spec(i));
+                heads.push("\\multicolumn{1}{c}{$\\approx$}".into());
+            }
+        }
         let mut out = String::from("\\begin{table}[ht]\n\\centering\n");
         let _ = writeln!(
             out,
             "\\caption{{{}. {}}}\\label{{tab:{}}}",
-            latex_text(&self.title),
-            latex_text(&self.note),
+            markup::latex(&self.title),
+            markup::latex(&self.note),
             self.id
         );
-        let _ = writeln!(
-            out,
-            "\\begin{{tabular}}{{{}}}\n\\toprule",
-            "l".repeat(self.headers.len())
-        );
-        let heads: Vec<&str> = self.headers.iter().map(|h| h.latex.as_str()).collect();
+        let _ = writeln!(out, "\\begin{{tabular}}{{{spec}}}\n\\toprule");
         let _ = writeln!(out, "{} \\\\\n\\midrule", heads.join(" & "));
         for row in &self.rows {
-            let cells: Vec<String> = row.iter().map(|c| c.render(Format::Latex)).collect();
+            let mut cells = Vec::new();
+            for (cell, column) in row.iter().zip(&self.columns) {
+                cells.push(cell.render(Format::Latex));
+                if column.approx {
+                    // A decimal column is typeset in math mode; no number: an empty cell.
+                    cells.push(cell.decimal(TABLE_DIGITS).unwrap_or_default());
+                }
+            }
             let _ = writeln!(out, "{} \\\\", cells.join(" & "));
         }
         out.push_str("\\bottomrule\n\\end{tabular}\n\\end{table}\n");
         out
     }
 
-    fn csv(&self) -> String {
-        let mut out = String::new();
-        let heads: Vec<String> = self.headers.iter().map(|h| csv_field(&h.csv)).collect();
-        let _ = writeln!(out, "{}", heads.join(","));
-        for row in &self.rows {
-            let cells: Vec<String> = row
-                .iter()
-                .map(|c| csv_field(&c.render(Format::Csv)))
-                .collect();
-            let _ = writeln!(out, "{}", cells.join(","));
+    /// The CSV columns: each column's name, followed for a numeric column by `<name>_decimal`.
+    fn csv_names(&self) -> Vec<String> {
+        let mut names = Vec::new();
+        for (i, column) in self.columns.iter().enumerate() {
+            names.push(column.csv.clone());
+            if self.rows.iter().any(|r| r[i].is_number()) {
+                names.push(format!("{}_decimal", column.csv));
+            }
         }
-        out
+        names
+    }
+
+    /// One row's CSV cells, by column name.
+    fn csv_row(&self, row: &[Cell]) -> Vec<(String, String)> {
+        let mut cells = Vec::new();
+        for (i, (cell, column)) in row.iter().zip(&self.columns).enumerate() {
+            cells.push((column.csv.clone(), cell.render(Format::Csv)));
+            if self.rows.iter().any(|r| r[i].is_number()) {
+                cells.push((
+                    format!("{}_decimal", column.csv),
+                    cell.decimal(CSV_DIGITS).unwrap_or_default(),
+                ));
+            }
+        }
+        cells
     }
 }
 
+/// Several tables as one CSV file. One table: its own header and rows. Several: one
+/// rectangular file whose first column `table` names the table (`T1`), followed by the union of
+/// the tables' columns in order of first appearance; a cell is empty where its table has no
+/// such column (a column of the same name means the same quantity in every table).
+fn csv_document(tables: &[&Table]) -> String {
+    let tagged = tables.len() > 1;
+    let mut names: Vec<String> = Vec::new();
+    for t in tables {
+        for name in t.csv_names() {
+            if !names.contains(&name) {
+                names.push(name);
+            }
+        }
+    }
+    let mut out = String::new();
+    let header: Vec<String> = tagged
+        .then(|| "table".to_string())
+        .into_iter()
+        .chain(names.iter().cloned())
+        .map(|n| csv_field(&n))
+        .collect();
+    let _ = writeln!(out, "{}", header.join(","));
+    for t in tables {
+        for row in &t.rows {
+            let cells = t.csv_row(row);
+            let line: Vec<String> = tagged
+                .then(|| t.id.to_string())
+                .into_iter()
+                .chain(names.iter().map(|name| {
+                    cells
+                        .iter()
+                        .find(|(n, _)| n == name)
+                        .map(|(_, v)| v.clone())
+                        .unwrap_or_default()
+                }))
+                .map(|c| csv_field(&c))
+                .collect();
+            let _ = writeln!(out, "{}", line.join(","));
+        }
+    }
+    out
+}
+
 /// Several tables as one document: Markdown sections, a complete LaTeX document (compiles
-/// with plain `pdflatex`), or CSV blocks separated by a `# T1. title` comment line and a blank
-/// line.
+/// with plain `pdflatex`), or one CSV file (see [`Table::render`]; several tables share one
+/// rectangular file with a leading `table` column).
 ///
 /// # Examples
 /// ```
-/// use rodimpact::report::{render_document, Cell, Format, Header, Table};
+/// use rodimpact::report::{render_document, Cell, Column, Format, Table};
 /// use rodimpact::field::q;
-/// let t = Table { id: "T0", title: "Demo".into(), note: "Exact.".into(),
-///     headers: vec![Header::new("x", "$x$", "x")], rows: vec![vec![Cell::Rational(q(1, 2))]] };
-/// assert!(render_document(&[t.clone()], Format::Latex).contains(r"\documentclass"));
-/// assert_eq!(render_document(&[t], Format::Csv), "# T0. Demo\nx\n1/2\n");
+/// let t = |id, x| Table { id, title: "Demo".into(), note: "Exact.".into(),
+///     columns: vec![Column::exact("$x$", "x")], rows: vec![vec![Cell::Rational(x)]] };
+/// assert!(render_document(&[t("T0", q(1, 2))], Format::Latex).contains(r"\documentclass"));
+/// assert_eq!(render_document(&[t("T0", q(1, 2))], Format::Csv), "x,x_decimal\n1/2,0.50000000000000000\n");
+/// assert_eq!(
+///     render_document(&[t("T0", q(1, 2)), t("T9", q(2, 1))], Format::Csv),
+///     "table,x,x_decimal\nT0,1/2,0.50000000000000000\nT9,2,2.0000000000000000\n"
+/// );
 /// ```
 pub fn render_document(tables: &[Table], format: Format) -> String {
     match format {
@@ -216,116 +431,15 @@ pub fn render_document(tables: &[Table], format: Format) -> String {
             .map(|t| t.render(format))
             .collect::<Vec<_>>()
             .join("\n"),
-        Format::Csv => tables
-            .iter()
-            .map(|t| format!("# {}. {}\n{}", t.id, t.title, t.render(format)))
-            .collect::<Vec<_>>()
-            .join("\n"),
+        Format::Csv => csv_document(&tables.iter().collect::<Vec<_>>()),
         Format::Latex => {
             let body: Vec<String> = tables.iter().map(|t| t.render(format)).collect();
             format!(
-                "\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\usepackage{{booktabs}}\n\\usepackage[margin=2cm]{{geometry}}\n\\renewcommand{{\\arraystretch}}{{1.5}}\n\\begin{{document}}\n\n{}\n\\end{{document}}\n",
+                "\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\usepackage{{booktabs}}\n\\usepackage{{dcolumn}}\n\\usepackage[margin=2cm]{{geometry}}\n\\renewcommand{{\\arraystretch}}{{1.5}}\n\\begin{{document}}\n\n{}\n\\end{{document}}\n",
                 body.join("\n")
             )
         }
     }
-}
-
-/// How a format writes roots and fractions.
-trait Style {
-    fn root(&self, d: &str) -> String;
-    fn fraction(&self, num: &str, den: &str) -> String;
-}
-
-struct Markdown;
-struct Latex;
-
-impl Style for Markdown {
-    fn root(&self, d: &str) -> String {
-        format!("√{d}")
-    }
-    fn fraction(&self, num: &str, den: &str) -> String {
-        format!("{num}/{den}")
-    }
-}
-
-impl Style for Latex {
-    fn root(&self, d: &str) -> String {
-        format!("\\sqrt{{{d}}}")
-    }
-    fn fraction(&self, num: &str, den: &str) -> String {
-        format!("\\frac{{{num}}}{{{den}}}")
-    }
-}
-
-/// `x + y sqrt(d)` in a style: `2√6/5`, `1 - √2`, `\frac{2\sqrt{6}}{5}`.
-fn surd(value: &QSqrt, style: &dyn Style) -> String {
-    let rational = |x: &Q| {
-        if x.is_integer() {
-            x.numer().abs().to_string()
-        } else {
-            style.fraction(&x.numer().abs().to_string(), &x.denom().to_string())
-        }
-    };
-    let (x, y) = (value.x(), value.y());
-    let Some(d) = value.d().filter(|_| !y.is_zero()) else {
-        let sign = if x.is_negative() { "-" } else { "" };
-        return format!("{sign}{}", rational(x));
-    };
-    let root = style.root(&d.to_string());
-    let numerator = if y.numer().abs().is_one() {
-        root
-    } else {
-        format!("{}{root}", y.numer().abs())
-    };
-    let y_part = if y.denom().is_one() {
-        numerator
-    } else {
-        style.fraction(&numerator, &y.denom().to_string())
-    };
-    match (x.is_zero(), x.is_negative(), y.is_negative()) {
-        (true, _, neg_y) => format!("{}{y_part}", if neg_y { "-" } else { "" }),
-        (false, neg_x, neg_y) => format!(
-            "{}{} {} {y_part}",
-            if neg_x { "-" } else { "" },
-            rational(x),
-            if neg_y { "-" } else { "+" }
-        ),
-    }
-}
-
-fn latex_rational(x: &Q) -> String {
-    let sign = if x.is_negative() { "-" } else { "" };
-    if x.is_integer() {
-        format!("{sign}{}", x.numer().abs())
-    } else {
-        format!("{sign}\\frac{{{}}}{{{}}}", x.numer().abs(), x.denom())
-    }
-}
-
-/// Plain text made safe for LaTeX: special characters escaped, `√` written as math.
-fn latex_text(text: &str) -> String {
-    let mut out = String::new();
-    for ch in text.chars() {
-        match ch {
-            '&' | '%' | '$' | '#' | '_' | '{' | '}' => {
-                out.push('\\');
-                out.push(ch);
-            }
-            '~' => out.push_str("\\textasciitilde{}"),
-            '^' => out.push_str("\\textasciicircum{}"),
-            '\\' => out.push_str("\\textbackslash{}"),
-            '√' => out.push_str("$\\surd$"),
-            '≤' => out.push_str("$\\le$"),
-            '·' => out.push_str("$\\cdot$"),
-            'ω' => out.push_str("$\\omega$"),
-            'Δ' => out.push_str("$\\Delta$"),
-            '²' => out.push_str("$^2$"),
-            '≈' => out.push_str("$\\approx$"),
-            _ => out.push(ch),
-        }
-    }
-    out
 }
 
 fn csv_field(text: &str) -> String {
