@@ -77,7 +77,7 @@ impl PlotData {
     /// };
     /// assert_eq!(
     ///     data.to_csv(),
-    ///     "a,a_decimal,a_star,a_star_decimal\n1/2,0.50000000000000000,sqrt(2/3),0.81649658092772603\n"
+    ///     "a,a_decimal,a_star,a_star_decimal\n1/2,0.50000000000000000,sqrt(6)/3,0.81649658092772603\n"
     /// );
     /// ```
     pub fn to_csv(&self) -> String {
