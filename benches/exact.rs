@@ -7,11 +7,11 @@
 mod support;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use rodimpact::fast;
 use rodimpact::field::Q;
-use rodimpact::float::Formula;
 use rodimpact::samples::sized_scene;
-use rodimpact::solve::{closed_form, outcome, solve};
+use rodimpact::solve::float::Formula;
+use rodimpact::solve::fraction_free;
+use rodimpact::solve::{closed_form::closed_form, linear::solve, outcome};
 use rodimpact::stability::SplitMix64;
 use std::hint::black_box;
 use std::time::Duration;
@@ -52,14 +52,14 @@ fn per_scene(c: &mut Criterion) {
         group.bench_function("fast exact", |b| {
             b.iter(|| {
                 for s in &batch {
-                    black_box(fast::solve(black_box(s)));
+                    black_box(fraction_free::solve(black_box(s)));
                 }
             })
         });
         group.bench_function("fast exact, big integers only", |b| {
             b.iter(|| {
                 for s in &batch {
-                    black_box(fast::solve_big(black_box(s)));
+                    black_box(fraction_free::solve_big(black_box(s)));
                 }
             })
         });
@@ -83,7 +83,7 @@ fn growth(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("fast exact", bits), &batch, |b, batch| {
             b.iter(|| {
                 for s in batch {
-                    black_box(fast::solve(black_box(s)));
+                    black_box(fraction_free::solve(black_box(s)));
                 }
             })
         });

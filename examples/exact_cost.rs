@@ -9,11 +9,11 @@
 //! Pass `--quick` to stop the growth curve at 10,000 bits; add `--features malachite` to run the
 //! big-integer fallback on malachite-nz.
 
-use rodimpact::fast;
 use rodimpact::field::Q;
 use rodimpact::samples::{read_batch, sized_scene};
 use rodimpact::scene::Scene;
-use rodimpact::solve::{closed_form, outcome, solve};
+use rodimpact::solve::fraction_free;
+use rodimpact::solve::{closed_form::closed_form, linear::solve, outcome};
 use rodimpact::stability::SplitMix64;
 use std::hint::black_box;
 use std::time::Instant;
@@ -81,7 +81,7 @@ fn side_by_side(label: &str, scenes: &[Scene]) {
         });
         let tx = per_scene(3, chunk.len(), || {
             for s in chunk {
-                black_box(fast::solve(black_box(s)));
+                black_box(fraction_free::solve(black_box(s)));
             }
         });
         bf.push(tb / tf);
@@ -114,7 +114,7 @@ fn growth(max_bits: u64) {
         let scenes: Vec<Scene> = (0..count).map(|_| sized_scene(&mut rng, bits)).collect();
         let t_fast = per_scene(1, count, || {
             for s in &scenes {
-                black_box(fast::solve(black_box(s)));
+                black_box(fraction_free::solve(black_box(s)));
             }
         });
         let t_big = (bits <= 3162).then(|| {

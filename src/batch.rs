@@ -15,11 +15,11 @@
 //! rounded to two significant digits.
 
 use crate::error::{Error, ErrorKind};
-use crate::fast;
 use crate::field::Q;
 use crate::mechanics::Motion;
 use crate::number::WordRatio;
 use crate::scene::{Scene, SceneInput};
+use crate::solve::{self, Route, Why};
 use crate::units::{Dimension, parse_si};
 use num_traits::{Signed, Zero};
 use rayon::prelude::*;
@@ -45,10 +45,27 @@ pub const FLOAT_TOLERANCE: f64 = 1e-9;
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Backend {
-    /// Exact rationals ([`fast::solve`]): claims agree only when exactly equal.
+    /// Exact rationals by [`Route::FractionFree`]: claims agree only when exactly equal.
     Exact,
-    /// The closed form in f64: claims agree within [`FLOAT_TOLERANCE`]; laws not decided.
+    /// The naive closed form in f64 ([`Route::ClosedForm`], the paper's formulas as a float
+    /// code would write them): claims agree within [`FLOAT_TOLERANCE`]; laws not decided.
     F64,
+}
+
+impl Backend {
+    /// The route the backend solves by.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{batch::Backend, solve::Route};
+    /// assert_eq!(Backend::F64.route(), Route::ClosedForm);
+    /// ```
+    pub fn route(self) -> Route {
+        match self {
+            Backend::Exact => Route::FractionFree,
+            Backend::F64 => Route::ClosedForm,
+        }
+    }
 }
 
 const SCENE_COLUMNS: [&str; 8] = ["m", "M", "l", "a", "v0", "rod", "e", "pivot"];
@@ -264,16 +281,16 @@ impl Batch {
         out.push_str(line);
         let (exact, laws_held) = match self.backend {
             Backend::Exact => {
-                let solved = fast::solve(&scene);
-                let m = solved.after;
-                for value in [&m.v, &m.rod_v, &m.omega] {
+                let solved = solve::with::<Q>(&scene, self.backend.route())
+                    .expect("the fraction-free route takes every scene in Q");
+                for value in solved.after.iter() {
                     out.push(',');
-                    crate::number::write_exact(&mut out, value);
+                    crate::field::decimal::write_exact(&mut out, value);
                 }
-                ([m.v, m.rod_v, m.omega], Some(solved.laws_hold))
+                (solved.after.into_array(), solved.laws_hold)
             }
             Backend::F64 => {
-                let (exact, texts) = float_values(&scene);
+                let (exact, texts) = float_values(&scene, self.backend.route());
                 for t in &texts {
                     out.push(',');
                     out.push_str(t);
@@ -295,7 +312,7 @@ impl Batch {
             let verdict = compare(k, claim, &exact[k], self.backend);
             out.push_str(if verdict.ok { ",true," } else { ",false," });
             out.push_str(&match &verdict.rel_error {
-                Some(r) => crate::number::decimal(r, 3),
+                Some(r) => crate::field::decimal::decimal(r, 3),
                 None => "inf".to_string(),
             });
             verdicts.push(verdict);
@@ -310,16 +327,20 @@ impl Batch {
     }
 }
 
-/// v, V, omega by the closed form in f64, as exact dyadic rationals and shortest round-trip text
-/// (a zero is written `0.0`, whatever its sign: `-0.0` only says which way the float rounded).
-fn float_values(scene: &crate::scene::Scene) -> ([Q; 3], [String; 3]) {
-    let nan = Motion {
-        v: f64::NAN,
-        rod_v: f64::NAN,
-        omega: f64::NAN,
-    };
-    let m = crate::solve::closed_form(&scene.params::<f64>()).unwrap_or(nan);
-    let xs = [m.v, m.rod_v, m.omega];
+/// v, V, omega by `route` in f64 (NaN where the system underflowed to a singular one), as exact
+/// dyadic rationals and shortest round-trip text (a zero is written `0.0`, whatever its sign:
+/// `-0.0` only says which way the float rounded).
+fn float_values(scene: &Scene, route: Route) -> ([Q; 3], [String; 3]) {
+    let xs = match solve::with::<f64>(scene, route) {
+        Ok(solved) => solved.after,
+        Err(e) if e.why == Why::Singular => Motion {
+            v: f64::NAN,
+            rod_v: f64::NAN,
+            omega: f64::NAN,
+        },
+        Err(e) => unreachable!("{e}: the batch's f64 route takes every scene"),
+    }
+    .into_array();
     let exact = xs.map(|x| Q::from_float(x).unwrap_or_else(Q::zero));
     let text = |x: f64| {
         if x == 0.0 {
@@ -520,7 +541,7 @@ impl Summary {
                 continue;
             }
             let max = match &s.max {
-                Some(Some(r)) => crate::number::decimal(r, 3),
+                Some(Some(r)) => crate::field::decimal::decimal(r, 3),
                 _ => "inf".to_string(),
             };
             out.push_str(&format!(

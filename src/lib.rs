@@ -13,7 +13,7 @@
 //! in named symbols ([`field::RatFn`]).
 //!
 //! ```
-//! use rodimpact::{scene::Scene, solve::solve, optimum::optimum, field::{q, Q}};
+//! use rodimpact::{scene::Scene, solve::linear::solve, optimum::optimum, field::{q, Q}};
 //! // The paper's example: M = m, uniform rod of half-length 1, hit at the end.
 //! let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 1)).build()?;
 //! let out = solve(&scene.params::<Q>()).expect("nonsingular");
@@ -30,9 +30,7 @@ pub mod claims;
 pub mod contact;
 pub mod echo;
 pub mod error;
-pub mod fast;
 pub mod field;
-pub mod float;
 pub mod mechanics;
 pub mod number;
 pub mod optimum;

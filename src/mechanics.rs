@@ -21,6 +21,91 @@ pub struct Motion<F> {
     pub omega: F,
 }
 
+impl<F> Motion<F> {
+    /// The names of the three velocities, in the order of [`Motion::iter`]: `v`, `V`, `omega`
+    /// (the keys of docs/conventions.md).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::mechanics::Motion;
+    /// assert_eq!(Motion::<f64>::NAMES, ["v", "V", "omega"]);
+    /// ```
+    pub const NAMES: [&'static str; 3] = ["v", "V", "omega"];
+
+    /// The three velocities by reference, in the order v, V, omega.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::mechanics::Motion;
+    /// let m = Motion { v: 1, rod_v: 2, omega: 3 };
+    /// assert_eq!(m.iter().sum::<i32>(), 6);
+    /// ```
+    pub fn iter(&self) -> impl Iterator<Item = &F> {
+        [&self.v, &self.rod_v, &self.omega].into_iter()
+    }
+
+    /// The three velocities as an array `[v, V, omega]`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::mechanics::Motion;
+    /// assert_eq!(Motion { v: 1, rod_v: 2, omega: 3 }.into_array(), [1, 2, 3]);
+    /// ```
+    pub fn into_array(self) -> [F; 3] {
+        [self.v, self.rod_v, self.omega]
+    }
+
+    /// `f` applied to each velocity.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::mechanics::Motion;
+    /// let m = Motion { v: 1.5f32, rod_v: -2.0, omega: 0.25 };
+    /// assert_eq!(m.map(f64::from), Motion { v: 1.5f64, rod_v: -2.0, omega: 0.25 });
+    /// ```
+    pub fn map<G>(self, mut f: impl FnMut(F) -> G) -> Motion<G> {
+        Motion {
+            v: f(self.v),
+            rod_v: f(self.rod_v),
+            omega: f(self.omega),
+        }
+    }
+
+    /// The velocities of `self` and `other` paired, component by component.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::mechanics::Motion;
+    /// let a = Motion { v: 1, rod_v: 2, omega: 3 };
+    /// let b = Motion { v: 10, rod_v: 20, omega: 30 };
+    /// assert_eq!(a.zip(b).map(|(x, y)| x + y), Motion { v: 11, rod_v: 22, omega: 33 });
+    /// ```
+    pub fn zip<G>(self, other: Motion<G>) -> Motion<(F, G)> {
+        Motion {
+            v: (self.v, other.v),
+            rod_v: (self.rod_v, other.rod_v),
+            omega: (self.omega, other.omega),
+        }
+    }
+
+    /// The velocities by reference, as a motion of references (to `map` or `zip` without
+    /// moving them).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::mechanics::Motion;
+    /// let m = Motion { v: 1, rod_v: 2, omega: 3 };
+    /// assert_eq!(m.as_ref().map(|x| x * 2), Motion { v: 2, rod_v: 4, omega: 6 });
+    /// ```
+    pub fn as_ref(&self) -> Motion<&F> {
+        Motion {
+            v: &self.v,
+            rod_v: &self.rod_v,
+            omega: &self.omega,
+        }
+    }
+}
+
 impl<F: Field> Motion<F> {
     /// The motion before the impact: projectile at `v0`, rod at rest.
     ///

@@ -8,7 +8,7 @@
 
 use crate::field::{Field, Q, QSqrt, RatFn};
 use crate::scene::{Params, Scene, Support};
-use crate::solve::solve;
+use crate::solve::linear::solve;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
@@ -259,7 +259,7 @@ fn struck_arm(a: &Q, p: &Q, l: &Q) -> Q {
 mod tests {
     use super::*;
     use crate::field::{Field, q};
-    use crate::solve::solve;
+    use crate::solve::linear::solve;
 
     fn scene(m: Q, big_m: Q) -> crate::scene::SceneBuilder {
         Scene::builder(m, big_m)

@@ -7,8 +7,8 @@ mod common;
 
 use common::rodimpact;
 use num_traits::Zero;
-use rodimpact::float::Formula;
 use rodimpact::report::backend_values;
+use rodimpact::solve::float::Formula;
 use rodimpact::stability::{Backend, Reference, in_range, suite, sweep};
 use serde_json::Value;
 

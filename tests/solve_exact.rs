@@ -8,7 +8,7 @@ use num_traits::{Signed, Zero};
 use proptest::prelude::*;
 use rodimpact::field::Q;
 use rodimpact::scene::Support;
-use rodimpact::solve::{closed_form, solve};
+use rodimpact::solve::{closed_form::closed_form, linear::solve};
 
 /// (scene, v, V, omega, pivot impulse or "-", energy lost), each worked by hand.
 const CASES: &[(&str, &str, &str, &str, &str, &str)] = &[

@@ -7,9 +7,9 @@ mod common;
 use num_traits::Zero;
 use proptest::prelude::*;
 use rodimpact::field::{Field, Interval, Q};
-use rodimpact::float::{Formula, Real};
 use rodimpact::mechanics::Motion;
-use rodimpact::solve::closed_form;
+use rodimpact::solve::closed_form::closed_form;
+use rodimpact::solve::float::{Formula, Real};
 use rodimpact::stability::{Backend, Case, Class, Measured, Reference, in_range, suite, sweep};
 
 /// Asserts the goals of docs/stability.md for a stable formula on `cases` in range for `T`:

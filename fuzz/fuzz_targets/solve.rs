@@ -5,10 +5,10 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use rodimpact::fast;
+use rodimpact::solve::fraction_free;
 use rodimpact::field::Q;
 use rodimpact::scene::{RodInertia, Scene};
-use rodimpact::solve::solve;
+use rodimpact::solve::linear::solve;
 
 /// Reads rationals out of the fuzzer's bytes (zero when they run out).
 struct Bytes<'a>(&'a [u8]);
@@ -58,7 +58,7 @@ fuzz_target!(|data: &[u8]| {
     let Ok(scene) = builder.build() else { return };
     let out = solve(&scene.params::<Q>()).expect("a valid scene is nonsingular");
     assert!(out.residuals.all_zero(), "{scene:?}: {:?}", out.residuals);
-    let fast = fast::solve(&scene);
+    let fast = fraction_free::solve(&scene);
     assert_eq!(fast.after, out.after, "{scene:?}");
     assert!(fast.laws_hold, "{scene:?}");
 });

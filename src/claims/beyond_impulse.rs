@@ -13,7 +13,7 @@ use super::{
 use crate::field::ratfunc::Point;
 use crate::field::{RatFn, Sym};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
-use crate::solve::impulse_equations;
+use crate::solve::linear::impulse_equations;
 use num_traits::Zero;
 
 /// The registered claims of this part.

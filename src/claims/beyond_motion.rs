@@ -7,7 +7,7 @@ use super::{Certificate, Claim, Decision, Entry, Formula, Group, Paper, PosExpr,
 use crate::field::RatFn;
 use crate::field::ratfunc::Point;
 use crate::mechanics::{Motion, angular_momentum};
-use crate::solve::solve_linear;
+use crate::solve::linear::solve_linear;
 
 /// The registered claims of this part.
 pub(super) const ENTRIES: &[Entry] = &[

@@ -4,7 +4,8 @@
 use crate::field::{Field, Q, QSqrt, RatFn, Sym};
 use crate::mechanics::Motion;
 use crate::scene::{Params, Support};
-use crate::solve::{Outcome, solve};
+use crate::solve::Outcome;
+use crate::solve::linear::solve;
 use num_traits::One;
 
 /// A symbol as a rational function.

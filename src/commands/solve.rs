@@ -2,8 +2,8 @@
 
 use super::{Failure, SceneFlags, parse_digits, print_out};
 use clap::{Args, ValueEnum};
-use rodimpact::float::Formula;
 use rodimpact::report::{Solution, backend_values};
+use rodimpact::solve::float::Formula;
 use rodimpact::stability::Backend;
 use serde_json::Value;
 
@@ -12,11 +12,12 @@ use serde_json::Value;
 pub(crate) enum BackendArg {
     /// Exact rationals (the default).
     Exact,
-    /// IEEE binary64 with the stable formula, measured against the exact answer.
+    /// IEEE binary64 with the stable formula (route float/sq), measured against the exact answer.
     F64,
-    /// IEEE binary32 with the stable formula, measured against the exact answer.
+    /// IEEE binary32 with the stable formula (route float/sq), measured against the exact answer.
     F32,
-    /// Outward-rounded f64 intervals, checked to enclose the exact answer.
+    /// Outward-rounded f64 intervals through the closed form, checked to enclose the exact
+    /// answer.
     Interval,
 }
 
@@ -38,8 +39,8 @@ impl BackendArg {
     fn backend(self) -> Backend {
         match self {
             BackendArg::Exact => Backend::Exact,
-            BackendArg::F64 => Backend::F64(Formula::DEFAULT),
-            BackendArg::F32 => Backend::F32(Formula::DEFAULT),
+            BackendArg::F64 => Backend::F64(Formula::Sq),
+            BackendArg::F32 => Backend::F32(Formula::Sq),
             BackendArg::Interval => Backend::Interval,
         }
     }

@@ -35,7 +35,8 @@ pub use sweep::{Slopes, SweepRow, fit_slope, sweep_k};
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q};
 use crate::scene::{Scene, Support};
-use crate::solve::{Outcome, solve};
+use crate::solve::Outcome;
+use crate::solve::linear::solve;
 
 /// Which contact geometry the simulation uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -20,7 +20,9 @@ use std::cmp::Ordering;
 use std::fmt::{Debug, Display};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+pub mod decimal;
 mod float;
+pub mod int;
 mod interval;
 pub mod laws;
 pub mod notation;

@@ -12,8 +12,8 @@
 //! `d`s describe the same field exactly when `d1*d2` is a square, and the larger is then
 //! rewritten over the smaller.
 
+use super::decimal;
 use super::{Field, Q, TrySqrt};
-use crate::number;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -336,7 +336,7 @@ impl QSqrt {
     /// Rational bounds `lo <= self <= hi` with `hi - lo <= 10^-digits * |self|`;
     /// `lo == hi == self` when `self` is rational.
     ///
-    /// Built from [`number::sqrt_bounds`] of `d`, with guard digits doubled until the
+    /// Built from [`decimal::sqrt_bounds`] of `d`, with guard digits doubled until the
     /// cancellation in `x + y*sqrt(d)` is covered.
     ///
     /// # Examples
@@ -351,7 +351,7 @@ impl QSqrt {
         };
         let mut guard = 4;
         loop {
-            let (s_lo, s_hi) = number::sqrt_bounds(d, digits + guard);
+            let (s_lo, s_hi) = decimal::sqrt_bounds(d, digits + guard);
             let (y_lo, y_hi) = if self.y.is_positive() {
                 (&self.y * s_lo, &self.y * s_hi)
             } else {
@@ -372,7 +372,7 @@ impl QSqrt {
     }
 
     /// The value correctly rounded to `digits` significant digits, formatted as
-    /// [`number::decimal`] does (bounds refined until both round alike).
+    /// [`decimal::decimal`] does (bounds refined until both round alike).
     ///
     /// # Examples
     /// ```
@@ -382,12 +382,12 @@ impl QSqrt {
     /// ```
     pub fn decimal(&self, digits: usize) -> String {
         if self.radicand().is_none() {
-            return number::decimal(&self.x, digits);
+            return decimal::decimal(&self.x, digits);
         }
         let mut guard = 4;
         loop {
             let (lo, hi) = self.bounds(digits + guard);
-            let (a, b) = (number::decimal(&lo, digits), number::decimal(&hi, digits));
+            let (a, b) = (decimal::decimal(&lo, digits), decimal::decimal(&hi, digits));
             if a == b {
                 return a;
             }

@@ -4,11 +4,12 @@
 //! `docs/stability.md` explains the condition numbers and what `reliable` promises.
 
 use crate::error::{Error, ErrorKind};
+use crate::field::decimal;
 use crate::field::{Interval, Q};
-use crate::float::Real;
-use crate::number;
+use crate::mechanics::Motion;
 use crate::scene::Scene;
-use crate::solve::closed_form;
+use crate::solve::float::Real;
+use crate::solve::{self, Solvable};
 use crate::stability::{Backend, Class, Measured, Reference};
 use num_traits::Zero;
 use serde_json::{Map, Value, json};
@@ -19,7 +20,7 @@ use serde_json::{Map, Value, json};
 /// # Examples
 /// ```
 /// use rodimpact::{report::{ERROR_BOUND, backend_values}, scene::Scene, field::q};
-/// use rodimpact::{float::Formula, stability::Backend};
+/// use rodimpact::{solve::float::Formula, stability::Backend};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let j = backend_values(&s, Backend::F64(Formula::Sq))?;
 /// // omega = 12/11: error 7.40e-17 <= 4 cond u, cond = 2.91.
@@ -30,9 +31,9 @@ use serde_json::{Map, Value, json};
 /// ```
 pub const ERROR_BOUND: u32 = 4;
 
-/// The `v`, `V`, `omega` entries of `scene` solved in `backend` (`solve --backend` passes the
-/// library's stable formula, [`crate::float::Formula::DEFAULT`], evaluated from the exact
-/// inputs by [`crate::float::Formula::eval_scene`]; the interval runs the closed form).
+/// The `v`, `V`, `omega` entries of `scene` solved in `backend` by its route
+/// ([`Backend::route`]: `solve --backend` passes the stable formula, route `float/sq`, evaluated
+/// from the exact inputs; the interval runs the closed form).
 ///
 /// A float value is `reliable` only when all of these hold: every input (m, M, I, a, v0, e)
 /// is 0 or a normal number of the format; the exact value is 0 or a normal number of the
@@ -46,7 +47,7 @@ pub const ERROR_BOUND: u32 = 4;
 /// # Examples
 /// ```
 /// use rodimpact::{report::backend_values, scene::Scene, field::q, stability::Backend};
-/// use rodimpact::float::Formula;
+/// use rodimpact::solve::float::Formula;
 /// let s = Scene::builder(q(4, 7), q(1, 1)).a(q(1, 2)).build()?; // v = 0 exactly
 /// let j = backend_values(&s, Backend::F64(Formula::Sq))?;
 /// assert_eq!(j["v"]["exact"], "0");
@@ -77,20 +78,21 @@ pub fn backend_values(scene: &Scene, backend: Backend) -> Result<Map<String, Val
             "the float backends cover the free rod; drop --pivot or use --backend exact",
         ));
     };
-    let names = ["v", "V", "omega"];
     let exact = &reference.motion;
-    let exacts = [&exact.v, &exact.rod_v, &exact.omega];
+    let names = Motion::<Q>::NAMES;
     let mut out = Map::new();
     if backend == Backend::Interval {
-        let x = closed_form(&scene.params::<Interval>()).expect("a free rod's closed form");
-        for (i, x) in [x.v, x.rod_v, x.omega].iter().enumerate() {
+        let x = solve::with::<Interval>(scene, backend.route())
+            .expect("the closed form takes a free rod in intervals")
+            .after;
+        for (name, (x, exact)) in names.iter().zip(x.iter().zip(exact.iter())) {
             out.insert(
-                names[i].into(),
+                name.to_string(),
                 json!({
                     "lower": x.lower().shortest(),
                     "upper": x.upper().shortest(),
-                    "exact": exacts[i].to_string(),
-                    "encloses": x.contains(exacts[i]),
+                    "exact": exact.to_string(),
+                    "encloses": x.contains(exact),
                 }),
             );
         }
@@ -99,35 +101,34 @@ pub fn backend_values(scene: &Scene, backend: Backend) -> Result<Map<String, Val
     let (measured, _) = backend
         .measure(scene, &reference)
         .expect("a free rod is measured");
-    let floats: [String; 3] = match backend {
-        Backend::F32(f) => motion_strings(f.eval_scene::<f32>(scene)),
-        Backend::F64(f) => motion_strings(f.eval_scene::<f64>(scene)),
+    let floats = match backend {
+        Backend::F32(_) => shortest::<f32>(scene, backend),
+        Backend::F64(_) => shortest::<f64>(scene, backend),
         Backend::Interval | Backend::Exact => unreachable!("handled above"),
     };
     let cond = backend.condition(&reference);
-    let conds = [&cond.v, &cond.rod_v, &cond.omega];
-    let measures = [&measured.v, &measured.rod_v, &measured.omega];
     let inputs = unrepresentable_inputs(backend, &reference);
-    for i in 0..3 {
-        let text = |x: Option<&Q>| x.map_or("inf".to_string(), |x| number::decimal(x, 3));
+    let rows = floats.zip(exact.as_ref().zip(measured.zip(cond)));
+    for (name, (float, (exact, (measured, cond)))) in names.iter().zip(rows.into_array()) {
+        let text = |x: Option<&Q>| x.map_or("inf".to_string(), |x| decimal::decimal(x, 3));
         let mut doubts = inputs.clone();
         doubts.extend(doubts_about_output(
             backend,
-            exacts[i],
-            measures[i],
-            conds[i].as_ref(),
+            exact,
+            &measured,
+            cond.as_ref(),
         ));
         let mut entry = json!({
-            "float": floats[i],
-            "exact": exacts[i].to_string(),
-            "rel_error": text(measures[i].rel_error.as_ref()),
-            "cond": text(conds[i].as_ref()),
+            "float": float,
+            "exact": exact.to_string(),
+            "rel_error": text(measured.rel_error.as_ref()),
+            "cond": text(cond.as_ref()),
             "reliable": doubts.is_empty(),
         });
         if !doubts.is_empty() {
             entry["because"] = Value::String(doubts.join("; "));
         }
-        out.insert(names[i].into(), entry);
+        out.insert(name.to_string(), entry);
     }
     Ok(out)
 }
@@ -167,7 +168,7 @@ fn unrepresentable_inputs(backend: Backend, reference: &Reference) -> Vec<String
         .iter()
         .filter_map(|(name, x)| {
             let (format, verdict) = fit(backend, x);
-            verdict.map(|v| format!("input {name} = {} {v} {format}", number::decimal(x, 3)))
+            verdict.map(|v| format!("input {name} = {} {v} {format}", decimal::decimal(x, 3)))
         })
         .collect()
 }
@@ -185,7 +186,7 @@ fn doubts_about_output(
     if let (format, Some(verdict)) = fit(backend, exact) {
         doubts.push(format!(
             "the exact value {} {verdict} {format}",
-            number::decimal(exact, 3)
+            decimal::decimal(exact, 3)
         ));
     }
     let u = backend.unit_roundoff();
@@ -196,7 +197,7 @@ fn doubts_about_output(
         ),
         Some(c) if !Measured::well_conditioned(Some(c), &u) => doubts.push(format!(
             "ill-conditioned: cond u = {} > 1e-3",
-            number::decimal(&(c * &u), 3)
+            decimal::decimal(&(c * &u), 3)
         )),
         Some(_) => {}
     }
@@ -210,8 +211,8 @@ fn doubts_about_output(
                 if *error > bound {
                     doubts.push(format!(
                         "error {} exceeds {ERROR_BOUND} cond u = {}",
-                        number::decimal(error, 3),
-                        number::decimal(&bound, 3)
+                        decimal::decimal(error, 3),
+                        decimal::decimal(&bound, 3)
                     ));
                 }
             }
@@ -221,7 +222,11 @@ fn doubts_about_output(
     doubts
 }
 
-fn motion_strings<T: Real>(x: Option<crate::mechanics::Motion<T>>) -> [String; 3] {
-    let x = x.expect("a free rod");
-    [x.v.shortest(), x.rod_v.shortest(), x.omega.shortest()]
+/// (v, V, omega) of a free-rod `scene` by the backend's float route, each as its shortest
+/// round-trip text.
+fn shortest<T: Solvable + Real>(scene: &Scene, backend: Backend) -> Motion<String> {
+    solve::with::<T>(scene, backend.route())
+        .expect("a float formula takes a free rod")
+        .after
+        .map(Real::shortest)
 }

@@ -33,7 +33,7 @@ pub use solution::Solution;
 pub use table::{Cell, Column, Format, Table, render_document};
 
 use crate::field::Q;
-use crate::number;
+use crate::field::decimal;
 use serde_json::{Value, json};
 
 /// The JSON value form of an exact number: `{"exact": "p/q", "decimal": "..."}`, the decimal
@@ -47,5 +47,5 @@ use serde_json::{Value, json};
 /// assert_eq!(v["decimal"], "-0.200");
 /// ```
 pub fn value_json(x: &Q, digits: usize) -> Value {
-    json!({ "exact": x.to_string(), "decimal": number::decimal(x, digits) })
+    json!({ "exact": x.to_string(), "decimal": decimal::decimal(x, digits) })
 }

@@ -9,7 +9,8 @@ use crate::field::notation::{self, Notation};
 use crate::field::{Q, QSqrt, q};
 use crate::optimum::{Placement, optimum};
 use crate::scene::{Params, RodInertia, Scene};
-use crate::solve::{Outcome, solve};
+use crate::solve::Outcome;
+use crate::solve::linear::solve;
 use num_traits::{One, Zero};
 
 /// The choices a user can make for the tables.

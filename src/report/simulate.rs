@@ -8,7 +8,7 @@ use crate::contact::{
     stability_limit,
 };
 use crate::field::Q;
-use crate::number;
+use crate::field::decimal;
 use serde_json::{Value, json};
 
 /// Significant digits of the decimals beside the exact values.
@@ -405,7 +405,7 @@ fn exact_block(contact: &Contact) -> String {
     let w2 = exacts.iter().map(|s| s.chars().count()).max().unwrap_or(0);
     let mut out = String::from("Exact impulsive values (the exact solver)\n");
     for ((symbol, meaning, value), text) in rows.iter().zip(&exacts) {
-        let decimal = number::decimal(value, DIGITS);
+        let decimal = decimal::decimal(value, DIGITS);
         let beside = if &decimal == text {
             String::new()
         } else {

@@ -2,11 +2,11 @@
 //! and an aligned text report.
 
 use super::value_json;
+use crate::field::decimal::{self, Rounding};
 use crate::field::{Q, QSqrt};
-use crate::number::{self, Rounding};
 use crate::optimum::{Argmax, Optimum, PaperForm, Placement, optimum};
 use crate::scene::{RodInertia, Scene, Support};
-use crate::solve::{Outcome, solve};
+use crate::solve::{self, Outcome, Route};
 use num_traits::{One, Zero};
 use serde_json::{Map, Value, json};
 
@@ -22,7 +22,8 @@ pub struct Solution {
 }
 
 impl Solution {
-    /// Solves `scene` over Q and computes its optimum.
+    /// Solves `scene` over Q by the fraction-free route ([`Route::FractionFree`]: the laws
+    /// checked as integer identities, one reduction per output) and computes its optimum.
     ///
     /// # Examples
     /// ```
@@ -31,8 +32,9 @@ impl Solution {
     /// assert_eq!(s.outcome.after.omega, q(6, 5));
     /// ```
     pub fn of(scene: &Scene) -> Solution {
-        let outcome = solve(&scene.params::<Q>())
-            .expect("a valid scene has a nonzero determinant -(mI + MI + Mma^2) over Q");
+        let outcome = solve::with::<Q>(scene, Route::FractionFree)
+            .expect("the fraction-free route takes every scene in Q")
+            .outcome(&scene.params());
         Solution {
             scene: scene.clone(),
             outcome,
@@ -87,15 +89,15 @@ impl Solution {
         let o = &self.optimum;
         // Bounds one digit tighter than asked, printed outward with two more digits, so the
         // printed interval still encloses a* and is at most 10^-digits a* wide.
-        let (lower, upper) = number::sqrt_bounds(&o.squared, digits + 1);
+        let (lower, upper) = decimal::sqrt_bounds(&o.squared, digits + 1);
         out.insert(
             "a_star".into(),
             json!({
                 "squared": o.squared.to_string(),
-                "exact": number::surd(&o.squared),
-                "decimal": number::decimal_sqrt(&o.squared, decimal_digits),
-                "lower": number::decimal_rounded(&lower, digits + 2, Rounding::Floor),
-                "upper": number::decimal_rounded(&upper, digits + 2, Rounding::Ceiling),
+                "exact": decimal::surd(&o.squared),
+                "decimal": decimal::decimal_sqrt(&o.squared, decimal_digits),
+                "lower": decimal::decimal_rounded(&lower, digits + 2, Rounding::Floor),
+                "upper": decimal::decimal_rounded(&upper, digits + 2, Rounding::Ceiling),
                 "within_rod": o.within_rod,
                 "placement": o.placement.as_str(),
                 "threshold_M": o.threshold_mass.as_ref().map(|t| t.to_string()),
@@ -139,15 +141,15 @@ impl Solution {
         let mut t = Table::default();
         let mut out = String::new();
         out.push_str(&format!("Scene: {}\n", describe(s)));
-        let length = |x: &Q| format!("{} m", number::compact(x));
+        let length = |x: &Q| format!("{} m", decimal::compact(x));
         out.push_str(&format!(
             "  m = {} kg, M = {} kg, l = {} (rod length {}), a = {}, v0 = {} m/s\n",
-            number::compact(s.m()),
-            number::compact(s.rod_mass()),
+            decimal::compact(s.m()),
+            decimal::compact(s.rod_mass()),
             length(s.half_length()),
             length(&(s.half_length() * Q::from_integer(2.into()))),
             length(s.a()),
-            number::compact(s.v0())
+            decimal::compact(s.v0())
         ));
         out.push_str("  (SI units; a number given without a unit is read in SI)\n\n");
         let value = |x: &Q, unit: &str| rational_cells(x, unit, digits);
@@ -199,8 +201,8 @@ impl Solution {
             star,
             "optimal distance",
             cells(
-                number::surd(&o.squared),
-                number::decimal_sqrt(&o.squared, digits),
+                decimal::surd(&o.squared),
+                decimal::decimal_sqrt(&o.squared, digits),
                 "m",
             ),
         );
@@ -253,9 +255,9 @@ fn on_the_rod_when(s: &Scene, threshold: Option<&Q>) -> String {
         if k.is_one() {
             "m".to_string()
         } else if k.is_integer() {
-            format!("{}m", number::compact(k))
+            format!("{}m", decimal::compact(k))
         } else {
-            format!("({})m", number::compact(k))
+            format!("({})m", decimal::compact(k))
         }
     };
     format!(
@@ -267,8 +269,8 @@ fn on_the_rod_when(s: &Scene, threshold: Option<&Q>) -> String {
 
 /// The exact and decimal cells of a rational with its unit.
 fn rational_cells(x: &Q, unit: &str, digits: usize) -> [String; 2] {
-    let decimal = number::decimal(x, digits);
-    match number::compact(x) {
+    let decimal = decimal::decimal(x, digits);
+    match decimal::compact(x) {
         c if c.starts_with('≈') => cells(x.to_string(), decimal, unit),
         c => cells(c, decimal, unit),
     }
@@ -282,7 +284,7 @@ fn cells(exact: String, decimal: String, unit: &str) -> [String; 2] {
     } else {
         format!(" {unit}")
     };
-    if exact.chars().count() > number::COMPACT_CHARS {
+    if exact.chars().count() > decimal::COMPACT_CHARS {
         [format!("≈ {decimal}{unit}"), String::new()]
     } else if exact == decimal {
         [format!("{exact}{unit}"), String::new()]
@@ -328,14 +330,14 @@ pub(super) fn scene_json(s: &Scene) -> Value {
 pub(super) fn describe(s: &Scene) -> String {
     let support = match s.support() {
         Support::Free => "free rod on a frictionless table".to_string(),
-        Support::Pivot(p) => format!("rod on a fixed pivot at p = {} m", number::compact(p)),
+        Support::Pivot(p) => format!("rod on a fixed pivot at p = {} m", decimal::compact(p)),
     };
     let rod = match s.rod() {
         RodInertia::Uniform => "uniform rod, I = M l^2/3".to_string(),
         RodInertia::Dumbbell => "dumbbell, I = M l^2".to_string(),
         RodInertia::Gyration(r) => format!(
             "radius of gyration r_G = {} m, I = M r_G^2",
-            number::compact(r)
+            decimal::compact(r)
         ),
         RodInertia::Moment(_) => "given moment of inertia".to_string(),
     };
@@ -348,7 +350,7 @@ pub(super) fn describe(s: &Scene) -> String {
     };
     format!(
         "{support}; {rod} = {} kg m^2; {law}",
-        number::compact(&s.inertia())
+        decimal::compact(&s.inertia())
     )
 }
 

@@ -8,9 +8,9 @@
 //! text with `$…$` math.
 
 use super::markup;
+use crate::field::decimal;
 use crate::field::notation::{self, Notation};
 use crate::field::{Q, QSqrt};
-use crate::number;
 use std::fmt::Write as _;
 
 /// Output format of a table.
@@ -130,7 +130,7 @@ impl Cell {
     /// ```
     pub fn decimal(&self, digits: usize) -> Option<String> {
         match self {
-            Cell::Rational(x) => Some(number::decimal(x, digits)),
+            Cell::Rational(x) => Some(decimal::decimal(x, digits)),
             Cell::Surd(x) => Some(x.decimal(digits)),
             Cell::Text(_) | Cell::Absent => None,
         }

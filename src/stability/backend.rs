@@ -1,24 +1,25 @@
 //! The backends compared by the stability report: f64 and f32 with each [`Formula`], the
-//! outward-rounded interval, and exact rationals; each evaluated and measured on one scene.
+//! outward-rounded interval, and exact rationals; each evaluated and measured on one scene,
+//! each through its named [`Route`].
 
 use super::{Measured, condition};
 use crate::field::{Field, Interval, Q};
-use crate::float::{Formula, Real};
 use crate::mechanics::Motion;
 use crate::scene::{Params, Scene, Support};
-use crate::solve::closed_form;
+use crate::solve::float::{Formula, Real};
+use crate::solve::{self, Route};
 use num_traits::Zero;
 
 /// A number format and the formula evaluated in it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Backend {
-    /// IEEE binary64.
+    /// IEEE binary64, by [`Route::Float`].
     F64(Formula),
-    /// IEEE binary32.
+    /// IEEE binary32, by [`Route::Float`].
     F32(Formula),
-    /// Outward-rounded f64 intervals through the closed form.
+    /// Outward-rounded f64 intervals, by [`Route::ClosedForm`].
     Interval,
-    /// Exact rationals through the closed form (the reference).
+    /// Exact rationals, by [`Route::ClosedForm`] (the reference).
     Exact,
 }
 
@@ -46,7 +47,7 @@ impl Reference {
         if params.support != Support::Free {
             return None;
         }
-        let motion = closed_form(&params)?;
+        let motion = solve::with::<Q>(scene, Backend::Exact.route()).ok()?.after;
         Some(Reference { motion, params })
     }
 }
@@ -64,11 +65,26 @@ impl Backend {
         Backend::Exact,
     ];
 
+    /// The route the backend computes by: the float formula, or the closed form.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{solve::{float::Formula, Route}, stability::Backend};
+    /// assert_eq!(Backend::F32(Formula::Scomp).route(), Route::Float(Formula::Scomp));
+    /// assert_eq!(Backend::Interval.route(), Route::ClosedForm);
+    /// ```
+    pub fn route(self) -> Route {
+        match self {
+            Backend::F64(formula) | Backend::F32(formula) => Route::Float(formula),
+            Backend::Interval | Backend::Exact => Route::ClosedForm,
+        }
+    }
+
     /// Name in reports: `f64/sq`, `f32/naive`, `interval`, `exact`.
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{float::Formula, stability::Backend};
+    /// use rodimpact::{solve::float::Formula, stability::Backend};
     /// assert_eq!(Backend::F64(Formula::Sq).name(), "f64/sq");
     /// ```
     pub fn name(self) -> String {
@@ -99,7 +115,7 @@ impl Backend {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{scene::Scene, field::q, stability::Backend, float::Formula};
+    /// use rodimpact::{scene::Scene, field::q, stability::Backend, solve::float::Formula};
     /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).e(q(1, 10)).build()?;
     /// let r = rodimpact::stability::Reference::of(&s).unwrap();
     /// let with_e = Backend::F64(Formula::Sq).condition(&r).rod_v.unwrap();
@@ -124,7 +140,7 @@ impl Backend {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{scene::Scene, field::q, stability::{Backend, Reference}, float::Formula};
+    /// use rodimpact::{scene::Scene, field::q, stability::{Backend, Reference}, solve::float::Formula};
     /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
     /// let r = Reference::of(&s).unwrap();
     /// let (m, encloses) = Backend::F64(Formula::Sq).measure(&s, &r).unwrap();
@@ -135,43 +151,38 @@ impl Backend {
     pub fn measure(self, scene: &Scene, reference: &Reference) -> Option<(Motion<Measured>, bool)> {
         let cond = self.condition(reference);
         let u = self.unit_roundoff();
-        let exact = &reference.motion;
-        let each = |measure: &dyn Fn(usize) -> Measured| Motion {
-            v: measure(0),
-            rod_v: measure(1),
-            omega: measure(2),
-        };
-        let exact_of = |i: usize| [&exact.v, &exact.rod_v, &exact.omega][i];
-        let cond_of = |i: usize| [&cond.v, &cond.rod_v, &cond.omega][i].as_ref();
-        let floats = |x: &Motion<f64>| {
-            let at = |i: usize| [x.v, x.rod_v, x.omega][i];
-            (
-                each(&|i| Measured::of(at(i), exact_of(i), cond_of(i), &u)),
-                true,
-            )
+        let exact = reference.motion.as_ref().zip(cond.as_ref());
+        let route = self.route();
+        let floats = |x: Motion<f64>| {
+            let measured = x.zip(exact.clone());
+            let measure = |(x, (exact, cond)): (f64, (&Q, &Option<Q>))| {
+                Measured::of(x, exact, cond.as_ref(), &u)
+            };
+            (measured.map(measure), true)
         };
         match self {
-            Backend::F64(formula) => Some(floats(&formula.eval_scene::<f64>(scene)?)),
-            Backend::F32(formula) => {
-                let x = formula.eval_scene::<f32>(scene)?;
-                // f32 -> f64 is exact, so the measurement is unchanged.
-                Some(floats(&Motion {
-                    v: f64::from(x.v),
-                    rod_v: f64::from(x.rod_v),
-                    omega: f64::from(x.omega),
-                }))
-            }
+            Backend::F64(_) => Some(floats(solve::with::<f64>(scene, route).ok()?.after)),
+            // f32 -> f64 is exact, so the measurement is unchanged.
+            Backend::F32(_) => Some(floats(
+                solve::with::<f32>(scene, route).ok()?.after.map(f64::from),
+            )),
             Backend::Interval => {
-                let x = closed_form(&scene.params::<Interval>())?;
-                let at = |i: usize| [&x.v, &x.rod_v, &x.omega][i];
-                let encloses = (0..3).all(|i| at(i).contains(exact_of(i)));
-                let measured = each(&|i| Measured::of_interval(at(i), exact_of(i), cond_of(i), &u));
+                let x = solve::with::<Interval>(scene, route).ok()?.after;
+                let encloses = x
+                    .iter()
+                    .zip(reference.motion.iter())
+                    .all(|(x, e)| x.contains(e));
+                let measured = x
+                    .zip(exact)
+                    .map(|(x, (exact, cond))| Measured::of_interval(&x, exact, cond.as_ref(), &u));
                 Some((measured, encloses))
             }
             Backend::Exact => {
-                let x = closed_form(&scene.params::<Q>())?;
-                let at = |i: usize| [&x.v, &x.rod_v, &x.omega][i];
-                Some((each(&|i| Measured::of_exact(at(i), exact_of(i))), true))
+                let x = solve::with::<Q>(scene, route).ok()?.after;
+                let measured = x
+                    .zip(exact)
+                    .map(|(x, (exact, _))| Measured::of_exact(&x, exact));
+                Some((measured, true))
             }
         }
     }

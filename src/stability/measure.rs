@@ -2,7 +2,7 @@
 //! with the exact answer for the same rational inputs.
 
 use crate::field::{Interval, Q};
-use crate::float::Real;
+use crate::solve::float::Real;
 use num_traits::{Signed, ToPrimitive, Zero};
 
 /// What a float output is, judged against the exact value.
@@ -39,7 +39,7 @@ impl Measured {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::q, float::Real, stability::{Class, Measured}};
+    /// use rodimpact::{field::q, solve::float::Real, stability::{Class, Measured}};
     /// let m = Measured::of(1.0f64 / 3.0, &q(1, 3), Some(&q(1, 1)), &<f64 as Real>::unit_roundoff());
     /// assert_eq!(m.class, Class::Number);
     /// assert!(m.ratio.unwrap() <= 1.0); // correctly rounded: at most u
@@ -57,7 +57,7 @@ impl Measured {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::{q, Field, Interval}, float::Real, stability::Measured};
+    /// use rodimpact::{field::{q, Field, Interval}, solve::float::Real, stability::Measured};
     /// let third = Interval::from_rational(&q(1, 3));
     /// let m = Measured::of_interval(&third, &q(1, 3), Some(&q(1, 1)), &<f64 as Real>::unit_roundoff());
     /// assert!(m.ratio.unwrap() <= 2.0); // one ulp wide

@@ -3,7 +3,7 @@
 
 use super::{Backend, Case, Class, Reference, in_range, median_nanos, suite, sweep};
 use crate::field::{Interval, Q};
-use crate::solve::closed_form;
+use crate::solve::closed_form::closed_form;
 use serde_json::{Value, json};
 
 /// One backend's line of the report.

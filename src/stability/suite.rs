@@ -2,8 +2,8 @@
 //! with exact rational inputs, and a seeded random sweep over many decades.
 
 use crate::field::Q;
-use crate::float::Real;
 use crate::scene::{Scene, SceneInput};
+use crate::solve::float::Real;
 use num_traits::{Signed, Zero};
 
 /// One scene of the suite or the sweep.

@@ -32,7 +32,8 @@ use crate::error::{Error, ErrorKind};
 use crate::field::{Field, QSqrt};
 use crate::optimum::optimum;
 use crate::scene::{Params, SceneInput};
-use crate::solve::{Outcome, solve};
+use crate::solve::Outcome;
+use crate::solve::linear::solve;
 use expr::{Budget, Radical};
 use units::{Dimension, Measured};
 pub use verdict::{Decision, Report, Verdict};
@@ -143,7 +144,7 @@ impl Quantity {
     /// # Examples
     /// ```
     /// use rodimpact::textbook::Quantity;
-    /// use rodimpact::{scene::Scene, solve::solve, field::{q, Q}};
+    /// use rodimpact::{scene::Scene, solve::linear::solve, field::{q, Q}};
     /// let p = Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>();
     /// let out = solve(&p).unwrap();
     /// assert_eq!(Quantity::VCm.motion_value(&p, &out).unwrap(), Some(q(1, 2)));
@@ -368,13 +369,13 @@ impl Exact {
     /// ```
     pub fn decimal(&self, digits: usize) -> String {
         match self {
-            Exact::Rational(x) => crate::number::decimal(x, digits),
+            Exact::Rational(x) => crate::field::decimal::decimal(x, digits),
             Exact::Surd(s) => s.decimal(digits),
         }
     }
 
     /// For a text report: the exact form, or a decimal when the fraction is very long
-    /// ([`crate::number::compact`]).
+    /// ([`crate::field::decimal::compact`]).
     ///
     /// # Examples
     /// ```
@@ -383,10 +384,10 @@ impl Exact {
     /// ```
     pub fn compact(&self) -> String {
         match self {
-            Exact::Rational(x) => crate::number::compact(x),
+            Exact::Rational(x) => crate::field::decimal::compact(x),
             Exact::Surd(s) => {
                 let text = s.to_string();
-                if text.chars().count() <= crate::number::COMPACT_CHARS {
+                if text.chars().count() <= crate::field::decimal::COMPACT_CHARS {
                     text
                 } else {
                     format!("≈ {}", s.decimal(6))

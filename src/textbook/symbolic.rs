@@ -18,7 +18,7 @@ use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Poly, Q, RatFn, Sym};
 use crate::optimum::a_star_squared;
 use crate::scene::{Params, RodInertia, SceneInput, Support, dimension_of};
-use crate::solve::solve;
+use crate::solve::linear::solve;
 use crate::units::Dimension;
 use num_traits::{One, Signed};
 use std::collections::{BTreeMap, BTreeSet};

@@ -4,8 +4,8 @@
 use super::sigfig::{Precision, Printed, Tie, magnitude, pow10, round_at, round_sig};
 use super::units::{Measured, Scale, pi_bounds};
 use super::{Claim, ClaimValue, Exact, Quantity};
+use crate::field::decimal;
 use crate::field::{Field, Q, QSqrt};
-use crate::number;
 use num_traits::{Signed, Zero};
 use serde_json::{Value, json};
 use std::cmp::Ordering;
@@ -143,7 +143,7 @@ fn plain(x: &Q, figures: u32) -> String {
     }
     let rounded = round_sig(x, figures, Tie::Up);
     let digits = (magnitude(&rounded) + 1).max(i64::from(figures));
-    let text = number::decimal(&rounded, usize::try_from(digits).unwrap_or(1));
+    let text = decimal::decimal(&rounded, usize::try_from(digits).unwrap_or(1));
     // Trailing zeros after the point carry no information at two figures (`-50.0` -> `-50`).
     match text.split_once('.') {
         Some((int, frac)) if frac.chars().all(|c| c == '0') => int.to_string(),
@@ -168,7 +168,7 @@ impl Counterexample {
         let values: Vec<String> = self
             .point
             .iter()
-            .map(|(s, v)| format!("{s}={}", number::compact(v)))
+            .map(|(s, v)| format!("{s}={}", decimal::compact(v)))
             .collect();
         format!(
             "not an identity; counterexample {}: exact {quantity} = {}, claimed {}",

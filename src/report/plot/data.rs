@@ -1,7 +1,7 @@
 //! The sampled values behind a figure, as CSV: each exact value beside its decimal.
 
 use crate::field::Q;
-use crate::number;
+use crate::field::decimal;
 
 /// Significant digits of the decimal columns (enough to round-trip an f64).
 const DIGITS: usize = 17;
@@ -26,13 +26,13 @@ impl Value {
     fn exact(&self) -> String {
         match self {
             Value::Exact(x) => x.to_string(),
-            Value::Root(x) => number::surd(x),
+            Value::Root(x) => decimal::surd(x),
         }
     }
     fn decimal(&self) -> String {
         match self {
-            Value::Exact(x) => number::decimal(x, DIGITS),
-            Value::Root(x) => number::decimal_sqrt(x, DIGITS),
+            Value::Exact(x) => decimal::decimal(x, DIGITS),
+            Value::Root(x) => decimal::decimal_sqrt(x, DIGITS),
         }
     }
 }

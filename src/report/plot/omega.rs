@@ -10,8 +10,8 @@ use super::scale::Scale;
 use super::svg::{Shape, Stroke};
 use super::{Figure, PALETTE, SIZE};
 use crate::error::Error;
+use crate::field::decimal;
 use crate::field::{Field, Q, QSqrt};
-use crate::number;
 use crate::optimum::Argmax;
 use crate::scene::{RodInertia, Scene};
 
@@ -281,7 +281,7 @@ pub fn omega_figure(scenes: &[Scene]) -> Result<Figure, Error> {
 /// a* = 0.816 l (free rod) or d* = 0.764 l from the pivot, from the exact square.
 fn star(scene: &Scene, squared: &Q) -> String {
     let l = scene.half_length();
-    let value = number::decimal_sqrt(&(squared / (l * l)), 3);
+    let value = decimal::decimal_sqrt(&(squared / (l * l)), 3);
     match pivot_of(scene) {
         None => format!("a* = {value} l"),
         Some(_) => format!("d* = {value} l from the pivot"),

@@ -11,8 +11,8 @@ use super::scale::Scale;
 use super::svg::{Shape, Stroke};
 use super::{Figure, PALETTE, SIZE};
 use crate::error::Error;
+use crate::field::decimal;
 use crate::field::{Q, TrySqrt};
-use crate::number;
 use crate::optimum::{Optimum, optimum};
 use crate::scene::{RodInertia, Scene};
 use num_bigint::BigInt;
@@ -97,8 +97,8 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
         let o = optimum(&scene);
         let best = best_squared(&o);
         let x = f(&ratio);
-        star_curve.push((x, f(&number::sqrt_bounds(&(&o.squared / (&l * &l)), 17).0)));
-        best_curve.push((x, f(&number::sqrt_bounds(&(&best / (&l * &l)), 17).0)));
+        star_curve.push((x, f(&decimal::sqrt_bounds(&(&o.squared / (&l * &l)), 17).0)));
+        best_curve.push((x, f(&decimal::sqrt_bounds(&(&best / (&l * &l)), 17).0)));
         data.rows.push(vec![
             Value::Exact(ratio),
             Value::Root(o.squared),
@@ -193,7 +193,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
     chart.svg.close();
     let mut labels = Vec::new();
     if let Some(k) = &light {
-        let r = f(&number::sqrt_bounds(k, 17).0);
+        let r = f(&decimal::sqrt_bounds(k, 17).0);
         chart.svg.open("light-rod-limit");
         chart.rule((x_lo, r), (x_hi, r), &Stroke::dashed(PALETTE[2], 1.8));
         chart.svg.close();
@@ -227,7 +227,10 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
         let o = optimum(&probe);
         let best = best_squared(&o);
         let at = chart.marker(
-            (f(&own), f(&number::sqrt_bounds(&(&best / (&l * &l)), 17).0)),
+            (
+                f(&own),
+                f(&decimal::sqrt_bounds(&(&best / (&l * &l)), 17).0),
+            ),
             Shape::Star,
             "#000000",
             true,
@@ -241,7 +244,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
         let label = format!(
             "M/m = {}: {name} = {} l, {where_}",
             signed(&own),
-            number::decimal_sqrt(&(&o.squared / (&l * &l)), 3)
+            decimal::decimal_sqrt(&(&o.squared / (&l * &l)), 3)
         );
         chart.label_px(&label, at, "#000000");
     }

@@ -5,7 +5,8 @@ use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, QSqrt};
 use crate::optimum::{Optimum, optimum};
 use crate::scene::{Params, Scene, Support};
-use crate::solve::{Outcome, solve};
+use crate::solve::Outcome;
+use crate::solve::linear::solve;
 use num_traits::{One, ToPrimitive};
 
 /// Sample points per half-length l.

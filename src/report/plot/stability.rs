@@ -9,7 +9,7 @@ use super::scale::Scale;
 use super::svg::{Shape, Stroke};
 use super::{PALETTE, SIZE};
 use crate::error::Error;
-use crate::float::Formula;
+use crate::solve::float::Formula;
 use crate::stability::{Backend, Row};
 
 /// The colour of a backend: by formula (interval and exact their own).

@@ -5,16 +5,16 @@ mod common;
 
 use common::{any_scene, reference_rows};
 use proptest::prelude::*;
-use rodimpact::fast;
 use rodimpact::field::Q;
 use rodimpact::scene::{RodInertia, Scene};
-use rodimpact::solve::solve;
+use rodimpact::solve::fraction_free;
+use rodimpact::solve::linear::solve;
 
 /// Fast and fraction-free-big results equal the generic solver's; the laws hold.
-fn assert_same_as_reference(s: &Scene, context: &str) -> fast::Solved {
+fn assert_same_as_reference(s: &Scene, context: &str) -> fraction_free::FractionFree {
     let reference = solve(&s.params::<Q>()).expect("nonsingular");
-    let quick = fast::solve(s);
-    let big = fast::solve_big(s);
+    let quick = fraction_free::solve(s);
+    let big = fraction_free::solve_big(s);
     assert_eq!(quick.after, reference.after, "fast path, {context}");
     assert_eq!(big.after, reference.after, "big-integer path, {context}");
     assert!(quick.laws_hold && big.laws_hold, "laws, {context}");

@@ -1,5 +1,6 @@
-//! The fast exact path: the same v, V, omega as [`crate::solve::solve`] over
-//! [`Q`], bit for bit, without a GCD after every operation.
+//! The fraction-free route ([`Route::FractionFree`](super::Route::FractionFree)): the same v,
+//! V, omega as the linear solve ([`super::linear::solve`]) over [`Q`], bit for bit, without a
+//! GCD after every operation.
 //!
 //! The straightforward path spends about 91 % of its time in num-bigint's GCD, because
 //! `BigRational` reduces after every operation (README, Performance). Here, for a free rod, the
@@ -23,61 +24,22 @@
 //!
 //! The integers are first tried in checked `i128` (energy in 256 bits, its terms are
 //! non-negative), then in a checked 512-bit integer (`wide`), and only then in big integers
-//! ([`BigInt`], or malachite's `Integer` with the cargo feature `malachite`: see `malachite`):
-//! the first overflow restarts the scene in the next width. A pivoted rod takes the same route
-//! with its own fixed-axis formulas (see `pivoted`). The GCDs of the final reductions run on
-//! machine words up to 256 bits (`words`).
+//! ([`BigInt`](num_bigint::BigInt), or malachite's `Integer` with the cargo feature
+//! `malachite`): the first overflow restarts the scene in the next width
+//! ([`crate::field::int`]). A pivoted rod takes the same route with its own fixed-axis formulas
+//! (see `pivoted`). The GCDs of the final reductions run on machine words up to 256 bits.
 
 use crate::field::Q;
+use crate::field::int::{Big, Int, Wide, split};
 use crate::mechanics::Motion;
 use crate::scene::{RodInertia, Scene, Support};
-use num_bigint::BigInt;
-use num_traits::{One, Signed, ToPrimitive, Zero};
-use wide::Wide;
-pub(crate) use words::{U256, gcd};
+use num_traits::One;
 
-/// The [`Int`] operations of an integer type that never overflows (every result `Some`),
-/// written once for num-bigint's `BigInt` and, with the feature, malachite's `Integer`
-/// (defined before the modules, which see it by textual scope).
-macro_rules! unbounded_arithmetic {
-    () => {
-        fn add(&self, o: &Self) -> Option<Self> {
-            Some(self + o)
-        }
-        fn sub(&self, o: &Self) -> Option<Self> {
-            Some(self - o)
-        }
-        fn mul(&self, o: &Self) -> Option<Self> {
-            Some(self * o)
-        }
-        fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
-            let sum: Self = lhs.iter().map(|(c, x)| *c * &(*x * *x)).sum();
-            Some(sum == c * &(x * x))
-        }
-    };
-}
-
-#[cfg(feature = "malachite")]
-mod malachite;
-mod wide;
-mod words;
-
-/// The big-integer type of the fallback (`solve_big`): num-bigint's [`BigInt`] by default,
-/// malachite's `Integer` with the feature `malachite` (subquadratic GCD and multiplication).
-/// Results are returned as [`Q`] either way, identical.
-#[cfg(not(feature = "malachite"))]
-type Big = BigInt;
-/// The big-integer type of the fallback (`solve_big`): malachite's `Integer` (feature
-/// `malachite`; subquadratic GCD and multiplication) instead of num-bigint's [`BigInt`].
-/// Results are returned as [`Q`] either way, identical.
-#[cfg(feature = "malachite")]
-type Big = malachite_nz::integer::Integer;
-
-/// Which arithmetic produced a [`Solved`].
+/// Which arithmetic produced a [`FractionFree`].
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{fast::{solve, Arithmetic}, scene::Scene, field::q};
+/// use rodimpact::{solve::fraction_free::{solve, Arithmetic}, scene::Scene, field::q};
 /// let big = q(1 << 62, 3);
 /// let s = Scene::builder(big.clone(), big.clone() * q(7, 5)).build().unwrap();
 /// assert_eq!(solve(&s).arithmetic, Arithmetic::Wide); // beyond i128
@@ -100,15 +62,15 @@ pub enum Arithmetic {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{fast::solve, scene::Scene, field::q};
+/// use rodimpact::{solve::fraction_free::solve, scene::Scene, field::q};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).e(q(0, 1)).build().unwrap();
 /// let out = solve(&s);
 /// assert_eq!((out.after.v, out.after.omega), (q(4, 5), q(3, 5))); // sticking
 /// assert!(out.laws_hold); // momentum balances; energy is not conserved for e = 0
 /// ```
 #[derive(Debug, Clone, PartialEq)]
-pub struct Solved {
-    /// v, V, omega exactly as [`crate::solve::solve`] over [`Q`] gives them.
+pub struct FractionFree {
+    /// v, V, omega exactly as [`super::linear::solve`] over [`Q`] gives them.
     pub after: Motion<Q>,
     /// Every applicable conservation law holds exactly (linear momentum for a free rod, angular
     /// momentum, energy when e = 1).
@@ -122,22 +84,22 @@ pub struct Solved {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{fast::{solve, Arithmetic}, scene::Scene, field::q};
+/// use rodimpact::{solve::fraction_free::{solve, Arithmetic}, scene::Scene, field::q};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
 /// let out = solve(&s);
 /// assert_eq!((out.after.v, out.after.rod_v, out.after.omega), (q(3, 5), q(2, 5), q(6, 5)));
 /// assert!(out.laws_hold);
 /// assert_eq!(out.arithmetic, Arithmetic::Fixed);
 /// ```
-pub fn solve(scene: &Scene) -> Solved {
+pub fn solve(scene: &Scene) -> FractionFree {
     let fixed = || {
         (input_bits(scene) <= I128_INPUT_BITS)
-            .then(|| fraction_free::<i128>(scene))
+            .then(|| in_width::<i128>(scene))
             .flatten()
             .map(|s| s.with(Arithmetic::Fixed))
     };
     fixed()
-        .or_else(|| fraction_free::<Wide>(scene).map(|s| s.with(Arithmetic::Wide)))
+        .or_else(|| in_width::<Wide>(scene).map(|s| s.with(Arithmetic::Wide)))
         .unwrap_or_else(|| solve_big(scene))
 }
 
@@ -168,130 +130,20 @@ fn input_bits(scene: &Scene) -> u64 {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{fast::{solve, solve_big}, scene::Scene, field::q};
+/// use rodimpact::{solve::fraction_free::{solve, solve_big}, scene::Scene, field::q};
 /// let s = Scene::builder(q(2, 7), q(5, 3)).a(q(-1, 3)).e(q(1, 2)).build().unwrap();
 /// assert_eq!(solve_big(&s).after, solve(&s).after);
 /// ```
-pub fn solve_big(scene: &Scene) -> Solved {
-    fraction_free::<Big>(scene)
+pub fn solve_big(scene: &Scene) -> FractionFree {
+    in_width::<Big>(scene)
         .expect("big integers never overflow")
         .with(Arithmetic::Big)
 }
 
-/// `n/d` reduced to lowest terms with a positive denominator: the same value and
-/// representation as `Q::new(n, d)`, but a GCD of numbers up to 256 bits runs on two machine
-/// words instead of num-bigint's heap digits.
-///
-/// # Panics
-/// If `d` is zero (as `Q::new`).
-///
-/// # Examples
-/// ```
-/// use rodimpact::fast::reduce;
-/// use rodimpact::field::Q;
-/// let (n, d) = (num_bigint::BigInt::from(-84), num_bigint::BigInt::from(-36));
-/// assert_eq!(reduce(n.clone(), d.clone()), Q::new(n.clone(), d));
-/// assert_eq!(reduce(n, 1.into()).to_string(), "-84");
-/// ```
-pub fn reduce(n: BigInt, d: BigInt) -> Q {
-    assert!(!d.is_zero(), "denominator == 0");
-    if d.is_negative() {
-        BigInt::ratio(-n, -d)
-    } else {
-        BigInt::ratio(n, d)
-    }
-}
-
-/// Writes `q` as `n` or `n/d` when both fit 256 bits (else `None`, nothing written).
-pub(crate) fn write_ratio(out: &mut String, q: &Q) -> Option<()> {
-    let n = U256::from_big(q.numer().magnitude())?;
-    let d = U256::from_big(q.denom().magnitude())?;
-    if q.is_negative() {
-        out.push('-');
-    }
-    n.write_decimal(out);
-    if d != U256::ONE {
-        out.push('/');
-        d.write_decimal(out);
-    }
-    Some(())
-}
-
-impl Solved {
+impl FractionFree {
     fn with(self, arithmetic: Arithmetic) -> Self {
-        Solved { arithmetic, ..self }
+        FractionFree { arithmetic, ..self }
     }
-}
-
-/// The integer operations the fraction-free form needs; `None` means "does not fit".
-trait Int: Sized + Clone + PartialEq {
-    fn lift(x: &BigInt) -> Option<Self>;
-    fn small(x: u8) -> Self;
-    fn add(&self, o: &Self) -> Option<Self>;
-    fn sub(&self, o: &Self) -> Option<Self>;
-    fn mul(&self, o: &Self) -> Option<Self>;
-    /// Decides `sum c_i x_i^2 == c x^2` for non-negative weights.
-    fn squares_balance(lhs: [(&Self, &Self); 3], rhs: (&Self, &Self)) -> Option<bool>;
-    /// `n/d` reduced, `d > 0`.
-    fn ratio(n: Self, d: Self) -> Q;
-}
-
-impl Int for BigInt {
-    fn lift(x: &BigInt) -> Option<Self> {
-        Some(x.clone())
-    }
-    fn small(x: u8) -> Self {
-        BigInt::from(x)
-    }
-    unbounded_arithmetic!();
-    fn ratio(n: Self, d: Self) -> Q {
-        // Up to 256 bits (every 10^6-sized scene) the GCD runs on two machine words, far faster
-        // than num-bigint's binary GCD on heap digits; beyond, `Q::new` reduces.
-        match (U256::from_big(n.magnitude()), U256::from_big(d.magnitude())) {
-            (Some(a), Some(b)) => U256::ratio(n.is_negative(), a, b),
-            _ => Q::new(n, d),
-        }
-    }
-}
-
-impl Int for i128 {
-    fn lift(x: &BigInt) -> Option<Self> {
-        x.to_i128()
-    }
-    fn small(x: u8) -> Self {
-        x.into()
-    }
-    fn add(&self, o: &Self) -> Option<Self> {
-        self.checked_add(*o)
-    }
-    fn sub(&self, o: &Self) -> Option<Self> {
-        self.checked_sub(*o)
-    }
-    fn mul(&self, o: &Self) -> Option<Self> {
-        self.checked_mul(*o)
-    }
-    fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
-        let term = |c: &i128, x: &i128| {
-            let c = u128::try_from(*c).ok()?;
-            U256::square(x.unsigned_abs()).checked_mul(c)
-        };
-        let mut sum = U256::ZERO;
-        for (c, x) in lhs {
-            sum = sum.checked_add(term(c, x)?)?;
-        }
-        Some(sum == term(c, x)?)
-    }
-    fn ratio(n: Self, d: Self) -> Q {
-        let g = gcd(n.unsigned_abs(), d.unsigned_abs());
-        // g divides both, and g >= 1 because d > 0; n/g and d/g stay in range.
-        let g = g as i128;
-        Q::new_raw(BigInt::from(n / g), BigInt::from(d / g))
-    }
-}
-
-/// Numerator and denominator of a rational, lifted into `T`.
-fn split<T: Int>(x: &Q) -> Option<(T, T)> {
-    Some((T::lift(x.numer())?, T::lift(x.denom())?))
 }
 
 /// g = I/M as (gn, gd), gd > 0, not necessarily reduced.
@@ -340,7 +192,7 @@ struct Raw<T> {
 }
 
 /// The fraction-free solve in `T`; `None` on overflow.
-fn fraction_free<T: Int>(scene: &Scene) -> Option<Solved> {
+fn in_width<T: Int>(scene: &Scene) -> Option<FractionFree> {
     let (mn, md) = split::<T>(scene.m())?;
     let (big_n, big_d) = split::<T>(scene.rod_mass())?;
     let (an, ad) = split::<T>(scene.a())?;
@@ -392,7 +244,7 @@ fn fraction_free<T: Int>(scene: &Scene) -> Option<Solved> {
         rod_v: T::ratio(vn.mul(&raw.n_big_v)?, den.clone()),
         omega: T::ratio(vn.mul(&raw.nw)?, den),
     };
-    Some(Solved {
+    Some(FractionFree {
         after,
         laws_hold: raw.momentum && energy,
         arithmetic: Arithmetic::Big,
@@ -474,26 +326,7 @@ fn pivoted<T: Int>(s: &Parts<T>, p: &Q) -> Option<Raw<T>> {
 mod tests {
     use super::*;
     use crate::field::q;
-
-    #[test]
-    fn energy_balance_is_decided_alike_in_both_widths() {
-        // 2*3^2 + 1*4^2 + 0*7^2 = 34 = 34*1^2; off by one it is not.
-        for (c, want) in [(34i128, true), (35, false)] {
-            let (two, three, one, four, zero, seven) = (2i128, 3, 1, 4, 0, 7);
-            let fixed =
-                i128::squares_balance([(&two, &three), (&one, &four), (&zero, &seven)], (&c, &one));
-            let big = |x: i128| BigInt::from(x);
-            let (b2, b3, b1, b4, b0, b7, bc) =
-                (big(2), big(3), big(1), big(4), big(0), big(7), big(c));
-            let wide = BigInt::squares_balance([(&b2, &b3), (&b1, &b4), (&b0, &b7)], (&bc, &b1));
-            assert_eq!((fixed, wide), (Some(want), Some(want)));
-        }
-        let max = i128::MAX;
-        assert_eq!(
-            i128::squares_balance([(&max, &max), (&0, &0), (&0, &0)], (&1, &1)),
-            None
-        );
-    }
+    use num_traits::{Signed, Zero};
 
     #[test]
     fn every_arithmetic_is_reached() {

@@ -1,12 +1,12 @@
 //! The float formulas for the free rod, side by side: the paper's closed form ("naive"), the
-//! exponent-carried stable form ("sq", the library's default float path) and its compensated
+//! exponent-carried stable form ("sq", the float route of `solve --backend`) and its compensated
 //! variant ("scomp"). `docs/stability.md` describes them and their measured errors.
 
 use super::{Ext, Real, compensated};
 use crate::field::Q;
 use crate::mechanics::Motion;
 use crate::scene::{Params, Scene, Support};
-use crate::solve::closed_form;
+use crate::solve::closed_form::closed_form;
 
 /// A float formula for (v, V, omega) of a free rod.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -16,6 +16,7 @@ pub enum Formula {
     Naive,
     /// The same formulas on [`Ext`] numbers (binary exponents carried as integers, exact
     /// power-of-two scaling): no intermediate overflow or underflow, one rounding at the end.
+    /// The formula of `solve --backend f64/f32`.
     Sq,
     /// `Sq` with `q - e` from error-free transforms, so v stays accurate in the stop zone.
     Scomp,
@@ -25,20 +26,11 @@ impl Formula {
     /// Every formula, cheapest first.
     pub const ALL: [Formula; 3] = [Formula::Naive, Formula::Sq, Formula::Scomp];
 
-    /// The formula of the library's float path: [`Formula::Sq`].
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::float::Formula;
-    /// assert_eq!(Formula::DEFAULT.name(), "sq");
-    /// ```
-    pub const DEFAULT: Formula = Formula::Sq;
-
     /// Name in reports: `naive`, `sq`, `scomp`.
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::float::Formula;
+    /// use rodimpact::solve::float::Formula;
     /// assert_eq!(Formula::Scomp.name(), "scomp");
     /// ```
     pub fn name(self) -> &'static str {
@@ -54,7 +46,7 @@ impl Formula {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{float::Formula, scene::Scene, field::q};
+    /// use rodimpact::{solve::float::Formula, scene::Scene, field::q};
     /// // I = 10^-310 is subnormal: the naive m a/I overflows and v becomes NaN.
     /// let tiny = num_bigint::BigInt::from(10).pow(310);
     /// let s = Scene::builder(q(1, 1), q(1, 1))
@@ -94,7 +86,7 @@ impl Formula {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{float::Formula, scene::Scene, field::q, number::parse};
+    /// use rodimpact::{solve::float::Formula, scene::Scene, field::q, number::parse};
     /// // l = a = 10^-200: I = M l^2/3 = 10^-400/3 underflows f64 to 0.
     /// let l = parse("1e-200").expect("a number");
     /// let s = Scene::builder(q(1, 1), q(1, 1)).half_length(l.clone()).a(l).build()?;

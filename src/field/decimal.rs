@@ -1,0 +1,621 @@
+//! Printing exact numbers, and rounding them: the one rounding module.
+//!
+//! Printing is exact where possible (num-rational's `p/q`, [`write_exact`] on machine words,
+//! [`surd`] for square roots) and otherwise correctly rounded: [`decimal`] and [`Decimal`] round
+//! half to even to a number of significant digits, [`decimal_rounded`] in any [`Rounding`]
+//! direction, [`sqrt_bounds`] encloses a square root between decimal rationals, and
+//! [`decimal_sqrt`] rounds a square root correctly. [`round_at`] rounds an exact value to a
+//! decimal place (the textbook's significant figures), [`magnitude`] is `floor(log10 |x|)`.
+//! All of it uses integer arithmetic only; the decimal exponent comes from bit lengths, so
+//! `1e-9000` costs about as much as `1`.
+
+use super::int::write_ratio;
+use super::{Q, TrySqrt};
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
+use std::cmp::Ordering;
+use std::fmt;
+
+/// `10^k` as an integer.
+///
+/// # Examples
+/// ```
+/// assert_eq!(rodimpact::field::decimal::ten_to(3).to_string(), "1000");
+/// ```
+pub fn ten_to(k: u64) -> BigInt {
+    num_traits::pow(BigInt::from(10u8), k as usize)
+}
+
+/// `10^k` exactly, for any integer `k`.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::decimal::pow10;
+/// assert_eq!(pow10(-2).to_string(), "1/100");
+/// assert_eq!(pow10(3).to_string(), "1000");
+/// ```
+pub fn pow10(k: i64) -> Q {
+    let p = ten_to(k.unsigned_abs());
+    if k >= 0 {
+        Q::from_integer(p)
+    } else {
+        Q::new_raw(BigInt::one(), p)
+    }
+}
+
+/// `floor(log10(n / d))` for positive `n`, `d`: an estimate from bit lengths, then exact
+/// comparisons with powers of ten (at most a few).
+fn floor_log10(n: &BigInt, d: &BigInt) -> i64 {
+    const LOG10_2: f64 = std::f64::consts::LOG10_2;
+    let bits_diff = n.bits() as f64 - d.bits() as f64;
+    let mut e = (bits_diff * LOG10_2).floor() as i64;
+    // Compare n/d with 10^e exactly.
+    let cmp = |e: i64| {
+        if e >= 0 {
+            n.cmp(&(d * ten_to(e.unsigned_abs())))
+        } else {
+            (n * ten_to(e.unsigned_abs())).cmp(d)
+        }
+    };
+    loop {
+        if cmp(e) == Ordering::Less {
+            e -= 1;
+        } else if cmp(e + 1) != Ordering::Less {
+            e += 1;
+        } else {
+            return e;
+        }
+    }
+}
+
+/// `floor(log10 |x|)`, the decimal exponent of `x`'s leading digit (0 for zero).
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{decimal::magnitude, q};
+/// assert_eq!(magnitude(&q(1500, 1)), 3);
+/// assert_eq!(magnitude(&q(-1, 20)), -2);
+/// assert_eq!(magnitude(&q(1, 1)), 0);
+/// ```
+pub fn magnitude(x: &Q) -> i64 {
+    if x.is_zero() {
+        return 0;
+    }
+    floor_log10(&x.numer().abs(), x.denom())
+}
+
+/// Which way a value is rounded to the digits kept.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{decimal::{round_at, Rounding}, q};
+/// let at = |rounding| round_at(&q(-5, 2), 0, rounding).to_string();
+/// assert_eq!(at(Rounding::HalfEven), "-2");
+/// assert_eq!(at(Rounding::HalfAwayFromZero), "-3");
+/// assert_eq!(at(Rounding::HalfTowardZero), "-2");
+/// assert_eq!(at(Rounding::Floor), "-3");
+/// assert_eq!(at(Rounding::Ceiling), "-2");
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rounding {
+    /// To nearest, ties to even (correct rounding).
+    HalfEven,
+    /// To nearest, ties away from zero (the schoolbook rule).
+    HalfAwayFromZero,
+    /// To nearest, ties toward zero.
+    HalfTowardZero,
+    /// Toward minus infinity: the printed value is a lower bound.
+    Floor,
+    /// Toward plus infinity: the printed value is an upper bound.
+    Ceiling,
+}
+
+/// `num / den` (both >= 0, `den > 0`), the magnitude of a value of sign `negative`, rounded to
+/// an integer in the direction `rounding`; and whether that was exact (no remainder).
+fn round_quotient(
+    num: &BigInt,
+    den: &BigInt,
+    negative: bool,
+    rounding: Rounding,
+) -> (BigInt, bool) {
+    let (quot, rem) = num.div_rem(den);
+    if rem.is_zero() {
+        return (quot, true);
+    }
+    let half = || (&rem * 2u8).cmp(den);
+    let away_from_zero = match rounding {
+        Rounding::Floor => negative,
+        Rounding::Ceiling => !negative,
+        Rounding::HalfEven => match half() {
+            Ordering::Equal => quot.is_odd(),
+            other => other == Ordering::Greater,
+        },
+        Rounding::HalfAwayFromZero => half() != Ordering::Less,
+        Rounding::HalfTowardZero => half() == Ordering::Greater,
+    };
+    (if away_from_zero { quot + 1u8 } else { quot }, false)
+}
+
+/// `x` rounded to a multiple of `10^place` in the direction `rounding`.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{decimal::{round_at, Rounding}, q};
+/// assert_eq!(round_at(&q(9, 4), -1, Rounding::HalfAwayFromZero), q(23, 10));
+/// assert_eq!(round_at(&q(9, 4), -1, Rounding::HalfTowardZero), q(22, 10));
+/// assert_eq!(round_at(&q(-36, 19), -2, Rounding::HalfAwayFromZero), q(-189, 100));
+/// ```
+pub fn round_at(x: &Q, place: i64, rounding: Rounding) -> Q {
+    let scale = ten_to(place.unsigned_abs());
+    let n = x.numer().abs();
+    let (num, den) = if place <= 0 {
+        (n * &scale, x.denom().clone())
+    } else {
+        (n, x.denom() * &scale)
+    };
+    let (whole, _) = round_quotient(&num, &den, x.is_negative(), rounding);
+    let whole = if x.is_negative() { -whole } else { whole };
+    if place <= 0 {
+        Q::new(whole, scale)
+    } else {
+        Q::from_integer(whole * scale)
+    }
+}
+
+/// `value` correctly rounded (half to even) to `digits` significant digits.
+///
+/// Exactly `digits` significant digits are shown, trailing zeros included. With
+/// `value = ±d.ddd × 10^E` after rounding, the notation is positional when
+/// `-7 <= E < digits` and scientific (`1.23e5`, `-4.00e-300`) otherwise. Zero prints `"0"`.
+/// `digits == 0` is treated as 1. Integer arithmetic only; the exponent is found from bit
+/// lengths, so `1e-9000` is as fast as `1`.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{decimal::decimal, q};
+/// assert_eq!(decimal(&q(-1, 5), 5), "-0.20000");
+/// assert_eq!(decimal(&q(1, 8), 2), "0.12");
+/// assert_eq!(decimal(&q(123456, 1), 3), "1.23e5");
+/// assert_eq!(decimal(&q(1999, 200), 3), "10.0");
+/// ```
+pub fn decimal(value: &Q, digits: usize) -> String {
+    decimal_rounded(value, digits, Rounding::HalfEven)
+}
+
+/// `value` rounded to `digits` significant digits in the given direction, printed as
+/// [`decimal`] prints. `Floor` and `Ceiling` give printed bounds that enclose the exact value.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{decimal::{decimal_rounded, Rounding}, q};
+/// assert_eq!(decimal_rounded(&q(2, 3), 3, Rounding::Floor), "0.666");
+/// assert_eq!(decimal_rounded(&q(2, 3), 3, Rounding::Ceiling), "0.667");
+/// assert_eq!(decimal_rounded(&q(-2, 3), 3, Rounding::Floor), "-0.667");
+/// assert_eq!(decimal_rounded(&q(1, 2), 3, Rounding::Ceiling), "0.500");
+/// ```
+pub fn decimal_rounded(value: &Q, digits: usize, rounding: Rounding) -> String {
+    Significant::of(value, digits, rounding).to_string()
+}
+
+/// A value rounded to a number of significant digits: `±m × 10^(exp - digits + 1)` with
+/// `10^(digits-1) <= m < 10^digits` (or zero).
+struct Significant {
+    negative: bool,
+    m: BigInt,
+    exp: i64,
+    digits: usize,
+    /// The rounding lost nothing: the printed text is the exact value.
+    exact: bool,
+}
+
+impl Significant {
+    fn of(value: &Q, digits: usize, rounding: Rounding) -> Significant {
+        let digits = digits.max(1);
+        if value.is_zero() {
+            let (m, exp, exact) = (BigInt::zero(), 0, true);
+            return Significant {
+                negative: false,
+                m,
+                exp,
+                digits,
+                exact,
+            };
+        }
+        let n = value.numer().abs();
+        let d = value.denom();
+        let mut exp = floor_log10(&n, d);
+        let shift = digits as i64 - 1 - exp;
+        let (num, den) = if shift >= 0 {
+            (n * ten_to(shift.unsigned_abs()), d.clone())
+        } else {
+            (n, d * ten_to(shift.unsigned_abs()))
+        };
+        let negative = value.is_negative();
+        let (mut m, exact) = round_quotient(&num, &den, negative, rounding);
+        if m == ten_to(digits as u64) {
+            // 9.995 -> 10.0: the rounding carried into a new digit.
+            m = ten_to(digits as u64 - 1);
+            exp += 1;
+        }
+        Significant {
+            negative,
+            m,
+            exp,
+            digits,
+            exact,
+        }
+    }
+}
+
+impl fmt::Display for Significant {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.m.is_zero() {
+            return f.write_str("0");
+        }
+        let (s, exp) = (self.m.to_string(), self.exp);
+        let sign = if self.negative { "-" } else { "" };
+        if (-7..self.digits as i64).contains(&exp) {
+            if exp >= 0 {
+                let (int, frac) = s.split_at(exp as usize + 1);
+                if frac.is_empty() {
+                    write!(f, "{sign}{int}")
+                } else {
+                    write!(f, "{sign}{int}.{frac}")
+                }
+            } else {
+                let zeros = "0".repeat((-exp - 1) as usize);
+                write!(f, "{sign}0.{zeros}{s}")
+            }
+        } else {
+            let (lead, rest) = s.split_at(1);
+            if rest.is_empty() {
+                write!(f, "{sign}{lead}e{exp}")
+            } else {
+                write!(f, "{sign}{lead}.{rest}e{exp}")
+            }
+        }
+    }
+}
+
+/// A rational printed as [`decimal`] prints it: `digits` significant digits, correctly rounded.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{decimal::Decimal, q};
+/// let third = q(1, 3);
+/// assert_eq!(Decimal { value: &third, digits: 4 }.to_string(), "0.3333");
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct Decimal<'a> {
+    /// The exact value.
+    pub value: &'a Q,
+    /// Significant digits to show.
+    pub digits: usize,
+}
+
+impl fmt::Display for Decimal<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&decimal(self.value, self.digits))
+    }
+}
+
+/// Appends `q` exactly as its `Display` (`n`, or `n/d`), on machine words when both fit 256
+/// bits.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{decimal::write_exact, q};
+/// let mut out = String::new();
+/// write_exact(&mut out, &q(-6, 4));
+/// out.push(',');
+/// write_exact(&mut out, &q(7, 1));
+/// assert_eq!(out, "-3/2,7");
+/// ```
+pub fn write_exact(out: &mut String, q: &Q) {
+    if write_ratio(out, q).is_none() {
+        use std::fmt::Write;
+        write!(out, "{q}").expect("writing to a String cannot fail");
+    }
+}
+
+/// Rational bounds `lo <= sqrt(x) <= hi` with `hi - lo <= 10^-digits * sqrt(x)`.
+///
+/// The bounds are decimal rationals (their denominators are powers of ten), except when `x` is
+/// the square of a rational: then `lo == hi ==` the exact root (such as `2/3`). Computed with
+/// exact integer square roots only.
+///
+/// Precondition: `x >= 0`. For `x <= 0` the result is `(0, 0)` (the exact root for `x = 0`).
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::q;
+/// use rodimpact::field::decimal::sqrt_bounds;
+/// assert_eq!(sqrt_bounds(&q(2, 1), 3), (q(1414, 1000), q(1415, 1000)));
+/// assert_eq!(sqrt_bounds(&q(4, 9), 5), (q(2, 3), q(2, 3)));
+/// ```
+pub fn sqrt_bounds(x: &Q, digits: usize) -> (Q, Q) {
+    if !x.is_positive() {
+        return (Q::zero(), Q::zero());
+    }
+    if let Some(root) = x.try_sqrt() {
+        return (root.clone(), root);
+    }
+    let (n, d) = (x.numer(), x.denom());
+    // 10^e_s <= sqrt(x), so a step of 10^-k with k = digits - e_s is within the precision.
+    let e_s = floor_log10(n, d).div_euclid(2);
+    let k = digits as i64 - e_s;
+    let floor_scaled = if k >= 0 {
+        (n * ten_to(2 * k.unsigned_abs())) / d
+    } else {
+        n / (d * ten_to(2 * k.unsigned_abs()))
+    };
+    let m = floor_scaled.sqrt();
+    let scale = |v: BigInt| {
+        if k >= 0 {
+            Q::new(v, ten_to(k.unsigned_abs()))
+        } else {
+            Q::from_integer(v * ten_to(k.unsigned_abs()))
+        }
+    };
+    let hi = scale(&m + BigInt::one());
+    (scale(m), hi)
+}
+
+/// The exact square root of `x >= 0` as text, in the one canonical ASCII form of every surd
+/// ([`notation::root`](crate::field::notation::root)): the rational root when there is one
+/// (`"2/3"`, `"2"`, `"0"`), otherwise square factors pulled out and no denominator under the
+/// root (`"sqrt(6)/3"`, `"2*sqrt(2)"`).
+///
+/// # Panics
+/// **Panics if `x < 0`** (no real root; a programming error).
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::q;
+/// use rodimpact::field::decimal::surd;
+/// assert_eq!(surd(&q(2, 3)), "sqrt(6)/3");
+/// assert_eq!(surd(&q(4, 9)), "2/3");
+/// assert_eq!(surd(&q(8, 1)), "2*sqrt(2)");
+/// ```
+pub fn surd(x: &Q) -> String {
+    crate::field::notation::root(x, crate::field::notation::Notation::Ascii)
+}
+
+/// `sqrt(x)` correctly rounded to `digits` significant digits, formatted as [`decimal`] does.
+///
+/// Bounds with guard digits are refined until both round alike; an exact root is rounded
+/// directly. Precondition `x >= 0`; `x < 0` gives `"0"`, as [`sqrt_bounds`] does.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::q;
+/// use rodimpact::field::decimal::decimal_sqrt;
+/// assert_eq!(decimal_sqrt(&q(2, 1), 10), "1.414213562");
+/// assert_eq!(decimal_sqrt(&q(1, 4), 3), "0.500");
+/// ```
+pub fn decimal_sqrt(x: &Q, digits: usize) -> String {
+    let digits = digits.max(1);
+    let mut guard = 4;
+    loop {
+        let (lo, hi) = sqrt_bounds(x, digits + guard);
+        let (a, b) = (decimal(&lo, digits), decimal(&hi, digits));
+        if a == b {
+            return a;
+        }
+        // An irrational root is never a rounding tie, so this ends.
+        guard *= 2;
+    }
+}
+
+/// The longest exact fraction [`compact`] prints as it is.
+pub const COMPACT_CHARS: usize = 40;
+
+/// `x` for a reader: the exact fraction when it is short (at most [`COMPACT_CHARS`]
+/// characters), else the shortest decimal (of at most 15 significant digits) that equals it
+/// (`1e400`), else `≈` and its decimal to 6 significant digits. For text reports; JSON keeps the exact value.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{decimal::compact, q, Q};
+/// assert_eq!(compact(&q(36, 19)), "36/19");
+/// let big = Q::from_integer(num_bigint::BigInt::from(10).pow(400));
+/// assert_eq!(compact(&big), "1e400");
+/// assert_eq!(compact(&(big + q(1, 3))), "≈ 1.00000e400");
+/// ```
+pub fn compact(x: &Q) -> String {
+    let exact = x.to_string();
+    if exact.chars().count() <= COMPACT_CHARS {
+        return exact;
+    }
+    (1..=15)
+        .map(|digits| Significant::of(x, digits, Rounding::HalfEven))
+        .find(|rounded| rounded.exact)
+        .map_or_else(|| format!("≈ {}", decimal(x, 6)), |exact| exact.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::q;
+    use proptest::prelude::*;
+
+    fn big(s: &str) -> BigInt {
+        s.parse().expect("test literal")
+    }
+
+    #[test]
+    fn decimal_table() {
+        let table: &[(Q, usize, &str)] = &[
+            (q(0, 1), 5, "0"),
+            (q(-1, 5), 5, "-0.20000"),
+            (q(6, 5), 3, "1.20"),
+            (q(2, 1), 3, "2.00"),
+            (q(123456, 1), 3, "1.23e5"),
+            (q(123456, 1), 6, "123456"),
+            (q(123456, 1), 7, "123456.0"),
+            (q(100, 1), 3, "100"),
+            (q(100, 1), 2, "1.0e2"),
+            (q(1, 8), 2, "0.12"),
+            (q(3, 8), 2, "0.38"),
+            (q(-1, 8), 2, "-0.12"),
+            (q(-3, 8), 2, "-0.38"),
+            (q(5, 2), 1, "2"),
+            (q(7, 2), 1, "4"),
+            (q(25, 1), 1, "2e1"),
+            (q(35, 1), 1, "4e1"),
+            (q(1999, 200), 3, "10.0"),
+            (q(-1999, 200), 3, "-10.0"),
+            (q(99999, 1), 3, "1.00e5"),
+            (q(9999, 10000), 3, "1.00"),
+            (q(1, 3), 5, "0.33333"),
+            (q(2, 3), 5, "0.66667"),
+            (q(-2, 3), 1, "-0.7"),
+            (q(1, 10_000_000), 3, "0.000000100"),
+            (q(1, 100_000_000), 3, "1.00e-8"),
+            (q(99_999_999, 1_000_000_000_000_000), 3, "0.000000100"),
+            (q(99_999_999, 10_000_000_000_000_000), 3, "1.00e-8"),
+            (q(1, 7), 0, "0.1"),
+        ];
+        for (value, digits, want) in table {
+            assert_eq!(decimal(value, *digits), *want, "{value} at {digits}");
+        }
+        // 1.2e-4 is positional: -7 <= E.
+        assert_eq!(decimal(&q(12345, 100_000_000), 2), "0.00012");
+    }
+
+    #[test]
+    fn decimal_huge_and_tiny() {
+        let tiny = Q::new(BigInt::from(-4), ten_to(300));
+        assert_eq!(decimal(&tiny, 3), "-4.00e-300");
+        let tiny9000 = Q::new(BigInt::one(), ten_to(9000));
+        let start = std::time::Instant::now();
+        assert_eq!(
+            decimal(&tiny9000, 30),
+            format!("1.{}e-9000", "0".repeat(29))
+        );
+        let third = Q::new(BigInt::one(), BigInt::from(3) * ten_to(9000));
+        assert_eq!(decimal(&third, 4), "3.333e-9001");
+        let huge = Q::from_integer(BigInt::from(2) * ten_to(5000) / 3);
+        assert_eq!(decimal(&huge, 4), "6.667e4999");
+        assert!(start.elapsed().as_secs_f64() < 1.0);
+        assert_eq!(
+            Decimal {
+                value: &q(-7, 4),
+                digits: 3
+            }
+            .to_string(),
+            "-1.75"
+        );
+    }
+
+    /// The invariant of `sqrt_bounds`: `lo^2 <= x <= hi^2`, decimal bounds (or the exact root),
+    /// and `hi - lo <= 10^-digits * sqrt(x)`, checked as `(hi - lo)^2 * 10^(2 digits) <= x`.
+    fn check_bounds(x: &Q, digits: usize) {
+        let (lo, hi) = sqrt_bounds(x, digits);
+        assert!(lo <= hi, "{x} {digits}");
+        assert!(
+            &lo * &lo <= *x && *x <= &hi * &hi,
+            "{x} {digits}: {lo} {hi}"
+        );
+        let width = &hi - &lo;
+        let scale = Q::from_integer(ten_to(2 * digits as u64));
+        assert!(&width * &width * scale <= *x, "{x} {digits}: {lo} {hi}");
+        if let Some(root) = x.try_sqrt() {
+            assert_eq!((&lo, &hi), (&root, &root));
+        } else {
+            for b in [&lo, &hi] {
+                let mut d2 = b.denom().clone();
+                while (&d2 % 2u8).is_zero() {
+                    d2 /= 2u8;
+                }
+                while (&d2 % 5u8).is_zero() {
+                    d2 /= 5u8;
+                }
+                assert!(d2.is_one(), "{b} not decimal");
+            }
+        }
+    }
+
+    #[test]
+    fn sqrt_bounds_invariants() {
+        let mut xs = vec![
+            q(2, 1),
+            q(2, 3),
+            q(3, 2),
+            q(4, 9),
+            q(1, 1),
+            q(10, 1),
+            q(1, 10),
+            q(1, 1_000_000_007),
+            q(999_999_999, 7),
+        ];
+        xs.push(Q::from_integer(ten_to(301)));
+        xs.push(Q::new(BigInt::from(3), ten_to(401)));
+        xs.push(Q::new(big("123456789123456789123456789"), big("987654321")));
+        for n in 1..60 {
+            for d in [1, 2, 3, 7, 10, 12] {
+                xs.push(q(n, d));
+            }
+        }
+        for x in &xs {
+            for digits in [0, 1, 2, 5, 17, 40] {
+                check_bounds(x, digits);
+            }
+        }
+        assert_eq!(sqrt_bounds(&q(-2, 1), 5), (q(0, 1), q(0, 1)));
+        assert_eq!(sqrt_bounds(&q(0, 1), 5), (q(0, 1), q(0, 1)));
+        assert_eq!(sqrt_bounds(&q(2, 1), 3), (q(1414, 1000), q(1415, 1000)));
+        // Huge x: the bounds are integers (multiples of a power of ten).
+        let (lo, hi) = sqrt_bounds(&Q::from_integer(ten_to(301)), 3);
+        assert!(lo.is_integer() && hi.is_integer());
+    }
+
+    #[test]
+    fn surd_table() {
+        let table = [
+            (q(2, 3), "sqrt(6)/3"),
+            (q(4, 9), "2/3"),
+            (q(4, 1), "2"),
+            (q(0, 1), "0"),
+            (q(8, 1), "2*sqrt(2)"),
+            (q(3, 2), "sqrt(6)/2"),
+            (q(1, 4), "1/2"),
+            (q(11, 400), "sqrt(11)/20"),
+            (q(125, 1), "5*sqrt(5)"),
+        ];
+        for (x, want) in table {
+            assert_eq!(surd(&x), want);
+        }
+    }
+
+    #[test]
+    fn decimal_sqrt_table() {
+        let table = [
+            (q(2, 1), 1, "1"),
+            (q(2, 1), 3, "1.41"),
+            (q(2, 1), 30, "1.41421356237309504880168872421"),
+            (q(2, 3), 10, "0.8164965809"),
+            (q(3, 2), 10, "1.224744871"),
+            (q(4, 9), 4, "0.6667"),
+            (q(1, 4), 3, "0.500"),
+            (q(0, 1), 3, "0"),
+            (q(99, 1), 2, "9.9"),
+            (q(99, 1), 1, "1e1"),
+            (q(10, 1), 5, "3.1623"),
+        ];
+        for (x, digits, want) in table {
+            assert_eq!(decimal_sqrt(&x, digits), want, "sqrt({x}) at {digits}");
+        }
+        let big_x = Q::from_integer(BigInt::from(2) * ten_to(600));
+        assert_eq!(decimal_sqrt(&big_x, 5), "1.4142e300");
+    }
+
+    proptest! {
+        /// `sqrt_bounds` encloses the root within the requested relative precision.
+        #[test]
+        fn sqrt_bounds_enclose(n in 1u64..u64::MAX, d in 1u64..u64::MAX, digits in 0usize..50) {
+            check_bounds(&Q::new(BigInt::from(n), BigInt::from(d)), digits);
+        }
+    }
+}

@@ -1,0 +1,194 @@
+//! Word-sized and wide integers: exact integer arithmetic that avoids num-bigint's heap digits
+//! (and its quadratic binary GCD) wherever the numbers fit.
+//!
+//! - `words`: binary GCDs on `u64` and `u128`, and a 256-bit unsigned integer (`U256`) that
+//!   reduces, compares and prints fractions of up to 256-bit parts on machine words;
+//! - `wide`: a checked 512-bit signed integer (`Wide`);
+//! - `malachite` (cargo feature `malachite`): malachite's `Integer` as the unbounded width;
+//! - the `Int` kit: the checked operations of the fraction-free route
+//!   ([`crate::solve::fraction_free`]), written once for `i128`, `Wide` and big integers;
+//! - [`reduce`] and `write_ratio`: a fraction reduced, or written, on machine words when it fits.
+
+use crate::field::Q;
+use num_bigint::BigInt;
+use num_traits::{Signed, ToPrimitive, Zero};
+pub(crate) use wide::Wide;
+pub(crate) use words::{U256, gcd};
+
+/// The [`Int`] operations of an integer type that never overflows (every result `Some`),
+/// written once for num-bigint's `BigInt` and, with the feature, malachite's `Integer`
+/// (defined before the modules, which see it by textual scope).
+macro_rules! unbounded_arithmetic {
+    () => {
+        fn add(&self, o: &Self) -> Option<Self> {
+            Some(self + o)
+        }
+        fn sub(&self, o: &Self) -> Option<Self> {
+            Some(self - o)
+        }
+        fn mul(&self, o: &Self) -> Option<Self> {
+            Some(self * o)
+        }
+        fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
+            let sum: Self = lhs.iter().map(|(c, x)| *c * &(*x * *x)).sum();
+            Some(sum == c * &(x * x))
+        }
+    };
+}
+
+#[cfg(feature = "malachite")]
+mod malachite;
+mod wide;
+mod words;
+
+/// The big-integer type of the fraction-free fallback: num-bigint's [`BigInt`] by default,
+/// malachite's `Integer` with the feature `malachite` (subquadratic GCD and multiplication).
+/// Results are returned as [`Q`] either way, identical.
+#[cfg(not(feature = "malachite"))]
+pub(crate) type Big = BigInt;
+/// The big-integer type of the fraction-free fallback: malachite's `Integer` (feature
+/// `malachite`; subquadratic GCD and multiplication) instead of num-bigint's [`BigInt`].
+/// Results are returned as [`Q`] either way, identical.
+#[cfg(feature = "malachite")]
+pub(crate) type Big = malachite_nz::integer::Integer;
+
+/// `n/d` reduced to lowest terms with a positive denominator: the same value and
+/// representation as `Q::new(n, d)`, but a GCD of numbers up to 256 bits runs on two machine
+/// words instead of num-bigint's heap digits.
+///
+/// # Panics
+/// If `d` is zero (as `Q::new`).
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::int::reduce;
+/// use rodimpact::field::Q;
+/// let (n, d) = (num_bigint::BigInt::from(-84), num_bigint::BigInt::from(-36));
+/// assert_eq!(reduce(n.clone(), d.clone()), Q::new(n.clone(), d));
+/// assert_eq!(reduce(n, 1.into()).to_string(), "-84");
+/// ```
+pub fn reduce(n: BigInt, d: BigInt) -> Q {
+    assert!(!d.is_zero(), "denominator == 0");
+    if d.is_negative() {
+        BigInt::ratio(-n, -d)
+    } else {
+        BigInt::ratio(n, d)
+    }
+}
+
+/// Writes `q` as `n` or `n/d` when both fit 256 bits (else `None`, nothing written).
+pub(crate) fn write_ratio(out: &mut String, q: &Q) -> Option<()> {
+    let n = U256::from_big(q.numer().magnitude())?;
+    let d = U256::from_big(q.denom().magnitude())?;
+    if q.is_negative() {
+        out.push('-');
+    }
+    n.write_decimal(out);
+    if d != U256::ONE {
+        out.push('/');
+        d.write_decimal(out);
+    }
+    Some(())
+}
+
+/// The integer operations of the fraction-free route, written once for every width;
+/// `None` means "does not fit" (the caller retries in the next width).
+pub(crate) trait Int: Sized + Clone + PartialEq {
+    /// `x` in this width.
+    fn lift(x: &BigInt) -> Option<Self>;
+    /// A small constant.
+    fn small(x: u8) -> Self;
+    /// `self + o`.
+    fn add(&self, o: &Self) -> Option<Self>;
+    /// `self - o`.
+    fn sub(&self, o: &Self) -> Option<Self>;
+    /// `self * o`.
+    fn mul(&self, o: &Self) -> Option<Self>;
+    /// Decides `sum c_i x_i^2 == c x^2` for non-negative weights.
+    fn squares_balance(lhs: [(&Self, &Self); 3], rhs: (&Self, &Self)) -> Option<bool>;
+    /// `n/d` reduced, `d > 0`.
+    fn ratio(n: Self, d: Self) -> Q;
+}
+
+impl Int for BigInt {
+    fn lift(x: &BigInt) -> Option<Self> {
+        Some(x.clone())
+    }
+    fn small(x: u8) -> Self {
+        BigInt::from(x)
+    }
+    unbounded_arithmetic!();
+    fn ratio(n: Self, d: Self) -> Q {
+        // Up to 256 bits (every 10^6-sized scene) the GCD runs on two machine words, far faster
+        // than num-bigint's binary GCD on heap digits; beyond, `Q::new` reduces.
+        match (U256::from_big(n.magnitude()), U256::from_big(d.magnitude())) {
+            (Some(a), Some(b)) => U256::ratio(n.is_negative(), a, b),
+            _ => Q::new(n, d),
+        }
+    }
+}
+
+impl Int for i128 {
+    fn lift(x: &BigInt) -> Option<Self> {
+        x.to_i128()
+    }
+    fn small(x: u8) -> Self {
+        x.into()
+    }
+    fn add(&self, o: &Self) -> Option<Self> {
+        self.checked_add(*o)
+    }
+    fn sub(&self, o: &Self) -> Option<Self> {
+        self.checked_sub(*o)
+    }
+    fn mul(&self, o: &Self) -> Option<Self> {
+        self.checked_mul(*o)
+    }
+    fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
+        let term = |c: &i128, x: &i128| {
+            let c = u128::try_from(*c).ok()?;
+            U256::square(x.unsigned_abs()).checked_mul(c)
+        };
+        let mut sum = U256::ZERO;
+        for (c, x) in lhs {
+            sum = sum.checked_add(term(c, x)?)?;
+        }
+        Some(sum == term(c, x)?)
+    }
+    fn ratio(n: Self, d: Self) -> Q {
+        let g = gcd(n.unsigned_abs(), d.unsigned_abs());
+        // g divides both, and g >= 1 because d > 0; n/g and d/g stay in range.
+        let g = g as i128;
+        Q::new_raw(BigInt::from(n / g), BigInt::from(d / g))
+    }
+}
+
+/// Numerator and denominator of a rational, lifted into `T`.
+pub(crate) fn split<T: Int>(x: &Q) -> Option<(T, T)> {
+    Some((T::lift(x.numer())?, T::lift(x.denom())?))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn energy_balance_is_decided_alike_in_both_widths() {
+        // 2*3^2 + 1*4^2 + 0*7^2 = 34 = 34*1^2; off by one it is not.
+        for (c, want) in [(34i128, true), (35, false)] {
+            let (two, three, one, four, zero, seven) = (2i128, 3, 1, 4, 0, 7);
+            let fixed =
+                i128::squares_balance([(&two, &three), (&one, &four), (&zero, &seven)], (&c, &one));
+            let big = |x: i128| BigInt::from(x);
+            let (b2, b3, b1, b4, b0, b7, bc) =
+                (big(2), big(3), big(1), big(4), big(0), big(7), big(c));
+            let wide = BigInt::squares_balance([(&b2, &b3), (&b1, &b4), (&b0, &b7)], (&bc, &b1));
+            assert_eq!((fixed, wide), (Some(want), Some(want)));
+        }
+        let max = i128::MAX;
+        assert_eq!(
+            i128::squares_balance([(&max, &max), (&0, &0), (&0, &0)], (&1, &1)),
+            None
+        );
+    }
+}

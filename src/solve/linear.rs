@@ -1,0 +1,138 @@
+//! The linear route ([`Route::Linear`](super::Route::Linear)): the impulse equations of
+//! docs/conventions.md as a linear system, solved by elimination over any [`Field`]:
+//!
+//! - free rod, unknowns (v, V, omega):
+//!   `m v + M V = m v0` (linear momentum), `m a v + I omega = m a v0` (angular momentum about
+//!   the rod's centre), `-v + V + a omega = e v0` (Newton's restitution at the contact);
+//! - pivot at p, unknowns (v, omega), with V = -p omega and d = a - p:
+//!   `m d v + I_p omega = m d v0` (angular momentum about the pivot, I_p = I + M p^2),
+//!   `-v + d omega = e v0` (restitution).
+//!
+//! The reference route: the claims, the textbook checks, the tables and the symbolic proofs
+//! run it, over rational functions as over numbers.
+
+use super::{Outcome, outcome};
+use crate::field::Field;
+use crate::mechanics::Motion;
+use crate::scene::{Params, Support};
+use std::cmp::Ordering;
+
+/// Solves a linear system `A x = b` by Gaussian elimination over any field.
+///
+/// Exact fields take the first nonzero pivot (every choice is exact); float fields use partial
+/// pivoting (the largest magnitude). Returns `None` when the system is singular.
+///
+/// # Examples
+/// ```
+/// use rodimpact::solve::linear::solve_linear;
+/// use rodimpact::field::{q, Q};
+/// let a = vec![vec![q(0, 1), q(1, 1)], vec![q(2, 1), q(1, 1)]];
+/// let x = solve_linear(a, vec![q(3, 1), q(5, 1)]).unwrap();
+/// assert_eq!(x, vec![q(1, 1), q(3, 1)]);
+/// ```
+pub fn solve_linear<F: Field>(mut a: Vec<Vec<F>>, mut b: Vec<F>) -> Option<Vec<F>> {
+    let n = b.len();
+    for col in 0..n {
+        let candidates = (col..n).filter(|&r| !a[r][col].is_zero());
+        let pivot = if F::EXACT {
+            candidates.min()?
+        } else {
+            candidates.max_by(|&r, &s| {
+                let (x, y) = (a[r][col].nearest_f64().abs(), a[s][col].nearest_f64().abs());
+                x.partial_cmp(&y).unwrap_or(Ordering::Equal)
+            })?
+        };
+        a.swap(col, pivot);
+        b.swap(col, pivot);
+        for row in col + 1..n {
+            if a[row][col].is_zero() {
+                continue;
+            }
+            let factor = a[row][col].clone() / &a[col][col];
+            let (upper, lower) = a.split_at_mut(row);
+            for (target, pivot_entry) in lower[0][col..].iter_mut().zip(&upper[col][col..]) {
+                *target = target.clone() - &(factor.clone() * pivot_entry);
+            }
+            let delta = factor * &b[col];
+            b[row] = b[row].clone() - &delta;
+        }
+    }
+    let mut x = vec![F::zero(); n];
+    for row in (0..n).rev() {
+        let mut acc = b[row].clone();
+        for k in row + 1..n {
+            acc = acc - &(a[row][k].clone() * &x[k]);
+        }
+        x[row] = acc.checked_div(&a[row][row])?;
+    }
+    Some(x)
+}
+
+/// The impulse equations of the scene as `(A, b)`: unknowns (v, V, omega) for a free rod,
+/// (v, omega) for a pivoted one.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::Scene, solve::linear::impulse_equations, field::{q, Q}};
+/// let p = Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>();
+/// let (a, b) = impulse_equations(&p);
+/// assert_eq!(a[0], vec![q(1, 1), q(1, 1), q(0, 1)]); // m v + M V = m v0
+/// assert_eq!(b[2], q(1, 1)); // restitution: -v + V + a omega = e v0
+/// ```
+pub fn impulse_equations<F: Field>(p: &Params<F>) -> (Vec<Vec<F>>, Vec<F>) {
+    let e_v0 = p.e.clone() * &p.v0;
+    match &p.support {
+        Support::Free => {
+            let ma = p.m.clone() * &p.a;
+            (
+                vec![
+                    vec![p.m.clone(), p.rod_mass.clone(), F::zero()],
+                    vec![ma.clone(), F::zero(), p.inertia.clone()],
+                    vec![-F::one(), F::one(), p.a.clone()],
+                ],
+                vec![p.m.clone() * &p.v0, ma * &p.v0, e_v0],
+            )
+        }
+        Support::Pivot(pivot) => {
+            let d = p.a.clone() - pivot;
+            let md = p.m.clone() * &d;
+            (
+                vec![vec![md.clone(), p.inertia_about_axis()], vec![-F::one(), d]],
+                vec![md * &p.v0, e_v0],
+            )
+        }
+    }
+}
+
+/// Solves the impact: velocities after it, the pivot impulse, energies and residuals.
+///
+/// Returns `None` only when the system is singular, which a valid scene over an exact field
+/// never is (its determinant is `-(m I + M I + M m a^2)` for a free rod); a float backend can
+/// underflow to it.
+///
+/// # Examples
+/// The paper's case M = m, uniform rod hit at the end:
+/// ```
+/// use rodimpact::{scene::Scene, solve::linear::solve, field::{q, Q}};
+/// let p = Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>();
+/// let out = solve(&p).unwrap();
+/// assert_eq!((out.after.v, out.after.rod_v, out.after.omega), (q(3, 5), q(2, 5), q(6, 5)));
+/// assert!(out.residuals.all_zero());
+/// ```
+pub fn solve<F: Field>(p: &Params<F>) -> Option<Outcome<F>> {
+    let (a, b) = impulse_equations(p);
+    let x = solve_linear(a, b)?;
+    let after = match &p.support {
+        Support::Free => Motion {
+            v: x[0].clone(),
+            rod_v: x[1].clone(),
+            omega: x[2].clone(),
+        },
+        Support::Pivot(pivot) => Motion {
+            v: x[0].clone(),
+            rod_v: -(pivot.clone() * &x[1]),
+            omega: x[1].clone(),
+        },
+    };
+    Some(outcome(p, after))
+}
