@@ -9,6 +9,8 @@
 
 use crate::field::Field;
 use crate::scene::Params;
+use num_traits::One;
+use std::ops::{Add, Div, Mul};
 
 /// The velocities of the two bodies at one instant.
 #[derive(Debug, Clone, PartialEq)]
@@ -133,6 +135,85 @@ impl<F: Field> Motion<F> {
     /// ```
     pub fn rod_point_velocity(&self, y: &F) -> F {
         self.rod_v.clone() + &(self.omega.clone() * y)
+    }
+}
+
+/// The paper's dimensionless groups of a free rod: `r = m/M`, `s = m a^2/I`, `q = r + s` and
+/// the denominator `D = 1 + q` of its Eqs. (v), (V), (omega), with `m a/I` on the way.
+///
+/// The one definition of D: the closed form, the float formulas and the condition numbers
+/// compute them here. They need only by-value arithmetic, so the exponent-carried floats of
+/// the stable formulas use them too, and the order of operations is fixed (`s` as
+/// `(m a/I) a`), so every float route rounds alike.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{field::q, mechanics::Groups};
+/// // The paper's uniform rod with M = m, hit at the end: I = 1/3, a = 1.
+/// let g = Groups::of(&q(1, 1), &q(1, 1), &q(1, 3), &q(1, 1));
+/// assert_eq!((g.r, g.s, g.q, g.d), (q(1, 1), q(3, 1), q(4, 1), q(5, 1)));
+/// assert_eq!(g.ma_over_i, q(3, 1));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Groups<F> {
+    /// `r = m/M`, the mass ratio.
+    pub r: F,
+    /// `m a/I`: omega's factor, `omega = (1 + e) (m a/I)/D v0`.
+    pub ma_over_i: F,
+    /// `s = m a^2/I = (m a/I) a`.
+    pub s: F,
+    /// `q = r + s`.
+    pub q: F,
+    /// `D = 1 + q`.
+    pub d: F,
+}
+
+impl<F> Groups<F>
+where
+    F: Clone + One + for<'a> Add<&'a F, Output = F>,
+    F: for<'a> Mul<&'a F, Output = F> + for<'a> Div<&'a F, Output = F>,
+{
+    /// The groups of projectile mass `m`, rod mass `rod_mass`, inertia `inertia` about the centre
+    /// and impact distance `a` (divisions unchecked: `rod_mass` and `inertia` nonzero).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::mechanics::Groups;
+    /// let g = Groups::of(&1.0f64, &2.0, &0.5, &0.5);
+    /// assert_eq!((g.r, g.s, g.d), (0.5, 0.5, 2.0));
+    /// ```
+    pub fn of(m: &F, rod_mass: &F, inertia: &F, a: &F) -> Groups<F> {
+        let r = m.clone() / rod_mass;
+        let ma_over_i = m.clone() * a / inertia;
+        let s = ma_over_i.clone() * a;
+        let q = r.clone() + &s;
+        let d = F::one() + &q;
+        Groups {
+            r,
+            ma_over_i,
+            s,
+            q,
+            d,
+        }
+    }
+}
+
+impl<F: Field> Groups<F> {
+    /// The groups of a free-rod scene `p` (its support is not looked at); `None` when `M` or `I`
+    /// is zero (a float that underflowed).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::{q, Q}, mechanics::Groups, scene::Scene};
+    /// let p = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?.params::<Q>();
+    /// assert_eq!(Groups::of_params(&p).unwrap().d, q(11, 4)); // 1 + 1 + 3/4
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn of_params(p: &Params<F>) -> Option<Groups<F>> {
+        if p.rod_mass.is_zero() || p.inertia.is_zero() {
+            return None;
+        }
+        Some(Groups::of(&p.m, &p.rod_mass, &p.inertia, &p.a))
     }
 }
 

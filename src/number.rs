@@ -540,6 +540,24 @@ mod tests {
             prop_assert_eq!(parse(&decimal(&value, 60)), Ok(value.clone()));
         }
 
+        /// Law: `compact` (which decides exactness from the rounding remainder) prints the first
+        /// of `decimal(x, 1..=15)` that parses back to `x`, as it was first defined.
+        #[test]
+        fn compact_prints_the_first_decimal_that_parses_back(n in -10i64.pow(9)..10i64.pow(9), d in prop::sample::select(vec![1i64, 3, 7, 8]), k in 0u64..70, tiny in any::<bool>()) {
+            prop_assume!(n != 0);
+            let scale = Q::from_integer(ten_to(k));
+            let x = if tiny { q(n, d) / scale } else { q(n, d) * scale };
+            let by_parsing = if x.to_string().chars().count() <= crate::field::decimal::COMPACT_CHARS {
+                x.to_string()
+            } else {
+                (1..=15)
+                    .map(|digits| decimal(&x, digits))
+                    .find(|text| parse(text).is_ok_and(|y| y == x))
+                    .unwrap_or_else(|| format!("≈ {}", decimal(&x, 6)))
+            };
+            prop_assert_eq!(crate::field::decimal::compact(&x), by_parsing);
+        }
+
         /// `decimal` agrees with Rust's own correctly rounded float formatting in scientific form.
         #[test]
         fn decimal_matches_float_formatting(x in -1e12f64..1e12, digits in 1usize..17) {

@@ -25,21 +25,28 @@ pub enum RodInertia {
 }
 
 impl RodInertia {
-    /// The moment of inertia about the rod's centre for rod mass `mass` and half-length `l`.
+    /// The moment of inertia about the rod's centre for rod mass `mass` and half-length `l`, in
+    /// any field: the one definition of the four mass distributions (I = M l^2/3, M l^2,
+    /// M r_G^2, or I as given). Over rational functions it gives the symbolic inertia.
     ///
     /// # Examples
     /// ```
     /// use rodimpact::scene::RodInertia;
-    /// use rodimpact::field::q;
+    /// use rodimpact::field::{q, RatFn};
     /// assert_eq!(RodInertia::Uniform.moment(&q(3, 1), &q(2, 1)), q(4, 1));
     /// assert_eq!(RodInertia::Gyration(q(1, 2)).moment(&q(3, 1), &q(2, 1)), q(3, 4));
+    /// let (big_m, l) = (RatFn::symbol("M"), RatFn::symbol("l"));
+    /// assert_eq!(RodInertia::Uniform.moment(&big_m, &l).to_string(), "1/3*M*l^2");
     /// ```
-    pub fn moment(&self, mass: &Q, l: &Q) -> Q {
+    pub fn moment<F: Field>(&self, mass: &F, l: &F) -> F {
         match self {
-            RodInertia::Uniform => mass * l * l / Q::from_integer(3.into()),
-            RodInertia::Dumbbell => mass * l * l,
-            RodInertia::Gyration(r) => mass * r * r,
-            RodInertia::Moment(i) => i.clone(),
+            RodInertia::Uniform => mass.clone() * l * l / F::from_i64(3),
+            RodInertia::Dumbbell => mass.clone() * l * l,
+            RodInertia::Gyration(r) => {
+                let r = F::from_rational(r);
+                mass.clone() * &r * &r
+            }
+            RodInertia::Moment(i) => F::from_rational(i),
         }
     }
 

@@ -611,11 +611,81 @@ mod tests {
         assert_eq!(decimal_sqrt(&big_x, 5), "1.4142e300");
     }
 
+    /// The old textbook definition of the magnitude, by decimal string lengths: an independent
+    /// derivation to hold [`magnitude`] (from bit lengths) to.
+    fn magnitude_by_digits(x: &Q) -> i64 {
+        let x = x.abs();
+        let digits = |n: &BigInt| n.to_string().len() as i64;
+        let mut e = digits(x.numer()) - digits(x.denom());
+        while pow10(e) > x {
+            e -= 1;
+        }
+        while pow10(e + 1) <= x {
+            e += 1;
+        }
+        e
+    }
+
+    #[test]
+    fn round_at_table() {
+        use Rounding::*;
+        let table = [
+            (q(25, 10), 0, HalfEven, q(2, 1)),
+            (q(35, 10), 0, HalfEven, q(4, 1)),
+            (q(25, 10), 0, HalfAwayFromZero, q(3, 1)),
+            (q(-25, 10), 0, HalfAwayFromZero, q(-3, 1)),
+            (q(25, 10), 0, HalfTowardZero, q(2, 1)),
+            (q(-25, 10), 0, HalfTowardZero, q(-2, 1)),
+            (q(-21, 10), 0, Floor, q(-3, 1)),
+            (q(-21, 10), 0, Ceiling, q(-2, 1)),
+            (q(1551, 1), 2, HalfAwayFromZero, q(1600, 1)),
+            (q(1549, 1), 2, HalfAwayFromZero, q(1500, 1)),
+            (q(2, 3), -3, HalfEven, q(667, 1000)),
+            (q(7, 1), -2, Floor, q(7, 1)),
+        ];
+        for (x, place, rounding, want) in table {
+            assert_eq!(
+                round_at(&x, place, rounding),
+                want,
+                "{x} at {place} {rounding:?}"
+            );
+        }
+    }
+
     proptest! {
         /// `sqrt_bounds` encloses the root within the requested relative precision.
         #[test]
         fn sqrt_bounds_enclose(n in 1u64..u64::MAX, d in 1u64..u64::MAX, digits in 0usize..50) {
             check_bounds(&Q::new(BigInt::from(n), BigInt::from(d)), digits);
+        }
+
+        /// Law: the magnitude from bit lengths is the magnitude from decimal string lengths.
+        #[test]
+        fn magnitude_agrees_with_the_digit_count(n in -10i64.pow(15)..10i64.pow(15), d in 1i64..10i64.pow(15), k in 0u64..60) {
+            prop_assume!(n != 0);
+            let x = q(n, d) * Q::from_integer(ten_to(k));
+            prop_assert_eq!(magnitude(&x), magnitude_by_digits(&x));
+            let y = q(n, d) / Q::from_integer(ten_to(k));
+            prop_assert_eq!(magnitude(&y), magnitude_by_digits(&y));
+        }
+
+        /// Law: `round_at` lands on a multiple of 10^place, no further than the rounding allows:
+        /// within half a unit to nearest, within a unit toward minus or plus infinity, on the
+        /// side the direction says.
+        #[test]
+        fn round_at_is_a_nearby_multiple(n in -10i64.pow(12)..10i64.pow(12), d in 1i64..10i64.pow(6), place in -8i64..8) {
+            let x = q(n, d);
+            let unit = pow10(place);
+            for rounding in [Rounding::HalfEven, Rounding::HalfAwayFromZero, Rounding::HalfTowardZero, Rounding::Floor, Rounding::Ceiling] {
+                let r = round_at(&x, place, rounding);
+                prop_assert!((&r / &unit).is_integer(), "{} {:?}", r, rounding);
+                let gap = &r - &x;
+                match rounding {
+                    Rounding::Floor => prop_assert!(!gap.is_positive() && -&gap < unit),
+                    Rounding::Ceiling => prop_assert!(!gap.is_negative() && gap < unit),
+                    _ => prop_assert!(gap.abs() * Q::from_integer(2.into()) <= unit),
+                }
+            }
         }
     }
 }

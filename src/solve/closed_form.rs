@@ -3,13 +3,13 @@
 //! independent of the linear solve; the naive float formula is this route in f64.
 
 use crate::field::Field;
-use crate::mechanics::Motion;
+use crate::mechanics::{Groups, Motion};
 use crate::scene::{Params, Support};
 
 /// The closed forms: the paper's Eqs. (v), (V), (omega) generalised to restitution e, and the
 /// fixed-axis formula for a pivoted rod. A second path, independent of [`super::linear::solve`].
 ///
-/// Free rod, with r = m/M, s = m a^2/I, q = r + s:
+/// Free rod, with the paper's groups ([`Groups`]) r = m/M, s = m a^2/I, q = r + s:
 /// `v = (q - e)/(1 + q) v0`, `V = (1 + e) r/(1 + q) v0`, `omega = (1 + e)(m a/I)/(1 + q) v0`
 /// (for e = 1 exactly the paper's `v = -(1 - m/M - m a^2/I)/D v0` with D = 1 + q).
 /// Pivot at p, d = a - p: `omega = (1 + e) m d v0/(I_p + m d^2)`, `v = d omega - e v0`,
@@ -23,14 +23,12 @@ use crate::scene::{Params, Support};
 /// assert_eq!((m.v, m.omega), (q(1, 2), q(1, 2)));
 /// ```
 pub fn closed_form<F: Field>(p: &Params<F>) -> Option<Motion<F>> {
-    let one = F::one();
-    let one_plus_e = one.clone() + &p.e;
+    let one_plus_e = F::one() + &p.e;
     match &p.support {
         Support::Free => {
-            let r = p.m.checked_div(&p.rod_mass)?;
-            let ma_over_i = (p.m.clone() * &p.a).checked_div(&p.inertia)?;
-            let q = r.clone() + &(ma_over_i.clone() * &p.a);
-            let d = one + &q;
+            let Groups {
+                r, ma_over_i, q, d, ..
+            } = Groups::of_params(p)?;
             Some(Motion {
                 v: (q - &p.e).checked_div(&d)? * &p.v0,
                 rod_v: (one_plus_e.clone() * &r).checked_div(&d)? * &p.v0,

@@ -146,7 +146,8 @@ impl FractionFree {
     }
 }
 
-/// g = I/M as (gn, gd), gd > 0, not necessarily reduced.
+/// g = I/M as (gn, gd), gd > 0, not necessarily reduced: [`RodInertia::moment`] of a unit
+/// mass, written on integers (a rational `l^2/3` would reduce, which this route avoids).
 fn inertia_per_mass<T: Int>(scene: &Scene) -> Option<(T, T)> {
     let square = |x: &Q| -> Option<(T, T)> {
         let (n, d) = split::<T>(x)?;

@@ -2,7 +2,7 @@
 //! (`docs/stability.md`), in the inputs m, M, I, a, v0 (and e when e is not a float of the format).
 
 use crate::field::Q;
-use crate::mechanics::Motion;
+use crate::mechanics::{Groups, Motion};
 use crate::scene::Params;
 use num_traits::{One, Signed, Zero};
 
@@ -11,7 +11,7 @@ use num_traits::{One, Signed, Zero};
 ///
 /// cond_v = 1 + (1+e)(2r+4s)/(|q-e|(1+q)) [+ e/|q-e|],
 /// cond_V = 1 + (2+4s)/(1+q) [+ e/(1+e)],
-/// cond_omega = 1 + (2+2r+|1+r-s|)/(1+q) [+ e/(1+e)], with r = m/M, s = m a^2/I, q = r + s.
+/// cond_omega = 1 + (2+2r+|1+r-s|)/(1+q) [+ e/(1+e)], with the paper's groups ([`Groups`]) r = m/M, s = m a^2/I, q = r + s.
 ///
 /// # Examples
 /// ```
@@ -29,10 +29,7 @@ pub fn condition(p: &Params<Q>, e_rounds: bool) -> Motion<Option<Q>> {
     let two = Q::from_integer(2.into());
     let four = Q::from_integer(4.into());
     let e = &p.e;
-    let r = &p.m / &p.rod_mass;
-    let s = &p.m * &p.a * &p.a / &p.inertia;
-    let q = &r + &s;
-    let d = &one + &q;
+    let Groups { r, s, q, d, .. } = Groups::of(&p.m, &p.rod_mass, &p.inertia, &p.a);
     let e_term = |denominator: &Q| {
         if e_rounds { e / denominator } else { Q::zero() }
     };

@@ -10,10 +10,9 @@
 
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
+use crate::field::decimal::{self, Rounding, magnitude};
 use crate::number;
-use num_bigint::BigInt;
-use num_integer::Integer;
-use num_traits::{One, Signed, Zero};
+use num_traits::Zero;
 
 /// The most significant figures a claim may carry or `--sig` may ask for.
 pub const MAX_SIG: u32 = 1_000;
@@ -186,49 +185,6 @@ fn infer(text: &str, value: &Q) -> Precision {
     }
 }
 
-/// `floor(log10 |x|)` for `x != 0` (0 for zero).
-///
-/// # Examples
-/// ```
-/// use rodimpact::textbook::sigfig::magnitude;
-/// use rodimpact::field::q;
-/// assert_eq!(magnitude(&q(1500, 1)), 3);
-/// assert_eq!(magnitude(&q(1, 20)), -2);
-/// assert_eq!(magnitude(&q(1, 1)), 0);
-/// ```
-pub fn magnitude(x: &Q) -> i64 {
-    if x.is_zero() {
-        return 0;
-    }
-    let x = x.abs();
-    let digits = |n: &BigInt| n.to_string().len() as i64;
-    let mut e = digits(x.numer()) - digits(x.denom());
-    // 10^e <= x < 10^(e+1) after at most one step each way.
-    while pow10(e) > x {
-        e -= 1;
-    }
-    while pow10(e + 1) <= x {
-        e += 1;
-    }
-    e
-}
-
-/// `10^k` exactly.
-///
-/// # Examples
-/// ```
-/// use rodimpact::textbook::sigfig::pow10;
-/// assert_eq!(pow10(-2).to_string(), "1/100");
-/// ```
-pub fn pow10(k: i64) -> Q {
-    let p = num_traits::pow(BigInt::from(10), k.unsigned_abs() as usize);
-    if k >= 0 {
-        Q::from_integer(p)
-    } else {
-        Q::new(BigInt::one(), p)
-    }
-}
-
 /// Which way an exact half rounds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Tie {
@@ -238,7 +194,23 @@ pub enum Tie {
     Down,
 }
 
-/// `x` rounded to a multiple of `10^place`.
+impl Tie {
+    /// The rounding of [`crate::field::decimal`] this tie rule is.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::decimal::Rounding, textbook::sigfig::Tie};
+    /// assert_eq!(Tie::Up.rounding(), Rounding::HalfAwayFromZero);
+    /// ```
+    pub fn rounding(self) -> Rounding {
+        match self {
+            Tie::Up => Rounding::HalfAwayFromZero,
+            Tie::Down => Rounding::HalfTowardZero,
+        }
+    }
+}
+
+/// `x` rounded to a multiple of `10^place` ([`decimal::round_at`] with the tie rule).
 ///
 /// # Examples
 /// ```
@@ -249,18 +221,7 @@ pub enum Tie {
 /// assert_eq!(round_at(&q(-36, 19), -2, Tie::Up), q(-189, 100));
 /// ```
 pub fn round_at(x: &Q, place: i64, tie: Tie) -> Q {
-    let unit = pow10(place);
-    let scaled = x.abs() / &unit;
-    let (whole, rest) = scaled.numer().div_rem(scaled.denom());
-    let twice: BigInt = rest * 2;
-    let up = match twice.cmp(scaled.denom()) {
-        std::cmp::Ordering::Greater => true,
-        std::cmp::Ordering::Equal => tie == Tie::Up,
-        std::cmp::Ordering::Less => false,
-    };
-    let whole = if up { whole + 1 } else { whole };
-    let rounded = Q::from_integer(whole) * unit;
-    if x.is_negative() { -rounded } else { rounded }
+    decimal::round_at(x, place, tie.rounding())
 }
 
 /// `x` rounded to `figures` significant figures.

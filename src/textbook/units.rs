@@ -5,7 +5,8 @@
 
 use crate::error::Error;
 use crate::field::Q;
-use crate::textbook::sigfig::{Printed, pow10};
+use crate::field::decimal::pow10;
+use crate::textbook::sigfig::Printed;
 use crate::units::split_unit;
 pub use crate::units::{Dimension, Scale, Unit};
 use num_bigint::BigInt;

@@ -1,10 +1,11 @@
 //! Verdicts: a printed number against the exact value (by significant figures), an exact number
 //! against it (exactly), and the report that lists them.
 
-use super::sigfig::{Precision, Printed, Tie, magnitude, pow10, round_at, round_sig};
+use super::sigfig::{Precision, Printed, Tie, round_at, round_sig};
 use super::units::{Measured, Scale, pi_bounds};
 use super::{Claim, ClaimValue, Exact, Quantity};
 use crate::field::decimal;
+use crate::field::decimal::{magnitude, pow10};
 use crate::field::{Field, Q, QSqrt};
 use num_traits::{Signed, Zero};
 use serde_json::{Value, json};

@@ -10,7 +10,7 @@ use super::Real;
 use crate::field::Q;
 use num_bigint::{BigInt, BigUint};
 use num_integer::Integer;
-use num_traits::{Signed, Zero};
+use num_traits::{One, Signed, Zero};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// `f 2^k` with a normalised mantissa and an unbounded (i32) exponent.
@@ -181,6 +181,26 @@ impl<T: Real> Sub for Ext<T> {
     type Output = Ext<T>;
     fn sub(self, rhs: Ext<T>) -> Ext<T> {
         self + -rhs
+    }
+}
+
+/// The by-reference right operands, as the generic formulas ([`crate::mechanics::Groups`])
+/// write them: the same operations on a copy.
+macro_rules! by_reference {
+    ($($Trait:ident $method:ident),*) => {$(
+        impl<T: Real> $Trait<&Ext<T>> for Ext<T> {
+            type Output = Ext<T>;
+            fn $method(self, rhs: &Ext<T>) -> Ext<T> {
+                $Trait::$method(self, *rhs)
+            }
+        }
+    )*};
+}
+by_reference!(Add add, Mul mul, Div div);
+
+impl<T: Real> One for Ext<T> {
+    fn one() -> Ext<T> {
+        Ext::new(T::one())
     }
 }
 

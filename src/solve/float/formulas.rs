@@ -4,7 +4,7 @@
 
 use super::{Ext, Real, compensated};
 use crate::field::Q;
-use crate::mechanics::Motion;
+use crate::mechanics::{Groups, Motion};
 use crate::scene::{Params, Scene, Support};
 use crate::solve::closed_form::closed_form;
 
@@ -138,11 +138,13 @@ fn scaled<T: Real>(p: &Params<T>) -> Option<Motion<T>> {
     let (m, rod_mass) = (p.m * mass_scale, p.rod_mass * mass_scale);
     let (inertia, a) = (p.inertia * inertia_scale, p.a * length_scale);
     let one = T::one();
-    let r = m / rod_mass;
-    let ma_over_i = m * a / inertia;
-    let arm = ma_over_i * a;
-    let q = r + arm;
-    let d = one + q;
+    let Groups {
+        r,
+        ma_over_i,
+        s: arm,
+        q,
+        d,
+    } = Groups::of(&m, &rod_mass, &inertia, &a);
     let n = q - p.e;
     let gain = (one + p.e) / d * p.v0;
     let (v, rod_v, omega) = (n / d * p.v0, gain * r, gain * ma_over_i);
@@ -174,10 +176,9 @@ fn scaled<T: Real>(p: &Params<T>) -> Option<Motion<T>> {
 fn stable<T: Real>(inputs: [Ext<T>; 6], compensated: bool) -> Motion<T> {
     let [m, rod_mass, inertia, a, v0, e] = inputs;
     let one = Ext::new(T::one());
-    let r = m / rod_mass;
-    let ma_over_i = m * a / inertia;
-    let q = r + ma_over_i * a;
-    let d = one + q;
+    let Groups {
+        r, ma_over_i, q, d, ..
+    } = Groups::of(&m, &rod_mass, &inertia, &a);
     let n = if compensated {
         compensated::numerator(m, rod_mass, inertia, a, e)
     } else {
