@@ -575,7 +575,7 @@ impl ClaimStats {
 /// The first bad row in input order (`row N, column X: ...`), an over-long line or too many
 /// rows, `row N: cannot read: ...` when reading fails, `out: ...` when writing fails. Every row
 /// before the bad one is written first (so a stream shows all the good rows up to it): write to
-/// an [`crate::report::AtomicFile`] to publish all or nothing.
+/// an [`crate::io::AtomicFile`] to publish all or nothing.
 ///
 /// # Examples
 /// ```

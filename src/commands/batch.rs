@@ -5,7 +5,7 @@ use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use rodimpact::batch::{Backend, Batch, MAX_LINE, Summary, run};
 use rodimpact::echo::{echo, echo_path};
-use rodimpact::report::AtomicFile;
+use rodimpact::io::AtomicFile;
 use rodimpact::{Error, ErrorKind};
 use std::io::{BufRead, BufReader, IsTerminal, Read, Write};
 use std::path::PathBuf;

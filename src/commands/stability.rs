@@ -3,7 +3,8 @@
 
 use super::{Failure, print_out};
 use clap::{Args, ValueEnum};
-use rodimpact::report::{plot_stability, write_atomic};
+use rodimpact::io::write_atomic;
+use rodimpact::report::plot_stability;
 use rodimpact::stability::{json, markdown, report};
 use std::path::PathBuf;
 

@@ -1,11 +1,10 @@
-//! Output: the forms in which results leave the library (JSON, text, and later Markdown, LaTeX,
-//! CSV and SVG).
+//! Output: every form in which results leave the library (JSON, text, Markdown, LaTeX, CSV and
+//! SVG). The library computes values; this module turns them into text. Writing the text to
+//! files, atomically, is [`crate::io`]'s job.
 
 mod backend;
 mod claims_doc;
-mod files;
 pub mod markup;
-mod output_dir;
 mod paper_tables;
 mod plot;
 mod proofs;
@@ -15,8 +14,6 @@ mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
 pub use claims_doc::claims_markdown;
-pub use files::{AtomicFile, create_output_dir, remove_temporaries_on_signals, write_atomic};
-pub use output_dir::write_directory;
 pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
 pub use plot::{
     Figure, PlotData, PlotValue, energy_figure, mass_ratio_family, omega_figure, optimum_figure,
