@@ -3,6 +3,7 @@
 //! files, atomically, is [`crate::io`]'s job.
 
 mod backend;
+mod check;
 mod claims_doc;
 pub mod markup;
 mod paper_tables;
@@ -13,6 +14,10 @@ mod solution;
 mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
+pub use check::{
+    agreement_json, agreement_key, agreement_label, agreement_line, answer_json, check_json,
+    check_summary, check_table, problems_json, problems_text, rel_error_text,
+};
 pub use claims_doc::claims_markdown;
 pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
 pub use plot::{
