@@ -3,6 +3,7 @@
 //! files, atomically, is [`crate::io`]'s job.
 
 mod backend;
+mod batch;
 mod check;
 mod claims_doc;
 pub mod markup;
@@ -14,6 +15,7 @@ mod solution;
 mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
+pub use batch::batch_summary;
 pub use check::{
     agreement_json, agreement_key, agreement_label, agreement_line, answer_json, check_json,
     check_summary, check_table, problems_json, problems_text, rel_error_text,
