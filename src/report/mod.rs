@@ -12,6 +12,7 @@ mod plot;
 mod proofs;
 mod simulate;
 mod solution;
+mod stability;
 mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
@@ -34,6 +35,7 @@ pub use simulate::{
     simulation_json, simulation_passes, simulation_text, sweep_json, sweep_passes, sweep_text,
 };
 pub use solution::Solution;
+pub use stability::{stability_json, stability_markdown};
 pub use table::{Cell, Column, Format, Table, render_document};
 
 use crate::field::Q;
