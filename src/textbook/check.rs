@@ -66,8 +66,23 @@ pub fn check_scene_within(
     }
     let given = GivenScene::read(input, budget)?;
     if given.has_formula() || claims.iter().any(ClaimedAnswer::is_symbolic) {
-        return check_symbolic(&given, claims, sig, budget);
+        check_symbolic(&given, claims, sig, budget)
+    } else {
+        check_numeric(input, claims, sig)
     }
+}
+
+/// Checks claims about a scene of numbers: solved over Q (a* and omega_max in Q(sqrt d)), each
+/// claim decided numerically.
+///
+/// # Errors
+/// Bad scene input; a scene that is not all numbers (a missing mass); `pivot_impulse` of a
+/// free rod.
+fn check_numeric(
+    input: &SceneInput,
+    claims: &[ClaimedAnswer],
+    sig: Option<u32>,
+) -> Result<SceneCheck, Error> {
     let scene = input.build().map_err(|e| numeric_scene_needed(e, claims))?;
     let params = scene.params::<Q>();
     let out = solved(&params);
