@@ -131,10 +131,10 @@ fn printed(d: &mut CheckedAnswer, m: &Measured, exact: &Exact, omega: bool, sig:
         } else {
             continue;
         };
-        let Some(verdict) = judge(&claim_value, &p, &lo, &hi) else {
+        let Some(agreement) = judge(&claim_value, &p, &lo, &hi) else {
             continue;
         };
-        d.agreement = verdict;
+        d.agreement = agreement;
         let mid = (&lo + &hi) / Q::from_integer(2.into());
         d.rel_error = RelError::new(claim_value.clone(), mid.clone());
         if omega && !p.value.is_zero() && !mid.is_zero() && p.value.is_negative() != negative {
@@ -150,7 +150,7 @@ fn printed(d: &mut CheckedAnswer, m: &Measured, exact: &Exact, omega: bool, sig:
         .push("not decided: the exact value's bounds (and pi's, to 100 decimals) are too wide for these figures".into());
 }
 
-/// The verdict of a printed value against an exact value known to lie in `[lo, hi]`, or `None`
+/// The agreement of a printed value against an exact value known to lie in `[lo, hi]`, or `None`
 /// when the interval is still too wide to decide the rounding.
 fn judge(claim: &Q, p: &Printed, lo: &Q, hi: &Q) -> Option<Agreement> {
     let round = |x: &Q, tie: Tie| match &p.precision {
