@@ -33,6 +33,7 @@ pub mod error;
 pub mod fast;
 pub mod field;
 pub mod float;
+pub mod io;
 pub mod mechanics;
 pub mod number;
 pub mod optimum;

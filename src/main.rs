@@ -68,7 +68,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    if let Err(e) = rodimpact::report::remove_temporaries_on_signals() {
+    if let Err(e) = rodimpact::io::remove_temporaries_on_signals() {
         commands::print_err(&format!("error: {e}\n"));
         return ExitCode::from(2);
     }

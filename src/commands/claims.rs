@@ -3,6 +3,7 @@
 use super::{Failure, parse_ratios, print_out};
 use clap::Args;
 use rodimpact::claims::{self, Decided, Paper};
+use rodimpact::io::write_directory;
 use rodimpact::report::{self, Format, TableOptions};
 use rodimpact::scene::{RodInertia, SceneInput};
 use rodimpact::{Error, ErrorKind};
@@ -85,7 +86,7 @@ fn write_certificates(
     if complete {
         files.push(("README.md".into(), report::index_markdown(decided)));
     }
-    report::write_directory(field, dir, &files)
+    write_directory(field, dir, &files)
 }
 
 fn all_checked(decided: &[Decided]) -> Result<(), Failure> {
@@ -131,7 +132,7 @@ pub(crate) fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     print_out(&report::render_document(&tables[..3], Format::Markdown));
     if let Some(dir) = &args.out {
         let files = report::paper_files(&decided, &tables, &paper_figures()?);
-        report::write_directory("out", dir, &files)?;
+        write_directory("out", dir, &files)?;
     }
     all_checked(&decided)
 }

@@ -1,7 +1,7 @@
 //! The backends compared by the stability report: f64 and f32 with each [`Formula`], the
 //! outward-rounded interval, and exact rationals; each evaluated and measured on one scene.
 
-use super::{Measured, condition};
+use super::{Accuracy, condition};
 use crate::field::{Field, Interval, Q};
 use crate::float::{Formula, Real};
 use crate::mechanics::Motion;
@@ -132,11 +132,11 @@ impl Backend {
     /// assert!(encloses);
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
-    pub fn measure(self, scene: &Scene, reference: &Reference) -> Option<(Motion<Measured>, bool)> {
+    pub fn measure(self, scene: &Scene, reference: &Reference) -> Option<(Motion<Accuracy>, bool)> {
         let cond = self.condition(reference);
         let u = self.unit_roundoff();
         let exact = &reference.motion;
-        let each = |measure: &dyn Fn(usize) -> Measured| Motion {
+        let each = |measure: &dyn Fn(usize) -> Accuracy| Motion {
             v: measure(0),
             rod_v: measure(1),
             omega: measure(2),
@@ -146,7 +146,7 @@ impl Backend {
         let floats = |x: &Motion<f64>| {
             let at = |i: usize| [x.v, x.rod_v, x.omega][i];
             (
-                each(&|i| Measured::of(at(i), exact_of(i), cond_of(i), &u)),
+                each(&|i| Accuracy::of(at(i), exact_of(i), cond_of(i), &u)),
                 true,
             )
         };
@@ -165,13 +165,13 @@ impl Backend {
                 let x = closed_form(&scene.params::<Interval>())?;
                 let at = |i: usize| [&x.v, &x.rod_v, &x.omega][i];
                 let encloses = (0..3).all(|i| at(i).contains(exact_of(i)));
-                let measured = each(&|i| Measured::of_interval(at(i), exact_of(i), cond_of(i), &u));
+                let measured = each(&|i| Accuracy::of_interval(at(i), exact_of(i), cond_of(i), &u));
                 Some((measured, encloses))
             }
             Backend::Exact => {
                 let x = closed_form(&scene.params::<Q>())?;
                 let at = |i: usize| [&x.v, &x.rod_v, &x.omega][i];
-                Some((each(&|i| Measured::of_exact(at(i), exact_of(i))), true))
+                Some((each(&|i| Accuracy::of_exact(at(i), exact_of(i))), true))
             }
         }
     }

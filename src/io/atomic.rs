@@ -34,7 +34,7 @@ use std::sync::{Mutex, MutexGuard, OnceLock, PoisonError};
 /// let dir = std::env::temp_dir().join(format!("rodimpact-doc-{}", std::process::id()));
 /// std::fs::create_dir_all(&dir).unwrap();
 /// let path = dir.join("x.md");
-/// rodimpact::report::write_atomic("out", &path, "hello\n").unwrap();
+/// rodimpact::io::write_atomic("out", &path, "hello\n").unwrap();
 /// assert_eq!(std::fs::read_to_string(&path).unwrap(), "hello\n");
 /// # std::fs::remove_dir_all(&dir).unwrap();
 /// ```
@@ -43,27 +43,6 @@ pub fn write_atomic(field: &str, path: &Path, contents: &str) -> Result<(), Erro
     file.write_all(contents.as_bytes())
         .map_err(|why| io_error(field, path, why))?;
     file.commit()
-}
-
-/// Creates `dir` (and its parents) for output.
-///
-/// # Errors
-/// `field: cannot create <dir>: <reason>`.
-///
-/// # Examples
-/// ```
-/// let dir = std::env::temp_dir().join(format!("rodimpact-doc-dir-{}", std::process::id()));
-/// rodimpact::report::create_output_dir("write", &dir).unwrap();
-/// assert!(dir.is_dir());
-/// # std::fs::remove_dir_all(&dir).unwrap();
-/// ```
-pub fn create_output_dir(field: &str, dir: &Path) -> Result<(), Error> {
-    fs::create_dir_all(dir).map_err(|why| {
-        Error::new(
-            field,
-            ErrorKind::Io(format!("cannot create {}: {why}", echo_path(dir))),
-        )
-    })
 }
 
 /// An output file written as a stream, atomically: the bytes go to a temporary file in the
@@ -78,7 +57,7 @@ pub fn create_output_dir(field: &str, dir: &Path) -> Result<(), Error> {
 /// let dir = std::env::temp_dir().join(format!("rodimpact-doc-atomic-{}", std::process::id()));
 /// std::fs::create_dir_all(&dir).unwrap();
 /// let path = dir.join("rows.csv");
-/// let mut out = rodimpact::report::AtomicFile::create("out", &path).unwrap();
+/// let mut out = rodimpact::io::AtomicFile::create("out", &path).unwrap();
 /// out.write_all(b"a,b\n").unwrap();
 /// assert!(!path.exists()); // nothing visible before the commit
 /// out.commit().unwrap();
@@ -114,7 +93,7 @@ impl AtomicFile {
     ///
     /// # Examples
     /// ```
-    /// let err = rodimpact::report::AtomicFile::create("out", "/nonexistent/x.csv".as_ref());
+    /// let err = rodimpact::io::AtomicFile::create("out", "/nonexistent/x.csv".as_ref());
     /// assert!(err.err().unwrap().to_string().starts_with("out: cannot write /nonexistent/x.csv"));
     /// ```
     pub fn create(field: &str, path: &Path) -> Result<AtomicFile, Error> {
@@ -155,7 +134,7 @@ impl AtomicFile {
     /// use std::io::Write;
     /// let dir = std::env::temp_dir().join(format!("rodimpact-doc-commit-{}", std::process::id()));
     /// std::fs::create_dir_all(&dir).unwrap();
-    /// let mut dropped = rodimpact::report::AtomicFile::create("out", &dir.join("a.csv")).unwrap();
+    /// let mut dropped = rodimpact::io::AtomicFile::create("out", &dir.join("a.csv")).unwrap();
     /// dropped.write_all(b"x").unwrap();
     /// drop(dropped); // no commit: nothing left behind
     /// assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
@@ -363,8 +342,8 @@ fn temporaries() -> MutexGuard<'static, Vec<PathBuf>> {
 ///
 /// # Examples
 /// ```
-/// rodimpact::report::remove_temporaries_on_signals().unwrap();
-/// rodimpact::report::remove_temporaries_on_signals().unwrap(); // once is enough
+/// rodimpact::io::remove_temporaries_on_signals().unwrap();
+/// rodimpact::io::remove_temporaries_on_signals().unwrap(); // once is enough
 /// ```
 pub fn remove_temporaries_on_signals() -> Result<(), Error> {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};

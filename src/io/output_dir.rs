@@ -47,13 +47,13 @@ fn io_error(field: &str, path: &Path, why: impl std::fmt::Display) -> Error {
 /// ```
 /// let dir = std::env::temp_dir().join(format!("rodimpact-doc-outdir-{}", std::process::id()));
 /// let files = [("a.md".to_string(), "new\n".to_string())];
-/// rodimpact::report::write_directory("out", &dir, &files).unwrap();
+/// rodimpact::io::write_directory("out", &dir, &files).unwrap();
 /// std::fs::write(dir.join("notes.txt"), "mine").unwrap();
 /// std::fs::create_dir(dir.join("b.md")).unwrap(); // in the way of the next run
 /// let more = [files[0].clone(), ("b.md".to_string(), "b\n".to_string())];
-/// assert!(rodimpact::report::write_directory("out", &dir, &more).is_err());
+/// assert!(rodimpact::io::write_directory("out", &dir, &more).is_err());
 /// std::fs::remove_dir(dir.join("b.md")).unwrap();
-/// rodimpact::report::write_directory("out", &dir, &more).unwrap();
+/// rodimpact::io::write_directory("out", &dir, &more).unwrap();
 /// assert_eq!(std::fs::read_to_string(dir.join("b.md")).unwrap(), "b\n");
 /// assert_eq!(std::fs::read_to_string(dir.join("notes.txt")).unwrap(), "mine");
 /// # std::fs::remove_dir_all(&dir).unwrap();
