@@ -26,8 +26,10 @@ Diagnoses (a row can have several; "ok" when none applies):
                       (this pivot) can give with this e: (1+e) v0 / (2 d*) with d*^2 = I_p (1/m + 1/M')
                       (free rod: I_p = I, 1/M' = 1/M; pivot: I_p = I + M p^2, 1/M' = 0), or the
                       value at the farthest point when d* is beyond it
-  energy-gain         energy_after (engine's state) exceeds the exact after-impact energy by more
-  energy-loss         ... or falls short of it by more than 1e-3 of the energy before
+  energy-gain         energy_after (the engine's state) exceeds the energy before the impact by
+                      more than 1e-3 of it: energy was created
+  energy-loss         energy_after falls short of the exact after-impact energy (the loss the law
+                      allows for this e) by more than 1e-3 of the energy before
   off                 none of the above, but some relative error of v, V, omega exceeds 1e-3
 """
 
@@ -160,7 +162,7 @@ def diagnose(row, ex):
             diags.append("restitution-ignored")
     if ex.above_omega_max(w * (1 - Q(1, 10**5))):
         diags.append("above-omega-max")
-    if excess is not None and excess > Q(1, 1000):
+    if K1 is not None and K1 > ex.energy_before * (1 + Q(1, 1000)):
         diags.append("energy-gain")
     if excess is not None and excess < -Q(1, 1000):
         diags.append("energy-loss")
