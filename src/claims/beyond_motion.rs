@@ -1108,7 +1108,10 @@ mod tests {
         let mut claim = x14(&paper);
         if let Decision::Proved(certs) = &mut claim.decision {
             for c in certs.iter_mut() {
-                if let Certificate::Positive { strict, .. } = c {
+                if let Certificate::Positive(crate::claims::certificate::Positive {
+                    strict, ..
+                }) = c
+                {
                     *strict = true;
                 }
             }
@@ -1118,7 +1121,10 @@ mod tests {
         let mut claim = x20(&paper);
         if let Decision::Proved(certs) = &mut claim.decision {
             for c in certs.iter_mut() {
-                if let Certificate::Positive { expr, .. } = c {
+                if let Certificate::Positive(crate::claims::certificate::Positive {
+                    expr, ..
+                }) = c
+                {
                     *expr = -expr.clone();
                 }
             }
@@ -1128,7 +1134,10 @@ mod tests {
         let mut claim = x22(&paper);
         if let Decision::Qualified { counterexample, .. } = &mut claim.decision {
             for c in counterexample.iter_mut() {
-                if let Certificate::Witness { instance, .. } = c {
+                if let Certificate::Witness(crate::claims::certificate::Witness {
+                    instance, ..
+                }) = c
+                {
                     for (s, v) in instance.iter_mut() {
                         if s.name() == "c" {
                             *v = rational(0, 1);

@@ -70,7 +70,7 @@ pub fn positive(
     nonnegative: &[&str],
     form: PosExpr,
 ) -> Certificate {
-    Certificate::Positive {
+    Certificate::Positive(crate::claims::certificate::Positive {
         title: title.into(),
         expr: expr.into(),
         strict,
@@ -81,5 +81,5 @@ pub fn positive(
         positive: syms(positive),
         nonnegative: syms(nonnegative),
         form,
-    }
+    })
 }

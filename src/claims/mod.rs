@@ -14,14 +14,14 @@
 mod beyond_impulse;
 mod beyond_motion;
 mod build;
-mod certificate;
+pub mod certificate;
 mod formula;
 pub mod model;
 mod paper_equations;
 mod paper_intuition;
 mod paper_optimum;
 
-pub use certificate::{Certificate, Expected, PosExpr, Relation, SignClass};
+pub use certificate::{Certificate, CertificateError, Expected, PosExpr, Relation, SignClass};
 pub use formula::Formula;
 
 use std::time::Instant;
@@ -115,6 +115,22 @@ pub enum Decision {
     },
 }
 
+/// Why a claim's certificates do not support its verdict.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CheckError {
+    /// The decision carries no certificate (a list is empty).
+    #[error("no certificate")]
+    NoCertificate,
+    /// A certificate does not check.
+    #[error("{title}: {failure}")]
+    Failed {
+        /// The certificate's title.
+        title: String,
+        /// What the exact computation found.
+        failure: CertificateError,
+    },
+}
+
 /// One claim, formalised and decided.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Claim {
@@ -138,14 +154,25 @@ impl Claim {
     /// Re-checks every certificate and returns the verdict they support.
     ///
     /// # Errors
-    /// The title of the first certificate that does not check, and why.
-    pub fn check(&self) -> Result<Verdict, String> {
-        let all = |certs: &[Certificate]| -> Result<(), String> {
+    /// [`CheckError::NoCertificate`] for an empty list, or the first certificate that does not
+    /// check ([`CheckError::Failed`]: its title and why).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::claims::{decide, Paper, Verdict};
+    /// let claim = decide("C31", &Paper::as_printed()).unwrap().claim;
+    /// assert_eq!(claim.check(), Ok(Verdict::Qualified));
+    /// ```
+    pub fn check(&self) -> Result<Verdict, CheckError> {
+        let all = |certs: &[Certificate]| -> Result<(), CheckError> {
             if certs.is_empty() {
-                return Err("no certificate".into());
+                return Err(CheckError::NoCertificate);
             }
             for c in certs {
-                c.check().map_err(|why| format!("{}: {why}", c.title()))?;
+                c.check().map_err(|failure| CheckError::Failed {
+                    title: c.title().to_string(),
+                    failure,
+                })?;
             }
             Ok(())
         };
@@ -305,7 +332,7 @@ pub struct Decided {
     /// The claim.
     pub claim: Claim,
     /// The verdict the certificates support, or why they do not.
-    pub verdict: Result<Verdict, String>,
+    pub verdict: Result<Verdict, CheckError>,
     /// Seconds spent building and checking.
     pub seconds: f64,
 }
@@ -348,7 +375,7 @@ mod test_support {
     use super::{Paper, Verdict, decide};
 
     /// The verdict of claim `id` against `paper`.
-    pub(super) fn verdict(id: &str, paper: &Paper) -> Result<Verdict, String> {
+    pub(super) fn verdict(id: &str, paper: &Paper) -> Result<Verdict, super::CheckError> {
         decide(id, paper).expect("registered").verdict
     }
 }

@@ -786,7 +786,7 @@ fn c18(paper: &Paper) -> Claim {
     ));
     let (m, a, inertia) = (sym("m"), sym("a"), sym("I"));
     let m_a2 = m * &a * &a;
-    certificates.push(Certificate::Limit {
+    certificates.push(Certificate::Limit(crate::claims::certificate::Limit {
         title: "why I -> oo matters: with I held fixed, Eq. (v) tends to -(I - m a^2)/(I + m a^2) v0, not -v0 (a rod pivoted at its centre)".into(),
         expr: paper.v.value().clone(),
         sym: Sym::new("M"),
@@ -794,7 +794,7 @@ fn c18(paper: &Paper) -> Claim {
         expected: Expected::Finite(
             -((inertia.clone() - &m_a2) / (inertia + &m_a2)) * &sym("v0"),
         ),
-    });
+    }));
     Claim {
         id: "C18",
         location: "case (iii)",
@@ -915,7 +915,9 @@ mod tests {
     #[test]
     fn omega_is_not_strictly_positive_at_the_centre() {
         let mut claim = c8(&Paper::as_printed());
-        let Certificate::Positive { strict, .. } = certificate(&mut claim, 3) else {
+        let Certificate::Positive(crate::claims::certificate::Positive { strict, .. }) =
+            certificate(&mut claim, 3)
+        else {
             panic!("C8's fourth certificate is omega >= 0");
         };
         *strict = true;
@@ -925,7 +927,9 @@ mod tests {
     #[test]
     fn the_end_beats_nothing_at_equal_masses() {
         let mut claim = c1(&Paper::as_printed());
-        let Certificate::Witness { relation, .. } = certificate(&mut claim, 1) else {
+        let Certificate::Witness(crate::claims::certificate::Witness { relation, .. }) =
+            certificate(&mut claim, 1)
+        else {
             panic!("C1's second certificate is the omega comparison");
         };
         *relation = Relation::Le;
@@ -935,7 +939,9 @@ mod tests {
     #[test]
     fn a_negated_form_is_caught() {
         let mut claim = c4(&Paper::as_printed());
-        let Certificate::Positive { form, .. } = certificate(&mut claim, 0) else {
+        let Certificate::Positive(crate::claims::certificate::Positive { form, .. }) =
+            certificate(&mut claim, 0)
+        else {
             panic!("C4's first certificate is a positivity");
         };
         *form = PosExpr::product([PosExpr::constant(-1, 1), form.clone()]);
@@ -946,11 +952,11 @@ mod tests {
     fn the_elastic_case_is_outside_the_loss_domain() {
         // Declaring t >= 0 admits e = 1, where nothing is lost: the strict claim must fail.
         let mut claim = c7(&Paper::as_printed());
-        let Certificate::Positive {
+        let Certificate::Positive(crate::claims::certificate::Positive {
             positive,
             nonnegative,
             ..
-        } = certificate(&mut claim, 1)
+        }) = certificate(&mut claim, 1)
         else {
             panic!("C7's second certificate is the energy loss");
         };

@@ -292,7 +292,7 @@ fn integral(
     (lower, upper): (RatFn, RatFn),
     expected: RatFn,
 ) -> Certificate {
-    Certificate::Integral {
+    Certificate::Integral(crate::claims::certificate::Integral {
         title: title.into(),
         density,
         var: Sym::new("y"),
@@ -300,7 +300,7 @@ fn integral(
         lower,
         upper,
         expected,
-    }
+    })
 }
 
 fn whole_rod() -> (RatFn, RatFn) {
@@ -1078,21 +1078,27 @@ mod tests {
     fn perturbed(c: &Certificate) -> Certificate {
         let mut c = c.clone();
         match &mut c {
-            Certificate::Identity { rhs, .. } => *rhs = rhs.clone() + &one(),
-            Certificate::Positive { form, .. } => *form = sum([form.clone(), pc(1, 1)]),
-            Certificate::Limit { expected, .. } => {
+            Certificate::Identity(crate::claims::certificate::Identity { rhs, .. }) => {
+                *rhs = rhs.clone() + &one()
+            }
+            Certificate::Positive(crate::claims::certificate::Positive { form, .. }) => {
+                *form = sum([form.clone(), pc(1, 1)])
+            }
+            Certificate::Limit(crate::claims::certificate::Limit { expected, .. }) => {
                 if let Expected::Finite(x) = expected {
                     *x = x.clone() + &one();
                 }
             }
-            Certificate::Witness { relation, .. } => {
+            Certificate::Witness(crate::claims::certificate::Witness { relation, .. }) => {
                 *relation = match relation {
                     Relation::Gt => Relation::Le,
                     Relation::Lt => Relation::Ge,
                     _ => Relation::Ne,
                 }
             }
-            Certificate::Integral { expected, .. } => *expected = expected.clone() + &one(),
+            Certificate::Integral(crate::claims::certificate::Integral { expected, .. }) => {
+                *expected = expected.clone() + &one()
+            }
         }
         c
     }
@@ -1116,7 +1122,9 @@ mod tests {
         let Decision::Proved(certs) = &mut claim.decision else {
             panic!("C39 is proved");
         };
-        let Certificate::Positive { form, .. } = &mut certs[0] else {
+        let Certificate::Positive(crate::claims::certificate::Positive { form, .. }) =
+            &mut certs[0]
+        else {
             panic!("C39 is a positivity certificate");
         };
         // The same value, but a negative constant in the shape: no visible sign.

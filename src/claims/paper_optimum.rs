@@ -498,14 +498,16 @@ fn c20(paper: &Paper) -> Claim {
 fn c21(paper: &Paper) -> Claim {
     let (big_m, l) = (sym("M"), sym("l"));
     let density = big_m.clone() / (k(2, 1) * &l);
-    let integral = |title: &str, power: u32, expected: RatFn| Certificate::Integral {
-        title: title.into(),
-        density: density.clone(),
-        var: Sym::new("y"),
-        power,
-        lower: -l.clone(),
-        upper: l.clone(),
-        expected,
+    let integral = |title: &str, power: u32, expected: RatFn| {
+        Certificate::Integral(crate::claims::certificate::Integral {
+            title: title.into(),
+            density: density.clone(),
+            var: Sym::new("y"),
+            power,
+            lower: -l.clone(),
+            upper: l.clone(),
+            expected,
+        })
     };
     Claim {
         id: "C21",
@@ -579,7 +581,7 @@ fn c23(paper: &Paper) -> Claim {
                  point a* = sqrt((M + m)/(3m)) l lies beyond the end of the rod."
             .into(),
         reason: "with M = 2m + q (q > 0), a*^2 - l^2 = q l^2/(3m) > 0".into(),
-        decision: Decision::Proved(vec![Certificate::Positive {
+        decision: Decision::Proved(vec![Certificate::Positive(crate::claims::certificate::Positive {
             title: "a*^2 - l^2 > 0 for M = 2m + q, q > 0".into(),
             expr,
             strict: true,
@@ -590,7 +592,7 @@ fn c23(paper: &Paper) -> Claim {
                 PosExpr::product([PosExpr::sym("q"), PosExpr::sym("l"), PosExpr::sym("l")]),
                 PosExpr::product([PosExpr::constant(3, 1), PosExpr::sym("m")]),
             ),
-        }]),
+        })]),
     }
 }
 
@@ -1009,7 +1011,10 @@ mod tests {
     }
 
     /// Applies `edit` to the first certificate of the claim's (proof) list and re-checks.
-    fn tampered(id: &str, edit: impl Fn(&mut Certificate)) -> Result<Verdict, String> {
+    fn tampered(
+        id: &str,
+        edit: impl Fn(&mut Certificate),
+    ) -> Result<Verdict, super::super::CheckError> {
         let mut claim = decide(id, &Paper::as_printed()).expect("registered").claim;
         match &mut claim.decision {
             Decision::Proved(c) | Decision::Refuted(c) => edit(&mut c[0]),
@@ -1022,7 +1027,7 @@ mod tests {
     fn tampered_certificates_fail() {
         // C24: a form that is not the expression (scale 6 replaced by 3).
         let wrong_form = tampered("C24", |c| {
-            if let Certificate::Positive { form, .. } = c {
+            if let Certificate::Positive(crate::claims::certificate::Positive { form, .. }) = c {
                 *form = PosExpr::product([PosExpr::constant(1, 2), form.clone()]);
             }
         });
@@ -1030,7 +1035,8 @@ mod tests {
         // C25: l^2 - a*^2 is only >= 0 when M <= 2m; claiming > 0 must fail.
         let mut c25 = decide("C25", &Paper::as_printed()).unwrap().claim;
         if let Decision::Proved(certs) = &mut c25.decision
-            && let Certificate::Positive { strict, .. } = &mut certs[1]
+            && let Certificate::Positive(crate::claims::certificate::Positive { strict, .. }) =
+                &mut certs[1]
         {
             *strict = true;
         }
@@ -1038,14 +1044,16 @@ mod tests {
         // C27: the witness reversed (omega(a*) < omega(l)) must fail.
         let mut c27 = decide("C27", &Paper::as_printed()).unwrap().claim;
         if let Decision::Proved(certs) = &mut c27.decision
-            && let Some(Certificate::Witness { relation, .. }) = certs.last_mut()
+            && let Some(Certificate::Witness(crate::claims::certificate::Witness {
+                relation, ..
+            })) = certs.last_mut()
         {
             *relation = Relation::Lt;
         }
         assert!(c27.check().is_err());
         // C31: the identity against the composite body with the naive I + m a^2 must fail.
         let naive = tampered("C31", |c| {
-            if let Certificate::Identity { rhs, .. } = c {
+            if let Certificate::Identity(crate::claims::certificate::Identity { rhs, .. }) = c {
                 let i_naive = sym("I") + &(sym("m") * &sq(&sym("a")));
                 *rhs = (sym("m") * &sym("v0") * &sym("a") / i_naive).into();
             }
@@ -1071,14 +1079,15 @@ mod tests {
         assert!(wrong.certificates().iter().all(|c| c.check().is_err()));
         // The gap is only >= 0 everywhere (it vanishes at the peak): claiming > 0 fails.
         let strict = tampered("C20", |c| {
-            if let Certificate::Positive { strict, .. } = c {
+            if let Certificate::Positive(crate::claims::certificate::Positive { strict, .. }) = c {
                 *strict = true;
             }
         });
         assert!(strict.is_ok(), "C20's first certificate is an identity");
         let mut c20 = decide("C20", &Paper::as_printed()).unwrap().claim;
         if let Decision::Proved(certs) = &mut c20.decision
-            && let Certificate::Positive { strict, .. } = &mut certs[2]
+            && let Certificate::Positive(crate::claims::certificate::Positive { strict, .. }) =
+                &mut certs[2]
         {
             *strict = true;
         }

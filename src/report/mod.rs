@@ -2,6 +2,7 @@
 //! CSV and SVG).
 
 mod backend;
+mod certificate;
 mod claims_doc;
 mod files;
 pub mod markup;
@@ -14,6 +15,7 @@ mod solution;
 mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
+pub use certificate::certificate_markdown;
 pub use claims_doc::claims_markdown;
 pub use files::{AtomicFile, create_output_dir, remove_temporaries_on_signals, write_atomic};
 pub use output_dir::write_directory;

@@ -13,6 +13,7 @@
 //!   refute it (the claim's statement starts with `Intuition:`), so the refutation agrees with
 //!   the paper.
 
+use super::certificate::certificate_markdown;
 use super::markup;
 use super::table::{Format, Table, render_document};
 use crate::claims::{Certificate, Claim, Decided, Decision, Group, Verdict};
@@ -117,7 +118,7 @@ pub fn claim_markdown(d: &Decided) -> String {
         let _ = writeln!(out, "## {title}\n");
         for (i, cert) in certs.iter().enumerate() {
             let _ = writeln!(out, "### {}. {}\n", i + 1, cert.title());
-            out.push_str(&cert.to_markdown());
+            out.push_str(&certificate_markdown(cert));
             out.push('\n');
         }
     };
@@ -295,7 +296,7 @@ fn notes(d: &Decided) -> Vec<(&'static str, String)> {
         notes.push(("qualified: ", q.to_string()));
     }
     if let Err(why) = &d.verdict {
-        notes.push(("CHECK FAILED: ", why.clone()));
+        notes.push(("CHECK FAILED: ", why.to_string()));
     }
     notes
 }
@@ -579,7 +580,7 @@ pub fn prove_json(d: &Decided) -> Value {
     );
     out.insert("seconds".into(), json!(d.seconds));
     if let Err(why) = &d.verdict {
-        out.insert("error".into(), json!(why));
+        out.insert("error".into(), json!(why.to_string()));
     }
     Value::Object(out)
 }
