@@ -102,9 +102,9 @@ pub enum CertificateError {
     #[error("at the instance lhs = {lhs}, rhs = {rhs}: {} fails", relation.symbol())]
     RelationFails {
         /// The left-hand side's value.
-        lhs: QSqrt,
+        lhs: Box<QSqrt>,
         /// The right-hand side's value.
-        rhs: QSqrt,
+        rhs: Box<QSqrt>,
         /// The relation claimed.
         relation: Relation,
     },

@@ -109,8 +109,8 @@ impl Witness {
             Ok(())
         } else {
             Err(CertificateError::RelationFails {
-                lhs: l,
-                rhs: r,
+                lhs: Box::new(l),
+                rhs: Box::new(r),
                 relation: self.relation,
             })
         }
