@@ -1,6 +1,6 @@
 //! What a claim is: its place in the paper, its verdict, the decision with its certificates, and
 //! why a check can fail. The claims themselves are in `paper/` and `beyond/`, listed in
-//! [`registry`](super::registry).
+//! [`registry`](super::registry()).
 
 use super::{Certificate, CertificateError, Paper};
 
@@ -224,7 +224,7 @@ impl Claim {
 }
 
 /// A registered claim: what it says, as data, and the function that formalises and decides it.
-/// Each claim file defines one (`ENTRY`); the [`registry`](super::registry) lists them in order.
+/// Each claim file defines one (`ENTRY`); the [`registry`](super::registry()) lists them in order.
 #[derive(Debug, Clone, Copy)]
 pub struct Entry {
     /// The id in `docs/claims.md` (`C15`, `X4`), written once: here.

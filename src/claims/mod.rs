@@ -12,7 +12,7 @@
 //! replaces one of them by a wrong one and the claims that depend on it must then fail.
 //!
 //! The layout: one file per claim (`paper/c01.rs` ... , `beyond/x01.rs` ...), listed once in
-//! the [`registry`]; the types in `claim.rs`; the certificate kinds in [`certificate`], one per
+//! the [`registry()`]; the types in `claim.rs`; the certificate kinds in [`certificate`], one per
 //! file; the small language the claim files are written in in `dsl/`.
 
 pub mod certificate;

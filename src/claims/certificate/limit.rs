@@ -75,14 +75,7 @@ impl Limit {
 }
 
 /// Where a symbol goes, as certificates write it: `0+`, `infinity`.
-///
-/// # Examples
-/// ```
-/// use rodimpact::claims::certificate::point_name;
-/// use rodimpact::field::ratfunc::Point;
-/// assert_eq!(point_name(Point::Infinity), "infinity");
-/// ```
-pub fn point_name(at: Point) -> &'static str {
+pub(crate) fn point_name(at: Point) -> &'static str {
     match at {
         Point::Zero => "0+",
         Point::Infinity => "infinity",

@@ -21,7 +21,8 @@ mod witness;
 
 pub use identity::Identity;
 pub use integral::Integral;
-pub use limit::{Expected, Limit, point_name};
+pub(crate) use limit::point_name;
+pub use limit::{Expected, Limit};
 pub use positive::{PosExpr, Positive, SignClass};
 pub use witness::{Relation, Witness};
 

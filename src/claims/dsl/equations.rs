@@ -2,7 +2,7 @@
 //! the limiting cases (C1-C18).
 //!
 //! The independent derivation is the generic solver run over rational functions
-//! ([`motion`]): its v, V, omega are compared with the paper's printed formulas ([`Paper`]) and
+//! ([`motion()`]): its v, V, omega are compared with the paper's printed formulas ([`Paper`]) and
 //! with the algebraic steps the paper takes between Eq. (linear) and Eq. (omega).
 
 use super::*;
