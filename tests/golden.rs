@@ -172,11 +172,11 @@ fn identity_certificates_show_what_was_compared() {
     let mut identities = 0;
     for d in &decided {
         for cert in d.claim.certificates() {
-            if let Certificate::Identity { lhs, rhs, .. } = cert {
+            if let Certificate::Identity(identity) = cert {
                 identities += 1;
                 assert_ne!(
-                    lhs.to_string(),
-                    rhs.to_string(),
+                    identity.lhs.to_string(),
+                    identity.rhs.to_string(),
                     "{}: {}",
                     d.claim.id,
                     cert.title()

@@ -4,6 +4,7 @@
 
 mod backend;
 mod batch;
+mod certificate;
 mod check;
 mod claims_doc;
 pub mod markup;
@@ -17,6 +18,7 @@ mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
 pub use batch::batch_summary;
+pub use certificate::certificate_markdown;
 pub use check::{
     agreement_json, agreement_key, agreement_label, agreement_line, answer_json, check_json,
     check_summary, check_table, problems_json, problems_text, rel_error_text,

@@ -1,46 +1,52 @@
 //! Small builders of certificates and visibly signed forms ([`PosExpr`]), shared by the claim
 //! files.
 
-use super::{Certificate, PosExpr};
+use crate::claims::certificate::Positive;
+use crate::claims::{Certificate, Formula, PosExpr};
 use crate::field::{RatFn, Sym};
 
+/// An identity certificate: `lhs = rhs` for all values of the symbols.
+pub(crate) fn id(title: &str, lhs: impl Into<Formula>, rhs: impl Into<Formula>) -> Certificate {
+    Certificate::identity(title, lhs, rhs)
+}
+
 /// The symbols with the given names.
-pub fn syms(names: &[&str]) -> Vec<Sym> {
+pub(crate) fn syms(names: &[&str]) -> Vec<Sym> {
     names.iter().map(|n| Sym::new(n)).collect()
 }
 
 /// The positive (or nonnegative) symbol `name` as a [`PosExpr`].
-pub fn ps(name: &str) -> PosExpr {
+pub(crate) fn ps(name: &str) -> PosExpr {
     PosExpr::sym(name)
 }
 
 /// The constant `n/d` as a [`PosExpr`].
-pub fn pc(n: i64, d: i64) -> PosExpr {
+pub(crate) fn pc(n: i64, d: i64) -> PosExpr {
     PosExpr::constant(n, d)
 }
 
 /// The product of the factors.
-pub fn prod(factors: impl IntoIterator<Item = PosExpr>) -> PosExpr {
+pub(crate) fn prod(factors: impl IntoIterator<Item = PosExpr>) -> PosExpr {
     PosExpr::product(factors)
 }
 
 /// The sum of the terms.
-pub fn sum(terms: impl IntoIterator<Item = PosExpr>) -> PosExpr {
+pub(crate) fn sum(terms: impl IntoIterator<Item = PosExpr>) -> PosExpr {
     PosExpr::sum(terms)
 }
 
 /// The quotient `num / den`.
-pub fn quot(num: PosExpr, den: PosExpr) -> PosExpr {
+pub(crate) fn quot(num: PosExpr, den: PosExpr) -> PosExpr {
     PosExpr::quotient(num, den)
 }
 
 /// `1 + e`, positive for a restitution e >= 0.
-pub fn one_plus_e() -> PosExpr {
+pub(crate) fn one_plus_e() -> PosExpr {
     sum([pc(1, 1), ps("e")])
 }
 
 /// `D(x) = 1 + m/M + m x^2/I` as a visibly positive form (x may be any real).
-pub fn d_form(x: RatFn) -> PosExpr {
+pub(crate) fn d_form(x: RatFn) -> PosExpr {
     sum([
         pc(1, 1),
         quot(ps("m"), ps("M")),
@@ -50,7 +56,7 @@ pub fn d_form(x: RatFn) -> PosExpr {
 
 /// `M I + m I + m M a^2` (= M I D, and m M I/m_eff) as a visibly positive form (a may be any
 /// real).
-pub fn m_i_d_form() -> PosExpr {
+pub(crate) fn m_i_d_form() -> PosExpr {
     sum([
         prod([ps("M"), ps("I")]),
         prod([ps("m"), ps("I")]),
@@ -61,7 +67,7 @@ pub fn m_i_d_form() -> PosExpr {
 /// A positivity certificate: `expr` (> 0 if `strict`, else >= 0) after the simultaneous
 /// `substitutions` (which parametrise the domain), equal to the visibly signed `form`, with the
 /// symbols `positive` > 0 and `nonnegative` >= 0.
-pub fn positive(
+pub(crate) fn positive(
     title: impl Into<String>,
     expr: impl Into<RatFn>,
     strict: bool,
@@ -70,7 +76,7 @@ pub fn positive(
     nonnegative: &[&str],
     form: PosExpr,
 ) -> Certificate {
-    Certificate::Positive {
+    Certificate::Positive(Positive {
         title: title.into(),
         expr: expr.into(),
         strict,
@@ -81,5 +87,5 @@ pub fn positive(
         positive: syms(positive),
         nonnegative: syms(nonnegative),
         form,
-    }
+    })
 }
