@@ -3,7 +3,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rodimpact::field::{Field, Q, RatFn};
-use rodimpact::scene::Scene;
+use rodimpact::scene::{Params, Scene, Support};
 use rodimpact::solve::linear::solve;
 use std::hint::black_box;
 
@@ -38,8 +38,17 @@ fn solve_backends(c: &mut Criterion) {
         bench_backend::<f32>(c, label, s);
         bench_backend::<Q>(c, label, s);
     }
-    let symbolic =
-        rodimpact::claims::model::free_rod(rodimpact::claims::model::sym("I"), RatFn::from(1));
+    let sym = RatFn::symbol;
+    let symbolic = Params {
+        m: sym("m"),
+        rod_mass: sym("M"),
+        half_length: sym("l"),
+        inertia: sym("I"),
+        a: sym("a"),
+        v0: sym("v0"),
+        e: RatFn::from(1),
+        support: Support::Free,
+    };
     c.bench_function("solve/symbolic/Q(symbols)", |b| {
         b.iter(|| solve(black_box(&symbolic)))
     });

@@ -31,6 +31,7 @@ pub mod contact;
 pub mod echo;
 pub mod error;
 pub mod field;
+pub mod io;
 pub mod mechanics;
 pub mod number;
 pub mod optimum;

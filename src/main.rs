@@ -23,7 +23,8 @@ struct Cli {
 enum Command {
     /// Solve one scene exactly: velocities, energies, residuals and the optimal impact point.
     Solve(Box<commands::solve::SolveArgs>),
-    /// Decide claims of the paper (C1-C46) and beyond (X1-X26) by exact computation.
+    // About: the id ranges of the paper's claims and of those beyond it, from the registry.
+    #[command(about = commands::claims::prove_about())]
     Prove(commands::claims::ProveArgs),
     /// The main job: verify every claim of the paper and print the report.
     Paper(commands::claims::PaperArgs),
@@ -68,7 +69,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    if let Err(e) = rodimpact::report::remove_temporaries_on_signals() {
+    if let Err(e) = rodimpact::io::remove_temporaries_on_signals() {
         commands::print_err(&format!("error: {e}\n"));
         return ExitCode::from(2);
     }

@@ -5,7 +5,7 @@
 //! The test, benchmark and example targets each name the file; what they do with it is here,
 //! once.
 
-use crate::batch::{Backend, Batch};
+use crate::batch::{Arithmetic, Batch};
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::scene::Scene;
@@ -45,7 +45,7 @@ pub fn batch_samples(text: &str, limit: usize) -> Result<Vec<Sample>, Error> {
     let header = lines
         .next()
         .ok_or_else(|| Error::new("header", ErrorKind::Invalid("the file is empty".into())))?;
-    let batch = Batch::new(header, Backend::Exact)?;
+    let batch = Batch::new(header, Arithmetic::Exact)?;
     lines
         .take(limit)
         .enumerate()

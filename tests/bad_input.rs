@@ -1031,13 +1031,15 @@ fn argument_lists_are_bounded() {
     );
     assert!(lines[2].starts_with("2 claims: 2 PROVED"), "{out}");
 
-    let ids = vec!["C1"; 73];
+    let claims = rodimpact::claims::registry().len();
+    let ids = vec!["C1"; claims + 1];
+    let too_many_ids = format!("id: more than {claims} ids");
     let ratios = vec!["1"; 1001].join(",");
     let matrix_cases = [
         (
-            "73 prove ids",
+            "one prove id more than there are claims",
             [&["prove"][..], &ids].concat(),
-            "id: more than 72 ids",
+            too_many_ids.as_str(),
         ),
         (
             "1001 table ratios",

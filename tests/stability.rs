@@ -10,7 +10,7 @@ use rodimpact::field::{Field, Interval, Q};
 use rodimpact::mechanics::Motion;
 use rodimpact::solve::closed_form::closed_form;
 use rodimpact::solve::float::{Formula, Real};
-use rodimpact::stability::{Backend, Case, Class, Measured, Reference, in_range, suite, sweep};
+use rodimpact::stability::{Accuracy, Backend, Case, Class, Reference, in_range, suite, sweep};
 
 /// Asserts the goals of docs/stability.md for a stable formula on `cases` in range for `T`:
 /// never NaN or inf; error <= 4 cond u and no spurious zero for V and omega, and for v while
@@ -39,7 +39,7 @@ fn assert_stable<T: Real>(backend: Backend, cases: &[Case]) -> usize {
                 !matches!(measured.class, Class::Nan | Class::Infinite),
                 "{label}: {measured:?}"
             );
-            if Measured::well_conditioned(cond.as_ref(), &u) {
+            if Accuracy::well_conditioned(cond.as_ref(), &u) {
                 if !exact.is_zero() {
                     assert_eq!(measured.class, Class::Number, "{label}: {measured:?}");
                 }
@@ -144,7 +144,7 @@ fn only_the_exact_path_decides_that_the_projectile_stops() {
         let x: Motion<f64> = Formula::Sq.eval(&case.scene.params::<f64>()).unwrap();
         assert!(x.v.abs() <= 2.0 * f64::EPSILON, "scene {id}: v = {}", x.v);
         let cond = Backend::F64(Formula::Sq).condition(&reference);
-        assert!(!Measured::well_conditioned(
+        assert!(!Accuracy::well_conditioned(
             cond.v.as_ref(),
             &<f64 as Real>::unit_roundoff()
         ));

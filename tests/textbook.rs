@@ -6,7 +6,7 @@ use rodimpact::scene::SceneInput;
 use rodimpact::textbook::problems::parse_problems;
 use rodimpact::textbook::sigfig::{Precision, Printed, Tie, round_sig};
 use rodimpact::textbook::units::{Dimension, Measured, pi_bounds};
-use rodimpact::textbook::{Claim, Exact, Verdict, check_scene, expr, verdict::decide};
+use rodimpact::textbook::{Agreement, ClaimedAnswer, Exact, check_scene, expr, numeric::decide};
 
 fn rat(text: &str) -> rodimpact::field::Q {
     rodimpact::number::parse(text).unwrap()
@@ -85,52 +85,52 @@ fn rounding_to_significant_figures() {
     assert_eq!(round_sig(&rat("1450"), 2, Tie::Down), rat("1400"));
 }
 
-fn verdict(claim: &str, exact: &str) -> Verdict {
+fn agreement(claim: &str, exact: &str) -> Agreement {
     decide(
-        &Claim::parse(claim).unwrap(),
+        &ClaimedAnswer::parse(claim).unwrap(),
         &Exact::Rational(rat(exact)),
         None,
     )
-    .verdict
+    .agreement
 }
 
 #[test]
 fn verdicts_by_significant_figures() {
     let cases = [
-        ("omega=1.89", "36/19", Verdict::Agrees),
-        ("omega=1.90", "36/19", Verdict::LastDigit),
+        ("omega=1.89", "36/19", Agreement::Agrees),
+        ("omega=1.90", "36/19", Agreement::LastDigit),
         // 1.88 is one unit off the rounded 1.89 but 1.5 units from 1.8947...: not a slip.
-        ("omega=1.88", "36/19", Verdict::Disagrees),
-        ("omega=1.87", "36/19", Verdict::Disagrees),
-        ("omega=0.947", "36/19", Verdict::Disagrees),
-        ("omega=-1.89", "36/19", Verdict::Agrees), // by magnitude
-        ("v=-1.89", "36/19", Verdict::Disagrees),  // only omega ignores the sign
-        ("omega=36/19", "36/19", Verdict::Agrees),
-        ("omega=1.8947", "36/19", Verdict::Agrees),
-        ("omega=1.895", "36/19", Verdict::Agrees), // 1.894736... to 4 figures
-        ("omega=1.896", "36/19", Verdict::Disagrees), // 1.26 units from 1.894736...
-        ("omega=1.894", "36/19", Verdict::LastDigit), // 0.74 units: a rounding slip
-        ("v=2.2", "9/4", Verdict::Agrees),         // exact tie 2.25: either rounding is right
-        ("v=2.3", "9/4", Verdict::Agrees),
-        ("v=1500", "1549", Verdict::Agrees), // ambiguous: read with 2 figures
-        ("v=1500", "1551", Verdict::LastDigit),
-        ("v=0.0", "1/50", Verdict::Agrees), // 0.02 rounds to 0.0
-        ("v=0.0", "1/10", Verdict::Disagrees), // a zero carries no figure: -100 %
-        ("v=0", "1/1000", Verdict::Disagrees), // an integer zero is exact
-        ("v=37/19", "36/19", Verdict::Disagrees),
+        ("omega=1.88", "36/19", Agreement::Disagrees),
+        ("omega=1.87", "36/19", Agreement::Disagrees),
+        ("omega=0.947", "36/19", Agreement::Disagrees),
+        ("omega=-1.89", "36/19", Agreement::Agrees), // by magnitude
+        ("v=-1.89", "36/19", Agreement::Disagrees),  // only omega ignores the sign
+        ("omega=36/19", "36/19", Agreement::Agrees),
+        ("omega=1.8947", "36/19", Agreement::Agrees),
+        ("omega=1.895", "36/19", Agreement::Agrees), // 1.894736... to 4 figures
+        ("omega=1.896", "36/19", Agreement::Disagrees), // 1.26 units from 1.894736...
+        ("omega=1.894", "36/19", Agreement::LastDigit), // 0.74 units: a rounding slip
+        ("v=2.2", "9/4", Agreement::Agrees),         // exact tie 2.25: either rounding is right
+        ("v=2.3", "9/4", Agreement::Agrees),
+        ("v=1500", "1549", Agreement::Agrees), // ambiguous: read with 2 figures
+        ("v=1500", "1551", Agreement::LastDigit),
+        ("v=0.0", "1/50", Agreement::Agrees), // 0.02 rounds to 0.0
+        ("v=0.0", "1/10", Agreement::Disagrees), // a zero carries no figure: -100 %
+        ("v=0", "1/1000", Agreement::Disagrees), // an integer zero is exact
+        ("v=37/19", "36/19", Agreement::Disagrees),
     ];
     for (claim, exact, expected) in cases {
-        assert_eq!(verdict(claim, exact), expected, "{claim} vs {exact}");
+        assert_eq!(agreement(claim, exact), expected, "{claim} vs {exact}");
     }
     // --sig overrides the printed figures: 1500 read with 4 figures disagrees with 1549.
     let d = decide(
-        &Claim::parse("v=1500").unwrap(),
+        &ClaimedAnswer::parse("v=1500").unwrap(),
         &Exact::Rational(rat("1549")),
         Some(4),
     );
-    assert_eq!(d.verdict, Verdict::Disagrees);
+    assert_eq!(d.agreement, Agreement::Disagrees);
     let d = decide(
-        &Claim::parse("v=1500").unwrap(),
+        &ClaimedAnswer::parse("v=1500").unwrap(),
         &Exact::Rational(rat("1549")),
         None,
     );
@@ -180,13 +180,13 @@ fn rpm_is_decided_with_bounds_on_pi() {
     assert!(lo < hi && hi.clone() - &lo == rat("1e-30"));
     assert!(rat("3.14159265358979") < lo && hi < rat("355/113")); // 355/113 = 3.14159292 > pi
     // omega = 36/19 rad/s = 18.0931... rpm.
-    assert_eq!(verdict("omega=18.1 rpm", "36/19"), Verdict::Agrees);
-    assert_eq!(verdict("omega=18.09 rpm", "36/19"), Verdict::Agrees);
-    assert_eq!(verdict("omega=18.2 rpm", "36/19"), Verdict::Disagrees); // 0.107 rpm off
-    assert_eq!(verdict("omega=18.0 rpm", "36/19"), Verdict::LastDigit); // 0.093 rpm off
-    assert_eq!(verdict("omega=18 rpm", "36/19"), Verdict::Agrees);
+    assert_eq!(agreement("omega=18.1 rpm", "36/19"), Agreement::Agrees);
+    assert_eq!(agreement("omega=18.09 rpm", "36/19"), Agreement::Agrees);
+    assert_eq!(agreement("omega=18.2 rpm", "36/19"), Agreement::Disagrees); // 0.107 rpm off
+    assert_eq!(agreement("omega=18.0 rpm", "36/19"), Agreement::LastDigit); // 0.093 rpm off
+    assert_eq!(agreement("omega=18 rpm", "36/19"), Agreement::Agrees);
     // A fraction in rpm can never equal a rational omega (pi is irrational).
-    assert_eq!(verdict("omega=18/1 rpm", "36/19"), Verdict::Disagrees);
+    assert_eq!(agreement("omega=18/1 rpm", "36/19"), Agreement::Disagrees);
 }
 
 #[test]
@@ -239,14 +239,17 @@ fn expressions_parse_with_limits() {
     );
 }
 
-fn symbolic(input: SceneInput, claims: &[&str]) -> Vec<(Verdict, Vec<String>)> {
-    let claims: Vec<Claim> = claims.iter().map(|c| Claim::parse(c).unwrap()).collect();
-    let report = check_scene(&input, &claims, None).unwrap();
-    assert!(report.symbolic.is_some());
-    report
-        .decisions
+fn symbolic(input: SceneInput, claims: &[&str]) -> Vec<(Agreement, Vec<String>)> {
+    let claims: Vec<ClaimedAnswer> = claims
+        .iter()
+        .map(|c| ClaimedAnswer::parse(c).unwrap())
+        .collect();
+    let check = check_scene(&input, &claims, None).unwrap();
+    assert!(check.symbolic.is_some());
+    check
+        .answers
         .into_iter()
-        .map(|d| (d.verdict, d.notes))
+        .map(|d| (d.agreement, d.notes))
         .collect()
 }
 
@@ -275,8 +278,8 @@ fn symbolic_identities_true_and_false() {
             "V_cm=m*v0/(m+M)",
         ],
     );
-    let verdicts: Vec<Verdict> = r.iter().map(|(v, _)| *v).collect();
-    use Verdict::*;
+    let verdicts: Vec<Agreement> = r.iter().map(|(v, _)| *v).collect();
+    use Agreement::*;
     assert_eq!(
         verdicts,
         [Agrees, Disagrees, Agrees, Agrees, Agrees, Agrees, Agrees]
@@ -304,7 +307,7 @@ fn symbolic_scene_flags_and_free_symbols() {
         s,
         &["v=0", "omega=3*v0/(4*l)", "omega=3*v0/(2*L)", "V=v0/4"],
     );
-    assert!(r.iter().all(|(v, _)| *v == Verdict::Agrees), "{r:?}");
+    assert!(r.iter().all(|(v, _)| *v == Agreement::Agrees), "{r:?}");
     // Sticking at a = L/4 on a free rod with m = M: the claim with d (= l - a = l/2).
     // Exact: 1/M_eff = 1/M + a^2/I = (1 + 3/4)/M, M_eff = 4M/7; J = m M_eff v0/(m + M_eff)
     // = 4 m v0/11 (M = m); omega = J a / I = (4 m v0/11)(l/2)/(m l^2/3) = 6 v0/(11 l).
@@ -323,10 +326,10 @@ fn symbolic_scene_flags_and_free_symbols() {
             "omega=6*v0/(11*d)",
         ],
     );
-    let verdicts: Vec<Verdict> = r.iter().map(|(v, _)| *v).collect();
+    let verdicts: Vec<Agreement> = r.iter().map(|(v, _)| *v).collect();
     assert_eq!(
         verdicts,
-        [Verdict::Agrees, Verdict::Agrees, Verdict::Disagrees]
+        [Agreement::Agrees, Agreement::Agrees, Agreement::Disagrees]
     );
     // Every quantity not given is free except e (elastic) and the rod (uniform), as in solve.
     let s = SceneInput {
@@ -334,14 +337,14 @@ fn symbolic_scene_flags_and_free_symbols() {
         ..Default::default()
     };
     let r = symbolic(s, &["V_cm=m*v0/(m+M)", "v=v0"]);
-    assert_eq!(r[0].0, Verdict::Agrees);
-    assert_eq!(r[1].0, Verdict::Disagrees);
+    assert_eq!(r[0].0, Agreement::Agrees);
+    assert_eq!(r[1].0, Agreement::Disagrees);
 }
 
 #[test]
 fn symbolic_input_errors_name_the_field() {
     let run = |input: SceneInput, claim: &str| {
-        check_scene(&input, &[Claim::parse(claim).unwrap()], None)
+        check_scene(&input, &[ClaimedAnswer::parse(claim).unwrap()], None)
             .unwrap_err()
             .to_string()
     };
@@ -471,7 +474,7 @@ fn the_work_budget_is_shared_by_every_claim_of_a_run() {
     use rodimpact::textbook::{check_scene_within, expr::Budget};
     let heavy = format!("V=(m+{})^8", "7".repeat(200));
     let mut probe = Budget::run();
-    let one = Claim::parse_within(&heavy, &mut probe).unwrap();
+    let one = ClaimedAnswer::parse_within(&heavy, &mut probe).unwrap();
     let scene = SceneInput {
         m: Some("1".into()),
         rod_mass: Some("1".into()),
@@ -481,9 +484,9 @@ fn the_work_budget_is_shared_by_every_claim_of_a_run() {
     let cost = probe.spent();
     assert!(cost > 100_000, "a heavy claim: {cost}");
     let mut budget = Budget::new(cost + cost / 2);
-    let first = Claim::parse_within(&heavy, &mut budget).unwrap();
+    let first = ClaimedAnswer::parse_within(&heavy, &mut budget).unwrap();
     check_scene_within(&scene, &[first], None, &mut budget).unwrap();
-    let err = Claim::parse_within(&heavy.replace("V=", "v="), &mut budget)
+    let err = ClaimedAnswer::parse_within(&heavy.replace("V=", "v="), &mut budget)
         .unwrap_err()
         .to_string();
     assert!(
@@ -501,7 +504,7 @@ fn symbolic_defaults_and_an_explicit_symbol_e() {
         a: Some("l".into()),
         ..Default::default()
     };
-    let r = check_scene(&s, &[Claim::parse("v=0").unwrap()], None).unwrap();
+    let r = check_scene(&s, &[ClaimedAnswer::parse("v=0").unwrap()], None).unwrap();
     assert!(r.all_agree());
     let summary = r.symbolic.unwrap();
     assert_eq!(summary.free, ["m", "l", "v0"]);
@@ -517,13 +520,13 @@ fn symbolic_defaults_and_an_explicit_symbol_e() {
     let r = check_scene(
         &s,
         &[
-            Claim::parse("v=(1-e)*v0/2").unwrap(),
-            Claim::parse("v=0").unwrap(),
+            ClaimedAnswer::parse("v=(1-e)*v0/2").unwrap(),
+            ClaimedAnswer::parse("v=0").unwrap(),
         ],
         None,
     )
     .unwrap();
-    assert_eq!(r.decisions[0].verdict, Verdict::Agrees);
-    assert_eq!(r.decisions[1].verdict, Verdict::Disagrees);
+    assert_eq!(r.answers[0].agreement, Agreement::Agrees);
+    assert_eq!(r.answers[1].agreement, Agreement::Disagrees);
     assert_eq!(r.symbolic.unwrap().defaults, ["uniform rod (I = M l^2/3)"]);
 }

@@ -5,7 +5,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use rodimpact::batch::{Backend, Batch, run};
+use rodimpact::batch::{Arithmetic, Batch, run};
 use std::sync::OnceLock;
 
 /// One worker: `run`'s logic without waking threads on every input (tens of ms under the
@@ -23,8 +23,8 @@ fn pool() -> &'static rayon::ThreadPool {
 fuzz_target!(|text: &str| {
     let mut lines = text.lines();
     let Some(header) = lines.next() else { return };
-    for backend in [Backend::Exact, Backend::F64] {
-        let Ok(batch) = Batch::new(header, backend) else {
+    for arithmetic in [Arithmetic::Exact, Arithmetic::F64] {
+        let Ok(batch) = Batch::new(header, arithmetic) else {
             return;
         };
         let mut expected = String::new();
@@ -35,7 +35,7 @@ fuzz_target!(|text: &str| {
             }
             match batch.row(i + 1, line) {
                 Ok(row) => {
-                    if backend == Backend::Exact {
+                    if arithmetic == Arithmetic::Exact {
                         assert_ne!(row.laws_held, Some(false), "{header}\n{line}");
                     }
                     if first_error.is_none() {

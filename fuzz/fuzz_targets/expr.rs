@@ -3,9 +3,9 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use rodimpact::textbook::{Claim, expr};
+use rodimpact::textbook::{ClaimedAnswer, expr};
 
 fuzz_target!(|text: &str| {
     let _ = expr::parse("omega", text);
-    let _ = Claim::parse(text);
+    let _ = ClaimedAnswer::parse(text);
 });

@@ -1,4 +1,4 @@
-//! The output-path logic (`report::write_atomic`, as `--out` uses it): a scratch directory of
+//! The output-path logic (`io::write_atomic`, as `--out` uses it): a scratch directory of
 //! files (with modes), directories and symbolic links (relative, absolute, dangling, looping,
 //! through a linked directory, names of 255 bytes or with control characters) built from the
 //! input, then one write to a chosen name. Whatever happens: an error is one inert line naming
@@ -120,7 +120,7 @@ fuzz_target!(|data: &[u8]| {
 
     let before = snapshot(&root);
     let end = chain_end(&target);
-    let written = rodimpact::report::write_atomic("out", &target, &contents);
+    let written = rodimpact::io::write_atomic("out", &target, &contents);
     let after = snapshot(&root);
 
     match &written {

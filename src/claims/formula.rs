@@ -206,7 +206,7 @@ impl Formula {
     ///
     /// # Panics
     /// **Panics if the substitution makes a denominator vanish** (a programming error in a claim,
-    /// as for [`model::subs`](super::model::subs)).
+    /// as for the `subs` the claim files use).
     ///
     /// # Examples
     /// ```

@@ -3,9 +3,10 @@
 use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
-use rodimpact::batch::{Backend, Batch, MAX_LINE, Summary, run};
+use rodimpact::batch::{Arithmetic, Batch, MAX_LINE, Summary, run};
 use rodimpact::echo::{echo, echo_path};
-use rodimpact::report::AtomicFile;
+use rodimpact::io::AtomicFile;
+use rodimpact::report::batch_summary;
 use rodimpact::{Error, ErrorKind};
 use std::io::{BufRead, BufReader, IsTerminal, Read, Write};
 use std::path::PathBuf;
@@ -53,9 +54,9 @@ fn parse_jobs(text: &str) -> Result<usize, Error> {
 }
 
 pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
-    let backend = match args.backend {
-        BackendArg::Exact => Backend::Exact,
-        BackendArg::F64 => Backend::F64,
+    let arithmetic = match args.backend {
+        BackendArg::Exact => Arithmetic::Exact,
+        BackendArg::F64 => Arithmetic::F64,
     };
     let jobs = args.jobs.as_deref().map(parse_jobs).transpose()?;
     let read_error = |why: std::io::Error| {
@@ -96,7 +97,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         )
         .into());
     }
-    let batch = Batch::new(&header, backend)?;
+    let batch = Batch::new(&header, arithmetic)?;
 
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = ProgressBar::new(size);
@@ -192,7 +193,7 @@ fn write_header(out: &mut impl Write, batch: &Batch) -> Result<(), Error> {
 }
 
 fn report(summary: &Summary) -> Result<(), Failure> {
-    super::print_err(&summary.report());
+    super::print_err(&batch_summary(summary));
     if summary.wrong() > 0 || summary.laws_failed > 0 {
         Err(Failure::Check)
     } else {

@@ -2,11 +2,10 @@
 
 use super::{Failure, SceneFlags, print_out};
 use clap::Args;
+use rodimpact::report::{check_json, check_summary, check_table, problems_json, problems_text};
 use rodimpact::textbook::expr::Budget;
-use rodimpact::textbook::problems::{
-    MAX_CLAIMS, MAX_FILE_BYTES, check_problems, parse_problems, problems_json, problems_text,
-};
-use rodimpact::textbook::{Claim, check_scene_within};
+use rodimpact::textbook::problems::{MAX_CLAIMS, MAX_FILE_BYTES, check_problems, parse_problems};
+use rodimpact::textbook::{ClaimedAnswer, check_scene_within};
 use rodimpact::{Error, ErrorKind};
 use std::io::Read;
 use std::path::PathBuf;
@@ -67,13 +66,13 @@ fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
     }
     let text = read_bounded(&label, path)?;
     let problems = parse_problems(&label, &text)?;
-    let reports = check_problems(&label, &problems, args.sig)?;
+    let checks = check_problems(&label, &problems, args.sig)?;
     if args.json {
-        print_out(&format!("{}\n", pretty(&problems_json(&reports))));
+        print_out(&format!("{}\n", pretty(&problems_json(&checks))));
     } else {
-        print_out(&problems_text(&reports));
+        print_out(&problems_text(&checks));
     }
-    Ok(reports.iter().all(|r| r.report.all_agree()))
+    Ok(checks.iter().all(|p| p.check.all_agree()))
 }
 
 /// The error for a positional argument next to scene flags or claims: a problem file cannot be
@@ -141,15 +140,19 @@ fn check_flags(args: &CheckArgs) -> Result<bool, Error> {
     let claims = args
         .claim
         .iter()
-        .map(|c| Claim::parse_within(c, &mut budget))
+        .map(|c| ClaimedAnswer::parse_within(c, &mut budget))
         .collect::<Result<Vec<_>, _>>()?;
-    let report = check_scene_within(&args.scene.input(), &claims, args.sig, &mut budget)?;
+    let check = check_scene_within(&args.scene.input(), &claims, args.sig, &mut budget)?;
     if args.json {
-        print_out(&format!("{}\n", pretty(&report.to_json())));
+        print_out(&format!("{}\n", pretty(&check_json(&check))));
     } else {
-        print_out(&format!("{}{}\n", report.to_text(), report.summary()));
+        print_out(&format!(
+            "{}{}\n",
+            check_table(&check),
+            check_summary(&check)
+        ));
     }
-    Ok(report.all_agree())
+    Ok(check.all_agree())
 }
 
 fn pretty(v: &serde_json::Value) -> String {

@@ -3,6 +3,7 @@
 use super::{Failure, parse_ratios, print_out};
 use clap::Args;
 use rodimpact::claims::{self, Decided, Paper};
+use rodimpact::io::write_directory;
 use rodimpact::report::{self, Format, TableOptions};
 use rodimpact::scene::{RodInertia, SceneInput};
 use rodimpact::{Error, ErrorKind};
@@ -10,8 +11,8 @@ use std::path::{Path, PathBuf};
 
 #[derive(Args, Debug)]
 pub(crate) struct ProveArgs {
-    /// Claim ids (C1-C46, X1-X26) [default: all].
-    #[arg(value_name = "ID")]
+    // Help: the claim ids, both ranges from the registry [default: all].
+    #[arg(value_name = "ID", help = ids_help())]
     pub(crate) ids: Vec<String>,
     /// Write one Markdown certificate per claim into DIR (and the index README.md when all
     /// claims are decided). All or nothing: the files are written beside DIR, then moved in;
@@ -25,20 +26,46 @@ pub(crate) struct ProveArgs {
 
 #[derive(Args, Debug)]
 pub(crate) struct PaperArgs {
-    /// Also write into DIR: README.md (what each file holds), report.md (the report with
-    /// the tables and figures), one certificate per claim (C1.md ... C46.md, X1.md ... X26.md),
-    /// tables.md, tables.tex, T1.csv ... T5.csv, omega.svg, optimum.svg and figure1.svg. All
-    /// or nothing: the files are written beside DIR, then moved in; DIR's other files are kept.
-    #[arg(long, value_name = "DIR")]
+    // Help: what `--out DIR` writes, one certificate per claim named from the registry.
+    #[arg(long, value_name = "DIR", help = out_help())]
     pub(crate) out: Option<PathBuf>,
+}
+
+/// The ids `prove` takes, both ranges: `C1-C46 and X1-X26`.
+fn id_ranges(separator: &str) -> String {
+    format!("{}{separator}{}", claims::paper_ids(), claims::beyond_ids())
+}
+
+/// `prove`'s summary in `rodimpact --help`.
+pub(crate) fn prove_about() -> String {
+    format!(
+        "Decide claims of the paper ({}) and beyond ({}) by exact computation",
+        claims::paper_ids(),
+        claims::beyond_ids()
+    )
+}
+
+fn ids_help() -> String {
+    format!("Claim ids ({}) [default: all]", id_ranges(", "))
+}
+
+fn out_help() -> String {
+    let (paper, beyond) = (claims::paper_ids(), claims::beyond_ids());
+    format!(
+        "Also write into DIR: README.md (what each file holds), report.md (the report with the \
+         tables and figures), one certificate per claim ({}.md ... {}.md, {}.md ... {}.md), \
+         tables.md, tables.tex, T1.csv ... T5.csv, omega.svg, optimum.svg and figure1.svg. All \
+         or nothing: the files are written beside DIR, then moved in; DIR's other files are kept",
+        paper.first, paper.last, beyond.first, beyond.last
+    )
 }
 
 /// The registered entries for the requested ids (all of them when none is given), each once,
 /// in the order first given. At most as many ids as the registry holds are accepted.
-fn select_claims(ids: &[String]) -> Result<Vec<claims::Entry>, Error> {
+fn select_claims(ids: &[String]) -> Result<Vec<&'static claims::Entry>, Error> {
     let registry = claims::registry();
     if ids.is_empty() {
-        return Ok(registry);
+        return Ok(registry.iter().collect());
     }
     if ids.len() > registry.len() {
         return Err(Error::out_of_range(
@@ -49,22 +76,20 @@ fn select_claims(ids: &[String]) -> Result<Vec<claims::Entry>, Error> {
             ),
         ));
     }
-    let mut selected: Vec<claims::Entry> = Vec::new();
+    let mut selected: Vec<&'static claims::Entry> = Vec::new();
     for id in ids {
-        let entry = registry
-            .iter()
-            .find(|e| e.id.eq_ignore_ascii_case(id.trim()))
-            .ok_or_else(|| {
-                Error::new(
-                    "id",
-                    ErrorKind::Invalid(format!(
-                        "unknown claim '{}'; the ids are C1-C46 and X1-X26",
-                        rodimpact::echo::echo(id)
-                    )),
-                )
-            })?;
+        let entry = claims::find(id).ok_or_else(|| {
+            Error::new(
+                "id",
+                ErrorKind::Invalid(format!(
+                    "unknown claim '{}'; the ids are {}",
+                    rodimpact::echo::echo(id),
+                    id_ranges(" and ")
+                )),
+            )
+        })?;
         if !selected.iter().any(|e| e.id == entry.id) {
-            selected.push(*entry);
+            selected.push(entry);
         }
     }
     Ok(selected)
@@ -85,7 +110,7 @@ fn write_certificates(
     if complete {
         files.push(("README.md".into(), report::index_markdown(decided)));
     }
-    report::write_directory(field, dir, &files)
+    write_directory(field, dir, &files)
 }
 
 fn all_checked(decided: &[Decided]) -> Result<(), Failure> {
@@ -131,7 +156,7 @@ pub(crate) fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     print_out(&report::render_document(&tables[..3], Format::Markdown));
     if let Some(dir) = &args.out {
         let files = report::paper_files(&decided, &tables, &paper_figures()?);
-        report::write_directory("out", dir, &files)?;
+        write_directory("out", dir, &files)?;
     }
     all_checked(&decided)
 }

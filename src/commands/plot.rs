@@ -6,6 +6,7 @@
 
 use super::{Failure, SceneFlags, parse_ratios};
 use clap::Args;
+use rodimpact::io::write_atomic;
 use rodimpact::report::{self, Figure};
 use rodimpact::scene::Scene;
 use rodimpact::{Error, ErrorKind};
@@ -186,9 +187,9 @@ pub(crate) fn run_plot(args: &PlotArgs) -> Result<(), Failure> {
     }
     refuse_unused(args)?;
     let drawn = figure(args)?;
-    report::write_atomic("out", &args.out, &drawn.svg)?;
+    write_atomic("out", &args.out, &drawn.svg)?;
     if let (Some(path), Some(data)) = (&args.data, &drawn.data) {
-        report::write_atomic("data", path, &data.to_csv())?;
+        write_atomic("data", path, &data.to_csv())?;
     }
     Ok(())
 }

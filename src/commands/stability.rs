@@ -3,8 +3,9 @@
 
 use super::{Failure, print_out};
 use clap::{Args, ValueEnum};
-use rodimpact::report::{plot_stability, write_atomic};
-use rodimpact::stability::{json, markdown, report};
+use rodimpact::io::write_atomic;
+use rodimpact::report::{plot_stability, stability_json, stability_markdown};
+use rodimpact::stability::compare_backends;
 use std::path::PathBuf;
 
 /// Sweep scenes per format.
@@ -32,15 +33,16 @@ pub(crate) fn run_stability(args: &StabilityArgs) -> Result<(), Failure> {
     if let Some(path) = &args.plot {
         super::plot::check_extension("plot", path, "svg", "")?;
     }
-    let rows = report(SWEEP);
+    let rows = compare_backends(SWEEP);
     if let Some(path) = &args.plot {
         write_atomic("plot", path, &plot_stability(&rows)?)?;
     }
     match args.format {
-        StabilityFormat::Md => print_out(&markdown(&rows)),
+        StabilityFormat::Md => print_out(&stability_markdown(&rows)),
         StabilityFormat::Json => print_out(&format!(
             "{}\n",
-            serde_json::to_string_pretty(&json(&rows)).expect("JSON of numbers and strings")
+            serde_json::to_string_pretty(&stability_json(&rows))
+                .expect("JSON of numbers and strings")
         )),
     }
     Ok(())

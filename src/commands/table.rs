@@ -4,6 +4,7 @@ use super::{Failure, parse_ratios, print_out};
 use clap::Args;
 use num_traits::{One, Signed};
 use rodimpact::field::Q;
+use rodimpact::io::write_atomic;
 use rodimpact::report::{self, Format, TableOptions};
 use rodimpact::scene::{RodInertia, parse_field};
 use rodimpact::{Error, ErrorKind};
@@ -113,7 +114,7 @@ pub(crate) fn run_table(args: &TableArgs) -> Result<(), Failure> {
     }
     let text = report::render_document(&tables, format);
     match &args.out {
-        Some(path) => report::write_atomic("out", path, &text)?,
+        Some(path) => write_atomic("out", path, &text)?,
         None => print_out(&text),
     }
     Ok(())

@@ -10,7 +10,7 @@ use crate::mechanics::Motion;
 use crate::scene::Scene;
 use crate::solve::float::Real;
 use crate::solve::{self, Solvable};
-use crate::stability::{Backend, Class, Measured, Reference};
+use crate::stability::{Accuracy, Backend, Class, Reference};
 use num_traits::Zero;
 use serde_json::{Map, Value, json};
 
@@ -179,7 +179,7 @@ fn unrepresentable_inputs(backend: Backend, reference: &Reference) -> Vec<String
 fn doubts_about_output(
     backend: Backend,
     exact: &Q,
-    measured: &Measured,
+    measured: &Accuracy,
     cond: Option<&Q>,
 ) -> Vec<String> {
     let mut doubts = Vec::new();
@@ -195,7 +195,7 @@ fn doubts_about_output(
             "ill-conditioned: cond is infinite (v = 0 exactly: only exact arithmetic decides it)"
                 .into(),
         ),
-        Some(c) if !Measured::well_conditioned(Some(c), &u) => doubts.push(format!(
+        Some(c) if !Accuracy::well_conditioned(Some(c), &u) => doubts.push(format!(
             "ill-conditioned: cond u = {} > 1e-3",
             decimal::decimal(&(c * &u), 3)
         )),

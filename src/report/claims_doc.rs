@@ -2,12 +2,14 @@
 //! drift from what `rodimpact prove` decides (a golden test regenerates and compares it).
 
 use super::markup::markdown_text;
-use crate::claims::{Decided, Group};
+use crate::claims::{self, Decided, Group};
 use std::fmt::Write as _;
 
 /// What the list says before the claims: the paper, the standing assumptions, the notation and
 /// how to read the table.
-const PREAMBLE: &str = "\
+fn preamble() -> String {
+    format!(
+        "\
 # The claims
 
 <!-- Generated from the claims registry (src/claims/); do not edit by hand. After a change to a \
@@ -16,7 +18,7 @@ claim, regenerate with `RODIMPACT_BLESS=1 cargo test --release --test golden`. -
 rodimpact decides every claim of N. A. Lemos, *Failure of intuition in elementary rigid body \
 dynamics*, [arXiv:0801.1644](https://arxiv.org/abs/0801.1644) (2008), and a set of results \
 beyond it. The paper's claims are numbered \
-C1-C46 in the order the paper makes them; the results beyond it are X1-X26. Each is formalised \
+{} in the order the paper makes them; the results beyond it are {}. Each is formalised \
 with every assumption explicit and decided by exact computation: **PROVED**, **REFUTED** (with \
 a counterexample), or **QUALIFIED** (the natural reading is false; a qualification that makes \
 it true is stated and proved). The verdicts are in [`proofs/README.md`](../proofs/README.md), \
@@ -34,11 +36,15 @@ omega are signed as in [conventions.md](conventions.md).
 (Eq. (omega) is the formula for omega), a section by its subject (§optimum: where omega is \
 largest; §intuition: why intuition fails; §inhomogeneous: the inhomogeneous rod) and ¶ the \
 paragraph within it.
-";
+",
+        claims::paper_ids(),
+        claims::beyond_ids()
+    )
+}
 
-/// `docs/claims.md`: [`PREAMBLE`], then every claim in registry order, grouped as the paper
-/// runs (id, where, the claim as stated, a link to its certificate); the paper's claims first,
-/// then the results beyond it (without the "where").
+/// `docs/claims.md`: the preamble (the paper, the assumptions, the notation), then every claim
+/// in registry order, grouped as the paper runs (id, where, the claim as stated, a link to its
+/// certificate); the paper's claims first, then the results beyond it (without the "where").
 ///
 /// # Examples
 /// ```
@@ -46,15 +52,15 @@ paragraph within it.
 /// let d = decide("C15", &Paper::as_printed()).unwrap();
 /// let md = rodimpact::report::claims_markdown(&[d]);
 /// assert!(md.starts_with("# The claims"));
-/// assert!(md.contains("## The paper (C1-C46)"));
+/// assert!(md.contains(&format!("## The paper ({})", rodimpact::claims::paper_ids())));
 /// assert!(md.contains("arXiv:0801.1644"));
 /// assert!(md.contains("| C15 | Eq. (omega) | omega = (2ma/I)/D v0 | [C15](../proofs/C15.md) |"));
 /// ```
 pub fn claims_markdown(all: &[Decided]) -> String {
-    let mut out = String::from(PREAMBLE);
+    let mut out = preamble();
     let parts = [
-        ("The paper (C1-C46)", false),
-        ("Beyond the paper (X1-X26)", true),
+        (format!("The paper ({})", claims::paper_ids()), false),
+        (format!("Beyond the paper ({})", claims::beyond_ids()), true),
     ];
     for (title, beyond) in parts {
         let _ = write!(out, "\n## {title}\n");

@@ -1,22 +1,29 @@
-//! Output: the forms in which results leave the library (JSON, text, and later Markdown, LaTeX,
-//! CSV and SVG).
+//! Output: every form in which results leave the library (JSON, text, Markdown, LaTeX, CSV and
+//! SVG). The library computes values; this module turns them into text. Writing the text to
+//! files, atomically, is [`crate::io`]'s job.
 
 mod backend;
+mod batch;
+mod certificate;
+mod check;
 mod claims_doc;
-mod files;
 pub mod markup;
-mod output_dir;
 mod paper_tables;
 mod plot;
 mod proofs;
 mod simulate;
 mod solution;
+mod stability;
 mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
+pub use batch::batch_summary;
+pub use certificate::certificate_markdown;
+pub use check::{
+    agreement_json, agreement_key, agreement_label, agreement_line, answer_json, check_json,
+    check_summary, check_table, problems_json, problems_text, rel_error_text,
+};
 pub use claims_doc::claims_markdown;
-pub use files::{AtomicFile, create_output_dir, remove_temporaries_on_signals, write_atomic};
-pub use output_dir::write_directory;
 pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
 pub use plot::{
     Figure, PlotData, PlotValue, energy_figure, mass_ratio_family, omega_figure, optimum_figure,
@@ -30,6 +37,7 @@ pub use simulate::{
     simulation_json, simulation_passes, simulation_text, sweep_json, sweep_passes, sweep_text,
 };
 pub use solution::Solution;
+pub use stability::{stability_json, stability_markdown};
 pub use table::{Cell, Column, Format, Table, render_document};
 
 use crate::field::Q;

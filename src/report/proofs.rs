@@ -13,9 +13,10 @@
 //!   refute it (the claim's statement starts with `Intuition:`), so the refutation agrees with
 //!   the paper.
 
+use super::certificate::certificate_markdown;
 use super::markup;
 use super::table::{Format, Table, render_document};
-use crate::claims::{Certificate, Claim, Decided, Decision, Group, Verdict};
+use crate::claims::{self, Certificate, Claim, Decided, Decision, Group, Verdict};
 use serde_json::{Map, Value, json};
 use std::fmt::Write as _;
 
@@ -117,7 +118,7 @@ pub fn claim_markdown(d: &Decided) -> String {
         let _ = writeln!(out, "## {title}\n");
         for (i, cert) in certs.iter().enumerate() {
             let _ = writeln!(out, "### {}. {}\n", i + 1, cert.title());
-            out.push_str(&cert.to_markdown());
+            out.push_str(&certificate_markdown(cert));
             out.push('\n');
         }
     };
@@ -192,17 +193,19 @@ fn summary_paragraphs(all: &[Decided]) -> String {
 /// assert!(md.contains("[C15](C15.md)"));
 /// ```
 pub fn index_markdown(all: &[Decided]) -> String {
-    let mut out = String::from(
-        "# Certificates\n\nOne certificate per claim of the list in `docs/claims.md`: C1-C46 are the paper's, X1-X26 go beyond it. Written by \
+    let mut out = format!(
+        "# Certificates\n\nOne certificate per claim of the list in `docs/claims.md`: {} are the paper's, {} go beyond it. Written by \
          `rodimpact prove --write DIR`; the repository's copy, `proofs/`, is regenerated and compared by \
          `cargo test`. A verdict comes from re-checking its certificates by exact computation.\n\n",
+        claims::paper_ids(),
+        claims::beyond_ids()
     );
     out.push_str(&summary_paragraphs(all));
     out.push_str(&claims_table(all));
     out
 }
 
-/// "72 claims: 66 PROVED, 0 REFUTED, 5 QUALIFIED, and 1 intuition REFUTED as the paper argues
+/// "N claims: P PROVED, R REFUTED, Q QUALIFIED, and 1 intuition REFUTED as the paper argues
 /// (C3)." (and the failures, if any). A refuted intuition that the paper itself refutes is
 /// counted apart: it is the paper's point, not a fault found in it.
 ///
@@ -295,7 +298,7 @@ fn notes(d: &Decided) -> Vec<(&'static str, String)> {
         notes.push(("qualified: ", q.to_string()));
     }
     if let Err(why) = &d.verdict {
-        notes.push(("CHECK FAILED: ", why.clone()));
+        notes.push(("CHECK FAILED: ", why.to_string()));
     }
     notes
 }
@@ -499,10 +502,12 @@ fn paper_index(all: &[Decided], tables: &[Table], figures: &[PaperFigure]) -> St
         "# {}\n\nWritten by `rodimpact paper --out DIR`; a re-run replaces these files as a whole.\n\n\
          | file | what it holds |\n|---|---|\n\
          | [report.md](report.md) | the report: every claim's verdict and reason, the tables, the figures |\n\
-         | `C1.md` … `X26.md` | one certificate per claim, linked below: the claim formalised, the evidence, how to re-check it |\n\
+         | `{}.md` … `{}.md` | one certificate per claim, linked below: the claim formalised, the evidence, how to re-check it |\n\
          | [tables.md](tables.md) | the tables T1-T5 in Markdown |\n\
          | [tables.tex](tables.tex) | the same tables, a LaTeX document (`pdflatex tables.tex`) |\n",
-        markup::markdown_text(TITLE)
+        markup::markdown_text(TITLE),
+        claims::paper_ids().first,
+        claims::beyond_ids().last
     );
     for t in tables {
         let _ = writeln!(
@@ -579,7 +584,7 @@ pub fn prove_json(d: &Decided) -> Value {
     );
     out.insert("seconds".into(), json!(d.seconds));
     if let Err(why) = &d.verdict {
-        out.insert("error".into(), json!(why));
+        out.insert("error".into(), json!(why.to_string()));
     }
     Value::Object(out)
 }

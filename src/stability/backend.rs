@@ -2,7 +2,7 @@
 //! outward-rounded interval, and exact rationals; each evaluated and measured on one scene,
 //! each through its named [`Route`].
 
-use super::{Measured, condition};
+use super::{Accuracy, condition};
 use crate::field::{Field, Interval, Q};
 use crate::mechanics::Motion;
 use crate::scene::{Params, Scene, Support};
@@ -148,7 +148,7 @@ impl Backend {
     /// assert!(encloses);
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
-    pub fn measure(self, scene: &Scene, reference: &Reference) -> Option<(Motion<Measured>, bool)> {
+    pub fn measure(self, scene: &Scene, reference: &Reference) -> Option<(Motion<Accuracy>, bool)> {
         let cond = self.condition(reference);
         let u = self.unit_roundoff();
         let exact = reference.motion.as_ref().zip(cond.as_ref());
@@ -156,7 +156,7 @@ impl Backend {
         let floats = |x: Motion<f64>| {
             let measured = x.zip(exact.clone());
             let measure = |(x, (exact, cond)): (f64, (&Q, &Option<Q>))| {
-                Measured::of(x, exact, cond.as_ref(), &u)
+                Accuracy::of(x, exact, cond.as_ref(), &u)
             };
             (measured.map(measure), true)
         };
@@ -174,14 +174,14 @@ impl Backend {
                     .all(|(x, e)| x.contains(e));
                 let measured = x
                     .zip(exact)
-                    .map(|(x, (exact, cond))| Measured::of_interval(&x, exact, cond.as_ref(), &u));
+                    .map(|(x, (exact, cond))| Accuracy::of_interval(&x, exact, cond.as_ref(), &u));
                 Some((measured, encloses))
             }
             Backend::Exact => {
                 let x = solve::with::<Q>(scene, route).ok()?.after;
                 let measured = x
                     .zip(exact)
-                    .map(|(x, (exact, _))| Measured::of_exact(&x, exact));
+                    .map(|(x, (exact, _))| Accuracy::of_exact(&x, exact));
                 Some((measured, true))
             }
         }

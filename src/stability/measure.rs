@@ -21,9 +21,9 @@ pub enum Class {
     MissedZero,
 }
 
-/// One float output measured against its exact value.
+/// The accuracy of one float output, measured exactly against its exact value.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Measured {
+pub struct Accuracy {
     /// |float - exact|/|exact| exactly (0 when both are 0); `None` when undefined (NaN,
     /// infinite, or nonzero where the exact value is 0).
     pub rel_error: Option<Q>,
@@ -33,23 +33,23 @@ pub struct Measured {
     pub class: Class,
 }
 
-impl Measured {
+impl Accuracy {
     /// Measures the float `x` against `exact`, with condition number `cond` (`None`:
     /// infinite) and unit roundoff `u`.
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::q, solve::float::Real, stability::{Class, Measured}};
-    /// let m = Measured::of(1.0f64 / 3.0, &q(1, 3), Some(&q(1, 1)), &<f64 as Real>::unit_roundoff());
+    /// use rodimpact::{field::q, solve::float::Real, stability::{Class, Accuracy}};
+    /// let m = Accuracy::of(1.0f64 / 3.0, &q(1, 3), Some(&q(1, 1)), &<f64 as Real>::unit_roundoff());
     /// assert_eq!(m.class, Class::Number);
     /// assert!(m.ratio.unwrap() <= 1.0); // correctly rounded: at most u
     /// ```
-    pub fn of<T: Real>(x: T, exact: &Q, cond: Option<&Q>, u: &Q) -> Measured {
+    pub fn of<T: Real>(x: T, exact: &Q, cond: Option<&Q>, u: &Q) -> Accuracy {
         match x.to_exact() {
             None if x.finite() => unreachable!("finite floats are rationals"),
-            None if x.sign().is_none() => Measured::undefined(Class::Nan),
-            None => Measured::undefined(Class::Infinite),
-            Some(value) => Measured::distance((&value - exact).abs(), exact, cond, u, &value),
+            None if x.sign().is_none() => Accuracy::undefined(Class::Nan),
+            None => Accuracy::undefined(Class::Infinite),
+            Some(value) => Accuracy::distance((&value - exact).abs(), exact, cond, u, &value),
         }
     }
 
@@ -57,20 +57,20 @@ impl Measured {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::{q, Field, Interval}, solve::float::Real, stability::Measured};
+    /// use rodimpact::{field::{q, Field, Interval}, solve::float::Real, stability::Accuracy};
     /// let third = Interval::from_rational(&q(1, 3));
-    /// let m = Measured::of_interval(&third, &q(1, 3), Some(&q(1, 1)), &<f64 as Real>::unit_roundoff());
+    /// let m = Accuracy::of_interval(&third, &q(1, 3), Some(&q(1, 1)), &<f64 as Real>::unit_roundoff());
     /// assert!(m.ratio.unwrap() <= 2.0); // one ulp wide
     /// ```
-    pub fn of_interval(x: &Interval, exact: &Q, cond: Option<&Q>, u: &Q) -> Measured {
+    pub fn of_interval(x: &Interval, exact: &Q, cond: Option<&Q>, u: &Q) -> Accuracy {
         match (x.lower().to_exact(), x.upper().to_exact()) {
             (Some(lo), Some(hi)) => {
                 let far = (&lo - exact).abs().max((&hi - exact).abs());
                 let point = if lo.is_zero() && hi.is_zero() { lo } else { hi };
-                Measured::distance(far, exact, cond, u, &point)
+                Accuracy::distance(far, exact, cond, u, &point)
             }
-            _ if x.lower().is_nan() || x.upper().is_nan() => Measured::undefined(Class::Nan),
-            _ => Measured::undefined(Class::Infinite),
+            _ if x.lower().is_nan() || x.upper().is_nan() => Accuracy::undefined(Class::Nan),
+            _ => Accuracy::undefined(Class::Infinite),
         }
     }
 
@@ -78,46 +78,46 @@ impl Measured {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::q, stability::Measured};
-    /// assert_eq!(Measured::of_exact(&q(1, 3), &q(1, 3)).ratio, Some(0.0));
+    /// use rodimpact::{field::q, stability::Accuracy};
+    /// assert_eq!(Accuracy::of_exact(&q(1, 3), &q(1, 3)).ratio, Some(0.0));
     /// ```
-    pub fn of_exact(x: &Q, exact: &Q) -> Measured {
+    pub fn of_exact(x: &Q, exact: &Q) -> Accuracy {
         let gap = (x - exact).abs();
         let rel = if exact.is_zero() {
             gap
         } else {
             gap / exact.abs()
         };
-        Measured {
+        Accuracy {
             ratio: rel.to_f64(),
             rel_error: Some(rel),
             class: Class::Number,
         }
     }
 
-    fn undefined(class: Class) -> Measured {
-        Measured {
+    fn undefined(class: Class) -> Accuracy {
+        Accuracy {
             rel_error: None,
             ratio: None,
             class,
         }
     }
 
-    fn distance(gap: Q, exact: &Q, cond: Option<&Q>, u: &Q, value: &Q) -> Measured {
+    fn distance(gap: Q, exact: &Q, cond: Option<&Q>, u: &Q, value: &Q) -> Accuracy {
         if exact.is_zero() {
             return if gap.is_zero() {
-                Measured {
+                Accuracy {
                     rel_error: Some(Q::zero()),
                     ratio: Some(0.0),
                     class: Class::Number,
                 }
             } else {
-                Measured::undefined(Class::MissedZero)
+                Accuracy::undefined(Class::MissedZero)
             };
         }
         let rel = gap / exact.abs();
         let ratio = cond.map(|c| (&rel / (c * u)).to_f64().unwrap_or(f64::INFINITY));
-        Measured {
+        Accuracy {
             rel_error: Some(rel),
             ratio,
             class: if value.is_zero() {
@@ -133,11 +133,11 @@ impl Measured {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::q, stability::Measured};
+    /// use rodimpact::{field::q, stability::Accuracy};
     /// let u = q(1, 1 << 20);
-    /// assert!(Measured::well_conditioned(Some(&q(1, 1)), &u));
-    /// assert!(!Measured::well_conditioned(Some(&q(10_000, 1)), &u));
-    /// assert!(!Measured::well_conditioned(None, &u));
+    /// assert!(Accuracy::well_conditioned(Some(&q(1, 1)), &u));
+    /// assert!(!Accuracy::well_conditioned(Some(&q(10_000, 1)), &u));
+    /// assert!(!Accuracy::well_conditioned(None, &u));
     /// ```
     pub fn well_conditioned(cond: Option<&Q>, u: &Q) -> bool {
         cond.is_some_and(|c| c * u <= Q::new(1.into(), 1000.into()))

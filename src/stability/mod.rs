@@ -1,18 +1,19 @@
 //! Numerical stability of the float backends, measured exactly: condition numbers
-//! ([`condition`]), exact error measurement ([`Measured`]), the backends compared
-//! ([`Backend`]), the stiff/extreme scene suite and a seeded random sweep, and the report of
-//! `rodimpact stability` (error in units of cond u against run time).
+//! ([`condition`]), the accuracy of one float output against its exact value ([`Accuracy`]),
+//! the backends compared ([`Backend`]), the stiff/extreme scene suite and a seeded random sweep,
+//! and the comparison behind `rodimpact stability` ([`compare_backends`]: error in units of
+//! cond u against run time; rendered by `crate::report`).
 
 mod backend;
+mod comparison;
 mod condition;
 mod measure;
-mod report;
 mod suite;
 mod timing;
 
 pub use backend::{Backend, Reference};
+pub use comparison::{BackendStats, compare_backends};
 pub use condition::condition;
-pub use measure::{Class, Measured};
-pub use report::{Row, json, markdown, report};
+pub use measure::{Accuracy, Class};
 pub use suite::{Case, SplitMix64, in_range, suite, sweep};
 pub use timing::median_nanos;

@@ -20,12 +20,10 @@
 //! Unknown keys are errors naming the key.
 
 use super::expr::Budget;
-use super::{Claim, Quantity, Report, check_scene_within};
+use super::{ClaimedAnswer, Quantity, SceneCheck, check_scene_within};
 use crate::error::{Error, ErrorKind};
 use crate::scene::SceneInput;
 use serde::Deserialize;
-use serde_json::{Value, json};
-use std::fmt::Write as _;
 
 /// The largest accepted problem file, in bytes.
 pub const MAX_FILE_BYTES: usize = 1 << 20;
@@ -255,17 +253,17 @@ fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
     })
 }
 
-/// The verdicts for one problem.
+/// One problem's claimed answers, checked.
 #[derive(Debug, Clone)]
-pub struct ProblemReport {
+pub struct ProblemCheck {
     /// The problem's id.
     pub id: String,
     /// Its citation.
     pub source: String,
     /// Its remark, if any.
     pub note: Option<String>,
-    /// Its claims' decisions.
-    pub report: Report,
+    /// Its claimed answers, checked.
+    pub check: SceneCheck,
 }
 
 /// Checks every problem, one at a time (its claims read, decided and dropped before the next
@@ -280,14 +278,14 @@ pub struct ProblemReport {
 /// ```
 /// use rodimpact::textbook::problems::{parse_problems, check_problems};
 /// let text = "[[problem]]\nid = \"p\"\nsource = \"s\"\n[problem.given]\nm = \"1\"\nM = \"1\"\n[problem.claims]\nomega = \"6/5\"\n";
-/// let reports = check_problems("t.toml", &parse_problems("t.toml", text).unwrap(), None).unwrap();
-/// assert!(reports[0].report.all_agree());
+/// let checks = check_problems("t.toml", &parse_problems("t.toml", text).unwrap(), None).unwrap();
+/// assert!(checks[0].check.all_agree());
 /// ```
 pub fn check_problems(
     label: &str,
     problems: &[Problem],
     sig: Option<u32>,
-) -> Result<Vec<ProblemReport>, Error> {
+) -> Result<Vec<ProblemCheck>, Error> {
     let mut budget = Budget::run();
     problems
         .iter()
@@ -298,80 +296,19 @@ pub fn check_problems(
                 .claims
                 .iter()
                 .map(|(name, text)| {
-                    Claim::new_within(name, text, &mut budget).map_err(|e| {
+                    ClaimedAnswer::new_within(name, text, &mut budget).map_err(|e| {
                         Error::new(at(&format!("claims.{}", crate::echo::echo(name))), e.kind)
                     })
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            let report = check_scene_within(&p.scene, &claims, sig.or(p.sig), &mut budget)
+            let check = check_scene_within(&p.scene, &claims, sig.or(p.sig), &mut budget)
                 .map_err(|e| Error::new(at(&e.field), e.kind))?;
-            Ok(ProblemReport {
+            Ok(ProblemCheck {
                 id: p.id.clone(),
                 source: p.source.clone(),
                 note: p.note.clone(),
-                report,
+                check,
             })
         })
         .collect()
-}
-
-fn totals(reports: &[ProblemReport]) -> (usize, usize) {
-    reports.iter().fold((0, 0), |(a, t), r| {
-        (a + r.report.agreeing(), t + r.report.decisions.len())
-    })
-}
-
-/// The text report: one section per problem, then the summary.
-///
-/// # Examples
-/// ```
-/// assert_eq!(rodimpact::textbook::problems::problems_text(&[]), "0 problems; no claims\n");
-/// ```
-pub fn problems_text(reports: &[ProblemReport]) -> String {
-    let mut out = String::new();
-    for r in reports {
-        let _ = writeln!(out, "{}  ({})", r.id, r.source);
-        out.push_str(&r.report.to_text());
-        if let Some(note) = &r.note {
-            let _ = writeln!(out, "  about: {note}");
-        }
-        let _ = writeln!(out, "  {}\n", r.report.summary());
-    }
-    let (agree, total) = totals(reports);
-    let wrong: Vec<&str> = reports
-        .iter()
-        .filter(|r| !r.report.all_agree())
-        .map(|r| r.id.as_str())
-        .collect();
-    let _ = write!(
-        out,
-        "{}; {}",
-        super::verdict::count(reports.len(), "problem"),
-        super::verdict::summary_line(agree, total)
-    );
-    if !wrong.is_empty() {
-        let _ = write!(out, " (disagreements in: {})", wrong.join(", "));
-    }
-    out.push('\n');
-    out
-}
-
-/// The JSON report: `{"problems": [...], "summary": {...}}`.
-///
-/// # Examples
-/// ```
-/// let j = rodimpact::textbook::problems::problems_json(&[]);
-/// assert_eq!(j["summary"]["claims"], 0);
-/// ```
-pub fn problems_json(reports: &[ProblemReport]) -> Value {
-    let (agree, total) = totals(reports);
-    json!({
-        "problems": reports.iter().map(|r| {
-            let mut j = r.report.to_json();
-            j["id"] = json!(r.id);
-            j["source"] = json!(r.source);
-            j
-        }).collect::<Vec<_>>(),
-        "summary": super::verdict::summary_json(agree, total),
-    })
 }

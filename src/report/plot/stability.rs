@@ -10,7 +10,7 @@ use super::svg::{Shape, Stroke};
 use super::{PALETTE, SIZE};
 use crate::error::Error;
 use crate::solve::float::Formula;
-use crate::stability::{Backend, Row};
+use crate::stability::{Backend, BackendStats};
 
 /// The colour of a backend: by formula (interval and exact their own).
 fn color(backend: Backend) -> &'static str {
@@ -60,11 +60,11 @@ fn place(error: f64) -> Place {
 ///
 /// # Examples
 /// ```
-/// let rows = rodimpact::stability::report(5);
+/// let rows = rodimpact::stability::compare_backends(5);
 /// let svg = rodimpact::report::plot_stability(&rows).unwrap();
 /// assert!(svg.contains("error exactly 0"));
 /// ```
-pub fn plot_stability(rows: &[Row]) -> Result<String, Error> {
+pub fn plot_stability(rows: &[BackendStats]) -> Result<String, Error> {
     let finite = rows
         .iter()
         .flat_map(|r| [r.max, r.median])

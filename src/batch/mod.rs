@@ -1,0 +1,32 @@
+//! Many scenes from a CSV file: solved exactly (or in f64), streamed in chunks, in parallel,
+//! written back in input order with the results appended.
+//!
+//! The header names columns among `m, M, l, a, v0, rod, e, pivot` (m and M required, the others
+//! take the `solve` defaults, also when a cell is empty) and optionally `v, V, omega`: claimed
+//! results, each compared with the computed value. Appended columns: `v, V, omega` (named
+//! `v_exact`, ... when the input already has a claim of that name; `v_f64, V_f64, omega_f64`
+//! in f64), `laws_held` (`-` in f64, which decides no law), and for each claim
+//! `<name>_ok, <name>_rel_error`.
+//!
+//! Limits: at most [`MAX_ROWS`] rows and [`MAX_LINE`] bytes per line; each number at most
+//! [`number::MAX_DIGITS`](crate::number::MAX_DIGITS) digits. Memory stays flat in the number of
+//! rows: at most three chunks of [`CHUNK`] rows are held at a time (one being read, one solved,
+//! one written), and the median of the summary comes from a histogram of relative errors
+//! rounded to two significant digits.
+//!
+//! One job per file: the header and the cells of a row (`header.rs`: [`Batch`]), solving a row
+//! and writing its output line (`row.rs`: [`SolvedRow`]), claimed values against computed ones
+//! (`compare.rs`: [`OutputCheck`]), the totals (`summary.rs`: [`Summary`], rendered by
+//! [`crate::report::batch_summary`]) and the chunked, parallel stream (`stream.rs`: [`run`]).
+
+mod compare;
+mod header;
+mod row;
+mod stream;
+mod summary;
+
+pub use compare::{FLOAT_TOLERANCE, OutputCheck};
+pub use header::{Arithmetic, Batch};
+pub use row::SolvedRow;
+pub use stream::{CHUNK, MAX_LINE, MAX_ROWS, run};
+pub use summary::{OutputStats, Summary, WRONG_ROWS_SHOWN};

@@ -1,0 +1,193 @@
+//! Streaming a batch: data rows read [`CHUNK`] at a time, each chunk solved in parallel and
+//! written in input order, reading and writing overlapped with solving.
+
+use super::header::Batch;
+use super::row::SolvedRow;
+use super::summary::Summary;
+use crate::error::{Error, ErrorKind};
+use rayon::prelude::*;
+use std::io::{BufRead, Read, Write};
+
+/// The largest number of data rows accepted.
+pub const MAX_ROWS: usize = 100_000_000;
+/// The longest line accepted, in bytes.
+pub const MAX_LINE: usize = 1 << 20;
+/// Rows read, solved in parallel and written per step.
+pub const CHUNK: usize = 8192;
+
+/// Streams the data rows of `input` (after the header) to `out`, [`CHUNK`] rows at a time, each
+/// chunk solved in parallel on the current rayon pool and written in input order. Reading the
+/// next chunk and writing the previous one overlap with solving the current one. `progress`
+/// gets the number of bytes read so far after each chunk.
+///
+/// # Errors
+/// The first bad row in input order (`row N, column X: ...`), an over-long line or too many
+/// rows, `row N: cannot read: ...` when reading fails, `out: ...` when writing fails. Every row
+/// before the bad one is written first (so a stream shows all the good rows up to it): write to
+/// an [`crate::io::AtomicFile`] to publish all or nothing.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{run, Batch, Arithmetic};
+/// let b = Batch::new("m,M", Arithmetic::Exact).unwrap();
+/// let mut out = Vec::new();
+/// let summary = run("1,1\n2,1\n".as_bytes(), &mut out, &b, |_| {}).unwrap();
+/// assert_eq!(String::from_utf8(out).unwrap(), "1,1,3/5,2/5,6/5,true\n2,1,7/9,4/9,4/3,true\n");
+/// assert_eq!(summary.rows, 2);
+///
+/// let mut out = Vec::new();
+/// let err = run("1,1\n2,-1\n3,1\n".as_bytes(), &mut out, &b, |_| {}).unwrap_err();
+/// assert_eq!(err.to_string(), "row 2, column M: must be > 0, got -1");
+/// assert_eq!(String::from_utf8(out).unwrap(), "1,1,3/5,2/5,6/5,true\n"); // row 1 is out
+/// ```
+pub fn run(
+    input: impl BufRead,
+    out: &mut impl Write,
+    batch: &Batch,
+    mut progress: impl FnMut(u64),
+) -> Result<Summary, Error> {
+    let mut summary = Summary::default();
+    let mut reader = ChunkReader {
+        input,
+        bytes: 0,
+        number: 0,
+    };
+    let mut solved: Vec<SolvedRow> = Vec::new();
+    // `stop`: the error that ended reading, after the lines of `current`.
+    let (mut current, mut stop) = reader.next_chunk();
+    while !current.is_empty() {
+        let mut rows = Vec::new();
+        let (mut written, mut next) = (Ok(()), (Vec::new(), None));
+        let reading = stop.is_none();
+        rayon::in_place_scope(|scope| {
+            scope.spawn(|_| {
+                rows = current
+                    .par_iter()
+                    .map(|(n, line)| batch.row(*n, line))
+                    .collect();
+            });
+            written = write_rows(out, &solved, &mut summary);
+            if reading {
+                next = reader.next_chunk();
+            }
+        });
+        written?;
+        progress(reader.bytes);
+        // The current chunk's first bad row comes before any error in the next chunk, and the
+        // rows before it are written before it is reported.
+        let mut good = Vec::with_capacity(rows.len());
+        for row in rows {
+            match row {
+                Ok(row) => good.push(row),
+                Err(e) => {
+                    write_rows(out, &good, &mut summary)?;
+                    return Err(e);
+                }
+            }
+        }
+        solved = good;
+        if !reading {
+            break;
+        }
+        (current, stop) = next;
+    }
+    write_rows(out, &solved, &mut summary)?;
+    match stop {
+        Some(e) => Err(e),
+        None => Ok(summary),
+    }
+}
+
+fn write_rows(
+    out: &mut impl Write,
+    rows: &[SolvedRow],
+    summary: &mut Summary,
+) -> Result<(), Error> {
+    for row in rows {
+        out.write_all(row.line.as_bytes())
+            .map_err(|why| Error::new("out", ErrorKind::Io(format!("cannot write: {why}"))))?;
+        summary.add(row);
+    }
+    Ok(())
+}
+
+/// Reads data rows [`CHUNK`] at a time, enforcing [`MAX_LINE`] and [`MAX_ROWS`].
+struct ChunkReader<R> {
+    input: R,
+    /// Bytes read so far.
+    bytes: u64,
+    /// The number of the last row read (1-based, blank lines counted).
+    number: usize,
+}
+
+impl<R: BufRead> ChunkReader<R> {
+    /// Up to [`CHUNK`] non-blank rows with their numbers (empty at the end of the input), and
+    /// the error that stopped reading after them, if any.
+    fn next_chunk(&mut self) -> (Vec<(usize, String)>, Option<Error>) {
+        let mut lines = Vec::with_capacity(CHUNK);
+        while lines.len() < CHUNK {
+            match self.next_line() {
+                Ok(Some(line)) => lines.push(line),
+                Ok(None) => break,
+                Err(e) => return (lines, Some(e)),
+            }
+        }
+        (lines, None)
+    }
+
+    /// The next non-blank row with its number, or `None` at the end of the input.
+    fn next_line(&mut self) -> Result<Option<(usize, String)>, Error> {
+        loop {
+            let mut line = String::new();
+            let n = (&mut self.input)
+                .take(MAX_LINE as u64 + 1)
+                .read_line(&mut line)
+                .map_err(|why| {
+                    Error::new(
+                        format!("row {}", self.number + 1),
+                        ErrorKind::Io(format!("cannot read: {why}")),
+                    )
+                })?;
+            if n == 0 {
+                return Ok(None);
+            }
+            self.bytes += n as u64;
+            self.number += 1;
+            if n > MAX_LINE {
+                return Err(Error::new(
+                    format!("row {}", self.number),
+                    ErrorKind::Invalid(format!("line longer than {MAX_LINE} bytes")),
+                ));
+            }
+            if self.number > MAX_ROWS {
+                return Err(Error::new(
+                    format!("row {}", self.number),
+                    ErrorKind::Invalid(format!("more than {MAX_ROWS} rows (limit per batch)")),
+                ));
+            }
+            if !line.trim().is_empty() {
+                return Ok(Some((self.number, line)));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::batch::Arithmetic;
+
+    #[test]
+    fn long_lines_are_refused_and_blank_lines_skipped() {
+        let b = Batch::new("m,M", Arithmetic::Exact).unwrap();
+        let long = format!("1,{}\n", "1".repeat(MAX_LINE));
+        let err = run(long.as_bytes(), &mut Vec::new(), &b, |_| {}).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            format!("row 1: line longer than {MAX_LINE} bytes")
+        );
+        let mut out = Vec::new();
+        let s = run("1,1\n\n1,1\n".as_bytes(), &mut out, &b, |_| {}).unwrap();
+        assert_eq!(s.rows, 2);
+    }
+}

@@ -1,0 +1,173 @@
+//! The totals of a batch: rows, laws, and per claimed output the count wrong, the largest and
+//! the median relative error (from a bounded histogram, so memory stays flat in the rows).
+
+use super::header::OUTPUTS;
+use super::row::SolvedRow;
+use crate::field::Q;
+use num_traits::Zero;
+use std::collections::BTreeMap;
+
+/// Counts, the largest relative error and a bounded histogram for the median, per claimed
+/// output.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Batch, Arithmetic, Summary};
+/// let b = Batch::new("m,M", Arithmetic::Exact).unwrap();
+/// let mut s = Summary::default();
+/// s.add(&b.row(1, "1,1").unwrap());
+/// assert_eq!((s.rows, s.laws_failed, s.wrong()), (1, 0, 0));
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct Summary {
+    /// Data rows processed.
+    pub rows: usize,
+    /// Rows whose laws did not hold exactly (exact arithmetic).
+    pub laws_failed: usize,
+    /// Rows whose laws were not checked (f64 arithmetic).
+    pub laws_unchecked: usize,
+    outputs: [OutputStats; 3],
+}
+
+/// The claims of one output (v, V or omega) over the batch: counts, the largest relative
+/// error, and a histogram of relative errors rounded to two significant digits for the median.
+#[derive(Debug, Clone, Default)]
+pub struct OutputStats {
+    compared: usize,
+    wrong: usize,
+    /// `None` before the first claim; `Some(None)` once an infinite error was seen.
+    max: Option<Option<Q>>,
+    /// Relative errors rounded to 2 significant digits (f64 bits, ordered as the values).
+    histogram: BTreeMap<u64, usize>,
+    /// The first [`WRONG_ROWS_SHOWN`] rows with a wrong claim.
+    wrong_rows: Vec<usize>,
+}
+
+/// How many rows with a wrong claim the summary names, per output.
+pub const WRONG_ROWS_SHOWN: usize = 10;
+
+impl Summary {
+    /// Adds one row (see the type's example).
+    pub fn add(&mut self, row: &SolvedRow) {
+        self.rows += 1;
+        match row.laws_held {
+            Some(true) => {}
+            Some(false) => self.laws_failed += 1,
+            None => self.laws_unchecked += 1,
+        }
+        for v in &row.checks {
+            let s = &mut self.outputs[v.output];
+            s.compared += 1;
+            s.wrong += usize::from(!v.ok);
+            if !v.ok && s.wrong_rows.len() < WRONG_ROWS_SHOWN {
+                s.wrong_rows.push(row.number);
+            }
+            let bigger = match (&s.max, &v.rel_error) {
+                (None, _) | (Some(Some(_)), None) => true,
+                (Some(Some(old)), Some(new)) => new > old,
+                (Some(None), _) => false,
+            };
+            if bigger {
+                s.max = Some(v.rel_error.clone());
+            }
+            let rounded = match &v.rel_error {
+                Some(r) if r.is_zero() => 0.0,
+                Some(r) => format!("{:.1e}", crate::field::Field::nearest_f64(r))
+                    .parse::<f64>()
+                    .unwrap_or(f64::INFINITY),
+                None => f64::INFINITY,
+            };
+            *s.histogram.entry(rounded.to_bits()).or_default() += 1;
+        }
+    }
+
+    /// Claims that were wrong, over all outputs.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic, Summary};
+    /// let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "1,1,3/5").unwrap());
+    /// s.add(&b.row(2, "1,1,0.6000001").unwrap());
+    /// assert_eq!(s.wrong(), 1);
+    /// ```
+    pub fn wrong(&self) -> usize {
+        self.outputs.iter().map(|c| c.wrong).sum()
+    }
+
+    /// The statistics of each claimed output, named (`v`, `V`, `omega`), in that order;
+    /// outputs without a claim column have nothing compared.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic, Summary};
+    /// let b = Batch::new("m,M,omega", Arithmetic::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "1,1,6/5").unwrap());
+    /// let compared: Vec<(&str, usize)> = s.outputs().map(|(name, o)| (name, o.compared())).collect();
+    /// assert_eq!(compared, [("v", 0), ("V", 0), ("omega", 1)]);
+    /// ```
+    pub fn outputs(&self) -> impl Iterator<Item = (&'static str, &OutputStats)> {
+        OUTPUTS.into_iter().zip(&self.outputs)
+    }
+}
+
+impl OutputStats {
+    /// Claims compared.
+    pub fn compared(&self) -> usize {
+        self.compared
+    }
+
+    /// Claims that were wrong.
+    pub fn wrong(&self) -> usize {
+        self.wrong
+    }
+
+    /// The first [`WRONG_ROWS_SHOWN`] rows with a wrong claim, in input order.
+    pub fn wrong_rows(&self) -> &[usize] {
+        &self.wrong_rows
+    }
+
+    /// The largest relative error, exactly; `None` when some error was infinite (a zero value
+    /// with a nonzero claim) or nothing was compared.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{batch::{Batch, Arithmetic, Summary}, field::q};
+    /// let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "1,1,3/5").unwrap());
+    /// s.add(&b.row(2, "1,1,3/4").unwrap());
+    /// let (_, v) = s.outputs().next().unwrap();
+    /// assert_eq!(v.max_rel_error(), Some(&q(1, 4)));
+    /// ```
+    pub fn max_rel_error(&self) -> Option<&Q> {
+        self.max.as_ref().and_then(Option::as_ref)
+    }
+
+    /// The median relative error, rounded to two significant digits (infinite for an infinite
+    /// error); `None` when nothing was compared.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic, Summary};
+    /// let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// for (n, claim) in [(1, "3/5"), (2, "0.61"), (3, "0.62")].into_iter() {
+    ///     s.add(&b.row(n, &format!("1,1,{claim}")).unwrap());
+    /// }
+    /// let (_, v) = s.outputs().next().unwrap();
+    /// assert_eq!(v.median(), Some(0.017)); // |0.61 - 3/5| / (3/5) = 0.01666...
+    /// ```
+    pub fn median(&self) -> Option<f64> {
+        let mut seen = 0;
+        for (&bits, &count) in &self.histogram {
+            seen += count;
+            if 2 * seen > self.compared {
+                return Some(f64::from_bits(bits));
+            }
+        }
+        None
+    }
+}

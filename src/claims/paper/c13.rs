@@ -1,0 +1,13 @@
+use crate::claims::dsl::*;
+
+pub(super) const ENTRY: Entry = Entry {
+    id: "C13",
+    location: "Eq. (v)",
+    group: Group::Equations,
+    statement: "v = -(1 - m/M - ma^2/I)/D v0, with D > 0",
+    formalise,
+};
+
+fn formalise(paper: &Paper) -> Formalised {
+    elastic_formula(&ENTRY, "v", elastic().v, &paper.v)
+}

@@ -1,0 +1,105 @@
+//! The summary `rodimpact batch` prints on standard error.
+
+use crate::batch::{OutputStats, Summary};
+use crate::field::decimal;
+
+/// The summary of a batch: rows, laws (or that they were not checked, with the f64
+/// arithmetic), and per claimed output the count wrong (naming the first
+/// [`WRONG_ROWS_SHOWN`](crate::batch::WRONG_ROWS_SHOWN) rows), the maximum and the median
+/// relative error.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Batch, Arithmetic, Summary};
+/// use rodimpact::report::batch_summary;
+/// let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
+/// let mut s = Summary::default();
+/// s.add(&b.row(1, "1,1,3/5").unwrap());
+/// assert_eq!(batch_summary(&s), "1 rows, laws held exactly on 1\nv: 1 claims, 0 wrong, max rel error 0, median 0\n");
+/// s.add(&b.row(2, "1,1,0.6").unwrap());
+/// s.add(&b.row(3, "1,1,0.61").unwrap());
+/// assert!(batch_summary(&s).contains("v: 3 claims, 1 wrong (row 3), max rel error 0.0167, median 0"));
+///
+/// let f = Batch::new("m,M", Arithmetic::F64).unwrap();
+/// let mut s = Summary::default();
+/// s.add(&f.row(1, "1,1").unwrap());
+/// assert_eq!(batch_summary(&s), "1 rows (f64: conservation laws not checked)\n");
+/// ```
+pub fn batch_summary(summary: &Summary) -> String {
+    let mut out = if summary.laws_unchecked > 0 {
+        format!(
+            "{} rows (f64: conservation laws not checked)\n",
+            summary.rows
+        )
+    } else {
+        format!(
+            "{} rows, laws held exactly on {}\n",
+            summary.rows,
+            summary.rows - summary.laws_failed
+        )
+    };
+    for (name, stats) in summary.outputs() {
+        if stats.compared() == 0 {
+            continue;
+        }
+        let max = match stats.max_rel_error() {
+            Some(r) => decimal::decimal(r, 3),
+            None => "inf".to_string(),
+        };
+        let median = match stats.median() {
+            Some(0.0) => "0".to_string(),
+            Some(x) => format!("{x:.1e}"),
+            None => "-".to_string(),
+        };
+        out.push_str(&format!(
+            "{name}: {} claims, {} wrong{}, max rel error {max}, median {median}\n",
+            stats.compared(),
+            stats.wrong(),
+            wrong_rows_text(stats),
+        ));
+    }
+    out
+}
+
+/// ` (rows 3, 17 and 5 more)`, or nothing when no claim was wrong.
+fn wrong_rows_text(stats: &OutputStats) -> String {
+    let rows: Vec<String> = stats.wrong_rows().iter().map(usize::to_string).collect();
+    let more = stats.wrong() - rows.len();
+    match (rows.len(), more) {
+        (0, _) => String::new(),
+        (1, 0) => format!(" (row {})", rows[0]),
+        (_, 0) => format!(" (rows {})", rows.join(", ")),
+        _ => format!(" (rows {} and {more} more)", rows.join(", ")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::batch::{Arithmetic, Batch};
+
+    #[test]
+    fn a_zero_value_with_a_nonzero_claim_is_infinitely_wrong() {
+        let b = Batch::new("m,M,a,omega", Arithmetic::Exact).unwrap();
+        let row = b.row(1, "1,1,0,1/1000").unwrap();
+        assert!(row.line.ends_with(",false,inf\n"), "{}", row.line);
+        let mut s = Summary::default();
+        s.add(&row);
+        assert!(batch_summary(&s).contains("omega: 1 claims, 1 wrong (row 1), max rel error inf"));
+    }
+
+    #[test]
+    fn more_wrong_rows_than_shown_are_counted() {
+        let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
+        let mut s = Summary::default();
+        for n in 1..=13 {
+            s.add(&b.row(n, "1,1,1").unwrap());
+        }
+        assert!(
+            batch_summary(&s)
+                .contains("v: 13 claims, 13 wrong (rows 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 and 3 more)"),
+            "{}",
+            batch_summary(&s)
+        );
+    }
+}

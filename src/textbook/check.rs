@@ -1,0 +1,227 @@
+//! Checking claimed answers about one scene: the orchestration. A scene of numbers is solved
+//! over Q and each claim decided numerically ([`super::numeric`]); a formula in a scene flag or
+//! a claim makes the whole check symbolic: the scene is built in its free symbols
+//! ([`super::symbolic`]) and each claim decided as an identity, or numerically when both sides
+//! are constants.
+
+use super::answer::{SceneCheck, SceneSummary};
+use super::claim::{ClaimedAnswer, ClaimedValue};
+use super::exact::Exact;
+use super::expr::{Budget, Radical};
+use super::numeric::decide;
+use super::quantity::Quantity;
+use super::sigfig;
+use super::symbolic::{GivenScene, SymbolicScene, identity};
+use crate::error::{Error, ErrorKind};
+use crate::field::{Field, Q, QSqrt, RatFn};
+use crate::optimum::{a_star_squared, optimum};
+use crate::scene::{Params, SceneInput};
+use crate::solve::Outcome;
+use crate::solve::linear::solve;
+use num_traits::One;
+
+/// Checks claims about one scene given as typed (numbers may carry units; any formula in a
+/// scene flag or a claim makes the whole check symbolic). `sig` overrides the claims'
+/// significant figures.
+///
+/// # Errors
+/// Bad scene or claim input, naming the field.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::SceneInput, textbook::{check_scene, ClaimedAnswer}};
+/// let s = SceneInput { m: Some("1".into()), rod_mass: Some("1".into()), ..Default::default() };
+/// let r = check_scene(&s, &[ClaimedAnswer::parse("omega=6/5").unwrap()], None).unwrap();
+/// assert!(r.all_agree() && r.symbolic.is_none());
+/// ```
+pub fn check_scene(
+    input: &SceneInput,
+    claims: &[ClaimedAnswer],
+    sig: Option<u32>,
+) -> Result<SceneCheck, Error> {
+    check_scene_within(input, claims, sig, &mut Budget::run())
+}
+
+/// [`check_scene`], charging the work of the scene's and the claims' formulas to a run's
+/// `budget` (shared by every scene of a problem file).
+///
+/// # Errors
+/// Those of [`check_scene`], and an exhausted budget.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::SceneInput, textbook::{check_scene_within, expr::Budget, ClaimedAnswer}};
+/// let s = SceneInput { rod_mass: Some("4*m".into()), a: Some("l".into()), ..Default::default() };
+/// let mut budget = Budget::run();
+/// let r = check_scene_within(&s, &[ClaimedAnswer::parse("v=0").unwrap()], None, &mut budget).unwrap();
+/// assert!(r.all_agree()); // M = 4m hit at the end, elastic: the projectile stops
+/// ```
+pub fn check_scene_within(
+    input: &SceneInput,
+    claims: &[ClaimedAnswer],
+    sig: Option<u32>,
+    budget: &mut Budget,
+) -> Result<SceneCheck, Error> {
+    if let Some(n) = sig {
+        sigfig::check_sig(n)?;
+    }
+    let given = GivenScene::read(input, budget)?;
+    if given.has_formula() || claims.iter().any(ClaimedAnswer::is_symbolic) {
+        check_symbolic(&given, claims, sig, budget)
+    } else {
+        check_numeric(input, claims, sig)
+    }
+}
+
+/// Checks claims about a scene of numbers: solved over Q (a* and omega_max in Q(sqrt d)), each
+/// claim decided numerically.
+///
+/// # Errors
+/// Bad scene input; a scene that is not all numbers (a missing mass); `pivot_impulse` of a
+/// free rod.
+fn check_numeric(
+    input: &SceneInput,
+    claims: &[ClaimedAnswer],
+    sig: Option<u32>,
+) -> Result<SceneCheck, Error> {
+    let scene = input.build().map_err(|e| numeric_scene_needed(e, claims))?;
+    let params = scene.params::<Q>();
+    let out = solved(&params);
+    let mut answers = Vec::with_capacity(claims.len());
+    for claim in claims {
+        let exact = match claim.quantity.motion_value(&params, &out)? {
+            Some(x) => Exact::Rational(x),
+            None => {
+                let opt = optimum(&scene);
+                if claim.quantity == Quantity::AStar {
+                    Exact::Surd(QSqrt::sqrt_of(&opt.squared))
+                } else {
+                    Exact::Surd(opt.omega_max.clone())
+                }
+            }
+        };
+        answers.push(decide(claim, &exact, sig));
+    }
+    Ok(SceneCheck {
+        symbolic: None,
+        answers,
+    })
+}
+
+/// A missing mass in a scene of numbers only: numeric claims need a numeric scene.
+fn numeric_scene_needed(e: Error, claims: &[ClaimedAnswer]) -> Error {
+    if e.kind != ErrorKind::Missing {
+        return e;
+    }
+    let example = claims
+        .first()
+        .map(|c| format!(" ({}={})", c.quantity.name(), c.text))
+        .unwrap_or_default();
+    Error::new(
+        e.field,
+        ErrorKind::Invalid(format!(
+            "not given; a numeric claim{example} needs a numeric scene: give m and M as numbers (--m, --M), or claim a formula in the scene's symbols"
+        )),
+    )
+}
+
+/// The exact answer a claim is compared with, as `coeff * sqrt(radicand)`.
+fn exact_value(
+    quantity: Quantity,
+    field: &str,
+    scene: &SymbolicScene,
+    out: &Outcome<RatFn>,
+) -> Result<Radical, Error> {
+    if let Some(x) = quantity.motion_value(&scene.params, out)? {
+        return Ok(Radical::rational(x));
+    }
+    match quantity {
+        Quantity::AStar => Ok(Radical {
+            coeff: RatFn::one(),
+            radicand: a_star_squared(&scene.params),
+        }),
+        _ => Err(Error::new(
+            field,
+            ErrorKind::Invalid(
+                "omega_max is checked for numeric scenes only: it is omega(a*) when a* <= l and omega(l) otherwise, a different formula on each side; claim a_star or omega instead".into(),
+            ),
+        )),
+    }
+}
+
+/// Checks claims about a symbolic scene; every formula's work is charged to `budget`.
+///
+/// # Errors
+/// Bad input; `omega_max` (piecewise, not one formula); rpm against a formula; an exhausted
+/// budget.
+fn check_symbolic(
+    given: &GivenScene,
+    claims: &[ClaimedAnswer],
+    sig: Option<u32>,
+    budget: &mut Budget,
+) -> Result<SceneCheck, Error> {
+    let scene = SymbolicScene::build(given)?;
+    let out = solved(&scene.params);
+    let mut answers = Vec::with_capacity(claims.len());
+    for claim in claims {
+        let field = format!("claim {}", claim.quantity.name());
+        let exact = exact_value(claim.quantity, &field, &scene, &out)?;
+        let claimed = match &claim.value {
+            ClaimedValue::Printed(m) => {
+                if let Some((c, r)) = exact.constant() {
+                    answers.push(decide(claim, &Exact::radical(c, r), sig));
+                    continue;
+                }
+                let si = m.si().ok_or_else(|| {
+                    Error::new(
+                        field.as_str(),
+                        ErrorKind::Invalid(
+                            "a value in rpm cannot be compared with a formula: give it in rad/s"
+                                .into(),
+                        ),
+                    )
+                })?;
+                Radical::rational(RatFn::from_rational(&si))
+            }
+            ClaimedValue::Formula(r) => {
+                let resolved = scene.resolve(&field, r, budget)?;
+                if let (Some(_), Some((c, r))) = (resolved.constant(), exact.constant()) {
+                    let numeric = ClaimedAnswer {
+                        value: ClaimedValue::Formula(resolved),
+                        ..claim.clone()
+                    };
+                    answers.push(decide(&numeric, &Exact::radical(c, r), sig));
+                    continue;
+                }
+                resolved
+            }
+        };
+        let mut answer = identity(claim, &claimed, &exact, &scene, budget, &field)?;
+        if matches!(claim.value, ClaimedValue::Printed(_)) {
+            answer.notes.insert(
+                0,
+                "a number against a formula: decided as an identity in the free symbols".into(),
+            );
+        }
+        answers.push(answer);
+    }
+    Ok(SceneCheck {
+        symbolic: Some(SceneSummary {
+            free: scene.free.iter().map(|s| s.name().to_string()).collect(),
+            defaults: scene.defaults.clone(),
+        }),
+        answers,
+    })
+}
+
+/// The impulse equations of a valid scene, solved.
+///
+/// Their determinant (`-(m I + M I + M m a^2)` for a free rod) is nonzero wherever the scene's
+/// constraints hold (m, M, I > 0, the impact and the pivot on the rod). A numeric scene was
+/// validated when it was built; a symbolic one holds at a sample point of its free symbols
+/// ([`SymbolicScene::build`] refuses it otherwise), so its determinant is not identically zero.
+/// A singular system is therefore a bug in this crate, never bad input, and it is not reported
+/// as bad input (exit 2): it stops the program as the broken invariant it is.
+fn solved<F: Field>(params: &Params<F>) -> Outcome<F> {
+    solve(params).expect("the impulse equations of a valid scene are nonsingular")
+}

@@ -1,0 +1,154 @@
+//! A scene as given on the command line or in a problem file, every field read once: a number
+//! with an optional unit, or a formula in the scene's symbols.
+
+use crate::error::{Error, ErrorKind};
+use crate::field::{Field, RatFn, Sym};
+use crate::scene::{RodInertia, SceneInput, dimension_of};
+use crate::textbook::claim::{ClaimedValue, read_value};
+use crate::textbook::expr::Budget;
+use crate::units::Dimension;
+
+/// The numeric scene inputs in the order they are read: (key, text).
+fn numeric_fields(input: &SceneInput) -> [(&'static str, &Option<String>); 9] {
+    [
+        ("m", &input.m),
+        ("M", &input.rod_mass),
+        ("l", &input.l),
+        ("length", &input.length),
+        ("a", &input.a),
+        ("from-end", &input.from_end),
+        ("v0", &input.v0),
+        ("e", &input.e),
+        ("pivot", &input.pivot),
+    ]
+}
+
+/// How the rod was given.
+#[derive(Debug, Clone)]
+pub(super) enum RodGiven {
+    /// Not given: uniform, the default.
+    Default,
+    /// `uniform` or `dumbbell`.
+    Named(RodInertia),
+    /// `rg=F`: the radius of gyration.
+    Gyration(RatFn),
+    /// `I=F`: the moment of inertia about the centre.
+    Moment(RatFn),
+}
+
+/// A scene as given, every value read once: numbers (in SI) as constant rational functions,
+/// formulas in the scene's symbols (`L` and `d` already expanded).
+#[derive(Debug, Clone)]
+pub struct GivenScene {
+    values: Vec<(&'static str, String, RatFn)>,
+    pub(super) rod: RodGiven,
+    formula: bool,
+}
+
+impl GivenScene {
+    /// Reads every field of `input`: a number with an optional unit, or a formula (charged to
+    /// `budget`).
+    ///
+    /// # Errors
+    /// A field that is neither, naming it; a square root in a scene quantity; an unknown rod.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{scene::SceneInput, textbook::{expr::Budget, symbolic::GivenScene}};
+    /// let s = SceneInput { m: Some("100 g".into()), rod_mass: Some("4*m".into()), ..Default::default() };
+    /// assert!(GivenScene::read(&s, &mut Budget::run()).unwrap().has_formula());
+    /// let s = SceneInput { m: Some("100 g".into()), ..Default::default() };
+    /// assert!(!GivenScene::read(&s, &mut Budget::run()).unwrap().has_formula());
+    /// ```
+    pub fn read(input: &SceneInput, budget: &mut Budget) -> Result<GivenScene, Error> {
+        let mut values = Vec::new();
+        let mut formula = false;
+        for (key, text) in numeric_fields(input) {
+            if let Some(text) = text {
+                let (value, is_formula) = value_of(key, text, dimension_of(key), budget)?;
+                formula |= is_formula;
+                values.push((key, text.trim().to_string(), value));
+            }
+        }
+        let rod = match input.rod.as_deref().map(str::trim) {
+            None => RodGiven::Default,
+            Some(text) => {
+                let read = |body: &str, dimension, budget: &mut Budget| {
+                    value_of("rod", body, dimension, budget)
+                };
+                if let Some(body) = text.strip_prefix("rg=") {
+                    let (r, is_formula) = read(body, Dimension::Length, budget)?;
+                    formula |= is_formula;
+                    RodGiven::Gyration(r)
+                } else if let Some(body) = text.strip_prefix("I=") {
+                    let (i, is_formula) = read(body, Dimension::MomentOfInertia, budget)?;
+                    formula |= is_formula;
+                    RodGiven::Moment(i)
+                } else {
+                    RodGiven::Named(RodInertia::parse(text)?)
+                }
+            }
+        };
+        Ok(GivenScene {
+            values,
+            rod,
+            formula,
+        })
+    }
+
+    /// Whether some field is a formula rather than a number.
+    pub fn has_formula(&self) -> bool {
+        self.formula
+    }
+
+    pub(super) fn get(&self, key: &str) -> Option<&RatFn> {
+        self.values
+            .iter()
+            .find(|(k, _, _)| *k == key)
+            .map(|(_, _, v)| v)
+    }
+
+    pub(super) fn text(&self, key: &str) -> Option<&str> {
+        self.values
+            .iter()
+            .find(|(k, _, _)| *k == key)
+            .map(|(_, t, _)| t.as_str())
+    }
+}
+
+/// A field's value, and whether it was a formula; `L` and `d` are expanded to `2*l` and
+/// `l - a`.
+fn value_of(
+    field: &str,
+    text: &str,
+    dimension: Dimension,
+    budget: &mut Budget,
+) -> Result<(RatFn, bool), Error> {
+    let r = match read_value(field, text, dimension, budget)? {
+        ClaimedValue::Printed(m) => {
+            let si = m.si().ok_or_else(|| {
+                Error::new(
+                    field,
+                    ErrorKind::Invalid("rpm is not a unit of a scene quantity".into()),
+                )
+            })?;
+            return Ok((RatFn::from_rational(&si), false));
+        }
+        ClaimedValue::Formula(r) => r,
+    };
+    if !r.is_rational() {
+        return Err(Error::new(
+            field,
+            ErrorKind::Invalid("a scene quantity cannot contain a square root".into()),
+        ));
+    }
+    let (l, a) = (RatFn::symbol("l"), RatFn::symbol("a"));
+    let value = r
+        .coeff
+        .subs_all(&[
+            (Sym::new("L"), RatFn::from(2) * &l),
+            (Sym::new("d"), l - &a),
+        ])
+        .ok_or_else(|| Error::new(field, ErrorKind::DivisionByZero))?;
+    Ok((value, true))
+}

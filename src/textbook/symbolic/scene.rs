@@ -1,0 +1,511 @@
+//! A scene in free symbols: given fields are numbers or formulas, the rest symbols, with the
+//! defaults of `solve` for the collision law and the rod; its domain is checked on a grid of
+//! sample scenes, which also serve to refute claimed formulas.
+
+use super::given::{GivenScene, RodGiven};
+use crate::error::{Error, ErrorKind};
+use crate::field::{Field, Q, RatFn, Sym};
+use crate::scene::{Params, RodInertia, Support};
+use crate::textbook::expr::{Budget, Radical, size, size_of};
+use num_traits::{One, Signed};
+use std::collections::{BTreeMap, BTreeSet};
+
+fn sym(name: &str) -> Sym {
+    Sym::new(name)
+}
+
+/// The physical constraints of a scene, in the order they are checked and named.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Constraint {
+    ProjectileMass,
+    RodMass,
+    HalfLength,
+    Speed,
+    Inertia,
+    OnTheRod,
+    Restitution,
+    PivotOnTheRod,
+}
+
+const CONSTRAINTS: [Constraint; 8] = [
+    Constraint::ProjectileMass,
+    Constraint::RodMass,
+    Constraint::HalfLength,
+    Constraint::Speed,
+    Constraint::Inertia,
+    Constraint::OnTheRod,
+    Constraint::Restitution,
+    Constraint::PivotOnTheRod,
+];
+
+/// A scene in free symbols.
+#[derive(Debug, Clone)]
+pub struct SymbolicScene {
+    /// The solver's parameters, each a rational function of the free symbols.
+    pub params: Params<RatFn>,
+    /// The free symbols, in the order m, M, l, a, v0, e, p, I, r.
+    pub free: Vec<Sym>,
+    /// The defaults applied to quantities not given.
+    pub defaults: Vec<String>,
+    /// The radius of gyration when the rod gives one (`rg=F`, or `l` for a dumbbell).
+    gyration: Option<RatFn>,
+    /// What each claim symbol stands for (m M l L a d v0 e I, r when known, p on a pivot).
+    meaning: Vec<(Sym, RatFn)>,
+    /// The given texts of the fields a constraint names (for messages).
+    texts: BTreeMap<&'static str, (String, String)>,
+}
+
+impl SymbolicScene {
+    /// Builds the symbolic scene: given fields are numbers (with units) or formulas, the rest
+    /// free symbols, except e (1, elastic) and the rod (uniform) which take `solve`'s defaults.
+    ///
+    /// # Errors
+    /// Conflicting alternatives, circular definitions, a numeric value outside the domain,
+    /// `I` or `r` outside `--rod` and the claims, or formulas that leave no valid sample scene.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{scene::SceneInput, textbook::{expr::Budget, symbolic::{GivenScene, SymbolicScene}}};
+    /// let s = SceneInput { rod_mass: Some("4*m".into()), length: Some("L".into()), ..Default::default() };
+    /// let scene = SymbolicScene::build(&GivenScene::read(&s, &mut Budget::run()).unwrap()).unwrap();
+    /// let free: Vec<_> = scene.free.iter().map(|s| s.name()).collect();
+    /// assert_eq!(free, ["m", "l", "a", "v0"]);
+    /// assert_eq!(scene.params.rod_mass.to_string(), "4*m");
+    /// assert_eq!(scene.params.e.to_string(), "1");
+    /// ```
+    pub fn build(given: &GivenScene) -> Result<SymbolicScene, Error> {
+        let mut defs: BTreeMap<&'static str, RatFn> = BTreeMap::new();
+        let mut put = |key: &'static str, v: Option<RatFn>| {
+            if let Some(v) = v
+                && v != RatFn::symbol(key)
+            {
+                defs.insert(key, v);
+            }
+        };
+        put("m", given.get("m").cloned());
+        put("M", given.get("M").cloned());
+        let (l, length) = (given.get("l"), given.get("length"));
+        if l.is_some() && length.is_some() {
+            return Err(conflict("length", "give either --l or --length, not both"));
+        }
+        put(
+            "l",
+            l.cloned()
+                .or_else(|| length.map(|x| x.clone() / RatFn::from(2))),
+        );
+        let (a, from_end) = (given.get("a"), given.get("from-end"));
+        if a.is_some() && from_end.is_some() {
+            return Err(conflict(
+                "from-end",
+                "give either --a or --from-end, not both",
+            ));
+        }
+        put(
+            "a",
+            a.cloned()
+                .or_else(|| from_end.map(|d| RatFn::symbol("l") - d)),
+        );
+        put("v0", given.get("v0").cloned());
+        let mut defaults = Vec::new();
+        let e = given.get("e").cloned().unwrap_or_else(|| {
+            defaults.push("e = 1 (elastic)".to_string());
+            RatFn::one()
+        });
+        put("e", Some(e));
+        let pivot = given.get("pivot").cloned();
+        let has_pivot = pivot.is_some();
+        put("p", pivot);
+        for (key, v) in &defs {
+            if let Some(s) = v.symbols().iter().find(|s| ["I", "r"].contains(&s.name())) {
+                return Err(Error::new(
+                    *key,
+                    ErrorKind::Invalid(format!(
+                        "{} may appear only in --rod and in claims",
+                        s.name()
+                    )),
+                ));
+            }
+        }
+        let defs = resolve(defs)?;
+        let mut names = vec!["m", "M", "l", "a", "v0", "e"];
+        if has_pivot {
+            names.push("p");
+        }
+        let value = |n: &str| defs.get(n).cloned().unwrap_or_else(|| RatFn::symbol(n));
+        for (name, v) in &defs {
+            if v.symbols().contains(&sym("p")) && !has_pivot {
+                return Err(Error::new(
+                    *name,
+                    ErrorKind::Invalid("p is used but the rod has no pivot (--pivot)".into()),
+                ));
+            }
+            check_constant(name, v)?;
+        }
+        let substitute = |f: &RatFn| {
+            let subs: Vec<(Sym, RatFn)> = defs.iter().map(|(k, v)| (sym(k), v.clone())).collect();
+            f.subs_all(&subs)
+                .ok_or_else(|| Error::new("rod", ErrorKind::DivisionByZero))
+        };
+        let (big_m, half) = (value("M"), value("l"));
+        let (inertia, gyration) = match &given.rod {
+            RodGiven::Default | RodGiven::Named(RodInertia::Uniform) => {
+                if matches!(given.rod, RodGiven::Default) {
+                    defaults.push("uniform rod (I = M l^2/3)".to_string());
+                }
+                (big_m.clone() * &half * &half / RatFn::from(3), None)
+            }
+            RodGiven::Named(_) => (big_m.clone() * &half * &half, Some(half.clone())),
+            RodGiven::Gyration(r) => {
+                let r = substitute(r)?;
+                (big_m.clone() * &r * &r, Some(r))
+            }
+            RodGiven::Moment(i) => (substitute(i)?, None),
+        };
+        let a = value("a");
+        let mentioned: BTreeSet<Sym> = names
+            .iter()
+            .flat_map(|n| value(n).symbols())
+            .chain(inertia.symbols())
+            .collect();
+        let free: Vec<Sym> = ["m", "M", "l", "a", "v0", "e", "p", "I", "r"]
+            .iter()
+            .map(|n| sym(n))
+            .filter(|s| mentioned.contains(s))
+            .collect();
+        let d = match a.as_constant() {
+            Some(c) => half.clone() - &RatFn::from_rational(&c.abs()),
+            None => half.clone() - &a,
+        };
+        let mut meaning: Vec<(Sym, RatFn)> = names.iter().map(|n| (sym(n), value(n))).collect();
+        meaning.push((sym("L"), RatFn::from(2) * &half));
+        meaning.push((sym("d"), d));
+        meaning.push((sym("I"), inertia.clone()));
+        if let Some(r) = &gyration {
+            meaning.push((sym("r"), r.clone()));
+        }
+        let params = Params {
+            m: value("m"),
+            rod_mass: big_m,
+            half_length: half,
+            inertia,
+            a,
+            v0: value("v0"),
+            e: value("e"),
+            support: if has_pivot {
+                Support::Pivot(value("p"))
+            } else {
+                Support::Free
+            },
+        };
+        // The field a constraint names: the flag given (`length` for l, `from-end` for a).
+        let mut texts = BTreeMap::new();
+        for (key, keys) in [
+            ("m", &["m"][..]),
+            ("M", &["M"]),
+            ("l", &["l", "length"]),
+            ("v0", &["v0"]),
+            ("a", &["a", "from-end"]),
+            ("e", &["e"]),
+            ("pivot", &["pivot"]),
+        ] {
+            if let Some(named) = keys
+                .iter()
+                .find_map(|k| given.text(k).map(|t| (k.to_string(), t.to_string())))
+            {
+                texts.insert(key, named);
+            }
+        }
+        let scene = SymbolicScene {
+            params,
+            free,
+            defaults,
+            gyration: if matches!(given.rod, RodGiven::Gyration(_)) {
+                gyration
+            } else {
+                None
+            },
+            meaning,
+            texts,
+        };
+        scene.check_domain()?;
+        Ok(scene)
+    }
+
+    /// A claimed formula in the scene's free symbols: every symbol the claim uses is replaced
+    /// by what it stands for in this scene (work charged to `budget`).
+    ///
+    /// # Errors
+    /// `p` on a free rod, `r` where the rod gives no rational radius of gyration, a
+    /// denominator that vanishes in this scene, or an exhausted budget.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{scene::SceneInput, textbook::{expr::{parse, Budget}, symbolic::{GivenScene, SymbolicScene}}};
+    /// let s = SceneInput { length: Some("L".into()), a: Some("L/4".into()), ..Default::default() };
+    /// let mut budget = Budget::run();
+    /// let scene = SymbolicScene::build(&GivenScene::read(&s, &mut budget).unwrap()).unwrap();
+    /// let d = scene.resolve("claim", &parse("x", "d").unwrap(), &mut budget).unwrap();
+    /// assert_eq!(d.to_string(), "1/2*l");
+    /// let i = scene.resolve("claim", &parse("x", "I").unwrap(), &mut budget).unwrap();
+    /// assert_eq!(i.to_string(), "1/3*M*l^2");
+    /// ```
+    pub fn resolve(
+        &self,
+        field: &str,
+        claim: &Radical,
+        budget: &mut Budget,
+    ) -> Result<Radical, Error> {
+        if claim.mentions(sym("p")) && !self.meaning.iter().any(|(s, _)| s.name() == "p") {
+            return Err(Error::new(
+                field,
+                ErrorKind::Invalid("p is used but the rod has no pivot (--pivot)".into()),
+            ));
+        }
+        if claim.mentions(sym("r")) && !self.meaning.iter().any(|(s, _)| s.name() == "r") {
+            return Err(Error::new(
+                field,
+                ErrorKind::Invalid(
+                    "r is used but this rod's radius of gyration is not a rational function (a uniform rod has r = l/sqrt(3)): write it with l, or give --rod rg=r".into(),
+                ),
+            ));
+        }
+        // Only the symbols the claim uses and that stand for something else.
+        let subs: Vec<(Sym, RatFn)> = self
+            .meaning
+            .iter()
+            .filter(|(s, v)| claim.mentions(*s) && *v != RatFn::symbol(s.name()))
+            .cloned()
+            .collect();
+        if subs.is_empty() {
+            return Ok(claim.clone());
+        }
+        let cost = subs
+            .iter()
+            .map(|(_, v)| size_of(v))
+            .sum::<u64>()
+            .saturating_mul(size(claim));
+        budget.charge(field, cost)?;
+        claim
+            .map(|f| f.subs_all(&subs))
+            .ok_or_else(|| Error::new(field, ErrorKind::DivisionByZero))
+    }
+
+    /// The grid of sample points of the free symbols (at most `limit`), valid or not.
+    fn grid(&self, limit: usize) -> impl Iterator<Item = BTreeMap<Sym, Q>> + '_ {
+        let lists: Vec<(Sym, Vec<Q>)> = self
+            .free
+            .iter()
+            .map(|s| (*s, candidates(s.name())))
+            .collect();
+        (0..limit).map_while(move |k| {
+            let mut rest = k;
+            let mut point = BTreeMap::new();
+            for (s, list) in &lists {
+                point.insert(*s, list[rest % list.len()].clone());
+                rest /= list.len();
+            }
+            (k == 0 || rest == 0).then_some(point)
+        })
+    }
+
+    /// Deterministic sample points that make a valid scene (at most `limit` tried).
+    pub(super) fn samples(&self, limit: usize) -> impl Iterator<Item = BTreeMap<Sym, Q>> + '_ {
+        self.grid(limit).filter(|point| {
+            self.constraints_at(point)
+                .is_some_and(|ok| ok.iter().all(|&b| b))
+        })
+    }
+
+    /// Which constraints hold at a point (in [`CONSTRAINTS`] order); `None` where a value is
+    /// undefined (a vanishing denominator).
+    fn constraints_at(&self, point: &BTreeMap<Sym, Q>) -> Option<[bool; 8]> {
+        let at = |f: &RatFn| f.eval::<Q>(&|s| point.get(&s).cloned());
+        let p = &self.params;
+        let (m, big_m, l, v0) = (at(&p.m)?, at(&p.rod_mass)?, at(&p.half_length)?, at(&p.v0)?);
+        let (inertia, a, e) = (at(&p.inertia)?, at(&p.a)?, at(&p.e)?);
+        let inertia_ok = match &self.gyration {
+            Some(r) => {
+                let r = at(r)?;
+                r.is_positive() && r <= l
+            }
+            None => inertia.is_positive() && inertia <= &big_m * &l * &l,
+        };
+        let pivot_ok = match &p.support {
+            Support::Free => true,
+            Support::Pivot(pv) => at(pv)?.abs() <= l,
+        };
+        Some([
+            m.is_positive(),
+            big_m.is_positive(),
+            l.is_positive(),
+            v0.is_positive(),
+            inertia_ok,
+            a.abs() <= l,
+            !e.is_negative() && e <= Q::one(),
+            pivot_ok,
+        ])
+    }
+
+    /// Refuses a scene with no valid sample point, naming the first constraint that fails at
+    /// every point (or the scene, when each holds somewhere but never all together).
+    fn check_domain(&self) -> Result<(), Error> {
+        let mut ever = [false; 8];
+        for point in self.grid(SAMPLES) {
+            let Some(ok) = self.constraints_at(&point) else {
+                continue;
+            };
+            if ok.iter().all(|&b| b) {
+                return Ok(());
+            }
+            for (seen, holds) in ever.iter_mut().zip(ok) {
+                *seen |= holds;
+            }
+        }
+        let failing = CONSTRAINTS
+            .iter()
+            .zip(ever)
+            .find(|(_, seen)| !seen)
+            .map(|(c, _)| *c);
+        Err(match failing {
+            Some(c) => self.domain_error(c),
+            None => Error::out_of_range(
+                "scene",
+                "no sample scene satisfies every constraint at once (m, M, l, v0 > 0, 0 < I <= M l^2, |a| <= l, 0 <= e <= 1, |p| <= l)",
+            ),
+        })
+    }
+
+    fn domain_error(&self, c: Constraint) -> Error {
+        let (key, rule, failure) = match c {
+            Constraint::ProjectileMass => ("m", "must be > 0", "is <= 0"),
+            Constraint::RodMass => ("M", "must be > 0", "is <= 0"),
+            Constraint::HalfLength => ("l", "must be > 0", "is <= 0"),
+            Constraint::Speed => ("v0", "must be > 0", "is <= 0"),
+            Constraint::Inertia => {
+                let rule = if self.gyration.is_some() {
+                    "the radius of gyration must satisfy 0 < r_G <= l"
+                } else {
+                    "the moment of inertia must satisfy 0 < I <= M l^2"
+                };
+                return Error::out_of_range(
+                    "rod",
+                    format!("{rule}, and it does in no sample scene of the free symbols"),
+                );
+            }
+            Constraint::OnTheRod => ("a", "must lie on the rod, |a| <= l", "is off the rod"),
+            Constraint::Restitution => ("e", "must lie in [0, 1]", "lies outside [0, 1]"),
+            Constraint::PivotOnTheRod => {
+                ("pivot", "must lie on the rod, |p| <= l", "is off the rod")
+            }
+        };
+        match self.texts.get(key) {
+            Some((field, text)) => Error::out_of_range(
+                field.as_str(),
+                format!(
+                    "{rule}, but {field} = {text} {failure} in every sample scene of the free symbols"
+                ),
+            ),
+            None => Error::out_of_range(
+                key,
+                format!("{rule}, and it holds in no sample scene of the free symbols"),
+            ),
+        }
+    }
+}
+
+/// The most sample scenes tried, to validate a scene or to refute a claim.
+pub(super) const SAMPLES: usize = 4096;
+
+fn candidates(name: &str) -> Vec<Q> {
+    let list: &[(i64, i64)] = match name {
+        "m" => &[(1, 1), (2, 1), (1, 3), (5, 2)],
+        "M" => &[(3, 1), (1, 1), (7, 2), (1, 5)],
+        "l" => &[(1, 1), (2, 1), (3, 2)],
+        "a" => &[(1, 2), (1, 3), (1, 1), (3, 4)],
+        "v0" => &[(1, 1), (3, 1)],
+        "e" => &[(1, 2), (1, 1), (0, 1), (1, 3)],
+        "I" => &[(1, 3), (1, 7), (1, 2), (1, 10)],
+        "r" => &[(1, 2), (1, 3), (1, 1), (1, 4)],
+        _ => &[(-1, 2), (0, 1), (1, 4), (-1, 1)],
+    };
+    list.iter()
+        .map(|(n, d)| Q::new((*n).into(), (*d).into()))
+        .collect()
+}
+
+fn conflict(field: &str, why: &str) -> Error {
+    Error::new(field, ErrorKind::Conflict(why.into()))
+}
+
+/// Substitutes definitions into each other until none mentions a defined symbol.
+fn resolve(
+    mut defs: BTreeMap<&'static str, RatFn>,
+) -> Result<BTreeMap<&'static str, RatFn>, Error> {
+    for _ in 0..=defs.len() {
+        let subs: Vec<(Sym, RatFn)> = defs.iter().map(|(k, v)| (sym(k), v.clone())).collect();
+        let defined = |v: &RatFn| v.symbols().iter().any(|s| defs.contains_key(s.name()));
+        if !defs.values().any(defined) {
+            return Ok(defs);
+        }
+        let mut next = BTreeMap::new();
+        for (k, v) in &defs {
+            let v = v
+                .subs_all(&subs)
+                .ok_or_else(|| Error::new(*k, ErrorKind::DivisionByZero))?;
+            next.insert(*k, v);
+        }
+        defs = next;
+    }
+    let names: Vec<&str> = defs.keys().copied().collect();
+    Err(conflict(
+        names.first().copied().unwrap_or("scene"),
+        &format!("circular definitions among {}", names.join(", ")),
+    ))
+}
+
+fn check_constant(name: &str, v: &RatFn) -> Result<(), Error> {
+    let Some(c) = v.as_constant() else {
+        return Ok(());
+    };
+    let bad = match name {
+        "m" | "M" | "l" | "v0" => !c.is_positive(),
+        "e" => c.is_negative() || c > Q::one(),
+        _ => false,
+    };
+    if bad {
+        Err(Error::out_of_range(
+            name,
+            format!("{c} is outside the domain of {name}"),
+        ))
+    } else {
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::SceneInput;
+
+    fn build(pairs: &[(&str, &str)]) -> Result<SymbolicScene, Error> {
+        let mut s = SceneInput::default();
+        for (k, v) in pairs {
+            *s.slot(k).expect("a scene key") = Some(v.to_string());
+        }
+        SymbolicScene::build(&GivenScene::read(&s, &mut Budget::run())?)
+    }
+
+    #[test]
+    fn circular_definitions_are_refused() {
+        let err = build(&[("m", "2*M"), ("M", "m/2+m")])
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("circular"), "{err}");
+    }
+
+    #[test]
+    fn rod_symbols_stay_out_of_the_scene_flags() {
+        let err = build(&[("a", "r")]).unwrap_err().to_string();
+        assert_eq!(err, "a: r may appear only in --rod and in claims");
+    }
+}
