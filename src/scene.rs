@@ -1,7 +1,7 @@
 //! Scenes: the projectile, the rod, the impact point, the collision law and the support.
 //!
 //! A [`Scene`] is exact (every number in [`Q`]) and valid by construction: it is built only by
-//! [`Scene::new`] or [`SceneInput::build`], which check the physical constraints and name the
+//! [`Scene::builder`] or [`SceneInput::build`], which check the physical constraints and name the
 //! offending field. [`Scene::params`] lifts it into any [`Field`] for the solver.
 
 use crate::error::{Error, ErrorKind};

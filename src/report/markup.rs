@@ -15,7 +15,8 @@
 //!
 //! The math is a small subset of LaTeX: letters, digits, operators, `^` and `_` (with one
 //! character or a braced group), `\sqrt{..}`, `\mathrm{..}`, `\lvert ..\rvert`, `\,` and the
-//! commands of [`command`].
+//! commands `\omega`, `\Delta`, `\pi`, `\approx`, `\le`, `\ge`, `\ne`, `\cdot`, `\times`,
+//! `\infty`, `\to`, `\max`, `\min`.
 
 /// `text` with its `$…$` math spelled in Unicode and the dollars removed.
 ///

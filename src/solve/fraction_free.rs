@@ -125,7 +125,7 @@ fn input_bits(scene: &Scene) -> u64 {
 }
 
 /// [`solve`] without the fixed-width attempt: fraction-free in big integers (the fallback on
-/// its own, for tests and benchmarks): num-bigint's [`BigInt`], or malachite's `Integer` with
+/// its own, for tests and benchmarks): num-bigint's [`BigInt`](num_bigint::BigInt), or malachite's `Integer` with
 /// the cargo feature `malachite` (LGPL-3.0; subquadratic GCD). The result is the same.
 ///
 /// # Examples
