@@ -123,6 +123,25 @@ impl QSqrt {
         }
     }
 
+    /// Whether the representation holds its invariant (see [`QSqrt`]): no radicand unless the
+    /// number met one, `y != 0` only with a radicand, a radicand an integer > 1 that is not a
+    /// square and has no square factor of a prime below 10^4. Every operation keeps it; the
+    /// property tests assert it.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::field::{q, QSqrt};
+    /// assert!(QSqrt::sqrt_of(&q(2, 3)).is_valid());
+    /// ```
+    pub fn is_valid(&self) -> bool {
+        match self.d.as_deref() {
+            None => self.y.is_zero(),
+            Some(d) => {
+                d.is_integer() && *d > Q::one() && split_radicand(d) == (Q::one(), Some(d.clone()))
+            }
+        }
+    }
+
     /// `x + y*sqrt(d)`, normalised (a square `d` gives a rational; `d == 0` gives `x`).
     ///
     /// # Panics
@@ -806,11 +825,37 @@ mod tests {
         (small_q(), small_q()).prop_map(|(x, y)| QSqrt::new(x, y, q(2, 3)))
     }
 
+    #[test]
+    fn representations_out_of_normal_form_are_caught() {
+        let with = |y: Q, d: Q| QSqrt {
+            x: Q::zero(),
+            y,
+            d: Some(Arc::new(d)),
+        };
+        assert!(!with(q(1, 1), q(8, 1)).is_valid()); // square factor 4
+        assert!(!with(q(1, 1), q(9, 1)).is_valid()); // a square
+        assert!(!with(q(1, 1), q(2, 3)).is_valid()); // not an integer
+        assert!(
+            !QSqrt {
+                x: Q::zero(),
+                y: q(1, 1),
+                d: None
+            }
+            .is_valid()
+        );
+        assert!(with(q(1, 1), q(6, 1)).is_valid() && with(Q::zero(), q(6, 1)).is_valid());
+    }
+
     proptest! {
         /// Distributivity and inverses hold exactly in Q(sqrt(6)), and `sign` agrees with the
         /// decimal enclosure.
         #[test]
         fn random_elements_obey_the_laws(a in element(), b in element(), c in element()) {
+            let results = [a.clone() + &b, a.clone() - &b, a.clone() * &b, -c.clone()];
+            prop_assert!(results.iter().chain([&a, &b, &c]).all(QSqrt::is_valid));
+            if !b.is_zero() {
+                prop_assert!((a.clone() / &b).is_valid());
+            }
             prop_assert_eq!(a.clone() * &(b.clone() + &c), a.clone() * &b + &(a.clone() * &c));
             if !b.is_zero() {
                 prop_assert_eq!(a.clone() / &b * &b, a.clone());

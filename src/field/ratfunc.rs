@@ -82,6 +82,25 @@ pub enum Limit {
 }
 
 impl RatFn {
+    /// Whether the representation is the normal form (see the [module docs](self)): both sides
+    /// valid polynomials, `num` and `den` coprime, `den` primitive with a positive leading
+    /// coefficient, zero as `0/1`. Every operation keeps it; the property tests assert it.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::field::RatFn;
+    /// let (m, big_m) = (RatFn::symbol("m"), RatFn::symbol("M"));
+    /// assert!((m.clone() / &(m + &big_m)).is_valid());
+    /// ```
+    pub fn is_valid(&self) -> bool {
+        let normal_zero = !self.num.is_zero() || self.den.is_one();
+        self.num.is_valid()
+            && self.den.is_valid()
+            && normal_zero
+            && self.den.primitive() == self.den
+            && Poly::gcd(&self.num, &self.den).is_one()
+    }
+
     /// `num / den` in normal form, or `None` when `den` is the zero polynomial.
     ///
     /// # Examples
@@ -827,8 +846,26 @@ mod tests {
     }
 
     /// The normal form: coprime, primitive denominator with positive leading coefficient.
-    fn is_normal(f: &RatFn) -> bool {
-        Poly::gcd(f.num(), f.den()).is_one() && f.den().primitive() == *f.den()
+    #[test]
+    fn representations_out_of_normal_form_are_caught() {
+        let m = Poly::var(Sym::new("m"));
+        let two = Poly::constant(crate::field::q(2, 1));
+        let not_primitive = RatFn {
+            num: m.clone(),
+            den: two.clone(),
+        };
+        assert!(!not_primitive.is_valid());
+        let not_coprime = RatFn {
+            num: m.clone() * &m,
+            den: m.clone(),
+        };
+        assert!(!not_coprime.is_valid());
+        let zero_over_two = RatFn {
+            num: Poly::zero(),
+            den: two,
+        };
+        assert!(!zero_over_two.is_valid());
+        assert!(RatFn::new(m.clone() * &m, m).unwrap().is_valid());
     }
 
     proptest! {
@@ -839,7 +876,11 @@ mod tests {
         fn results_are_normal_and_equality_is_cross_multiplication(a in ratfn(), b in ratfn()) {
             let sum = a.clone() + &b;
             let product = a.clone() * &b;
-            prop_assert!(is_normal(&a) && is_normal(&sum) && is_normal(&product));
+            prop_assert!(a.is_valid() && sum.is_valid() && product.is_valid());
+            prop_assert!((sum.clone() - &b).is_valid() && (-a.clone()).is_valid());
+            if !b.is_zero() {
+                prop_assert!((a.clone() / &b).is_valid());
+            }
             let cross = (a.num() * b.den() - &(b.num() * a.den())).is_zero();
             prop_assert_eq!(a == b, cross);
             prop_assert_eq!(sum - &b, a.clone());

@@ -26,6 +26,13 @@ impl Wide {
         mag: [0; LIMBS],
     };
 
+    /// Whether the representation holds its invariant: zero is never negative (so the derived
+    /// `==` is equality of numbers). Asserted by the property tests of every operation.
+    #[cfg(test)]
+    fn is_valid(&self) -> bool {
+        !(self.negative && self.is_zero())
+    }
+
     /// The number of limbs in use (0 for zero).
     fn len(&self) -> usize {
         self.mag.iter().rposition(|&x| x != 0).map_or(0, |i| i + 1)
@@ -261,13 +268,27 @@ mod tests {
             let (wa, wb) = (Wide::from_big(&a).unwrap(), Wide::from_big(&b).unwrap());
             let fits = |x: &BigInt| x.bits() <= 512;
             let check = |got: Option<Wide>, want: BigInt| match got {
-                Some(w) => w.to_big() == want,
+                Some(w) => w.is_valid() && w.to_big() == want,
                 None => !fits(&want),
             };
             prop_assert!(check(wa.add(&wb), &a + &b));
             prop_assert!(check(wa.sub(&wb), &a - &b));
             prop_assert!(check(wa.mul(&wb), &a * &b));
             prop_assert!(check(wa.mul(&wa), &a * &a));
+            prop_assert!(wa.is_valid() && wb.is_valid());
         }
+    }
+
+    #[test]
+    fn a_negative_zero_is_invalid_and_never_made() {
+        let negative_zero = Wide {
+            negative: true,
+            mag: [0; LIMBS],
+        };
+        assert!(!negative_zero.is_valid());
+        let one = Wide::from_big(&BigInt::from(1)).unwrap();
+        let minus_one = Wide::from_big(&BigInt::from(-1)).unwrap();
+        assert!(one.add(&minus_one).unwrap().is_valid());
+        assert!(minus_one.sub(&minus_one).unwrap().is_valid());
     }
 }

@@ -66,6 +66,19 @@ fn add_term(terms: &mut BTreeMap<Monomial, Q>, m: Monomial, c: Q) {
 }
 
 impl Poly {
+    /// Whether the representation holds its invariant: no zero coefficient, every monomial
+    /// valid ([`Monomial::is_valid`]). Every operation keeps it; the property tests assert it.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::field::{Poly, Sym};
+    /// let (m, big_m) = (Poly::var(Sym::new("m")), Poly::var(Sym::new("M")));
+    /// assert!(((m.clone() + &big_m) * &(m - &big_m)).is_valid());
+    /// ```
+    pub fn is_valid(&self) -> bool {
+        self.terms.iter().all(|(m, c)| !c.is_zero() && m.is_valid())
+    }
+
     /// The constant polynomial `c` (the zero polynomial when `c == 0`).
     ///
     /// # Examples
@@ -770,8 +783,11 @@ mod tests {
         fn gcd_is_a_common_divisor_containing_the_shared_factor(
             f in small_poly(), g in small_poly(), h in small_poly()
         ) {
-            let (a, b) = (f * &h, g * &h);
+            let (a, b) = (f.clone() * &h, g.clone() * &h);
+            prop_assert!(a.is_valid() && b.is_valid() && (f.clone() + &g).is_valid());
+            prop_assert!((f.clone() - &f).is_valid() && (-g.clone()).is_valid());
             let d = Poly::gcd(&a, &b);
+            prop_assert!(d.is_valid());
             if a.is_zero() && b.is_zero() {
                 prop_assert!(d.is_zero());
             } else {
@@ -811,6 +827,22 @@ mod tests {
         // Coprime, where a remainder sequence would swell: the modular test answers it.
         let (a, b) = (d.pow(4) + &g.pow(2), f.pow(3) + &d);
         assert!(Poly::gcd(&a, &b).is_one());
+    }
+
+    #[test]
+    fn invalid_representations_are_caught() {
+        let zero_coefficient = Poly {
+            terms: BTreeMap::from([(Monomial::var(Sym::new("m"), 1), Q::zero())]),
+        };
+        assert!(!zero_coefficient.is_valid());
+        let unsorted = Monomial(vec![(Sym::new("m"), 1), (Sym::new("M"), 1)]);
+        assert!(!unsorted.is_valid());
+        assert!(!Monomial(vec![(Sym::new("m"), 0)]).is_valid());
+        assert!(
+            Monomial::var(Sym::new("M"), 1)
+                .mul(&Monomial::var(Sym::new("m"), 1))
+                .is_valid()
+        );
     }
 
     #[test]

@@ -21,6 +21,18 @@ use std::fmt;
 pub struct Monomial(pub(super) Vec<(Sym, u32)>);
 
 impl Monomial {
+    /// Whether the representation holds its invariant: symbols strictly increasing by name, every
+    /// exponent positive.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::field::{poly::Monomial, Sym};
+    /// assert!(Monomial::var(Sym::new("a"), 2).mul(&Monomial::var(Sym::new("m"), 1)).is_valid());
+    /// ```
+    pub fn is_valid(&self) -> bool {
+        self.0.iter().all(|&(_, e)| e > 0) && self.0.windows(2).all(|w| w[0].0 < w[1].0)
+    }
+
     /// The empty product, 1.
     ///
     /// # Examples
