@@ -4,10 +4,14 @@
 //! point off the rod) is an [`Error`] carrying the name of the offending field and an [`ErrorKind`].
 //! Its `Display` is the one-line message the command-line tool prints before exiting with code 2.
 
+use std::sync::Arc;
 use thiserror::Error as ThisError;
 
 /// Why an input was refused.
-#[derive(Debug, Clone, PartialEq, Eq, ThisError)]
+///
+/// Two kinds are equal when they are the same variant with the same message (an I/O error's
+/// source is compared by its message).
+#[derive(Debug, Clone, ThisError)]
 pub enum ErrorKind {
     /// Nothing was given where a number was expected.
     #[error("empty number")]
@@ -42,13 +46,38 @@ pub enum ErrorKind {
     /// The value is not one of the accepted forms; the string lists them.
     #[error("{0}")]
     Invalid(String),
-    /// A file could not be read or written; the string says which and why.
-    #[error("{0}")]
-    Io(String),
+    /// A file could not be read or written: what was being done (`cannot read FILE`; may be
+    /// empty), and the I/O error that stopped it.
+    #[error("{}", io_message(context, source))]
+    Io {
+        /// What was being done, naming the file.
+        context: String,
+        /// The error the operating system reported (shared, so the kind stays `Clone`).
+        #[source]
+        source: Arc<std::io::Error>,
+    },
     /// Two inputs contradict each other (for example `--a` together with `--from-end`).
     #[error("{0}")]
     Conflict(String),
 }
+
+/// `context: source`, or only the source when there is no context.
+fn io_message(context: &str, source: &std::io::Error) -> String {
+    if context.is_empty() {
+        source.to_string()
+    } else {
+        format!("{context}: {source}")
+    }
+}
+
+impl PartialEq for ErrorKind {
+    fn eq(&self, other: &Self) -> bool {
+        std::mem::discriminant(self) == std::mem::discriminant(other)
+            && self.to_string() == other.to_string()
+    }
+}
+
+impl Eq for ErrorKind {}
 
 /// An input error: the field it concerns (`m`, `M`, `a`, `rod`, ...) and the reason.
 ///
@@ -79,7 +108,16 @@ impl std::fmt::Display for Error {
     }
 }
 
-impl std::error::Error for Error {}
+impl std::error::Error for Error {
+    /// The operating system's error of an [`ErrorKind::Io`]; none for the other kinds, whose
+    /// message is the whole story.
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match &self.kind {
+            ErrorKind::Io { source, .. } => Some(source.as_ref()),
+            _ => None,
+        }
+    }
+}
 
 impl Error {
     /// An error about `field` of the given kind.
@@ -106,5 +144,33 @@ impl Error {
     /// ```
     pub fn out_of_range(field: impl Into<String>, why: impl Into<String>) -> Self {
         Error::new(field, ErrorKind::OutOfRange(why.into()))
+    }
+
+    /// An I/O error about `field`: `context` says what was being done (`cannot read FILE`),
+    /// `source` is the operating system's error, kept as the error's
+    /// [`source`](std::error::Error::source).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::Error;
+    /// use std::error::Error as _;
+    /// let why = std::io::Error::new(std::io::ErrorKind::NotFound, "No such file or directory");
+    /// let err = Error::io("FILE", "cannot read data.csv", why);
+    /// assert_eq!(err.to_string(), "FILE: cannot read data.csv: No such file or directory");
+    /// let source = err.source().unwrap().downcast_ref::<std::io::Error>().unwrap();
+    /// assert_eq!(source.kind(), std::io::ErrorKind::NotFound);
+    /// ```
+    pub fn io(
+        field: impl Into<String>,
+        context: impl Into<String>,
+        source: std::io::Error,
+    ) -> Self {
+        Error::new(
+            field,
+            ErrorKind::Io {
+                context: context.into(),
+                source: Arc::new(source),
+            },
+        )
     }
 }

@@ -76,12 +76,8 @@ pub fn batch_samples(text: &str, limit: usize) -> Result<Vec<Sample>, Error> {
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn read_batch(path: &Path, limit: usize) -> Result<Vec<Sample>, Error> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        Error::new(
-            "FILE",
-            ErrorKind::Io(format!("cannot read {}: {e}", path.display())),
-        )
-    })?;
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Error::io("FILE", format!("cannot read {}", path.display()), e))?;
     batch_samples(&text, limit)
 }
 

@@ -105,7 +105,7 @@ fn write_rows(
 ) -> Result<(), Error> {
     for row in rows {
         out.write_all(row.line.as_bytes())
-            .map_err(|why| Error::new("out", ErrorKind::Io(format!("cannot write: {why}"))))?;
+            .map_err(|why| Error::io("out", "cannot write", why))?;
         summary.add(row);
     }
     Ok(())
@@ -142,12 +142,7 @@ impl<R: BufRead> ChunkReader<R> {
             let n = (&mut self.input)
                 .take(MAX_LINE as u64 + 1)
                 .read_line(&mut line)
-                .map_err(|why| {
-                    Error::new(
-                        format!("row {}", self.number + 1),
-                        ErrorKind::Io(format!("cannot read: {why}")),
-                    )
-                })?;
+                .map_err(|why| Error::io(format!("row {}", self.number + 1), "cannot read", why))?;
             if n == 0 {
                 return Ok(None);
             }

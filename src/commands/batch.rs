@@ -60,9 +60,10 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     };
     let jobs = args.jobs.as_deref().map(parse_jobs).transpose()?;
     let read_error = |why: std::io::Error| {
-        Error::new(
+        Error::io(
             "FILE",
-            ErrorKind::Io(format!("cannot read {}: {why}", echo_path(&args.file))),
+            format!("cannot read {}", echo_path(&args.file)),
+            why,
         )
     };
     let file = std::fs::File::open(&args.file).map_err(read_error)?;
@@ -75,9 +76,10 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         .take(MAX_LINE as u64 + 1)
         .read_line(&mut header)
         .map_err(|why| {
-            Error::new(
+            Error::io(
                 "header (line 1)",
-                ErrorKind::Io(format!("cannot read {}: {why}", echo_path(&args.file))),
+                format!("cannot read {}", echo_path(&args.file)),
+                why,
             )
         })?;
     if n > MAX_LINE {
@@ -189,7 +191,7 @@ impl<W: Write> Write for Recorded<W> {
 
 fn write_header(out: &mut impl Write, batch: &Batch) -> Result<(), Error> {
     out.write_all(batch.output_header().as_bytes())
-        .map_err(|why| Error::new("out", ErrorKind::Io(format!("cannot write: {why}"))))
+        .map_err(|why| Error::io("out", "cannot write", why))
 }
 
 fn report(summary: &Summary) -> Result<(), Failure> {

@@ -105,7 +105,7 @@ fn stray_argument(path: &std::path::Path) -> Error {
 /// The file's text, read no further than the size limit (a huge or endless file is refused
 /// without being read into memory); bytes that are not UTF-8 are named by line.
 fn read_bounded(label: &str, path: &std::path::Path) -> Result<String, Error> {
-    let io = |e: std::io::Error| Error::new(label, ErrorKind::Io(format!("cannot read: {e}")));
+    let io = |e: std::io::Error| Error::io(label, "cannot read", e);
     let mut bytes = Vec::new();
     std::fs::File::open(path)
         .and_then(|f| f.take(MAX_FILE_BYTES as u64 + 1).read_to_end(&mut bytes))

@@ -164,9 +164,10 @@ pub(crate) fn stdout_failed(why: &std::io::Error) -> ! {
     if why.kind() == std::io::ErrorKind::BrokenPipe {
         std::process::exit(0);
     }
-    let error = Error::new(
+    let error = Error::io(
         "out",
-        rodimpact::ErrorKind::Io(format!("cannot write standard output: {why}")),
+        "cannot write standard output",
+        std::io::Error::new(why.kind(), why.to_string()),
     );
     print_err(&format!("error: {error}\n"));
     std::process::exit(2)

@@ -16,7 +16,7 @@
 //! SIGINT, SIGTERM and SIGHUP remove them before the process ends (SIGKILL cannot be caught).
 
 use crate::echo::echo_path;
-use crate::error::{Error, ErrorKind};
+use crate::error::Error;
 use std::fs;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
@@ -192,10 +192,7 @@ impl Drop for AtomicFile {
 }
 
 fn io_error(field: &str, path: &Path, why: io::Error) -> Error {
-    Error::new(
-        field,
-        ErrorKind::Io(format!("cannot write {}: {why}", echo_path(path))),
-    )
+    Error::io(field, format!("cannot write {}", echo_path(path)), why)
 }
 
 /// Where the bytes for an output path go.
@@ -375,7 +372,7 @@ pub fn remove_temporaries_on_signals() -> Result<(), Error> {
                 .map_err(|e| e.to_string())
         })
         .clone()
-        .map_err(|why| Error::new("signal", ErrorKind::Io(why)))
+        .map_err(|why| Error::io("signal", "", io::Error::other(why)))
 }
 
 /// The signals this process ignores, as a mask (bit n-1 for signal n), from the `SigIgn` line

@@ -28,10 +28,15 @@ fn plain(why: std::io::Error) -> std::io::Error {
     }
 }
 
-fn io_error(field: &str, path: &Path, why: impl std::fmt::Display) -> Error {
+fn io_error(field: &str, path: &Path, why: std::io::Error) -> Error {
+    Error::io(field, format!("cannot write {}", path.display()), why)
+}
+
+/// A directory this module will not write, and why (not an operating-system error).
+fn refused(field: &str, path: &Path, why: &str) -> Error {
     Error::new(
         field,
-        ErrorKind::Io(format!("cannot write {}: {why}", path.display())),
+        ErrorKind::Invalid(format!("cannot write {}: {why}", path.display())),
     )
 }
 
@@ -68,12 +73,12 @@ pub fn write_directory(field: &str, dir: &Path, files: &[(String, String)]) -> R
         dir.to_path_buf()
     };
     if exists && !dir.is_dir() {
-        return Err(io_error(field, &dir, "not a directory"));
+        return Err(refused(field, &dir, "not a directory"));
     }
     // The directory is replaced as a whole: a shell inside it would be left in a removed one.
     let cwd = std::env::current_dir().and_then(fs::canonicalize);
     if exists && cwd.is_ok_and(|cwd| cwd.starts_with(&dir)) {
-        return Err(io_error(
+        return Err(refused(
             field,
             &dir,
             "it holds the current directory, and is replaced as a whole: name a subdirectory",
@@ -81,7 +86,7 @@ pub fn write_directory(field: &str, dir: &Path, files: &[(String, String)]) -> R
     }
     let name = dir
         .file_name()
-        .ok_or_else(|| io_error(field, &dir, "no directory name"))?
+        .ok_or_else(|| refused(field, &dir, "no directory name"))?
         .to_string_lossy()
         .into_owned();
     let parent = match dir.parent() {
@@ -94,7 +99,7 @@ pub fn write_directory(field: &str, dir: &Path, files: &[(String, String)]) -> R
             if let Ok(meta) = fs::symlink_metadata(&target) {
                 let kind = meta.file_type();
                 if !kind.is_file() && !kind.is_symlink() {
-                    return Err(io_error(
+                    return Err(refused(
                         field,
                         &target,
                         "it exists and is not a regular file (left untouched)",
