@@ -25,23 +25,77 @@
 //! # Ok::<(), rodimpact::Error>(())
 //! ```
 
-pub mod batch;
-pub mod claims;
-pub mod contact;
+//! ## Layers
+//!
+//! Each module uses only the layers above it in this table (documentation links aside); no
+//! two modules import each other.
+//!
+//! | layer | modules | what it holds |
+//! |---|---|---|
+//! | 0 numbers | [`field`] (its [`field::decimal`] exact printing, [`field::int`] word-sized integers), [`echo`], [`error`] | the [`field::Field`] trait and its number types; how numbers print; the error type |
+//! | 1 input | [`number`], [`units`] | exact parsing of `0.25`, `3/7`, `1.5e-3`; SI units |
+//! | 2 model | [`scene`], [`mechanics`] | a validated scene over any field; momentum, angular momentum, energy, the paper's groups |
+//! | 3 solve | [`solve`], [`optimum`] | every route to (v, V, omega) by name behind [`solve::with`]; a* and omega_max |
+//! | 4 decide | [`claims`], [`textbook`], [`stability`], [`contact`], [`batch`], [`samples`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes |
+//! | 5 output | [`report`], [`io`] | every rendering (text, JSON, Markdown, LaTeX, CSV, SVG); atomic files and staged directories |
+//!
+//! The command-line tool (`src/main.rs`, `src/commands/`, one file per subcommand) sits on top
+//! and only parses flags, calls one library function and prints what [`report`] renders.
+//!
+//! [`prelude`] gathers the names most programs need:
+//!
+//! ```
+//! use rodimpact::prelude::*;
+//! let scene = Scene::builder(q(1, 1), q(3, 1)).a(q(1, 2)).build()?;
+//! let solved = solve::with::<Q>(&scene, Route::FractionFree).expect("every scene in Q");
+//! // omega = 2 m a v0 / (I (1 + m/M) + m a^2) = 1/(1 + 1/3 + 1/4) = 12/19 (I = M l^2/3 = 1).
+//! assert_eq!(solved.after.omega, q(12, 19));
+//! # Ok::<(), rodimpact::Error>(())
+//! ```
+
+// Layer 0: numbers.
 pub mod echo;
 pub mod error;
 pub mod field;
-pub mod io;
-pub mod mechanics;
+// Layer 1: input.
 pub mod number;
-pub mod optimum;
-pub mod report;
-pub mod samples;
+pub mod units;
+// Layer 2: model.
+pub mod mechanics;
 pub mod scene;
+// Layer 3: solve.
+pub mod optimum;
 pub mod solve;
+// Layer 4: decide.
+pub mod batch;
+pub mod claims;
+pub mod contact;
+pub mod samples;
 pub mod stability;
 pub mod textbook;
-pub mod units;
+// Layer 5: output.
+pub mod io;
+pub mod report;
+
+/// The names most programs need, in one `use rodimpact::prelude::*;`.
+///
+/// # Examples
+/// ```
+/// use rodimpact::prelude::*;
+/// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 1)).build()?;
+/// let out = solve::linear::solve(&scene.params::<Q>()).expect("nonsingular");
+/// assert_eq!(out.after, Motion { v: q(3, 5), rod_v: q(2, 5), omega: q(6, 5) });
+/// assert_eq!(optimum(&scene).squared, q(2, 3));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub mod prelude {
+    pub use crate::error::{Error, ErrorKind};
+    pub use crate::field::{Field, Q, QSqrt, RatFn, Sym, q};
+    pub use crate::mechanics::Motion;
+    pub use crate::optimum::{Optimum, optimum};
+    pub use crate::scene::{Params, RodInertia, Scene, SceneInput, Support};
+    pub use crate::solve::{self, Outcome, Route, Solved};
+}
 
 pub use error::{Error, ErrorKind};
 

@@ -6,7 +6,7 @@ use std::fmt;
 
 /// A product of symbols with positive exponents, kept sorted by symbol; the empty product is 1.
 ///
-/// Ordered graded-lexicographically (see the [module docs](self)).
+/// Ordered graded-lexicographically (see the [module docs](super)).
 ///
 /// # Examples
 /// ```
