@@ -5,7 +5,7 @@
 //! offending field. [`Scene::params`] lifts it into any [`Field`] for the solver.
 
 use crate::error::{Error, ErrorKind};
-use crate::field::{Field, Q};
+use crate::field::{Field, Q, RatFn};
 use crate::number;
 use crate::units::{Dimension, parse_si};
 use num_traits::{One, Signed};
@@ -42,10 +42,7 @@ impl RodInertia {
         match self {
             RodInertia::Uniform => mass.clone() * l * l / F::from_i64(3),
             RodInertia::Dumbbell => mass.clone() * l * l,
-            RodInertia::Gyration(r) => {
-                let r = F::from_rational(r);
-                mass.clone() * &r * &r
-            }
+            RodInertia::Gyration(r) => gyration_moment(mass, &F::from_rational(r)),
             RodInertia::Moment(i) => F::from_rational(i),
         }
     }
@@ -128,6 +125,20 @@ pub struct Scene {
     support: Support,
 }
 
+/// `I = M r^2`: the moment of inertia about the centre of a rod of mass `mass` with radius of
+/// gyration `r`, over any field (a symbol `r` as well as a number: [`RodInertia::moment`] is this
+/// for a rational `r`).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{field::RatFn, scene::gyration_moment};
+/// let i = gyration_moment(&RatFn::symbol("M"), &RatFn::symbol("r_G"));
+/// assert_eq!(i.to_string(), "M*r_G^2");
+/// ```
+pub fn gyration_moment<F: Field>(mass: &F, r: &F) -> F {
+    mass.clone() * r * r
+}
+
 /// The numbers the solver needs, lifted into a field `F`.
 ///
 /// Built from a validated [`Scene`] by [`Scene::params`], or directly (for example with symbolic
@@ -150,6 +161,33 @@ pub struct Params<F> {
     pub e: F,
     /// Free rod or pivot position.
     pub support: Support<F>,
+}
+
+impl Params<RatFn> {
+    /// The general free-rod scene in symbols: `m`, `M`, `l`, `a`, `v0` and the given moment of
+    /// inertia and restitution (themselves symbols or expressions), the one symbolic scene the
+    /// claims are decided in.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::{Field, RatFn}, scene::{Params, RodInertia}, solve::linear::solve};
+    /// let (big_m, l) = (RatFn::symbol("M"), RatFn::symbol("l"));
+    /// let p = Params::symbolic(RodInertia::Uniform.moment(&big_m, &l), RatFn::from_i64(1));
+    /// let omega = solve(&p).unwrap().after.omega;
+    /// assert_eq!(omega.to_string(), "6*a*m*v0/(M*l^2 + 3*a^2*m + l^2*m)");
+    /// ```
+    pub fn symbolic(inertia: RatFn, e: RatFn) -> Params<RatFn> {
+        Params {
+            m: RatFn::symbol("m"),
+            rod_mass: RatFn::symbol("M"),
+            half_length: RatFn::symbol("l"),
+            inertia,
+            a: RatFn::symbol("a"),
+            v0: RatFn::symbol("v0"),
+            e,
+            support: Support::Free,
+        }
+    }
 }
 
 impl<F: Field> Params<F> {

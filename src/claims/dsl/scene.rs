@@ -4,23 +4,14 @@
 use super::algebra::{k, sym};
 use crate::field::RatFn;
 use crate::mechanics::Motion;
-use crate::scene::{Params, Support};
+use crate::scene::{Params, RodInertia, Support, gyration_moment};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
 use num_traits::One;
 
 /// The general free-rod scene in symbols: m, M, I, a, v0 and restitution `e`.
 pub(crate) fn free_rod(inertia: impl Into<RatFn>, e: RatFn) -> Params<RatFn> {
-    Params {
-        m: sym("m"),
-        rod_mass: sym("M"),
-        half_length: sym("l"),
-        inertia: inertia.into(),
-        a: sym("a"),
-        v0: sym("v0"),
-        e,
-        support: Support::Free,
-    }
+    Params::symbolic(inertia.into(), e)
 }
 
 /// The pivoted-rod scene in symbols: pivot at p, moment of inertia `inertia` about the centre.
@@ -59,12 +50,12 @@ pub(crate) fn a_star_squared(inertia: &RatFn) -> RatFn {
 
 /// Uniform rod: `I = M l^2 / 3`.
 pub(crate) fn uniform_inertia() -> RatFn {
-    sym("M") * &sym("l") * &sym("l") / k(3, 1)
+    RodInertia::Uniform.moment(&sym("M"), &sym("l"))
 }
 
 /// Radius of gyration: `I = M r_G^2`.
 pub(crate) fn gyration_inertia() -> RatFn {
-    sym("M") * &sym("r_G") * &sym("r_G")
+    gyration_moment(&sym("M"), &sym("r_G"))
 }
 
 /// `D = 1 + m/M + m a^2/I`.

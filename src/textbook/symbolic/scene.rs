@@ -5,7 +5,7 @@
 use super::given::{GivenScene, RodGiven};
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, RatFn, Sym};
-use crate::scene::{Params, RodInertia, Support};
+use crate::scene::{Params, RodInertia, Support, gyration_moment};
 use crate::textbook::expr::{Budget, Radical, size, size_of};
 use num_traits::{One, Signed};
 use std::collections::{BTreeMap, BTreeSet};
@@ -152,12 +152,12 @@ impl SymbolicScene {
                 if matches!(given.rod, RodGiven::Default) {
                     defaults.push("uniform rod (I = M l^2/3)".to_string());
                 }
-                (big_m.clone() * &half * &half / RatFn::from(3), None)
+                (RodInertia::Uniform.moment(&big_m, &half), None)
             }
-            RodGiven::Named(_) => (big_m.clone() * &half * &half, Some(half.clone())),
+            RodGiven::Named(rod) => (rod.moment(&big_m, &half), Some(half.clone())),
             RodGiven::Gyration(r) => {
                 let r = substitute(r)?;
-                (big_m.clone() * &r * &r, Some(r))
+                (gyration_moment(&big_m, &r), Some(r))
             }
             RodGiven::Moment(i) => (substitute(i)?, None),
         };
