@@ -9,7 +9,7 @@ mod support;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use rodimpact::field::Q;
 use rodimpact::samples::sized_scene;
-use rodimpact::solve::float::Formula;
+use rodimpact::solve::float::FloatFormula;
 use rodimpact::solve::fraction_free;
 use rodimpact::solve::{closed_form::closed_form, linear::solve, outcome};
 use rodimpact::stability::SplitMix64;
@@ -38,7 +38,7 @@ fn per_scene(c: &mut Criterion) {
         group.bench_function("f64 stable (sq)", |b| {
             b.iter(|| {
                 for p in &floats {
-                    black_box(Formula::Sq.eval(black_box(p)));
+                    black_box(FloatFormula::Sq.eval(black_box(p)));
                 }
             })
         });

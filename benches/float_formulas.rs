@@ -4,7 +4,7 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use rodimpact::field::{Interval, Q};
 use rodimpact::solve::closed_form::closed_form;
-use rodimpact::solve::float::Formula;
+use rodimpact::solve::float::FloatFormula;
 use rodimpact::stability::suite;
 use std::hint::black_box;
 use std::time::Duration;
@@ -18,7 +18,7 @@ fn float_formulas(c: &mut Criterion) {
             .expect("suite id")
             .scene;
         let (p64, p32) = (scene.params::<f64>(), scene.params::<f32>());
-        for formula in Formula::ALL {
+        for formula in FloatFormula::ALL {
             c.bench_function(&format!("scene {id}/f64/{}", formula.name()), |b| {
                 b.iter(|| formula.eval(black_box(&p64)))
             });

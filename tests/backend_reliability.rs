@@ -8,7 +8,7 @@ mod common;
 use common::rodimpact;
 use num_traits::Zero;
 use rodimpact::report::backend_values;
-use rodimpact::solve::float::Formula;
+use rodimpact::solve::float::FloatFormula;
 use rodimpact::stability::{Backend, Reference, in_range, suite, sweep};
 use serde_json::Value;
 
@@ -114,7 +114,7 @@ fn an_output_beyond_the_range_is_unreliable() {
 /// a value is called reliable its exact error is within 4 cond u.
 #[test]
 fn a_large_exact_error_is_never_reliable() {
-    let naive = Backend::F64(Formula::Naive);
+    let naive = Backend::F64(FloatFormula::Naive);
     let mut flagged = 0;
     for case in suite().into_iter().chain(sweep(1, 300, 300)) {
         if !in_range::<f64>(&case.scene) {

@@ -30,7 +30,7 @@ fn check_batch(file: &str) -> [usize; 3] {
             (&f[0], &f[1], &f[2]),
             "the file's exact values, row {line}"
         );
-        paths[out.arithmetic as usize] += 1;
+        paths[out.width as usize] += 1;
     }
     paths
 }

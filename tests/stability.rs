@@ -9,7 +9,7 @@ use proptest::prelude::*;
 use rodimpact::field::{Field, Interval, Q};
 use rodimpact::mechanics::Motion;
 use rodimpact::solve::closed_form::closed_form;
-use rodimpact::solve::float::{Formula, Real};
+use rodimpact::solve::float::{FloatFormula, Real};
 use rodimpact::stability::{Accuracy, Backend, Case, Class, Reference, in_range, suite, sweep};
 
 /// Asserts the goals of docs/stability.md for a stable formula on `cases` in range for `T`:
@@ -55,7 +55,7 @@ fn assert_stable<T: Real>(backend: Backend, cases: &[Case]) -> usize {
 
 #[test]
 fn stable_f64_is_within_four_cond_u_on_every_in_range_suite_scene() {
-    for formula in [Formula::Sq, Formula::Scomp] {
+    for formula in [FloatFormula::Sq, FloatFormula::Scomp] {
         let n = assert_stable::<f64>(Backend::F64(formula), &suite());
         assert!(n >= 20, "{n} suite scenes in range for f64");
     }
@@ -63,7 +63,7 @@ fn stable_f64_is_within_four_cond_u_on_every_in_range_suite_scene() {
 
 #[test]
 fn stable_f32_is_within_four_cond_u_on_every_in_range_suite_scene() {
-    for formula in [Formula::Sq, Formula::Scomp] {
+    for formula in [FloatFormula::Sq, FloatFormula::Scomp] {
         let n = assert_stable::<f32>(Backend::F32(formula), &suite());
         assert!(n >= 15, "{n} suite scenes in range for f32");
     }
@@ -72,7 +72,7 @@ fn stable_f32_is_within_four_cond_u_on_every_in_range_suite_scene() {
 #[test]
 fn stable_f64_is_within_four_cond_u_on_a_seeded_sweep_of_600_decades() {
     let cases = sweep(20240601, 400, 300);
-    for formula in [Formula::Sq, Formula::Scomp] {
+    for formula in [FloatFormula::Sq, FloatFormula::Scomp] {
         let n = assert_stable::<f64>(Backend::F64(formula), &cases);
         assert!(n >= 100, "{n} sweep scenes in range");
     }
@@ -81,7 +81,7 @@ fn stable_f64_is_within_four_cond_u_on_a_seeded_sweep_of_600_decades() {
 #[test]
 fn stable_f32_is_within_four_cond_u_on_a_seeded_sweep_of_72_decades() {
     let cases = sweep(7, 400, 36);
-    let n = assert_stable::<f32>(Backend::F32(Formula::Sq), &cases);
+    let n = assert_stable::<f32>(Backend::F32(FloatFormula::Sq), &cases);
     assert!(n >= 100, "{n} sweep scenes in range");
 }
 
@@ -91,13 +91,15 @@ fn the_naive_formula_fails_where_stability_md_says() {
     let case = |id: &str| s.iter().find(|c| c.id == id).unwrap();
     // Scene 13: I = 1e-310 makes m a/I overflow to inf, so v = inf/inf = NaN.
     let reference = Reference::of(&case("13").scene).unwrap();
-    let (m, _) = Backend::F64(Formula::Naive)
+    let (m, _) = Backend::F64(FloatFormula::Naive)
         .measure(&case("13").scene, &reference)
         .unwrap();
     assert_eq!(m.v.class, Class::Nan);
     assert_eq!(m.omega.class, Class::Nan);
     // Scene 12 (I = 1e-300): the stable formula gives v = 1 and omega = 2 to the last bits.
-    let x = Formula::Sq.eval(&case("12").scene.params::<f64>()).unwrap();
+    let x = FloatFormula::Sq
+        .eval(&case("12").scene.params::<f64>())
+        .unwrap();
     assert_eq!(x.v, 1.0);
     assert!(
         (x.omega - 2.0).abs() <= 2.0 * f64::EPSILON,
@@ -141,9 +143,9 @@ fn only_the_exact_path_decides_that_the_projectile_stops() {
         let reference = Reference::of(&case.scene).unwrap();
         assert!(reference.motion.v.is_zero(), "scene {id}");
         assert_eq!(reference.motion.v.sign(), Some(std::cmp::Ordering::Equal));
-        let x: Motion<f64> = Formula::Sq.eval(&case.scene.params::<f64>()).unwrap();
+        let x: Motion<f64> = FloatFormula::Sq.eval(&case.scene.params::<f64>()).unwrap();
         assert!(x.v.abs() <= 2.0 * f64::EPSILON, "scene {id}: v = {}", x.v);
-        let cond = Backend::F64(Formula::Sq).condition(&reference);
+        let cond = Backend::F64(FloatFormula::Sq).condition(&reference);
         assert!(!Accuracy::well_conditioned(
             cond.v.as_ref(),
             &<f64 as Real>::unit_roundoff()

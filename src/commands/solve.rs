@@ -3,7 +3,7 @@
 use super::{Failure, SceneFlags, parse_digits, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::report::{Solution, backend_values};
-use rodimpact::solve::float::Formula;
+use rodimpact::solve::float::FloatFormula;
 use rodimpact::stability::Backend;
 use serde_json::Value;
 
@@ -39,8 +39,8 @@ impl BackendArg {
     fn backend(self) -> Backend {
         match self {
             BackendArg::Exact => Backend::Exact,
-            BackendArg::F64 => Backend::F64(Formula::Sq),
-            BackendArg::F32 => Backend::F32(Formula::Sq),
+            BackendArg::F64 => Backend::F64(FloatFormula::Sq),
+            BackendArg::F32 => Backend::F32(FloatFormula::Sq),
             BackendArg::Interval => Backend::Interval,
         }
     }

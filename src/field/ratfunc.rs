@@ -42,9 +42,9 @@ pub struct RatFn {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::field::{ratfunc::{Limit, Point}, RatFn, Sym};
+/// use rodimpact::field::{ratfunc::{LimitValue, Point}, RatFn, Sym};
 /// let x = RatFn::symbol("x");
-/// assert_eq!(x.limit(Sym::new("x"), Point::Zero), Limit::Finite(RatFn::from(0)));
+/// assert_eq!(x.limit(Sym::new("x"), Point::Zero), LimitValue::Finite(RatFn::from(0)));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Point {
@@ -58,16 +58,16 @@ pub enum Point {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::field::{ratfunc::{Limit, Point}, RatFn, Sym};
+/// use rodimpact::field::{ratfunc::{LimitValue, Point}, RatFn, Sym};
 /// let (x, y) = (RatFn::symbol("x"), RatFn::symbol("y"));
 /// let f = x.clone() * &x * &y / (x.clone() + &y);
 /// assert_eq!(
 ///     f.limit(Sym::new("x"), Point::Infinity),
-///     Limit::Infinite { coefficient: y, order: 1 }
+///     LimitValue::Infinite { coefficient: y, order: 1 }
 /// );
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Limit {
+pub enum LimitValue {
     /// A finite limit (a rational function of the other symbols; 0 when the function vanishes).
     Finite(RatFn),
     /// Divergence like `coefficient * sym^order` (`order > 0` at infinity, `order < 0` at 0);
@@ -347,26 +347,26 @@ impl RatFn {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::field::{ratfunc::{Limit, Point}, Field, RatFn, Sym};
+    /// use rodimpact::field::{ratfunc::{LimitValue, Point}, Field, RatFn, Sym};
     /// let (m, big_m) = (RatFn::symbol("m"), RatFn::symbol("M"));
     /// let f = (m.clone() - &big_m) / (m.clone() + &big_m);
-    /// assert_eq!(f.limit(Sym::new("M"), Point::Infinity), Limit::Finite(RatFn::from_i64(-1)));
-    /// assert_eq!(f.limit(Sym::new("M"), Point::Zero), Limit::Finite(RatFn::from_i64(1)));
+    /// assert_eq!(f.limit(Sym::new("M"), Point::Infinity), LimitValue::Finite(RatFn::from_i64(-1)));
+    /// assert_eq!(f.limit(Sym::new("M"), Point::Zero), LimitValue::Finite(RatFn::from_i64(1)));
     /// ```
-    pub fn limit(&self, sym: Sym, at: Point) -> Limit {
+    pub fn limit(&self, sym: Sym, at: Point) -> LimitValue {
         let Some((coefficient, order)) = self.leading_term(sym, at) else {
-            return Limit::Finite(RatFn::zero());
+            return LimitValue::Finite(RatFn::zero());
         };
         let vanishes = match at {
             Point::Zero => order > 0,
             Point::Infinity => order < 0,
         };
         if vanishes {
-            Limit::Finite(RatFn::zero())
+            LimitValue::Finite(RatFn::zero())
         } else if order == 0 {
-            Limit::Finite(coefficient)
+            LimitValue::Finite(coefficient)
         } else {
-            Limit::Infinite { coefficient, order }
+            LimitValue::Infinite { coefficient, order }
         }
     }
 
@@ -778,8 +778,14 @@ mod tests {
         let (v, big_v, w) = paper_velocities();
         let big_m = Sym::new("M");
         let (m, a, r, v0) = (s("m"), s("a"), s("r"), s("v0"));
-        assert_eq!(v.limit(big_m, Point::Infinity), Limit::Finite(-v0.clone()));
-        assert_eq!(big_v.limit(big_m, Point::Infinity), Limit::Finite(k(0)));
+        assert_eq!(
+            v.limit(big_m, Point::Infinity),
+            LimitValue::Finite(-v0.clone())
+        );
+        assert_eq!(
+            big_v.limit(big_m, Point::Infinity),
+            LimitValue::Finite(k(0))
+        );
         assert_eq!(
             big_v.leading_term(big_m, Point::Infinity),
             Some((k(2) * &m * &v0, -1))
@@ -788,11 +794,11 @@ mod tests {
             w.leading_term(big_m, Point::Infinity),
             Some((k(2) * &a * &m * &v0 / (r.clone() * &r), -1))
         );
-        assert_eq!(w.limit(big_m, Point::Infinity), Limit::Finite(k(0)));
+        assert_eq!(w.limit(big_m, Point::Infinity), LimitValue::Finite(k(0)));
         // 1/V grows like M/(2 m v0).
         assert_eq!(
             (k(1) / &big_v).limit(big_m, Point::Infinity),
-            Limit::Infinite {
+            LimitValue::Infinite {
                 coefficient: k(1) / (k(2) * &m * &v0),
                 order: 1
             }
@@ -805,25 +811,25 @@ mod tests {
         let big_m = Sym::new("M");
         let (a, r, v0) = (s("a"), s("r"), s("v0"));
         let r2a2 = r.clone() * &r + &(a.clone() * &a);
-        assert_eq!(v.limit(big_m, Point::Zero), Limit::Finite(v0.clone()));
+        assert_eq!(v.limit(big_m, Point::Zero), LimitValue::Finite(v0.clone()));
         assert_eq!(
             big_v.limit(big_m, Point::Zero),
-            Limit::Finite(k(2) * &r * &r * &v0 / r2a2.clone())
+            LimitValue::Finite(k(2) * &r * &r * &v0 / r2a2.clone())
         );
         assert_eq!(
             w.limit(big_m, Point::Zero),
-            Limit::Finite(k(2) * &a * &v0 / r2a2)
+            LimitValue::Finite(k(2) * &a * &v0 / r2a2)
         );
         // 1/M diverges at 0 with order -1.
         assert_eq!(
             (k(1) / s("M")).limit(big_m, Point::Zero),
-            Limit::Infinite {
+            LimitValue::Infinite {
                 coefficient: k(1),
                 order: -1
             }
         );
         assert_eq!(k(0).leading_term(big_m, Point::Zero), None);
-        assert_eq!(k(0).limit(big_m, Point::Zero), Limit::Finite(k(0)));
+        assert_eq!(k(0).limit(big_m, Point::Zero), LimitValue::Finite(k(0)));
     }
 
     /// A polynomial in x, y from `(exponents, coefficient)` terms.

@@ -20,9 +20,9 @@ use serde_json::{Map, Value, json};
 /// # Examples
 /// ```
 /// use rodimpact::{report::{ERROR_BOUND, backend_values}, scene::Scene, field::q};
-/// use rodimpact::{solve::float::Formula, stability::Backend};
+/// use rodimpact::{solve::float::FloatFormula, stability::Backend};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-/// let j = backend_values(&s, Backend::F64(Formula::Sq))?;
+/// let j = backend_values(&s, Backend::F64(FloatFormula::Sq))?;
 /// // omega = 12/11: error 7.40e-17 <= 4 cond u, cond = 2.91.
 /// assert_eq!(ERROR_BOUND, 4);
 /// assert_eq!((j["omega"]["rel_error"].as_str(), j["omega"]["reliable"].as_bool()),
@@ -47,9 +47,9 @@ pub const ERROR_BOUND: u32 = 4;
 /// # Examples
 /// ```
 /// use rodimpact::{report::backend_values, scene::Scene, field::q, stability::Backend};
-/// use rodimpact::solve::float::Formula;
+/// use rodimpact::solve::float::FloatFormula;
 /// let s = Scene::builder(q(4, 7), q(1, 1)).a(q(1, 2)).build()?; // v = 0 exactly
-/// let j = backend_values(&s, Backend::F64(Formula::Sq))?;
+/// let j = backend_values(&s, Backend::F64(FloatFormula::Sq))?;
 /// assert_eq!(j["v"]["exact"], "0");
 /// assert_eq!(j["v"]["reliable"], false);
 /// assert!(j["v"]["because"].as_str().unwrap().starts_with("ill-conditioned: cond is infinite"));
@@ -58,7 +58,7 @@ pub const ERROR_BOUND: u32 = 4;
 /// // a = 7.9e-343 underflows f64: nothing is reliable, and omega (2.37e-342) underflows too.
 /// let a = rodimpact::number::parse("7.9e-343").expect("a number");
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(a).build()?;
-/// let j = backend_values(&s, Backend::F64(Formula::Sq))?;
+/// let j = backend_values(&s, Backend::F64(FloatFormula::Sq))?;
 /// assert_eq!(j["omega"]["float"], "0");
 /// assert_eq!(j["omega"]["reliable"], false);
 /// assert_eq!(

@@ -35,20 +35,20 @@ use crate::mechanics::Motion;
 use crate::scene::{RodInertia, Scene, Support};
 use num_traits::One;
 
-/// Which arithmetic produced a [`FractionFree`].
+/// Which integer width produced a [`FractionFree`].
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{solve::fraction_free::{solve, Arithmetic}, scene::Scene, field::q};
+/// use rodimpact::{solve::fraction_free::{solve, Width}, scene::Scene, field::q};
 /// let big = q(1 << 62, 3);
 /// let s = Scene::builder(big.clone(), big.clone() * q(7, 5)).build().unwrap();
-/// assert_eq!(solve(&s).arithmetic, Arithmetic::Wide); // beyond i128
+/// assert_eq!(solve(&s).width, Width::Wide); // beyond i128
 /// let huge = big.clone() * &big * &big * &big * &big;
 /// let s = Scene::builder(huge.clone(), huge * q(7, 5)).build().unwrap();
-/// assert_eq!(solve(&s).arithmetic, Arithmetic::Big); // beyond 512 bits
+/// assert_eq!(solve(&s).width, Width::Big); // beyond 512 bits
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Arithmetic {
+pub enum Width {
     /// Fraction-free in checked `i128` (energy in 256-bit unsigned).
     Fixed,
     /// Fraction-free in a checked 512-bit integer (`i128` overflowed).
@@ -75,8 +75,8 @@ pub struct FractionFree {
     /// Every applicable conservation law holds exactly (linear momentum for a free rod, angular
     /// momentum, energy when e = 1).
     pub laws_hold: bool,
-    /// The arithmetic that was used.
-    pub arithmetic: Arithmetic,
+    /// The integer width that was used.
+    pub width: Width,
 }
 
 /// Solves the scene exactly on the fastest path that fits, fixed width then big integers: free
@@ -84,22 +84,22 @@ pub struct FractionFree {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{solve::fraction_free::{solve, Arithmetic}, scene::Scene, field::q};
+/// use rodimpact::{solve::fraction_free::{solve, Width}, scene::Scene, field::q};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
 /// let out = solve(&s);
 /// assert_eq!((out.after.v, out.after.rod_v, out.after.omega), (q(3, 5), q(2, 5), q(6, 5)));
 /// assert!(out.laws_hold);
-/// assert_eq!(out.arithmetic, Arithmetic::Fixed);
+/// assert_eq!(out.width, Width::Fixed);
 /// ```
 pub fn solve(scene: &Scene) -> FractionFree {
     let fixed = || {
         (input_bits(scene) <= I128_INPUT_BITS)
             .then(|| in_width::<i128>(scene))
             .flatten()
-            .map(|s| s.with(Arithmetic::Fixed))
+            .map(|s| s.with(Width::Fixed))
     };
     fixed()
-        .or_else(|| in_width::<Wide>(scene).map(|s| s.with(Arithmetic::Wide)))
+        .or_else(|| in_width::<Wide>(scene).map(|s| s.with(Width::Wide)))
         .unwrap_or_else(|| solve_big(scene))
 }
 
@@ -137,12 +137,12 @@ fn input_bits(scene: &Scene) -> u64 {
 pub fn solve_big(scene: &Scene) -> FractionFree {
     in_width::<Big>(scene)
         .expect("big integers never overflow")
-        .with(Arithmetic::Big)
+        .with(Width::Big)
 }
 
 impl FractionFree {
-    fn with(self, arithmetic: Arithmetic) -> Self {
-        FractionFree { arithmetic, ..self }
+    fn with(self, width: Width) -> Self {
+        FractionFree { width, ..self }
     }
 }
 
@@ -248,7 +248,7 @@ fn in_width<T: Int>(scene: &Scene) -> Option<FractionFree> {
     Some(FractionFree {
         after,
         laws_hold: raw.momentum && energy,
-        arithmetic: Arithmetic::Big,
+        width: Width::Big,
     })
 }
 
@@ -330,23 +330,23 @@ mod tests {
     use num_traits::{Signed, Zero};
 
     #[test]
-    fn every_arithmetic_is_reached() {
+    fn every_width_is_reached() {
         let paper = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
-        assert_eq!(solve(&paper).arithmetic, Arithmetic::Fixed);
+        assert_eq!(solve(&paper).width, Width::Fixed);
         let wide = q(i64::MAX, 3) * q(i64::MAX, 1);
         let s = Scene::builder(wide.clone(), wide.clone()).build().unwrap();
-        assert_eq!(solve(&s).arithmetic, Arithmetic::Wide);
+        assert_eq!(solve(&s).width, Width::Wide);
         let huge = wide.clone() * &wide * &wide;
         let s = Scene::builder(huge.clone(), huge).build().unwrap();
         let out = solve(&s);
-        assert_eq!(out.arithmetic, Arithmetic::Big);
+        assert_eq!(out.width, Width::Big);
         assert_eq!(out.after, solve_big(&s).after);
         let pivoted = Scene::builder(q(1, 1), q(3, 1))
             .pivot(q(0, 1))
             .build()
             .unwrap();
         let out = solve(&pivoted);
-        assert_eq!(out.arithmetic, Arithmetic::Fixed);
+        assert_eq!(out.width, Width::Fixed);
         assert_eq!((out.after.v, out.after.omega), (q(0, 1), q(1, 1)));
     }
 

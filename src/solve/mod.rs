@@ -25,16 +25,16 @@ pub use outcome::{Energy, Outcome, Residuals, outcome};
 use crate::field::{Field, Interval, Q};
 use crate::mechanics::Motion;
 use crate::scene::{Params, Scene};
-use float::Formula;
+use float::FloatFormula;
 use std::fmt;
 
 /// A route to (v, V, omega): which code computes the answer.
 ///
 /// # Examples
 /// ```
-/// use rodimpact::solve::{float::Formula, Route};
+/// use rodimpact::solve::{float::FloatFormula, Route};
 /// assert_eq!(Route::FractionFree.to_string(), "fraction-free");
-/// assert_eq!(Route::Float(Formula::Sq).to_string(), "float/sq");
+/// assert_eq!(Route::Float(FloatFormula::Sq).to_string(), "float/sq");
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Route {
@@ -47,9 +47,9 @@ pub enum Route {
     /// Integers over one common denominator, the laws checked as integer identities, one
     /// reduction per output ([`fraction_free::solve`]): exact rationals only.
     FractionFree,
-    /// A float formula evaluated from the exact inputs ([`Formula::eval_scene`]): `f64` or `f32`,
+    /// A float formula evaluated from the exact inputs ([`FloatFormula::eval_scene`]): `f64` or `f32`,
     /// free rod only.
-    Float(Formula),
+    Float(FloatFormula),
 }
 
 impl fmt::Display for Route {
@@ -100,9 +100,9 @@ impl fmt::Display for Why {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{field::q, scene::Scene, solve::{self, float::Formula, Route, Why}};
+/// use rodimpact::{field::q, scene::Scene, solve::{self, float::FloatFormula, Route, Why}};
 /// let pivoted = Scene::builder(q(1, 1), q(3, 1)).pivot(q(0, 1)).build()?;
-/// let err = solve::with::<f64>(&pivoted, Route::Float(Formula::Sq)).unwrap_err();
+/// let err = solve::with::<f64>(&pivoted, Route::Float(FloatFormula::Sq)).unwrap_err();
 /// assert_eq!(err.why, Why::FreeRodOnly);
 /// assert_eq!(err.to_string(), "route float/sq cannot take this scene: it covers the free rod only, and this rod is on a pivot");
 /// assert!(solve::with::<f64>(&pivoted, Route::Linear).is_ok());
@@ -147,7 +147,7 @@ pub trait Solvable: Field {
     ///
     /// # Errors
     /// [`Why::FloatOnly`] for non-float types, [`Why::FreeRodOnly`] for a pivoted rod.
-    fn float(_formula: Formula, _scene: &Scene) -> Result<Motion<Self>, Why> {
+    fn float(_formula: FloatFormula, _scene: &Scene) -> Result<Motion<Self>, Why> {
         Err(Why::FloatOnly)
     }
 }
@@ -160,13 +160,13 @@ impl Solvable for Q {
 }
 
 impl Solvable for f64 {
-    fn float(formula: Formula, scene: &Scene) -> Result<Motion<f64>, Why> {
+    fn float(formula: FloatFormula, scene: &Scene) -> Result<Motion<f64>, Why> {
         formula.eval_scene(scene).ok_or(Why::FreeRodOnly)
     }
 }
 
 impl Solvable for f32 {
-    fn float(formula: Formula, scene: &Scene) -> Result<Motion<f32>, Why> {
+    fn float(formula: FloatFormula, scene: &Scene) -> Result<Motion<f32>, Why> {
         formula.eval_scene(scene).ok_or(Why::FreeRodOnly)
     }
 }

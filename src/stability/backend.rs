@@ -1,4 +1,4 @@
-//! The backends compared by the stability report: f64 and f32 with each [`Formula`], the
+//! The backends compared by the stability report: f64 and f32 with each [`FloatFormula`], the
 //! outward-rounded interval, and exact rationals; each evaluated and measured on one scene,
 //! each through its named [`Route`].
 
@@ -6,7 +6,7 @@ use super::{Accuracy, condition};
 use crate::field::{Field, Interval, Q};
 use crate::mechanics::Motion;
 use crate::scene::{Params, Scene, Support};
-use crate::solve::float::{Formula, Real};
+use crate::solve::float::{FloatFormula, Real};
 use crate::solve::{self, Route};
 use num_traits::Zero;
 
@@ -14,9 +14,9 @@ use num_traits::Zero;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Backend {
     /// IEEE binary64, by [`Route::Float`].
-    F64(Formula),
+    F64(FloatFormula),
     /// IEEE binary32, by [`Route::Float`].
-    F32(Formula),
+    F32(FloatFormula),
     /// Outward-rounded f64 intervals, by [`Route::ClosedForm`].
     Interval,
     /// Exact rationals, by [`Route::ClosedForm`] (the reference).
@@ -55,12 +55,12 @@ impl Reference {
 impl Backend {
     /// Every backend, in report order.
     pub const ALL: [Backend; 8] = [
-        Backend::F64(Formula::Naive),
-        Backend::F64(Formula::Sq),
-        Backend::F64(Formula::Scomp),
-        Backend::F32(Formula::Naive),
-        Backend::F32(Formula::Sq),
-        Backend::F32(Formula::Scomp),
+        Backend::F64(FloatFormula::Naive),
+        Backend::F64(FloatFormula::Sq),
+        Backend::F64(FloatFormula::Scomp),
+        Backend::F32(FloatFormula::Naive),
+        Backend::F32(FloatFormula::Sq),
+        Backend::F32(FloatFormula::Scomp),
         Backend::Interval,
         Backend::Exact,
     ];
@@ -69,8 +69,8 @@ impl Backend {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{solve::{float::Formula, Route}, stability::Backend};
-    /// assert_eq!(Backend::F32(Formula::Scomp).route(), Route::Float(Formula::Scomp));
+    /// use rodimpact::{solve::{float::FloatFormula, Route}, stability::Backend};
+    /// assert_eq!(Backend::F32(FloatFormula::Scomp).route(), Route::Float(FloatFormula::Scomp));
     /// assert_eq!(Backend::Interval.route(), Route::ClosedForm);
     /// ```
     pub fn route(self) -> Route {
@@ -84,8 +84,8 @@ impl Backend {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{solve::float::Formula, stability::Backend};
-    /// assert_eq!(Backend::F64(Formula::Sq).name(), "f64/sq");
+    /// use rodimpact::{solve::float::FloatFormula, stability::Backend};
+    /// assert_eq!(Backend::F64(FloatFormula::Sq).name(), "f64/sq");
     /// ```
     pub fn name(self) -> String {
         match self {
@@ -115,10 +115,10 @@ impl Backend {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{scene::Scene, field::q, stability::Backend, solve::float::Formula};
+    /// use rodimpact::{scene::Scene, field::q, stability::Backend, solve::float::FloatFormula};
     /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).e(q(1, 10)).build()?;
     /// let r = rodimpact::stability::Reference::of(&s).unwrap();
-    /// let with_e = Backend::F64(Formula::Sq).condition(&r).rod_v.unwrap();
+    /// let with_e = Backend::F64(FloatFormula::Sq).condition(&r).rod_v.unwrap();
     /// assert!(with_e > Backend::Exact.condition(&r).rod_v.unwrap());
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
@@ -134,16 +134,16 @@ impl Backend {
         condition(&reference.params, e_rounds)
     }
 
-    /// Evaluates `scene` from its exact inputs ([`Formula::eval_scene`]) and measures (v, V,
+    /// Evaluates `scene` from its exact inputs ([`FloatFormula::eval_scene`]) and measures (v, V,
     /// omega) against the reference; for the interval also whether each enclosure holds the
     /// exact value. `None` for a pivoted rod.
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{scene::Scene, field::q, stability::{Backend, Reference}, solve::float::Formula};
+    /// use rodimpact::{scene::Scene, field::q, stability::{Backend, Reference}, solve::float::FloatFormula};
     /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
     /// let r = Reference::of(&s).unwrap();
-    /// let (m, encloses) = Backend::F64(Formula::Sq).measure(&s, &r).unwrap();
+    /// let (m, encloses) = Backend::F64(FloatFormula::Sq).measure(&s, &r).unwrap();
     /// assert!(m.v.ratio.unwrap() <= 4.0);
     /// assert!(encloses);
     /// # Ok::<(), rodimpact::Error>(())

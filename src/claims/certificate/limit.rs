@@ -1,7 +1,7 @@
 //! The limit certificate: the exact limit of an expression as a symbol tends to 0+ or infinity.
 
 use super::CertificateError;
-use crate::field::ratfunc::{Limit as Found, Point};
+use crate::field::ratfunc::{LimitValue, Point};
 use crate::field::{RatFn, Sym};
 
 /// What a [`Limit`] certificate expects.
@@ -52,9 +52,9 @@ impl Limit {
     pub fn check(&self) -> Result<(), CertificateError> {
         let found = self.expr.limit(self.sym, self.at);
         let ok = match (&found, &self.expected) {
-            (Found::Finite(x), Expected::Finite(y)) => x == y,
+            (LimitValue::Finite(x), Expected::Finite(y)) => x == y,
             (
-                Found::Infinite { coefficient, order },
+                LimitValue::Infinite { coefficient, order },
                 Expected::Infinite {
                     coefficient: c,
                     order: k,
@@ -83,10 +83,10 @@ pub(crate) fn point_name(at: Point) -> &'static str {
 }
 
 /// The limit found, in words: `2 as M -> 0+`, `infinite, ~ (v0) * M^1 as M -> infinity`.
-pub(super) fn describe(found: &Found, sym: Sym, at: Point) -> String {
+pub(super) fn describe(found: &LimitValue, sym: Sym, at: Point) -> String {
     match found {
-        Found::Finite(x) => format!("{x} as {sym} -> {}", point_name(at)),
-        Found::Infinite { coefficient, order } => {
+        LimitValue::Finite(x) => format!("{x} as {sym} -> {}", point_name(at)),
+        LimitValue::Infinite { coefficient, order } => {
             format!(
                 "infinite, ~ ({coefficient}) * {sym}^{order} as {sym} -> {}",
                 point_name(at)

@@ -27,7 +27,7 @@ pub use positive::{PosExpr, Positive, SignClass};
 pub use witness::{Relation, Witness};
 
 use super::Formula;
-use crate::field::ratfunc::{Limit as Found, Point};
+use crate::field::ratfunc::{LimitValue, Point};
 use crate::field::{QSqrt, RatFn, Sym};
 use std::collections::BTreeSet;
 
@@ -81,7 +81,7 @@ pub enum CertificateError {
     #[error("the limit is {}", limit::describe(found, *sym, *at))]
     WrongLimit {
         /// The limit found.
-        found: Found,
+        found: LimitValue,
         /// The symbol that moves.
         sym: Sym,
         /// Where it goes.

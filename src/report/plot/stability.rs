@@ -9,16 +9,16 @@ use super::scale::Scale;
 use super::svg::{Shape, Stroke};
 use super::{PALETTE, SIZE};
 use crate::error::Error;
-use crate::solve::float::Formula;
+use crate::solve::float::FloatFormula;
 use crate::stability::{Backend, BackendStats};
 
 /// The colour of a backend: by formula (interval and exact their own).
 fn color(backend: Backend) -> &'static str {
     match backend {
         Backend::F64(f) | Backend::F32(f) => match f {
-            Formula::Naive => PALETTE[1],
-            Formula::Sq => PALETTE[0],
-            Formula::Scomp => PALETTE[2],
+            FloatFormula::Naive => PALETTE[1],
+            FloatFormula::Sq => PALETTE[0],
+            FloatFormula::Scomp => PALETTE[2],
         },
         Backend::Interval => PALETTE[3],
         Backend::Exact => "#000000",

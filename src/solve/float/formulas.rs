@@ -10,7 +10,7 @@ use crate::solve::closed_form::closed_form;
 
 /// A float formula for (v, V, omega) of a free rod.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Formula {
+pub enum FloatFormula {
     /// The paper's closed form `r = m/M`, `q = r + (m a/I) a`, `v = (q - e)/(1 + q) v0`
     /// ([`closed_form`]): intermediate products overflow or underflow on extreme scenes.
     Naive,
@@ -22,22 +22,22 @@ pub enum Formula {
     Scomp,
 }
 
-impl Formula {
+impl FloatFormula {
     /// Every formula, cheapest first.
-    pub const ALL: [Formula; 3] = [Formula::Naive, Formula::Sq, Formula::Scomp];
+    pub const ALL: [FloatFormula; 3] = [FloatFormula::Naive, FloatFormula::Sq, FloatFormula::Scomp];
 
     /// Name in reports: `naive`, `sq`, `scomp`.
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::float::Formula;
-    /// assert_eq!(Formula::Scomp.name(), "scomp");
+    /// use rodimpact::solve::float::FloatFormula;
+    /// assert_eq!(FloatFormula::Scomp.name(), "scomp");
     /// ```
     pub fn name(self) -> &'static str {
         match self {
-            Formula::Naive => "naive",
-            Formula::Sq => "sq",
-            Formula::Scomp => "scomp",
+            FloatFormula::Naive => "naive",
+            FloatFormula::Sq => "sq",
+            FloatFormula::Scomp => "scomp",
         }
     }
 
@@ -46,15 +46,15 @@ impl Formula {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{solve::float::Formula, scene::Scene, field::q};
+    /// use rodimpact::{solve::float::FloatFormula, scene::Scene, field::q};
     /// // I = 10^-310 is subnormal: the naive m a/I overflows and v becomes NaN.
     /// let tiny = num_bigint::BigInt::from(10).pow(310);
     /// let s = Scene::builder(q(1, 1), q(1, 1))
     ///     .rod(rodimpact::scene::RodInertia::Moment(rodimpact::field::Q::new(1.into(), tiny)))
     ///     .build()?;
     /// let p = s.params::<f64>();
-    /// assert!(Formula::Naive.eval(&p).unwrap().v.is_nan());
-    /// let stable = Formula::Sq.eval(&p).unwrap();
+    /// assert!(FloatFormula::Naive.eval(&p).unwrap().v.is_nan());
+    /// let stable = FloatFormula::Sq.eval(&p).unwrap();
     /// assert_eq!((stable.v, stable.omega), (1.0, 2.0));
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
@@ -63,7 +63,7 @@ impl Formula {
             return None;
         }
         Some(match self {
-            Formula::Naive => closed_form(p).unwrap_or_else(|| {
+            FloatFormula::Naive => closed_form(p).unwrap_or_else(|| {
                 let nan = T::zero() / T::zero();
                 Motion {
                     v: nan,
@@ -71,8 +71,8 @@ impl Formula {
                     omega: nan,
                 }
             }),
-            Formula::Sq => scaled(p).unwrap_or_else(|| stable(carried(p), false)),
-            Formula::Scomp => stable(carried(p), true),
+            FloatFormula::Sq => scaled(p).unwrap_or_else(|| stable(carried(p), false)),
+            FloatFormula::Scomp => stable(carried(p), true),
         })
     }
 
@@ -82,26 +82,26 @@ impl Formula {
     /// or infinity). The stable formulas rescale each input exactly by a power of two before
     /// rounding it ([`Ext::from_rational`]), so no input overflows or underflows: their answer
     /// is right wherever the output itself is a normal number of `T`. On scenes whose inputs
-    /// are normal numbers of `T` both agree bit for bit with [`Formula::eval`].
+    /// are normal numbers of `T` both agree bit for bit with [`FloatFormula::eval`].
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{solve::float::Formula, scene::Scene, field::q, number::parse};
+    /// use rodimpact::{solve::float::FloatFormula, scene::Scene, field::q, number::parse};
     /// // l = a = 10^-200: I = M l^2/3 = 10^-400/3 underflows f64 to 0.
     /// let l = parse("1e-200").expect("a number");
     /// let s = Scene::builder(q(1, 1), q(1, 1)).half_length(l.clone()).a(l).build()?;
     /// assert_eq!(s.params::<f64>().inertia, 0.0);
-    /// assert!(Formula::Sq.eval(&s.params::<f64>()).unwrap().omega.is_nan());
+    /// assert!(FloatFormula::Sq.eval(&s.params::<f64>()).unwrap().omega.is_nan());
     /// // From the exact inputs: v = 3/5, V = 2/5, omega = 6/5 10^200.
-    /// let x = Formula::Sq.eval_scene::<f64>(&s).unwrap();
+    /// let x = FloatFormula::Sq.eval_scene::<f64>(&s).unwrap();
     /// assert_eq!((x.v, x.rod_v), (0.6, 0.4));
     /// assert!((x.omega / 1.2e200 - 1.0).abs() <= 2.0 * f64::EPSILON);
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
     pub fn eval_scene<T: Real>(self, scene: &Scene) -> Option<Motion<T>> {
         match self {
-            Formula::Naive => self.eval(&scene.params::<T>()),
-            Formula::Sq | Formula::Scomp => {
+            FloatFormula::Naive => self.eval(&scene.params::<T>()),
+            FloatFormula::Sq | FloatFormula::Scomp => {
                 let p = scene.params::<Q>();
                 if p.support != Support::Free {
                     return None;
@@ -109,7 +109,7 @@ impl Formula {
                 let inputs = [&p.m, &p.rod_mass, &p.inertia, &p.a, &p.v0, &p.e];
                 Some(stable(
                     inputs.map(Ext::from_rational),
-                    self == Formula::Scomp,
+                    self == FloatFormula::Scomp,
                 ))
             }
         }
@@ -240,7 +240,7 @@ mod tests {
         let cases = suite().into_iter().chain(sweep(11, 300, decades));
         let mut compared = 0;
         for case in cases.filter(|c| crate::stability::in_range::<T>(&c.scene)) {
-            for formula in Formula::ALL {
+            for formula in FloatFormula::ALL {
                 let plain = formula.eval(&case.scene.params::<T>()).unwrap();
                 let exact = formula.eval_scene::<T>(&case.scene).unwrap();
                 let nan = |x: T| x.sign().is_none();
@@ -277,13 +277,13 @@ mod tests {
             .v0(tiny)
             .build()
             .unwrap();
-        for formula in [Formula::Sq, Formula::Scomp] {
+        for formula in [FloatFormula::Sq, FloatFormula::Scomp] {
             let x = formula.eval_scene::<f64>(&s).unwrap();
             // v = 3/5 10^-400 and V = 2/5 10^-400 underflow to 0; omega = 6/5 exactly in Q.
             assert_eq!((x.v, x.rod_v), (0.0, 0.0), "{}", formula.name());
             assert!((x.omega - 1.2).abs() <= 2.0 * f64::EPSILON, "{}", x.omega);
         }
-        let naive = Formula::Naive.eval_scene::<f64>(&s).unwrap();
+        let naive = FloatFormula::Naive.eval_scene::<f64>(&s).unwrap();
         assert!(naive.omega.is_nan(), "every input underflowed: 0/0");
     }
 

@@ -1,6 +1,6 @@
 //! Float formulas for the impulse, done properly: the IEEE formats seen through their bits
 //! ([`Real`]), numbers with carried binary exponents ([`Ext`]), and the naive, stable ("sq") and
-//! compensated ("scomp") formulas ([`Formula`]). Their error is measured exactly by
+//! compensated ("scomp") formulas ([`FloatFormula`]). Their error is measured exactly by
 //! [`crate::stability`].
 
 mod compensated;
@@ -9,5 +9,5 @@ mod formulas;
 mod real;
 
 pub use ext::Ext;
-pub use formulas::Formula;
+pub use formulas::FloatFormula;
 pub use real::Real;
