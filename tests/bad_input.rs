@@ -910,6 +910,18 @@ fn exact_square_roots_at_the_limits() {
     let (code, out) = finished(&["check", "--m", "1e9000", "--M", "1", "--claim", "a_star=1"]);
     assert_eq!(code, 1);
     assert!(out.contains("DISAGREES"));
+    // `table --only T2` builds T2 alone (it built all five and dropped four: 139 s at first,
+    // 7 s after the radicand fix); its a* row is on the rod: a*^2 = (1 + 10^-10000)/3.
+    let (code, out) = finished(&[
+        "table", "--ratio", "1e-10000", "--only", "T2", "--format", "csv",
+    ]);
+    assert_eq!(code, 0);
+    assert!(
+        out.starts_with("a/l,") && !out.contains("T1"),
+        "{}",
+        &out[..out.len().min(500)]
+    );
+    assert!(out.lines().count() == 7, "header, five points and a*");
 }
 
 /// Regression (F2): `print_out` ended with exit 0 on *any* stdout error, meant for a closed pipe

@@ -91,27 +91,10 @@ fn parse_format(text: &str) -> Result<Format, Error> {
 pub(crate) fn run_table(args: &TableArgs) -> Result<(), Failure> {
     let format = parse_format(&args.format)?;
     let opts = table_options(args)?;
-    let mut tables = report::all_tables(&opts)?;
-    if let Some(only) = &args.only {
-        let wanted: Vec<String> = only
-            .split(',')
-            .map(|t| t.trim().to_ascii_uppercase())
-            .collect();
-        if let Some(bad) = wanted
-            .iter()
-            .find(|w| !tables.iter().any(|t| t.id == w.as_str()))
-        {
-            return Err(Error::new(
-                "only",
-                ErrorKind::Invalid(format!(
-                    "unknown table '{}'; the tables are T1-T5",
-                    rodimpact::echo::echo(bad)
-                )),
-            )
-            .into());
-        }
-        tables.retain(|t| wanted.iter().any(|w| w == t.id));
-    }
+    let tables = match &args.only {
+        Some(only) => report::tables(&only.split(',').collect::<Vec<_>>(), &opts)?,
+        None => report::all_tables(&opts)?,
+    };
     let text = report::render_document(&tables, format);
     match &args.out {
         Some(path) => write_atomic("out", path, &text)?,

@@ -24,7 +24,7 @@ pub use check::{
     check_summary, check_table, problems_json, problems_text, rel_error_text,
 };
 pub use claims_doc::claims_markdown;
-pub use paper_tables::{TableOptions, all_tables, t1, t2, t3, t4, t5};
+pub use paper_tables::{TABLE_IDS, TableOptions, all_tables, t1, t2, t3, t4, t5, tables};
 pub use plot::{
     Figure, PlotData, PlotValue, energy_figure, mass_ratio_family, omega_figure, optimum_figure,
     plot_figure1, plot_omega, plot_optimum, plot_stability, quantities_figure, velocity_figure,

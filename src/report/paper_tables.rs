@@ -4,7 +4,7 @@
 //! in units of v0 and angular velocities in units of v0/l; the mass ratio M/m is the parameter.
 
 use super::table::{Cell, Column, Table};
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::field::notation::{self, Notation};
 use crate::field::{Q, QSqrt, q};
 use crate::optimum::{Placement, optimum};
@@ -322,10 +322,48 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
     })
 }
 
-/// All five tables.
+/// The ids of the paper's tables, in the order they are printed.
+pub const TABLE_IDS: [&str; 5] = ["T1", "T2", "T3", "T4", "T5"];
+
+/// The tables whose ids `wanted` names (any order, `t2` or `T2`), built alone and printed in
+/// the order of [`TABLE_IDS`]: a table not asked for is never computed.
 ///
 /// # Errors
-/// An option that makes an invalid scene (for example `rg=` larger than 1).
+/// `only: unknown table 'X'` for an id that is not one of [`TABLE_IDS`]; a scene the options
+/// make invalid.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::{tables, TableOptions};
+/// let t = tables(&["t5", "T2"], &TableOptions::default()).unwrap();
+/// assert_eq!(t.iter().map(|t| t.id).collect::<Vec<_>>(), ["T2", "T5"]);
+/// assert_eq!(tables(&["T9"], &TableOptions::default()).unwrap_err().to_string(),
+///            "only: unknown table 'T9'; the tables are T1-T5");
+/// ```
+pub fn tables(wanted: &[&str], opts: &TableOptions) -> Result<Vec<Table>, Error> {
+    let wanted: Vec<String> = wanted
+        .iter()
+        .map(|w| w.trim().to_ascii_uppercase())
+        .collect();
+    if let Some(bad) = wanted.iter().find(|w| !TABLE_IDS.contains(&w.as_str())) {
+        return Err(Error::new(
+            "only",
+            ErrorKind::Invalid(format!(
+                "unknown table '{}'; the tables are T1-T5",
+                crate::echo::echo(bad)
+            )),
+        ));
+    }
+    let builders: [fn(&TableOptions) -> Result<Table, Error>; 5] = [t1, t2, t3, |_| t4(), t5];
+    TABLE_IDS
+        .iter()
+        .zip(builders)
+        .filter(|(id, _)| wanted.iter().any(|w| w == *id))
+        .map(|(_, build)| build(opts))
+        .collect()
+}
+
+/// Every table, T1 to T5.
 ///
 /// # Examples
 /// ```
@@ -334,7 +372,7 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
 /// assert_eq!(tables.iter().map(|t| t.id).collect::<Vec<_>>(), ["T1", "T2", "T3", "T4", "T5"]);
 /// ```
 pub fn all_tables(opts: &TableOptions) -> Result<Vec<Table>, Error> {
-    Ok(vec![t1(opts)?, t2(opts)?, t3(opts)?, t4()?, t5(opts)?])
+    tables(&TABLE_IDS, opts)
 }
 
 #[cfg(test)]
