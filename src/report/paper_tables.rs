@@ -322,6 +322,9 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
     })
 }
 
+/// A function that builds one table from the options.
+type TableBuilder = fn(&TableOptions) -> Result<Table, Error>;
+
 /// The ids of the paper's tables, in the order they are printed.
 pub const TABLE_IDS: [&str; 5] = ["T1", "T2", "T3", "T4", "T5"];
 
@@ -354,7 +357,7 @@ pub fn tables(wanted: &[&str], opts: &TableOptions) -> Result<Vec<Table>, Error>
             )),
         ));
     }
-    let builders: [fn(&TableOptions) -> Result<Table, Error>; 5] = [t1, t2, t3, |_| t4(), t5];
+    let builders: [TableBuilder; 5] = [t1, t2, t3, |_| t4(), t5];
     TABLE_IDS
         .iter()
         .zip(builders)
