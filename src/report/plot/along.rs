@@ -16,6 +16,7 @@ use crate::field::Q;
 use crate::optimum::Argmax;
 use crate::scene::{Params, Scene};
 use crate::solve::Outcome;
+use num_traits::Zero;
 
 /// One sample: the impact point and the exact outcome there.
 struct Sample {
@@ -210,15 +211,22 @@ pub fn quantities_figure(scene: &Scene) -> Result<Figure, Error> {
 /// let s = Scene::builder(q(1, 1), q(1, 1)).e(q(0, 1)).build().unwrap();
 /// let fig = rodimpact::report::energy_figure(&s).unwrap();
 /// assert!(fig.svg.contains("lost"));
+/// // Elastic: nothing is lost anywhere, so no band says so.
+/// let elastic = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+/// assert!(!rodimpact::report::energy_figure(&elastic).unwrap().svg.contains("lost"));
 /// ```
 pub fn energy_figure(scene: &Scene) -> Result<Figure, Error> {
     let samples = samples(scene)?;
     let two = Q::from_integer(2.into());
     let (m, big_m, inertia) = (scene.m(), scene.rod_mass(), scene.inertia());
     let before = m * scene.v0() * scene.v0() / &two;
-    let mut data = PlotData::new(&["a", "projectile", "rod_translation", "rod_rotation", "lost"]);
+    // An elastic impact loses nothing at any point: no band, legend entry or column for a loss.
+    let lossy = samples.iter().any(|s| !s.out.energy.lost.is_zero());
+    let columns = ["a", "projectile", "rod_translation", "rod_rotation", "lost"];
+    let mut data = PlotData::new(&columns[..if lossy { 5 } else { 4 }]);
     // Cumulative fractions: rotation, + translation, + projectile, + lost (= 1).
-    let mut bands: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 4];
+    let n_bands = if lossy { 4 } else { 3 };
+    let mut bands: Vec<Vec<(f64, f64)>> = vec![Vec::new(); n_bands];
     let l = scene.half_length();
     for s in &samples {
         let x = &s.out.after;
@@ -233,13 +241,16 @@ pub fn energy_figure(scene: &Scene) -> Result<Figure, Error> {
             total += part / &before;
             band.push((f(&(&s.a / l)), f(&total)));
         }
-        data.rows.push(vec![
+        let mut row = vec![
             Value::Exact(s.a.clone()),
             Value::Exact(parts[2].clone()),
             Value::Exact(parts[1].clone()),
             Value::Exact(parts[0].clone()),
-            Value::Exact(parts[3].clone()),
-        ]);
+        ];
+        if lossy {
+            row.push(Value::Exact(parts[3].clone()));
+        }
+        data.rows.push(row);
     }
     let fills = ["#9ecae9", "#f4b183", "#a8dcc9", "#d0d0d0"];
     let lines = [PALETTE[0], PALETTE[1], PALETTE[2], "#777777"];
@@ -252,6 +263,7 @@ pub fn energy_figure(scene: &Scene) -> Result<Figure, Error> {
     let legend: Vec<(Swatch, String)> = fills
         .iter()
         .zip(&names)
+        .take(n_bands)
         .rev()
         .map(|(c, n)| (Swatch::Area(c), n.to_string()))
         .collect();
