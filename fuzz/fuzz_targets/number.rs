@@ -21,7 +21,7 @@ fuzz_target!(|text: &str| {
         if let Ok(back) = number::parse(&q.to_string()) {
             assert_eq!(back, q, "{text}");
         }
-        let _ = number::decimal(&q, 30);
+        let _ = rodimpact::field::decimal::decimal(&q, 30);
     }
     for dimension in DIMENSIONS {
         if let Ok(measured) = Measured::parse("x", text, dimension) {
