@@ -3,7 +3,7 @@
 use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
-use rodimpact::batch::{Arithmetic, Batch, MAX_LINE, Summary, run};
+use rodimpact::batch::{Agreement, Arithmetic, Batch, FloatFormat, MAX_LINE, Summary, run};
 use rodimpact::echo::{echo, echo_path};
 use rodimpact::io::AtomicFile;
 use rodimpact::report::batch_summary;
@@ -13,7 +13,8 @@ use std::path::PathBuf;
 
 #[derive(Args, Debug)]
 pub(crate) struct BatchArgs {
-    /// CSV file: header among m,M,l,a,v0,rod,e,pivot (m and M required) and claimed v,V,omega.
+    /// CSV file: header among m,M,l,a,v0,rod,e,pivot (m and M required), claimed
+    /// v,V,omega,J,energy_before,energy_after, and any other columns (passed through).
     #[arg(value_name = "FILE.csv")]
     pub(crate) file: PathBuf,
     /// Arithmetic: exact rationals, or the closed form in f64.
@@ -25,6 +26,22 @@ pub(crate) struct BatchArgs {
     /// Write the rows here (all or nothing) instead of standard output.
     #[arg(long, value_name = "FILE")]
     pub(crate) out: Option<PathBuf>,
+    /// A claim agrees when its relative error is at most R (0 <= R <= 1).
+    #[arg(long, value_name = "R", conflicts_with = "ulps")]
+    pub(crate) rtol: Option<String>,
+    /// A claim agrees when it is at most N floats from the correctly rounded exact value
+    /// (exact backend).
+    #[arg(long, value_name = "N")]
+    pub(crate) ulps: Option<String>,
+    /// The float format of --ulps [default: f64].
+    #[arg(long, value_enum, requires = "ulps", value_name = "f32|f64")]
+    pub(crate) float: Option<FloatArg>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub(crate) enum FloatArg {
+    F32,
+    F64,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -93,7 +110,17 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         )
         .into());
     }
-    let batch = Batch::new(&header, arithmetic)?;
+    let mut batch = Batch::new(&header, arithmetic)?;
+    if let Some(r) = &args.rtol {
+        batch = batch.with_agreement(Agreement::parse_rtol(r)?)?;
+    }
+    if let Some(n) = &args.ulps {
+        let format = match args.float {
+            Some(FloatArg::F32) => FloatFormat::F32,
+            Some(FloatArg::F64) | None => FloatFormat::F64,
+        };
+        batch = batch.with_agreement(Agreement::parse_ulps(n, format)?)?;
+    }
 
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = ProgressBar::new(size);
@@ -142,7 +169,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
-    report(&summary)
+    report(&summary, &batch.passed_through())
 }
 
 /// A writer that keeps its first error, so that the command can tell a failed write to
@@ -188,9 +215,13 @@ fn write_header(out: &mut impl Write, batch: &Batch) -> Result<(), Error> {
         .map_err(|why| Error::new("out", ErrorKind::Io(format!("cannot write: {why}"))))
 }
 
-fn report(summary: &Summary) -> Result<(), Failure> {
+fn report(summary: &Summary, passed: &[&str]) -> Result<(), Failure> {
+    if !passed.is_empty() {
+        let names: Vec<String> = passed.iter().map(|name| echo(name)).collect();
+        super::print_err(&format!("passed through: {}\n", names.join(", ")));
+    }
     super::print_err(&batch_summary(summary));
-    if summary.wrong() > 0 || summary.laws_failed > 0 {
+    if summary.wrong() > 0 || summary.laws_failed > 0 || summary.rows_with_findings() > 0 {
         Err(Failure::Check)
     } else {
         Ok(())
