@@ -42,6 +42,7 @@ pub mod samples;
 pub mod scene;
 pub mod solve;
 pub mod stability;
+pub mod suite;
 pub mod textbook;
 pub mod units;
 
