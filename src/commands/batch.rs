@@ -72,6 +72,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         BackendArg::F64 => Arithmetic::F64,
     };
     let jobs = args.jobs.as_deref().map(parse_jobs).transpose()?;
+    let agreement = agreement(args)?;
     let read_error = |why: std::io::Error| {
         Error::new(
             "FILE",
@@ -110,17 +111,11 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         )
         .into());
     }
-    let mut batch = Batch::new(&header, arithmetic)?;
-    if let Some(r) = &args.rtol {
-        batch = batch.with_agreement(Agreement::parse_rtol(r)?)?;
-    }
-    if let Some(n) = &args.ulps {
-        let format = match args.float {
-            Some(FloatArg::F32) => FloatFormat::F32,
-            Some(FloatArg::F64) | None => FloatFormat::F64,
-        };
-        batch = batch.with_agreement(Agreement::parse_ulps(n, format)?)?;
-    }
+    let batch = Batch::new(&header, arithmetic)?;
+    let batch = match agreement {
+        Some(agreement) => batch.with_agreement(agreement)?,
+        None => batch,
+    };
 
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = ProgressBar::new(size);
@@ -170,6 +165,22 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         bar.finish_and_clear();
     }
     report(&summary, &batch.passed_through())
+}
+
+/// The agreement rule of `--rtol` or `--ulps [--float]` (clap refuses both at once), checked
+/// before the file is opened.
+fn agreement(args: &BatchArgs) -> Result<Option<Agreement>, Error> {
+    if let Some(r) = &args.rtol {
+        return Agreement::parse_rtol(r).map(Some);
+    }
+    let format = match args.float {
+        Some(FloatArg::F32) => FloatFormat::F32,
+        Some(FloatArg::F64) | None => FloatFormat::F64,
+    };
+    args.ulps
+        .as_deref()
+        .map(|n| Agreement::parse_ulps(n, format))
+        .transpose()
 }
 
 /// A writer that keeps its first error, so that the command can tell a failed write to
