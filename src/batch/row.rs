@@ -235,7 +235,7 @@ fn float_values(
         Some(m.v),
         Some(m.rod_v),
         Some(m.omega),
-        wanted(3).then(|| params.m * (params.v0 - m.v)),
+        wanted(3).then_some(params.m * (params.v0 - m.v)),
         wanted(4).then(|| kinetic_energy(&params, &Motion::before(params.v0))),
         wanted(5).then(|| kinetic_energy(&params, &m)),
     ];
