@@ -65,6 +65,26 @@ impl Agreement {
         Ok(Agreement::Relative(r))
     }
 
+    /// The rule in words, for the summary.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Agreement, FloatFormat};
+    /// use rodimpact::field::q;
+    /// assert_eq!(Agreement::Ulps(16, FloatFormat::F32).describe(), "within 16 f32 ulps of the exact value");
+    /// assert_eq!(Agreement::Relative(q(1, 1_000_000)).describe(), "within a relative 0.000001");
+    /// assert_eq!(Agreement::Exact.describe(), "exactly");
+    /// ```
+    pub fn describe(&self) -> String {
+        match self {
+            Agreement::Exact => "exactly".to_string(),
+            Agreement::Relative(r) => format!("within a relative {}", crate::number::decimal(r, 3)),
+            Agreement::Ulps(n, format) => {
+                format!("within {n} {} ulps of the exact value", format.name())
+            }
+        }
+    }
+
     /// `--ulps N`: a whole number from 0 to [`MAX_ULPS`].
     ///
     /// # Errors

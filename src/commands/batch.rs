@@ -112,8 +112,8 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         .into());
     }
     let batch = Batch::new(&header, arithmetic)?;
-    let batch = match agreement {
-        Some(agreement) => batch.with_agreement(agreement)?,
+    let batch = match &agreement {
+        Some(agreement) => batch.with_agreement(agreement.clone())?,
         None => batch,
     };
 
@@ -164,7 +164,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
-    report(&summary, &batch.passed_through())
+    report(&summary, &batch.passed_through(), agreement.as_ref())
 }
 
 /// The agreement rule of `--rtol` or `--ulps [--float]` (clap refuses both at once), checked
@@ -226,10 +226,17 @@ fn write_header(out: &mut impl Write, batch: &Batch) -> Result<(), Error> {
         .map_err(|why| Error::new("out", ErrorKind::Io(format!("cannot write: {why}"))))
 }
 
-fn report(summary: &Summary, passed: &[&str]) -> Result<(), Failure> {
+fn report(
+    summary: &Summary,
+    passed: &[&str],
+    agreement: Option<&Agreement>,
+) -> Result<(), Failure> {
     if !passed.is_empty() {
         let names: Vec<String> = passed.iter().map(|name| echo(name)).collect();
         super::print_err(&format!("passed through: {}\n", names.join(", ")));
+    }
+    if let Some(agreement) = agreement {
+        super::print_err(&format!("claims agree {}\n", agreement.describe()));
     }
     super::print_err(&batch_summary(summary));
     if summary.wrong() > 0 || summary.laws_failed > 0 || summary.rows_with_findings() > 0 {
