@@ -78,7 +78,9 @@ impl Agreement {
     pub fn describe(&self) -> String {
         match self {
             Agreement::Exact => "exactly".to_string(),
-            Agreement::Relative(r) => format!("within a relative {}", crate::number::decimal(r, 3)),
+            Agreement::Relative(r) => {
+                format!("within a relative {}", crate::field::Field::nearest_f64(r))
+            }
             Agreement::Ulps(n, format) => {
                 format!("within {n} {} ulps of the exact value", format.name())
             }
