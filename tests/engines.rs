@@ -10,6 +10,12 @@
 mod common;
 
 use common::{data_file, rodimpact};
+use num_traits::Signed;
+use rodimpact::batch::{Finding, audit};
+use rodimpact::fast::solve;
+use rodimpact::field::q;
+use rodimpact::mechanics::Motion;
+use rodimpact::scene::{Scene, Support};
 use std::collections::BTreeMap;
 
 #[test]
@@ -46,7 +52,7 @@ impl Row {
 }
 
 /// Runs `rodimpact batch FIXTURE FLAGS...` and returns the rows and the stderr summary.
-fn audit(fixture: &str, flags: &[&str]) -> (Vec<Row>, String) {
+fn audit_fixture(fixture: &str, flags: &[&str]) -> (Vec<Row>, String) {
     let path = data_file(&format!("engines/{fixture}"));
     let mut args = vec!["batch", path.as_str()];
     args.extend(flags);
@@ -123,7 +129,7 @@ fn rapier_free_rod_to_ulps_and_its_revolute_joint_losing_energy() {
             ]),
         ),
     ] {
-        let (rows, stderr) = audit(fixture, &["--ulps", "16", "--float", float]);
+        let (rows, stderr) = audit_fixture(fixture, &["--ulps", "16", "--float", float]);
         assert_eq!(rows.len(), 1062);
         assert_eq!(summary_counts(&stderr), summary, "{fixture}: {stderr}");
         assert!(
@@ -176,7 +182,7 @@ fn rapier_free_rod_to_ulps_and_its_revolute_joint_losing_energy() {
 /// for e = 1 and 1/2) on every such row, free and pivoted; above it, never.
 #[test]
 fn box2d_ignores_restitution_at_low_speed() {
-    let (rows, stderr) = audit("box2d-2.3.10-f32.csv", &["--ulps", "16", "--float", "f32"]);
+    let (rows, stderr) = audit_fixture("box2d-2.3.10-f32.csv", &["--ulps", "16", "--float", "f32"]);
     assert_eq!(rows.len(), 264);
     assert_eq!(
         summary_counts(&stderr),
@@ -209,7 +215,7 @@ fn box2d_ignores_restitution_at_low_speed() {
 /// struck inside the rod.
 #[test]
 fn chipmunk_misses_the_exact_end() {
-    let (rows, stderr) = audit("pymunk-7.3.1-f64.csv", &["--ulps", "16"]);
+    let (rows, stderr) = audit_fixture("pymunk-7.3.1-f64.csv", &["--ulps", "16"]);
     assert_eq!(rows.len(), 264);
     assert_eq!(
         summary_counts(&stderr),
@@ -242,7 +248,7 @@ fn chipmunk_misses_the_exact_end() {
 /// defaults are erratic (energy lost and gained, restitution ignored on 33 rows).
 #[test]
 fn pybullet_gains_energy_and_exceeds_omega_max() {
-    let (rows, stderr) = audit("pybullet-3.2.7-f64.csv", &["--rtol", "1e-6"]);
+    let (rows, stderr) = audit_fixture("pybullet-3.2.7-f64.csv", &["--rtol", "1e-6"]);
     assert_eq!(rows.len(), 528);
     assert_eq!(
         summary_counts(&stderr),
@@ -292,7 +298,7 @@ fn pybullet_gains_energy_and_exceeds_omega_max() {
 /// every row but one is `off`, `energy-gain` or `above-omega-max` at a relative 1e-6.
 #[test]
 fn mujoco_compliant_contact_is_never_exact() {
-    let (rows, stderr) = audit("mujoco-4.0.0-f64.csv", &["--rtol", "1e-6"]);
+    let (rows, stderr) = audit_fixture("mujoco-4.0.0-f64.csv", &["--rtol", "1e-6"]);
     assert_eq!(rows.len(), 264);
     assert_eq!(
         summary_counts(&stderr),
@@ -319,4 +325,42 @@ fn passed_through_names_are_escaped() {
     assert!(!stderr.contains('\x1b'), "{stderr:?}");
     assert!(stderr.starts_with("passed through: "), "{stderr}");
     std::fs::remove_file(&path).unwrap();
+}
+
+/// The same scene with e = 0.
+fn sticking(scene: &Scene) -> Scene {
+    let builder = Scene::builder(scene.m().clone(), scene.rod_mass().clone())
+        .half_length(scene.half_length().clone())
+        .rod(scene.rod().clone())
+        .a(scene.a().clone())
+        .v0(scene.v0().clone())
+        .e(q(0, 1));
+    match scene.support() {
+        Support::Pivot(p) => builder.pivot(p.clone()).build().unwrap(),
+        Support::Free => builder.build().unwrap(),
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(300))]
+
+    /// The audit never accuses the right answer and always recognises the two wrong answers it
+    /// names: for any scene (free or pivoted, any rod, any e), the exact state after the impact
+    /// has no finding (so its |omega| is within the proven maximum of the struck side and it
+    /// conserves what the scene conserves); the state before the impact is `no-contact`; and
+    /// for e > 0 the e = 0 answer (from an independent solve) is `restitution-ignored`.
+    #[test]
+    fn the_audit_accepts_the_exact_answer_and_names_the_wrong_ones(scene in common::any_scene()) {
+        let exact = solve(&scene).after;
+        proptest::prop_assert!(audit(&scene, &exact, &exact).findings.is_empty());
+        let before = Motion::before(scene.v0().clone());
+        let found = audit(&scene, &exact, &before).findings;
+        proptest::prop_assert!(found.contains(&Finding::NoContact), "{:?}", found);
+        if scene.e().is_positive() {
+            let stuck = solve(&sticking(&scene)).after;
+            let found = audit(&scene, &exact, &stuck).findings;
+            proptest::prop_assert!(found.contains(&Finding::RestitutionIgnored), "{:?}", found);
+            proptest::prop_assert!(!found.contains(&Finding::EnergyGain), "{:?}", found);
+        }
+    }
 }
