@@ -25,6 +25,14 @@ use crate::field::{Q, q};
 use crate::scene::{RodInertia, Scene};
 
 /// One scene of the suite, with its id and class.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{suite::engine_suite, field::q};
+/// let suite = engine_suite();
+/// let cop = suite.iter().find(|s| s.id == "pivot-cop-1").unwrap();
+/// assert_eq!((&cop.a, &cop.pivot), (&q(1, 3), &Some(q(-1, 1))));
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct SuiteScene {
     /// `<class>-<n>`, n counted from 1 within the class.
@@ -252,6 +260,13 @@ impl SuiteScene {
     ///
     /// # Errors
     /// As [`crate::scene::SceneBuilder::build`] (never for the suite's own scenes).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{suite::engine_suite, field::q};
+    /// let scene = engine_suite()[0].scene().unwrap();
+    /// assert_eq!((scene.a(), scene.v0()), (&q(1, 2), &q(3, 1)));
+    /// ```
     pub fn scene(&self) -> Result<Scene, crate::Error> {
         let builder = Scene::builder(self.m.clone(), self.rod_mass.clone())
             .half_length(self.l.clone())

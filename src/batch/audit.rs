@@ -85,6 +85,19 @@ impl Finding {
 
 /// The audit of one claimed state: its findings (without [`Finding::Off`], which depends on
 /// the agreement rule) and its energy change.
+///
+/// # Examples
+/// A claimed state with 1 % more spin than the paper's exact answer (3/5, 2/5, 6/5):
+/// ```
+/// use rodimpact::{batch::{audit, Finding}, mechanics::Motion, scene::Scene, field::q};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+/// let exact = Motion { v: q(3, 5), rod_v: q(2, 5), omega: q(6, 5) };
+/// let claimed = Motion { omega: q(606, 500), ..exact.clone() };
+/// let a = audit(&s, &exact, &claimed);
+/// assert_eq!(a.findings, [Finding::EnergyGain, Finding::AngularMomentum]);
+/// // ((1.212^2 - 1.2^2)/3)/2 more energy, over the 1/2 before: +0.96 %
+/// assert_eq!(a.energy_change, q(2412, 250_000));
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Audit {
     /// The findings, in [`Finding::ALL`] order.

@@ -45,6 +45,13 @@ impl Agreement {
     ///
     /// # Errors
     /// `rtol: ...` when R is not a number or not in [0, 1].
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{batch::Agreement, field::q};
+    /// assert_eq!(Agreement::parse_rtol("1/1000").unwrap(), Agreement::Relative(q(1, 1000)));
+    /// assert!(Agreement::parse_rtol("2").is_err());
+    /// ```
     pub fn parse_rtol(text: &str) -> Result<Agreement, Error> {
         let bad = || {
             Error::out_of_range(
@@ -91,6 +98,14 @@ impl Agreement {
     ///
     /// # Errors
     /// `ulps: ...` when N is not such a number.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Agreement, FloatFormat};
+    /// assert_eq!(Agreement::parse_ulps("0", FloatFormat::F64).unwrap(), Agreement::Ulps(0, FloatFormat::F64));
+    /// assert_eq!(Agreement::parse_ulps("-1", FloatFormat::F64).unwrap_err().to_string(),
+    ///            "ulps: must be a whole number from 0 to 9007199254740992, got '-1'");
+    /// ```
     pub fn parse_ulps(text: &str, format: FloatFormat) -> Result<Agreement, Error> {
         match text.trim().parse::<u64>() {
             Ok(n) if n <= MAX_ULPS => Ok(Agreement::Ulps(n, format)),

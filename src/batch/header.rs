@@ -145,6 +145,13 @@ impl Batch {
     }
 
     /// The input columns that are neither scene fields nor claims, passed through in place.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic};
+    /// let b = Batch::new("id,engine,m,M,dt,omega", Arithmetic::Exact).unwrap();
+    /// assert_eq!(b.passed_through(), ["id", "engine", "dt"]);
+    /// ```
     pub fn passed_through(&self) -> Vec<&str> {
         self.header
             .split(',')

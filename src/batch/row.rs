@@ -121,6 +121,14 @@ impl Batch {
 }
 
 /// The diagnosis of a row: its findings, `ok`, or not audited (a state claim missing).
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Arithmetic, Batch, Diagnosis, Finding};
+/// let b = Batch::new("m,M,v,V,omega", Arithmetic::Exact).unwrap();
+/// assert_eq!(b.row(1, "1,1,1,0,0").unwrap().diagnosis, Some(Diagnosis::Findings(vec![Finding::NoContact])));
+/// assert_eq!(b.row(2, "1,1,0.6,0.4,").unwrap().diagnosis, Some(Diagnosis::NotAudited));
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub enum Diagnosis {
     /// v, V or omega not claimed in this row: nothing audited.

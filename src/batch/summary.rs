@@ -137,6 +137,16 @@ impl Summary {
     }
 
     /// Rows whose audit found something (each counted once).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic, Summary};
+    /// let b = Batch::new("m,M,v,V,omega", Arithmetic::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "1,1,1,0,0").unwrap()); // no contact
+    /// s.add(&b.row(2, "1,1,3/5,2/5,6/5").unwrap());
+    /// assert_eq!(s.rows_with_findings(), 1);
+    /// ```
     pub fn rows_with_findings(&self) -> usize {
         self.findings_rows
     }
