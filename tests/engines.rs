@@ -79,7 +79,8 @@ fn summary_counts(stderr: &str) -> Vec<(String, usize)> {
         .skip_while(|l| !l.starts_with("diagnosis of"))
         .skip(1)
         .map(|l| {
-            let (name, n) = l.trim().split_once(": ").unwrap();
+            let (name, rest) = l.trim().split_once(": ").unwrap();
+            let n = rest.split(' ').next().unwrap();
             (name.to_string(), n.parse().unwrap())
         })
         .collect()

@@ -53,6 +53,8 @@ pub struct Batch {
     columns: Vec<Column>,
     /// The claimed outputs, in [`CLAIMS`] order.
     pub(super) claims: Vec<usize>,
+    /// The input column named `id`, if any: it names the rows of the summary.
+    pub(super) id_column: Option<usize>,
     header: String,
 }
 
@@ -104,11 +106,16 @@ impl Batch {
         let claims = (0..CLAIMS.len())
             .filter(|k| columns.contains(&Column::Claim(*k)))
             .collect();
+        let id_column = header
+            .split(',')
+            .zip(&columns)
+            .position(|(name, c)| *c == Column::Passed && name.trim() == "id");
         Ok(Batch {
             arithmetic,
             agreement: Agreement::Exact,
             columns,
             claims,
+            id_column,
             header: header.to_string(),
         })
     }

@@ -32,5 +32,5 @@ pub use compare::{Agreement, FLOAT_TOLERANCE, MAX_ULPS, OutputCheck};
 pub use header::{Arithmetic, Batch};
 pub use row::{Diagnosis, SolvedRow};
 pub use stream::{CHUNK, MAX_LINE, MAX_ROWS, run};
-pub use summary::{OutputStats, Summary, WRONG_ROWS_SHOWN};
+pub use summary::{FINDING_EXAMPLES, OutputStats, Summary, WRONG_ROWS_SHOWN};
 pub use ulps::{FloatFormat, ulp_distance};

@@ -32,6 +32,9 @@ pub struct SolvedRow {
     /// The audit of the claimed state (`None` when the batch audits none: v, V, omega not all
     /// claimed, or the f64 arithmetic).
     pub diagnosis: Option<Diagnosis>,
+    /// What the summary calls the row when its audit found something: its `id` cell when the
+    /// batch has an `id` column, else `row N`.
+    pub label: Option<String>,
 }
 
 impl Batch {
@@ -110,12 +113,20 @@ impl Batch {
             _ => None,
         };
         out.push('\n');
+        let found = matches!(&diagnosis, Some(Diagnosis::Findings(f)) if !f.is_empty());
+        let label = found.then(
+            || match self.id_column.and_then(|k| line.split(',').nth(k)) {
+                Some(id) if !id.trim().is_empty() => crate::echo::echo(id.trim()),
+                _ => format!("row {number}"),
+            },
+        );
         Ok(SolvedRow {
             number,
             line: out,
             laws_held,
             checks,
             diagnosis,
+            label,
         })
     }
 }

@@ -33,7 +33,13 @@ pub struct Summary {
     audited_ok: usize,
     not_audited: usize,
     findings_rows: usize,
+    /// Per finding, the first [`FINDING_EXAMPLES`] distinct row labels, and whether more rows
+    /// had it.
+    examples: [(Vec<String>, bool); 8],
 }
+
+/// How many rows (by `id`, or number) the summary names per finding.
+pub const FINDING_EXAMPLES: usize = 5;
 
 /// The claims of one output (v, V or omega) over the batch: counts, the largest relative
 /// error, and a histogram of relative errors rounded to two significant digits for the median.
@@ -67,8 +73,20 @@ impl Summary {
             Some(Diagnosis::Findings(found)) if found.is_empty() => self.audited_ok += 1,
             Some(Diagnosis::Findings(found)) => {
                 self.findings_rows += 1;
+                let label = row
+                    .label
+                    .clone()
+                    .unwrap_or_else(|| format!("row {}", row.number));
                 for f in found {
                     self.findings[*f as usize] += 1;
+                    let (names, more) = &mut self.examples[*f as usize];
+                    if !names.contains(&label) {
+                        if names.len() < FINDING_EXAMPLES {
+                            names.push(label.clone());
+                        } else {
+                            *more = true;
+                        }
+                    }
                 }
             }
         }
@@ -134,6 +152,24 @@ impl Summary {
             .chain([("ok", self.audited_ok), ("not audited", self.not_audited)])
             .filter(|(_, n)| *n > 0)
             .collect()
+    }
+
+    /// The first [`FINDING_EXAMPLES`] distinct rows with `finding` (their `id`, or `row N`),
+    /// and whether other rows had it too.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic, Finding, Summary};
+    /// let b = Batch::new("id,m,M,v,V,omega", Arithmetic::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "missed,1,1,1,0,0").unwrap());
+    /// s.add(&b.row(2, "missed,1,1,1,0,0").unwrap());
+    /// let (names, more) = s.examples(Finding::NoContact);
+    /// assert_eq!((names, more), (&["missed".to_string()][..], false));
+    /// ```
+    pub fn examples(&self, finding: Finding) -> (&[String], bool) {
+        let (names, more) = &self.examples[finding as usize];
+        (names, *more)
     }
 
     /// Rows whose audit found something (each counted once).

@@ -1,6 +1,6 @@
 //! The summary `rodimpact batch` prints on standard error.
 
-use crate::batch::{OutputStats, Summary};
+use crate::batch::{Finding, OutputStats, Summary};
 use crate::number;
 
 /// The summary of a batch: rows, laws (or that they were not checked, with the f64
@@ -30,7 +30,7 @@ use crate::number;
 /// s.add(&engine.row(1, "1,1,1/2,3/11,8/11,12/11").unwrap());
 /// s.add(&engine.row(2, "1,1,1/2,0.63592,0.36408,0.54612").unwrap());
 /// assert!(batch_summary(&s).ends_with("diagnosis of 2 rows:\n  \
-///     energy-loss: 1\n  restitution-ignored: 1\n  ok: 1\n"), "{}", batch_summary(&s));
+///     energy-loss: 1 (row 2)\n  restitution-ignored: 1 (row 2)\n  ok: 1\n"), "{}", batch_summary(&s));
 /// ```
 pub fn batch_summary(summary: &Summary) -> String {
     let mut out = if summary.laws_unchecked > 0 {
@@ -69,7 +69,16 @@ pub fn batch_summary(summary: &Summary) -> String {
     if !diagnoses.is_empty() {
         out.push_str(&format!("diagnosis of {} rows:\n", summary.rows));
         for (name, count) in diagnoses {
-            out.push_str(&format!("  {name}: {count}\n"));
+            let examples = Finding::ALL
+                .iter()
+                .find(|f| f.name() == name)
+                .map(|f| summary.examples(*f))
+                .filter(|(names, _)| !names.is_empty())
+                .map(|(names, more)| {
+                    format!(" ({}{})", names.join(", "), if more { ", ..." } else { "" })
+                })
+                .unwrap_or_default();
+            out.push_str(&format!("  {name}: {count}{examples}\n"));
         }
     }
     out
