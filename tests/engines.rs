@@ -314,6 +314,38 @@ fn mujoco_compliant_contact_is_never_exact() {
     assert!(rows.iter().all(|r| r.get("J_ok").is_empty()));
 }
 
+/// Regression (issue 15): an engine log with a NaN in one row stopped the whole batch with
+/// exit 2 ("row 2, column v: ..."), and its tag columns were refused before that ("unknown
+/// column 'engine'"). A NaN or infinite claim is now a wrong claim in its own row: the rows
+/// after it are still audited, and the batch ends with exit 1.
+#[test]
+fn a_nan_from_the_engine_is_a_wrong_claim_and_the_stream_goes_on() {
+    let path = std::env::temp_dir().join(format!("rodimpact-nan-{}.csv", std::process::id()));
+    std::fs::write(
+        &path,
+        "id,engine,m,M,a,v,V,omega\n\
+         a,x,1,1,1,0.6,0.4,1.2\n\
+         b,x,1,1,1,NaN,NaN,NaN\n\
+         c,x,1,1,1,inf,0.4,1.2\n\
+         d,x,1,1,1,1,0,0\n",
+    )
+    .unwrap();
+    let (code, stdout, stderr) = rodimpact(&["batch", path.to_str().unwrap(), "--rtol", "1e-12"]);
+    assert_eq!(code, 1, "{stderr}");
+    let diagnoses: Vec<&str> = stdout
+        .lines()
+        .skip(1)
+        .map(|l| l.rsplit(',').next().unwrap())
+        .collect();
+    assert_eq!(diagnoses, ["ok", "off", "off", "no-contact"]);
+    assert!(stderr.contains("  off: 2 (b, c)\n"), "{stderr}");
+    assert!(
+        stderr.contains("v: 4 claims, 3 wrong (rows 2, 3, 4)"),
+        "{stderr}"
+    );
+    std::fs::remove_file(&path).unwrap();
+}
+
 /// Column names that are not scene fields or claims pass through in place, and are echoed
 /// escaped in the stderr note (a header is user input).
 #[test]
