@@ -82,9 +82,45 @@ impl Batch {
                 (values, None, None)
             }
         };
+        let checks = self.write_checks(&mut out, &claimed, &values);
+        let diagnosis = match (self.audits(), &exact_state) {
+            (true, Some(exact)) => {
+                let (change, diagnosis) = diagnose(&scene, exact, &claimed, &checks);
+                out.push(',');
+                out.push_str(&change);
+                out.push(',');
+                out.push_str(&diagnosis.text());
+                Some(diagnosis)
+            }
+            _ => None,
+        };
+        out.push('\n');
+        let found = matches!(&diagnosis, Some(Diagnosis::Findings(f)) if !f.is_empty());
+        let label = found.then(|| self.label(number, line));
+        Ok(SolvedRow {
+            number,
+            line: out,
+            laws_held,
+            checks,
+            diagnosis,
+            label,
+        })
+    }
+}
+
+impl Batch {
+    /// Compares each claim of the row with its computed value and writes its cells:
+    /// `<name>_ok,<name>_rel_error` (and `<name>_ulps` under `--ulps`), empty for a claim not
+    /// given in this row.
+    fn write_checks(
+        &self,
+        out: &mut String,
+        claimed: &[Option<Claimed>; 6],
+        values: &[Option<Q>; 6],
+    ) -> Vec<OutputCheck> {
+        let ulps_column = matches!(self.agreement, Agreement::Ulps(..));
         let mut checks = Vec::new();
         for &k in &self.claims {
-            let ulps_column = matches!(self.agreement, Agreement::Ulps(..));
             let (Some(claim), Some(value)) = (&claimed[k], &values[k]) else {
                 out.push_str(if ulps_column { ",,," } else { ",," });
                 continue;
@@ -101,33 +137,15 @@ impl Batch {
             }
             checks.push(check);
         }
-        let diagnosis = match (self.audits(), &exact_state) {
-            (true, Some(exact)) => {
-                let (change, diagnosis) = diagnose(&scene, exact, &claimed, &checks);
-                out.push(',');
-                out.push_str(&change);
-                out.push(',');
-                out.push_str(&diagnosis.text());
-                Some(diagnosis)
-            }
-            _ => None,
-        };
-        out.push('\n');
-        let found = matches!(&diagnosis, Some(Diagnosis::Findings(f)) if !f.is_empty());
-        let label = found.then(
-            || match self.id_column.and_then(|k| line.split(',').nth(k)) {
-                Some(id) if !id.trim().is_empty() => crate::echo::echo(id.trim()),
-                _ => format!("row {number}"),
-            },
-        );
-        Ok(SolvedRow {
-            number,
-            line: out,
-            laws_held,
-            checks,
-            diagnosis,
-            label,
-        })
+        checks
+    }
+
+    /// The row's name in the summary: its `id` cell (escaped), or `row N`.
+    fn label(&self, number: usize, line: &str) -> String {
+        match self.id_column.and_then(|k| line.split(',').nth(k)) {
+            Some(id) if !id.trim().is_empty() => crate::echo::echo(id.trim()),
+            _ => format!("row {number}"),
+        }
     }
 }
 
