@@ -72,6 +72,7 @@ pub mod claims;
 pub mod contact;
 pub mod samples;
 pub mod stability;
+pub mod suite;
 pub mod textbook;
 // Layer 5: output.
 pub mod io;

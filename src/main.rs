@@ -37,9 +37,11 @@ enum Command {
     Check(Box<commands::check::CheckArgs>),
     /// Float error against run time for every backend and formula on the stiff/extreme suite.
     Stability(commands::stability::StabilityArgs),
-    /// Many scenes from a CSV file, exactly, streamed and in parallel; claimed v, V, omega
-    /// columns are checked.
+    /// Many scenes from a CSV file, exactly, streamed and in parallel; claimed v, V, omega,
+    /// J and energies are checked, and a claimed state (an engine's output) is diagnosed.
     Batch(commands::batch::BatchArgs),
+    /// A designed suite of scenes as a batch CSV (`--suite engines`: the engine test suite).
+    Scenes(commands::scenes::ScenesArgs),
     /// The compliant-contact model integrated in time against the exact impulsive result.
     Simulate(Box<commands::simulate::SimulateArgs>),
 }
@@ -82,6 +84,7 @@ fn main() -> ExitCode {
         Command::Check(args) => commands::check::run_check(args),
         Command::Stability(args) => commands::stability::run_stability(args),
         Command::Batch(args) => commands::batch::run_batch(args),
+        Command::Scenes(args) => commands::scenes::run_scenes(args),
         Command::Simulate(args) => commands::simulate::run_simulate(args),
     };
     match result {

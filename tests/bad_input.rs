@@ -609,7 +609,11 @@ fn batch_files() {
         ("missing column", "m,a\n1,1\n".into(), "M"),
         ("empty required cell", "m,M\n,1\n".into(), "row 1, column m"),
         ("duplicated column", "m,M,m\n1,1,1\n".into(), "m"),
-        ("unknown column", "m,M,mass\n1,1,1\n".into(), "mass"),
+        (
+            "unknown column, cells short",
+            "m,M,mass\n1,1\n".into(),
+            "row 1",
+        ),
         ("too few cells", "m,M,a\n1,1\n".into(), "row 1"),
         ("too many cells", "m,M\n1,1,1\n".into(), "row 1"),
         ("wrong type", "m,M\n1,abc\n".into(), "row 1, column M"),
@@ -695,6 +699,102 @@ fn batch_files() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// The flags and columns of the engine audit (issue 15): `--rtol`, `--ulps`, `--float`, the
+/// `J` and energy claims, and `scenes --suite`. A claimed NaN or infinity is not among them: it
+/// is a wrong claim in its row (tests/engines.rs, src/batch/compare.rs).
+#[test]
+fn engine_audit_flags() {
+    let dir = scratch("audit");
+    let good = write(&dir, "good.csv", b"m,M,v,V,omega\n1,1,0.6,0.4,1.2\n");
+    let g = good.to_str().unwrap();
+    let mut cases: Vec<(String, Vec<OsString>, String)> = [
+        ("rtol word", vec!["batch", g, "--rtol", "abc"], "rtol"),
+        ("rtol negative", vec!["batch", g, "--rtol=-1"], "rtol"),
+        ("rtol above 1", vec!["batch", g, "--rtol", "2"], "rtol"),
+        ("rtol 1/0", vec!["batch", g, "--rtol", "1/0"], "rtol"),
+        ("rtol NaN", vec!["batch", g, "--rtol", "NaN"], "rtol"),
+        ("ulps negative", vec!["batch", g, "--ulps=-1"], "ulps"),
+        ("ulps fraction", vec!["batch", g, "--ulps", "1/2"], "ulps"),
+        (
+            "ulps above 2^53",
+            vec!["batch", g, "--ulps", "9007199254740993"],
+            "ulps",
+        ),
+        (
+            "ulps 10^20",
+            vec!["batch", g, "--ulps", "100000000000000000000"],
+            "ulps",
+        ),
+        (
+            "ulps with f64 backend",
+            vec!["batch", g, "--ulps", "4", "--backend", "f64"],
+            "ulps: needs the exact backend",
+        ),
+        (
+            "float without ulps",
+            vec!["batch", g, "--float", "f32"],
+            "--ulps",
+        ),
+        (
+            "float f16",
+            vec!["batch", g, "--ulps", "1", "--float", "f16"],
+            "f16",
+        ),
+        (
+            "rtol and ulps",
+            vec!["batch", g, "--rtol", "1e-6", "--ulps", "4"],
+            "--ulps",
+        ),
+        (
+            "ulps no file",
+            vec!["batch", "/nonexistent.csv", "--ulps", "x"],
+            "ulps",
+        ),
+        ("scenes no suite", vec!["scenes"], "--suite"),
+        (
+            "scenes unknown suite",
+            vec!["scenes", "--suite", "games"],
+            "games",
+        ),
+        (
+            "scenes into missing dir",
+            vec![
+                "scenes",
+                "--suite",
+                "engines",
+                "--out",
+                "/nonexistent-dir/s.csv",
+            ],
+            "out",
+        ),
+    ]
+    .into_iter()
+    .map(|(n, a, f)| (n.to_string(), os(&a), f.to_string()))
+    .collect();
+    for (i, (name, text, field)) in [
+        ("J word", "m,M,J\n1,1,abc\n", "row 1, column J"),
+        ("J 1/0", "m,M,J\n1,1,1/0\n", "row 1, column J"),
+        (
+            "energy wrong unit",
+            "m,M,energy_after\n1,1,1 m/s\n",
+            "row 1, column energy_after",
+        ),
+        (
+            "claim twice",
+            "m,M,J,J\n1,1,1,1\n",
+            "header: column 'J' given twice",
+        ),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let path = write(&dir, &format!("case{i}.csv"), text.as_bytes());
+        cases.push((name.into(), vec!["batch".into(), path], field.into()));
+    }
+    matrix(cases);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// Regression (F7 of the hostile-input review): numbers were echoed escaped, but file paths,
 /// `--jobs`, `--digits`, `--rod`, `--only`, `--format`, `prove` ids, `--claim` names, CSV header
 /// names and TOML ids were copied raw into the message. A value with a newline gave a two-line
@@ -773,13 +873,15 @@ fn control_characters_in_input_never_reach_the_terminal() {
     .into_iter()
     .map(|(n, a, f)| (n.to_string(), os(&a), f.to_string()))
     .collect();
+    // Unknown columns pass through (tests/engines.rs checks that their names are escaped on
+    // stderr); a bad row after such a header names the row.
     let header = write(&dir, "header.csv", b"m,M,\x1b[2J\r\0x\n1,1\n");
     cases.push((
         "CSV header".into(),
         vec!["batch".into(), header],
-        "header: unknown column".into(),
+        "row 1: expected 3 cells".into(),
     ));
-    let twice = write(&dir, "twice.csv", b"m,M,\x1b,\x1b\n1,1,1,1\n");
+    let twice = write(&dir, "twice.csv", b"m,M,\x1b,m\n1,1,1,1\n");
     cases.push((
         "CSV header twice".into(),
         vec!["batch".into(), twice],

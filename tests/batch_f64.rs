@@ -5,7 +5,8 @@
 //! `1 rows, laws held exactly on 1`, even for rows whose f64 results were NaN. Its appended
 //! columns were named `v_exact, V_exact, omega_exact` beside claims although they hold f64
 //! values, and a zero was written `-0.0`. The summary now says the laws were not checked, the
-//! columns are `v_f64, V_f64, omega_f64`, and a zero is `0.0`.
+//! columns are `v_f64, V_f64, omega_f64`, and a zero is `0.0`. Since the engine audit (issue
+//! 15) the f64 output has no `laws_held` column at all: a column of `-` said nothing.
 
 use std::process::Command;
 
@@ -28,13 +29,13 @@ fn the_f64_backend_says_what_it_checked() {
     assert_eq!(out.status.code(), Some(0), "{stderr}");
     assert_eq!(
         stdout,
-        "m,M,a,pivot,V,v_f64,V_f64,omega_f64,laws_held,V_ok,V_rel_error\n\
-         1,3,1,0,0,0.0,0.0,1.0,-,true,0\n\
-         1,1,1,,0.4,0.6,0.4,1.2,-,true,5.55e-17\n"
+        "m,M,a,pivot,V,v_f64,V_f64,omega_f64,V_ok,V_rel_error\n\
+         1,3,1,0,0,0.0,0.0,1.0,true,0\n\
+         1,1,1,,0.4,0.6,0.4,1.2,true,5.55e-17\n"
     );
     assert!(!stdout.contains("-0.0"), "{stdout}");
     assert!(
-        stderr.starts_with("2 rows (f64: conservation laws not checked)\n"),
+        stderr.starts_with("2 rows (f64: conservation laws and diagnoses not checked)\n"),
         "{stderr}"
     );
     assert!(!stderr.contains("held"), "{stderr}");

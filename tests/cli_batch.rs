@@ -54,9 +54,10 @@ fn every_claim_of_the_1e6_batch_is_confirmed_in_order() {
         let cells: Vec<&str> = o.split(',').collect();
         assert!(o.starts_with(&format!("{i},")), "row order");
         assert_eq!(&cells[8..11], &claims[..], "{o}");
+        // Every claim exact: the claimed state is the exact one, so its audit is `ok`.
         assert_eq!(
             &cells[11..],
-            ["true", "true", "0", "true", "0", "true", "0"]
+            ["true", "true", "0", "true", "0", "true", "0", "0", "ok"]
         );
     }
     std::fs::remove_dir_all(&dir).unwrap();
@@ -136,13 +137,13 @@ fn a_bad_cell_names_row_and_column_and_writes_nothing() {
 fn usage_errors_exit_2() {
     let dir = scratch("usage");
     let file = dir.join("in.csv");
-    std::fs::write(&file, "m,M,mass\n1,1,1\n").unwrap();
+    std::fs::write(&file, "m,M,M\n1,1,1\n").unwrap();
     let f = file.to_str().unwrap();
     let empty = dir.join("empty.csv");
     std::fs::write(&empty, "").unwrap();
     let e = empty.to_str().unwrap();
     for (args, want) in [
-        (vec!["batch", f], "error: header: unknown column 'mass'"),
+        (vec!["batch", f], "error: header: column 'M' given twice"),
         (vec!["batch", e], "error: FILE: "),
         (
             vec!["batch", "/nonexistent/x.csv"],

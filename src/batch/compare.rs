@@ -1,15 +1,124 @@
-//! A claimed v, V or omega against the computed value: exactly (on machine words when the
-//! claim fits them), or within [`FLOAT_TOLERANCE`] for the f64 arithmetic.
+//! A claimed value against the computed one, under the batch's agreement rule: exactly (on
+//! machine words when the claim fits them), within a relative tolerance, or within a number of
+//! ulps of the correctly rounded float of the exact value. A claimed NaN or infinity is a wrong
+//! claim, never an error.
 
-use super::header::{Arithmetic, OUTPUTS};
-use crate::error::Error;
+use super::header::{Arithmetic, CLAIMS};
+use super::ulps::{FloatFormat, ulp_distance};
+use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::number::WordRatio;
 use crate::units::{Dimension, parse_si};
 use num_traits::{Signed, Zero};
 
-/// The relative error up to which a claim agrees with a value computed in f64.
+/// The relative error up to which a claim agrees with a value computed in f64 (the default
+/// rule of `--backend f64`).
 pub const FLOAT_TOLERANCE: f64 = 1e-9;
+
+/// The largest `--ulps` accepted: 2^53 (every f64 of one binade is within it).
+pub const MAX_ULPS: u64 = 1 << 53;
+
+/// When a claim agrees with the computed value.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Agreement, FloatFormat};
+/// use rodimpact::field::q;
+/// assert_eq!(Agreement::parse_rtol("1e-6").unwrap(), Agreement::Relative(q(1, 1_000_000)));
+/// assert_eq!(Agreement::parse_ulps("4", FloatFormat::F32).unwrap(), Agreement::Ulps(4, FloatFormat::F32));
+/// assert_eq!(Agreement::parse_rtol("-1").unwrap_err().to_string(),
+///            "rtol: must be a number from 0 to 1, got -1");
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub enum Agreement {
+    /// Equal exactly (the default of the exact backend).
+    Exact,
+    /// |claim - value| <= R |value| (a zero value agrees only with a zero claim).
+    Relative(Q),
+    /// At most N floats of the format between the claim and the correctly rounded exact value
+    /// (both rounded to the format).
+    Ulps(u64, FloatFormat),
+}
+
+impl Agreement {
+    /// `--rtol R`: an exact number from 0 to 1.
+    ///
+    /// # Errors
+    /// `rtol: ...` when R is not a number or not in [0, 1].
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{batch::Agreement, field::q};
+    /// assert_eq!(Agreement::parse_rtol("1/1000").unwrap(), Agreement::Relative(q(1, 1000)));
+    /// assert!(Agreement::parse_rtol("2").is_err());
+    /// ```
+    pub fn parse_rtol(text: &str) -> Result<Agreement, Error> {
+        let bad = || {
+            Error::out_of_range(
+                "rtol",
+                format!(
+                    "must be a number from 0 to 1, got {}",
+                    crate::echo::echo(text)
+                ),
+            )
+        };
+        let r = crate::number::parse(text).map_err(|kind| match kind {
+            ErrorKind::Invalid(_) => bad(),
+            other => Error::new("rtol", other),
+        })?;
+        if r.is_negative() || r > Q::from_integer(1.into()) {
+            return Err(bad());
+        }
+        Ok(Agreement::Relative(r))
+    }
+
+    /// The rule in words, for the summary.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Agreement, FloatFormat};
+    /// use rodimpact::field::q;
+    /// assert_eq!(Agreement::Ulps(16, FloatFormat::F32).describe(), "within 16 f32 ulps of the exact value");
+    /// assert_eq!(Agreement::Relative(q(1, 1_000_000)).describe(), "within a relative 0.000001");
+    /// assert_eq!(Agreement::Exact.describe(), "exactly");
+    /// ```
+    pub fn describe(&self) -> String {
+        match self {
+            Agreement::Exact => "exactly".to_string(),
+            Agreement::Relative(r) => {
+                format!("within a relative {}", crate::field::Field::nearest_f64(r))
+            }
+            Agreement::Ulps(n, format) => {
+                format!("within {n} {} ulps of the exact value", format.name())
+            }
+        }
+    }
+
+    /// `--ulps N`: a whole number from 0 to [`MAX_ULPS`].
+    ///
+    /// # Errors
+    /// `ulps: ...` when N is not such a number.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Agreement, FloatFormat};
+    /// assert_eq!(Agreement::parse_ulps("0", FloatFormat::F64).unwrap(), Agreement::Ulps(0, FloatFormat::F64));
+    /// assert_eq!(Agreement::parse_ulps("-1", FloatFormat::F64).unwrap_err().to_string(),
+    ///            "ulps: must be a whole number from 0 to 9007199254740992, got '-1'");
+    /// ```
+    pub fn parse_ulps(text: &str, format: FloatFormat) -> Result<Agreement, Error> {
+        match text.trim().parse::<u64>() {
+            Ok(n) if n <= MAX_ULPS => Ok(Agreement::Ulps(n, format)),
+            _ => Err(Error::out_of_range(
+                "ulps",
+                format!(
+                    "must be a whole number from 0 to {MAX_ULPS}, got '{}'",
+                    crate::echo::echo(text)
+                ),
+            )),
+        }
+    }
+}
 
 /// A claimed value compared with the computed one.
 ///
@@ -23,40 +132,74 @@ pub const FLOAT_TOLERANCE: f64 = 1e-9;
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct OutputCheck {
-    /// Which output: 0 v, 1 V, 2 omega.
+    /// Which claim: 0 v, 1 V, 2 omega, 3 J, 4 energy_before, 5 energy_after.
     pub output: usize,
-    /// The claim agrees (exactly, or within [`FLOAT_TOLERANCE`] in f64).
+    /// The claim agrees under the batch's [`Agreement`].
     pub ok: bool,
-    /// |claim - value| / |value|, exact; `None` when the value is 0 and the claim is not.
+    /// |claim - value| / |value|, exact; `None` when it is infinite (a zero value and a nonzero
+    /// claim) or the claim is not a number.
     pub rel_error: Option<Q>,
+    /// The ulp distance, under [`Agreement::Ulps`] and for a finite claim.
+    pub ulps: Option<u64>,
+    /// The claim was NaN or infinite.
+    pub not_finite: bool,
 }
 
-/// A claimed value as read: on machine words (compared without reducing), or exact.
+impl OutputCheck {
+    /// The text of the `<name>_rel_error` cell: three significant digits, `inf`, or `nan` for a
+    /// claim that was not a finite number.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic};
+    /// let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
+    /// assert_eq!(b.row(1, "1,1,0.61").unwrap().checks[0].rel_error_text(), "0.0167");
+    /// assert_eq!(b.row(2, "1,1,NaN").unwrap().checks[0].rel_error_text(), "nan");
+    /// ```
+    pub fn rel_error_text(&self) -> String {
+        match (&self.rel_error, self.not_finite) {
+            (_, true) => "nan".to_string(),
+            (Some(r), false) => crate::field::decimal::decimal(r, 3),
+            (None, false) => "inf".to_string(),
+        }
+    }
+}
+
+/// A claimed value as read: on machine words (compared without reducing), exact, or not a
+/// finite number (NaN, inf, -inf, infinity: a wrong claim).
 #[derive(Debug, Clone)]
 pub(super) enum Claimed {
     Word(WordRatio),
     Exact(Q),
+    NotFinite,
 }
 
 impl Claimed {
-    pub(super) fn parse(output: usize, cell: &str) -> Result<Claimed, Error> {
+    pub(super) fn parse(claim: usize, cell: &str) -> Result<Claimed, Error> {
+        let unsigned = cell.trim_start_matches(['+', '-']).to_ascii_lowercase();
+        if ["nan", "inf", "infinity"].contains(&unsigned.as_str()) {
+            return Ok(Claimed::NotFinite);
+        }
         match WordRatio::parse(cell) {
             Some(word) => Ok(Claimed::Word(word)),
             None => {
-                let dimension = if output == 2 {
-                    Dimension::AngularSpeed
-                } else {
-                    Dimension::Speed
+                let dimension = match claim {
+                    0 | 1 => Dimension::Speed,
+                    2 => Dimension::AngularSpeed,
+                    3 => Dimension::Impulse,
+                    _ => Dimension::Energy,
                 };
-                parse_si(OUTPUTS[output], cell, dimension).map(Claimed::Exact)
+                parse_si(CLAIMS[claim], cell, dimension).map(Claimed::Exact)
             }
         }
     }
 
-    pub(super) fn value(&self) -> Q {
+    /// The exact value; `None` for a claim that is not a finite number.
+    pub(super) fn value(&self) -> Option<Q> {
         match self {
-            Claimed::Word(word) => word.value(),
-            Claimed::Exact(q) => q.clone(),
+            Claimed::Word(word) => Some(word.value()),
+            Claimed::Exact(q) => Some(q.clone()),
+            Claimed::NotFinite => None,
         }
     }
 }
@@ -65,41 +208,53 @@ pub(super) fn compare(
     output: usize,
     claim: &Claimed,
     value: &Q,
+    agreement: &Agreement,
     arithmetic: Arithmetic,
 ) -> OutputCheck {
-    let equal = match claim {
-        Claimed::Word(word) => word.equals(value),
-        Claimed::Exact(q) => Some(q == value),
-    };
-    if equal == Some(true) {
+    let Some(claimed) = claim.value() else {
         return OutputCheck {
             output,
-            ok: true,
-            rel_error: Some(Q::zero()),
+            ok: false,
+            rel_error: None,
+            ulps: None,
+            not_finite: true,
         };
-    }
-    let claim = &claim.value();
-    let rel_error = if value.is_zero() {
-        claim.is_zero().then(Q::zero)
+    };
+    let ulps = match agreement {
+        Agreement::Ulps(_, format) => Some(ulp_distance(&claimed, value, *format)),
+        _ => None,
+    };
+    let equal = match claim {
+        Claimed::Word(word) => word.equals(value),
+        _ => Some(&claimed == value),
+    };
+    let rel_error = if equal == Some(true) {
+        Some(Q::zero())
+    } else if value.is_zero() {
+        claimed.is_zero().then(Q::zero)
     } else {
         // |c - v| / |v| = |cn vd - vn cd| / (|vn| cd), reduced once (one GCD instead of the
         // three of a subtraction and a division of rationals).
-        let difference = claim.numer() * value.denom() - value.numer() * claim.denom();
+        let difference = claimed.numer() * value.denom() - value.numer() * claimed.denom();
         Some(Q::new(
             difference.abs(),
-            value.numer().abs() * claim.denom(),
+            value.numer().abs() * claimed.denom(),
         ))
     };
-    let ok = match arithmetic {
-        Arithmetic::Exact => claim == value,
-        Arithmetic::F64 => rel_error
+    let ok = match (agreement, arithmetic) {
+        (Agreement::Exact, Arithmetic::Exact) => rel_error.as_ref().is_some_and(Q::is_zero),
+        (Agreement::Exact, Arithmetic::F64) => rel_error
             .as_ref()
             .is_some_and(|r| crate::field::Field::nearest_f64(r) <= FLOAT_TOLERANCE),
+        (Agreement::Relative(tolerance), _) => rel_error.as_ref().is_some_and(|r| r <= tolerance),
+        (Agreement::Ulps(n, _), _) => ulps.is_some_and(|u| u <= *n),
     };
     OutputCheck {
         output,
         ok,
         rel_error,
+        ulps,
+        not_finite: false,
     }
 }
 
@@ -129,8 +284,48 @@ mod tests {
     fn the_f64_backend_agrees_within_its_tolerance() {
         let b = Batch::new("m,M,V", Arithmetic::F64).unwrap();
         let row = b.row(1, "1,1,2/5").unwrap();
-        assert!(row.line.starts_with("1,1,2/5,0.6,0.4,1.2"), "{}", row.line);
-        assert!(row.line.contains(",-,true,"), "{}", row.line);
+        assert_eq!(row.line, "1,1,2/5,0.6,0.4,1.2,true,5.55e-17\n");
         assert!(!b.row(2, "1,1,0.41").unwrap().checks[0].ok);
+    }
+
+    /// Rapier f32 on the paper's scene: v = 0.59999996 is one f32 below 0.6f32 (the correctly
+    /// rounded 3/5), omega = 1.1999999 one below 1.2f32: wrong exactly, right within 1 ulp and
+    /// within a relative 1e-7.
+    #[test]
+    fn ulps_and_relative_tolerances_decide_f32_claims() {
+        let header = "m,M,v,V,omega";
+        let line = "1,1,0.59999996,0.40000004,1.1999999";
+        let exact = Batch::new(header, Arithmetic::Exact).unwrap();
+        assert!(exact.row(1, line).unwrap().checks.iter().all(|c| !c.ok));
+        let ulps = exact
+            .clone()
+            .with_agreement(Agreement::Ulps(1, FloatFormat::F32))
+            .unwrap();
+        let row = ulps.row(1, line).unwrap();
+        let distances: Vec<Option<u64>> = row.checks.iter().map(|c| c.ulps).collect();
+        assert_eq!(distances, [Some(1), Some(1), Some(1)]);
+        assert!(row.checks.iter().all(|c| c.ok));
+        let tight = exact
+            .clone()
+            .with_agreement(Agreement::Ulps(0, FloatFormat::F32))
+            .unwrap();
+        assert!(tight.row(1, line).unwrap().checks.iter().all(|c| !c.ok));
+        let relative = exact
+            .with_agreement(Agreement::Relative(Q::new(1.into(), 10_000_000.into())))
+            .unwrap();
+        assert!(relative.row(1, line).unwrap().checks.iter().all(|c| c.ok));
+    }
+
+    #[test]
+    fn a_claimed_nan_or_infinity_is_a_wrong_claim_in_its_row() {
+        let b = Batch::new("m,M,v,V,omega", Arithmetic::Exact).unwrap();
+        let row = b.row(1, "1,1,NaN,-inf,Infinity").unwrap();
+        assert!(row.checks.iter().all(|c| !c.ok && c.not_finite));
+        assert!(
+            row.line
+                .ends_with(",false,nan,false,nan,false,nan,nan,off\n"),
+            "{}",
+            row.line
+        );
     }
 }

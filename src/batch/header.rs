@@ -1,7 +1,7 @@
 //! The header of a batch file (which column feeds which scene field or claim, and the columns
 //! appended to the output) and the cells of a data row, read into a scene and claimed values.
 
-use super::compare::Claimed;
+use super::compare::{Agreement, Claimed};
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::scene::{Scene, SceneInput};
@@ -44,77 +44,158 @@ impl Arithmetic {
 }
 
 const SCENE_COLUMNS: [&str; 8] = ["m", "M", "l", "a", "v0", "rod", "e", "pivot"];
-pub(super) const OUTPUTS: [&str; 3] = ["v", "V", "omega"];
+/// The claim columns, in the order of their checks: the state after the impact, the impulse on
+/// the rod, the energies.
+pub(super) const CLAIMS: [&str; 6] = ["v", "V", "omega", "J", "energy_before", "energy_after"];
+/// The claims that make up the state after the impact (audited when all three are claimed).
+pub(super) const STATE: usize = 3;
 
-/// A parsed header: which input column feeds which scene field or claim.
+/// What one input column feeds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Column {
+    /// A scene field: index into `SCENE_COLUMNS`.
+    Scene(usize),
+    /// A claim: index into [`CLAIMS`].
+    Claim(usize),
+    /// Any other column (an engine log's `id`, `engine`, `dt`, ...): passed through in place.
+    Passed,
+}
+
+/// A parsed header: which input column feeds which scene field or claim, and the agreement
+/// rule of the claims.
 #[derive(Debug, Clone)]
 pub struct Batch {
     pub(super) arithmetic: Arithmetic,
-    /// Per input column: index into `SCENE_COLUMNS`, or 8 + index into `OUTPUTS` for a claim.
-    columns: Vec<usize>,
+    pub(super) agreement: Agreement,
+    columns: Vec<Column>,
+    /// The claimed outputs, in [`CLAIMS`] order.
     pub(super) claims: Vec<usize>,
+    /// The input column named `id`, if any: it names the rows of the summary.
+    pub(super) id_column: Option<usize>,
     header: String,
 }
 
 impl Batch {
-    /// Parses the header line.
+    /// Parses the header line. Columns other than the scene's and the claims' are passed
+    /// through unchanged (see [`Batch::passed_through`]).
     ///
     /// # Errors
-    /// `header: ...` for an unknown or repeated column, or when m or M is missing.
+    /// `header: ...` for a repeated scene or claim column, or when m or M is missing.
     ///
     /// # Examples
     /// ```
     /// use rodimpact::batch::{Batch, Arithmetic};
     /// let b = Batch::new("m,M,a,v", Arithmetic::Exact).unwrap();
     /// assert_eq!(b.output_header(), "m,M,a,v,v_exact,V,omega,laws_held,v_ok,v_rel_error\n");
-    /// assert_eq!(Batch::new("m,M,x", Arithmetic::Exact).unwrap_err().to_string(),
-    ///            "header: unknown column 'x' (expected m, M, l, a, v0, rod, e, pivot, v, V, omega)");
+    /// let tagged = Batch::new("id,m,M,dt", Arithmetic::Exact).unwrap();
+    /// assert_eq!(tagged.passed_through(), ["id", "dt"]);
+    /// assert_eq!(Batch::new("m,M,m", Arithmetic::Exact).unwrap_err().to_string(),
+    ///            "header: column 'm' given twice");
     /// ```
     pub fn new(header: &str, arithmetic: Arithmetic) -> Result<Batch, Error> {
         let header = header.trim_start_matches('\u{feff}').trim_end();
         let bad = |why: String| Error::new("header", ErrorKind::Invalid(why));
         let mut columns = Vec::new();
         for name in header.split(',').map(str::trim) {
-            let index = SCENE_COLUMNS
-                .iter()
-                .chain(&OUTPUTS)
-                .position(|c| *c == name)
-                .ok_or_else(|| {
-                    bad(format!(
-                        "unknown column '{}' (expected {}, {})",
-                        crate::echo::echo(name),
-                        SCENE_COLUMNS.join(", "),
-                        OUTPUTS.join(", ")
-                    ))
-                })?;
-            if columns.contains(&index) {
+            let column = match SCENE_COLUMNS.iter().position(|c| *c == name) {
+                Some(k) => Column::Scene(k),
+                None => CLAIMS
+                    .iter()
+                    .position(|c| *c == name)
+                    .map_or(Column::Passed, Column::Claim),
+            };
+            if column != Column::Passed && columns.contains(&column) {
                 return Err(bad(format!(
                     "column '{}' given twice",
                     crate::echo::echo(name)
                 )));
             }
-            columns.push(index);
+            columns.push(column);
         }
         for required in [0, 1] {
-            if !columns.contains(&required) {
+            if !columns.contains(&Column::Scene(required)) {
                 return Err(bad(format!(
                     "column '{}' is required",
                     SCENE_COLUMNS[required]
                 )));
             }
         }
-        let claims = (0..3).filter(|k| columns.contains(&(8 + k))).collect();
+        let claims = (0..CLAIMS.len())
+            .filter(|k| columns.contains(&Column::Claim(*k)))
+            .collect();
+        let id_column = header
+            .split(',')
+            .zip(&columns)
+            .position(|(name, c)| *c == Column::Passed && name.trim() == "id");
         Ok(Batch {
             arithmetic,
+            agreement: Agreement::Exact,
             columns,
             claims,
+            id_column,
             header: header.to_string(),
         })
     }
 
+    /// Sets when a claim agrees (`--rtol`, `--ulps`); the default is exact equality (within
+    /// [`FLOAT_TOLERANCE`](super::FLOAT_TOLERANCE) with the f64 arithmetic).
+    ///
+    /// # Errors
+    /// `ulps: ...` with the f64 arithmetic: the ulp distance is measured to the correctly
+    /// rounded exact value, which f64 does not compute.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Agreement, Arithmetic, Batch, FloatFormat};
+    /// let ulps = Agreement::Ulps(4, FloatFormat::F32);
+    /// let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap().with_agreement(ulps.clone()).unwrap();
+    /// assert!(b.output_header().ends_with(",v_ok,v_rel_error,v_ulps\n"));
+    /// let f = Batch::new("m,M,v", Arithmetic::F64).unwrap();
+    /// assert!(f.with_agreement(ulps).is_err());
+    /// ```
+    pub fn with_agreement(mut self, agreement: Agreement) -> Result<Batch, Error> {
+        if self.arithmetic == Arithmetic::F64 && matches!(agreement, Agreement::Ulps(..)) {
+            return Err(Error::new(
+                "ulps",
+                ErrorKind::Invalid(
+                    "needs the exact backend (the distance is to the correctly rounded exact \
+                     value); use --rtol with --backend f64"
+                        .to_string(),
+                ),
+            ));
+        }
+        self.agreement = agreement;
+        Ok(self)
+    }
+
+    /// The input columns that are neither scene fields nor claims, passed through in place.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic};
+    /// let b = Batch::new("id,engine,m,M,dt,omega", Arithmetic::Exact).unwrap();
+    /// assert_eq!(b.passed_through(), ["id", "engine", "dt"]);
+    /// ```
+    pub fn passed_through(&self) -> Vec<&str> {
+        self.header
+            .split(',')
+            .zip(&self.columns)
+            .filter(|(_, c)| **c == Column::Passed)
+            .map(|(name, _)| name.trim())
+            .collect()
+    }
+
+    /// The claimed state (v, V and omega all claimed) is audited: exact arithmetic only.
+    pub(super) fn audits(&self) -> bool {
+        self.arithmetic == Arithmetic::Exact && (0..STATE).all(|k| self.claims.contains(&k))
+    }
+
     /// The header of the output file (with its newline). The computed columns are named for
     /// what they hold: `v, V, omega` exactly (`v_exact`, ... beside a claim of that name), or
-    /// `v_f64, V_f64, omega_f64` with the f64 arithmetic.
+    /// `v_f64, V_f64, omega_f64` with the f64 arithmetic; a claimed `J`, `energy_before` or
+    /// `energy_after` gets its computed column too. Then `laws_held` (exact only: f64 checks
+    /// no law), per claim `<name>_ok,<name>_rel_error` (and `<name>_ulps` under `--ulps`),
+    /// and, when v, V and omega are all claimed, `energy_change,diagnosis` (exact only).
     ///
     /// # Examples
     /// ```
@@ -122,11 +203,18 @@ impl Batch {
     /// let b = Batch::new("m,M,omega", Arithmetic::Exact).unwrap();
     /// assert_eq!(b.output_header(), "m,M,omega,v,V,omega_exact,laws_held,omega_ok,omega_rel_error\n");
     /// let f = Batch::new("m,M", Arithmetic::F64).unwrap();
-    /// assert_eq!(f.output_header(), "m,M,v_f64,V_f64,omega_f64,laws_held\n");
+    /// assert_eq!(f.output_header(), "m,M,v_f64,V_f64,omega_f64\n");
+    /// let engine = Batch::new("id,m,M,v,V,omega,J", Arithmetic::Exact).unwrap();
+    /// assert_eq!(engine.output_header(), "id,m,M,v,V,omega,J,v_exact,V_exact,omega_exact,J_exact,\
+    ///     laws_held,v_ok,v_rel_error,V_ok,V_rel_error,omega_ok,omega_rel_error,J_ok,J_rel_error,\
+    ///     energy_change,diagnosis\n");
     /// ```
     pub fn output_header(&self) -> String {
         let mut out = self.header.clone();
-        for (k, name) in OUTPUTS.iter().enumerate() {
+        for (k, name) in CLAIMS.iter().enumerate() {
+            if k >= STATE && !self.claims.contains(&k) {
+                continue;
+            }
             let suffix = match self.arithmetic {
                 Arithmetic::F64 => "_f64",
                 Arithmetic::Exact if self.claims.contains(&k) => "_exact",
@@ -134,15 +222,24 @@ impl Batch {
             };
             out.push_str(&format!(",{name}{suffix}"));
         }
-        out.push_str(",laws_held");
+        if self.arithmetic == Arithmetic::Exact {
+            out.push_str(",laws_held");
+        }
         for &k in &self.claims {
-            out.push_str(&format!(",{0}_ok,{0}_rel_error", OUTPUTS[k]));
+            out.push_str(&format!(",{0}_ok,{0}_rel_error", CLAIMS[k]));
+            if matches!(self.agreement, Agreement::Ulps(..)) {
+                out.push_str(&format!(",{}_ulps", CLAIMS[k]));
+            }
+        }
+        if self.audits() {
+            out.push_str(",energy_change,diagnosis");
         }
         out.push('\n');
         out
     }
 
-    /// The scene and the claimed v, V, omega of data row `number` (1-based), without solving.
+    /// The scene and the claimed v, V, omega of data row `number` (1-based), without solving
+    /// (`None` for a claim not given or not a finite number).
     ///
     /// # Errors
     /// As [`Batch::row`]: `row N, column X: reason`, or `row N: ...` for a wrong number of cells.
@@ -158,15 +255,16 @@ impl Batch {
     /// ```
     pub fn scene(&self, number: usize, line: &str) -> Result<(Scene, [Option<Q>; 3]), Error> {
         let (scene, claimed) = self.cells(number, line)?;
-        Ok((scene, claimed.map(|c| c.as_ref().map(Claimed::value))))
+        let value = |k: usize| claimed[k].as_ref().and_then(Claimed::value);
+        Ok((scene, [value(0), value(1), value(2)]))
     }
 
-    /// [`Batch::scene`] with the claims as read (not reduced).
+    /// [`Batch::scene`] with every claim as read (not reduced).
     pub(super) fn cells(
         &self,
         number: usize,
         line: &str,
-    ) -> Result<(Scene, [Option<Claimed>; 3]), Error> {
+    ) -> Result<(Scene, [Option<Claimed>; 6]), Error> {
         let line = line.trim_end_matches(['\n', '\r']);
         let cells: Vec<&str> = line.split(',').map(str::trim).collect();
         if cells.len() != self.columns.len() {
@@ -181,20 +279,18 @@ impl Batch {
         }
         let at = |e: Error| Error::new(format!("row {number}, column {}", e.field), e.kind);
         let mut input = SceneInput::default();
-        let mut claimed: [Option<Claimed>; 3] = [None, None, None];
+        let mut claimed: [Option<Claimed>; 6] = Default::default();
         for (&column, &cell) in self.columns.iter().zip(&cells) {
-            if cell.is_empty() && column >= 2 {
-                continue;
-            }
-            match SCENE_COLUMNS.get(column) {
-                Some(name) => {
-                    *input.slot(name).expect("scene columns are scene inputs") =
-                        Some(cell.to_string());
+            match column {
+                Column::Scene(k) if k < 2 || !cell.is_empty() => {
+                    *input
+                        .slot(SCENE_COLUMNS[k])
+                        .expect("scene columns are scene inputs") = Some(cell.to_string());
                 }
-                None => {
-                    let k = column - SCENE_COLUMNS.len();
+                Column::Claim(k) if !cell.is_empty() => {
                     claimed[k] = Some(Claimed::parse(k, cell).map_err(at)?);
                 }
+                _ => {}
             }
         }
         Ok((input.build().map_err(at)?, claimed))
@@ -210,6 +306,7 @@ mod tests {
         for (header, want) in [
             ("m,m,M", "header: column 'm' given twice"),
             ("M,l", "header: column 'm' is required"),
+            ("m,M,v,J,v", "header: column 'v' given twice"),
         ] {
             assert_eq!(
                 Batch::new(header, Arithmetic::Exact)

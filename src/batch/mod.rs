@@ -19,14 +19,18 @@
 //! (`compare.rs`: [`OutputCheck`]), the totals (`summary.rs`: [`Summary`], rendered by
 //! [`crate::report::batch_summary`]) and the chunked, parallel stream (`stream.rs`: [`run`]).
 
+mod audit;
 mod compare;
 mod header;
 mod row;
 mod stream;
 mod summary;
+mod ulps;
 
-pub use compare::{FLOAT_TOLERANCE, OutputCheck};
+pub use audit::{Audit, Finding, LAW_TOLERANCE, STATE_TOLERANCE, audit};
+pub use compare::{Agreement, FLOAT_TOLERANCE, MAX_ULPS, OutputCheck};
 pub use header::{Arithmetic, Batch};
-pub use row::SolvedRow;
+pub use row::{Diagnosis, SolvedRow};
 pub use stream::{CHUNK, MAX_LINE, MAX_ROWS, run};
-pub use summary::{OutputStats, Summary, WRONG_ROWS_SHOWN};
+pub use summary::{FINDING_EXAMPLES, OutputStats, Summary, WRONG_ROWS_SHOWN};
+pub use ulps::{FloatFormat, ulp_distance};

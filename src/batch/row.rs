@@ -1,14 +1,15 @@
 //! Solving one data row, on the arithmetic of the batch, and writing its output line: the input
 //! line with v, V, omega, whether the laws held, and each claim's check appended.
 
-use super::compare::{OutputCheck, compare};
-use super::header::{Arithmetic, Batch};
+use super::audit::{Finding, audit};
+use super::compare::{Agreement, Claimed, OutputCheck, compare};
+use super::header::{Arithmetic, Batch, STATE};
 use crate::error::Error;
 use crate::field::Q;
-use crate::mechanics::Motion;
+use crate::mechanics::{Motion, kinetic_energy};
 use crate::scene::Scene;
 use crate::solve::{self, Route, Why};
-use num_traits::Zero;
+use num_traits::{Signed, Zero};
 
 /// One output row: the CSV line (with its newline) and what the summary needs.
 ///
@@ -28,6 +29,12 @@ pub struct SolvedRow {
     pub laws_held: Option<bool>,
     /// The claims of the row.
     pub checks: Vec<OutputCheck>,
+    /// The audit of the claimed state (`None` when the batch audits none: v, V, omega not all
+    /// claimed, or the f64 arithmetic).
+    pub diagnosis: Option<Diagnosis>,
+    /// What the summary calls the row when its audit found something: its `id` cell when the
+    /// batch has an `id` column, else `row N`.
+    pub label: Option<String>,
 }
 
 impl Batch {
@@ -43,65 +50,227 @@ impl Batch {
     /// let row = b.row(1, "1,1,6/5").unwrap();
     /// assert_eq!(row.line, "1,1,6/5,3/5,2/5,6/5,true,true,0\n");
     /// assert_eq!(b.row(2, "1,-1,1").unwrap_err().to_string(), "row 2, column M: must be > 0, got -1");
+    ///
+    /// // An engine's state, audited: Box2D 2.3 at 1 m/s returns the e = 0 answer for e = 1.
+    /// let engine = Batch::new("id,m,M,a,v,V,omega", Arithmetic::Exact).unwrap();
+    /// let row = engine.row(1, "low-speed-3,1,1,1/2,0.63592,0.36408,0.54612").unwrap();
+    /// assert!(row.line.ends_with(",-0.364,energy-loss;restitution-ignored\n"), "{}", row.line);
     /// ```
     pub fn row(&self, number: usize, line: &str) -> Result<SolvedRow, Error> {
         let line = line.trim_end_matches(['\n', '\r']);
         let (scene, claimed) = self.cells(number, line)?;
         let mut out = String::with_capacity(2 * line.len() + 64);
         out.push_str(line);
-        let (exact, laws_held) = match self.arithmetic {
+        let extra = |k: usize| self.claims.contains(&k);
+        let (values, laws_held, exact_state) = match self.arithmetic {
             Arithmetic::Exact => {
                 let solved = solve::with::<Q>(&scene, self.arithmetic.route())
                     .expect("the fraction-free route takes every scene in Q");
-                for value in solved.after.iter() {
+                let laws_hold = solved.laws_hold.unwrap_or(false);
+                let values = exact_values(&scene, &solved.after, extra);
+                for value in values.iter().flatten() {
                     out.push(',');
                     crate::field::decimal::write_exact(&mut out, value);
                 }
-                (solved.after.into_array(), solved.laws_hold)
+                out.push_str(if laws_hold { ",true" } else { ",false" });
+                (values, Some(laws_hold), Some(solved.after))
             }
             Arithmetic::F64 => {
-                let (exact, texts) = float_values(&scene, self.arithmetic.route());
-                for t in &texts {
+                let (values, texts) = float_values(
+                    &scene,
+                    self.arithmetic.route(),
+                    extra,
+                    !self.claims.is_empty(),
+                );
+                for t in texts.iter().flatten() {
                     out.push(',');
                     out.push_str(t);
                 }
-                (exact, None)
+                (values, None, None)
             }
         };
-        out.push_str(match laws_held {
-            Some(true) => ",true",
-            Some(false) => ",false",
-            None => ",-",
-        });
-        let mut checks = Vec::new();
-        for &k in &self.claims {
-            let Some(claim) = &claimed[k] else {
-                out.push_str(",,");
-                continue;
-            };
-            let check = compare(k, claim, &exact[k], self.arithmetic);
-            out.push_str(if check.ok { ",true," } else { ",false," });
-            out.push_str(&match &check.rel_error {
-                Some(r) => crate::field::decimal::decimal(r, 3),
-                None => "inf".to_string(),
-            });
-            checks.push(check);
-        }
+        let checks = self.write_checks(&mut out, &claimed, &values);
+        let diagnosis = match (self.audits(), &exact_state) {
+            (true, Some(exact)) => {
+                let (change, diagnosis) = diagnose(&scene, exact, &claimed, &checks);
+                out.push(',');
+                out.push_str(&change);
+                out.push(',');
+                out.push_str(&diagnosis.text());
+                Some(diagnosis)
+            }
+            _ => None,
+        };
         out.push('\n');
+        let found = matches!(&diagnosis, Some(Diagnosis::Findings(f)) if !f.is_empty());
+        let label = found.then(|| self.label(number, line));
         Ok(SolvedRow {
             number,
             line: out,
             laws_held,
             checks,
+            diagnosis,
+            label,
         })
     }
 }
 
-/// v, V, omega by `route` in f64 (NaN where the system underflowed to a singular one), as exact
-/// dyadic rationals and shortest round-trip text (a zero is written `0.0`, whatever its sign:
-/// `-0.0` only says which way the float rounded).
-fn float_values(scene: &Scene, route: Route) -> ([Q; 3], [String; 3]) {
-    let xs = match solve::with::<f64>(scene, route) {
+impl Batch {
+    /// Compares each claim of the row with its computed value and writes its cells:
+    /// `<name>_ok,<name>_rel_error` (and `<name>_ulps` under `--ulps`), empty for a claim not
+    /// given in this row.
+    fn write_checks(
+        &self,
+        out: &mut String,
+        claimed: &[Option<Claimed>; 6],
+        values: &[Option<Q>; 6],
+    ) -> Vec<OutputCheck> {
+        let ulps_column = matches!(self.agreement, Agreement::Ulps(..));
+        let mut checks = Vec::new();
+        for &k in &self.claims {
+            let (Some(claim), Some(value)) = (&claimed[k], &values[k]) else {
+                out.push_str(if ulps_column { ",,," } else { ",," });
+                continue;
+            };
+            let check = compare(k, claim, value, &self.agreement, self.arithmetic);
+            out.push_str(if check.ok { ",true," } else { ",false," });
+            out.push_str(&check.rel_error_text());
+            if ulps_column {
+                out.push(',');
+                match check.ulps {
+                    Some(u) => out.push_str(&u.to_string()),
+                    None => out.push_str("nan"),
+                }
+            }
+            checks.push(check);
+        }
+        checks
+    }
+
+    /// The row's name in the summary: its `id` cell (escaped), or `row N`.
+    fn label(&self, number: usize, line: &str) -> String {
+        match self.id_column.and_then(|k| line.split(',').nth(k)) {
+            Some(id) if !id.trim().is_empty() => crate::echo::echo(id.trim()),
+            _ => format!("row {number}"),
+        }
+    }
+}
+
+/// The diagnosis of a row: its findings, `ok`, or not audited (a state claim missing).
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Arithmetic, Batch, Diagnosis, Finding};
+/// let b = Batch::new("m,M,v,V,omega", Arithmetic::Exact).unwrap();
+/// assert_eq!(b.row(1, "1,1,1,0,0").unwrap().diagnosis, Some(Diagnosis::Findings(vec![Finding::NoContact])));
+/// assert_eq!(b.row(2, "1,1,0.6,0.4,").unwrap().diagnosis, Some(Diagnosis::NotAudited));
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub enum Diagnosis {
+    /// v, V or omega not claimed in this row: nothing audited.
+    NotAudited,
+    /// The findings (none: `ok`).
+    Findings(Vec<Finding>),
+}
+
+impl Diagnosis {
+    /// The `diagnosis` cell: `-`, `ok`, or the findings joined by `;`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Diagnosis, Finding};
+    /// assert_eq!(Diagnosis::Findings(vec![]).text(), "ok");
+    /// assert_eq!(Diagnosis::Findings(vec![Finding::EnergyGain, Finding::AboveOmegaMax]).text(),
+    ///            "energy-gain;above-omega-max");
+    /// assert_eq!(Diagnosis::NotAudited.text(), "-");
+    /// ```
+    pub fn text(&self) -> String {
+        match self {
+            Diagnosis::NotAudited => "-".to_string(),
+            Diagnosis::Findings(f) if f.is_empty() => "ok".to_string(),
+            Diagnosis::Findings(f) => f.iter().map(|f| f.name()).collect::<Vec<_>>().join(";"),
+        }
+    }
+}
+
+/// The energy change cell and the diagnosis of a row whose state is claimed.
+fn diagnose(
+    scene: &Scene,
+    exact: &Motion<Q>,
+    claimed: &[Option<Claimed>; 6],
+    checks: &[OutputCheck],
+) -> (String, Diagnosis) {
+    let state: Vec<Option<Option<Q>>> = claimed[..STATE]
+        .iter()
+        .map(|c| c.as_ref().map(Claimed::value))
+        .collect();
+    if state.iter().any(Option::is_none) {
+        return ("-".to_string(), Diagnosis::NotAudited);
+    }
+    let [Some(Some(v)), Some(Some(rod_v)), Some(Some(omega))] = [&state[0], &state[1], &state[2]]
+    else {
+        // A claim that is not a finite number: no state to audit, and a wrong claim.
+        return ("nan".to_string(), Diagnosis::Findings(vec![Finding::Off]));
+    };
+    // The exact state has no finding and no energy change: no audit work for exact claims
+    // (the reference batches claim exact values on every row).
+    if checks[..STATE]
+        .iter()
+        .all(|c| c.rel_error.as_ref().is_some_and(Q::is_zero))
+    {
+        let off = checks.iter().any(|c| !c.ok);
+        return (
+            "0".to_string(),
+            Diagnosis::Findings(if off { vec![Finding::Off] } else { vec![] }),
+        );
+    }
+    let claimed = Motion {
+        v: v.clone(),
+        rod_v: rod_v.clone(),
+        omega: omega.clone(),
+    };
+    let mut audit = audit(scene, exact, &claimed);
+    if audit.findings.is_empty() && checks.iter().any(|c| !c.ok) {
+        audit.findings.push(Finding::Off);
+    }
+    let change = crate::field::decimal::decimal(&audit.energy_change, 3);
+    let change = if audit.energy_change.is_positive() {
+        format!("+{change}")
+    } else {
+        change
+    };
+    (change, Diagnosis::Findings(audit.findings))
+}
+
+/// The exact v, V, omega, and J and the energies where `wanted` (they are claimed).
+fn exact_values(
+    scene: &Scene,
+    after: &Motion<Q>,
+    wanted: impl Fn(usize) -> bool,
+) -> [Option<Q>; 6] {
+    let params = scene.params::<Q>();
+    let m = scene.m();
+    [
+        Some(after.v.clone()),
+        Some(after.rod_v.clone()),
+        Some(after.omega.clone()),
+        wanted(3).then(|| m * (scene.v0() - &after.v)),
+        wanted(4).then(|| kinetic_energy(&params, &Motion::before(scene.v0().clone()))),
+        wanted(5).then(|| kinetic_energy(&params, after)),
+    ]
+}
+
+/// v, V, omega by `route` in f64 (NaN where the system underflowed to a singular one; and J
+/// and the energies where `wanted`), as shortest round-trip text (a zero is written `0.0`,
+/// whatever its sign: `-0.0` only says which way the float rounded) and, when `compared`, as
+/// exact dyadic rationals (no exact work otherwise).
+fn float_values(
+    scene: &Scene,
+    route: Route,
+    wanted: impl Fn(usize) -> bool,
+    compared: bool,
+) -> ([Option<Q>; 6], [Option<String>; 6]) {
+    let m = match solve::with::<f64>(scene, route) {
         Ok(solved) => solved.after,
         Err(e) if e.why == Why::Singular => Motion {
             v: f64::NAN,
@@ -109,9 +278,20 @@ fn float_values(scene: &Scene, route: Route) -> ([Q; 3], [String; 3]) {
             omega: f64::NAN,
         },
         Err(e) => unreachable!("{e}: the batch's f64 route takes every scene"),
-    }
-    .into_array();
-    let exact = xs.map(|x| Q::from_float(x).unwrap_or_else(Q::zero));
+    };
+    let params = scene.params::<f64>();
+    let xs = [
+        Some(m.v),
+        Some(m.rod_v),
+        Some(m.omega),
+        wanted(3).then_some(params.m * (params.v0 - m.v)),
+        wanted(4).then(|| kinetic_energy(&params, &Motion::before(params.v0))),
+        wanted(5).then(|| kinetic_energy(&params, &m)),
+    ];
+    let exact = xs.map(|x| {
+        x.filter(|_| compared)
+            .map(|x| Q::from_float(x).unwrap_or_else(Q::zero))
+    });
     let text = |x: f64| {
         if x == 0.0 {
             "0.0".to_string()
@@ -119,7 +299,7 @@ fn float_values(scene: &Scene, route: Route) -> ([Q; 3], [String; 3]) {
             format!("{x:?}")
         }
     };
-    (exact, xs.map(text))
+    (exact, xs.map(|x| x.map(text)))
 }
 
 #[cfg(test)]
@@ -134,7 +314,7 @@ mod tests {
         let wrong = b.row(2, "1,1,0.6,0.4000001,1.2").unwrap();
         assert_eq!(
             wrong.line,
-            "1,1,0.6,0.4000001,1.2,3/5,2/5,6/5,true,true,0,false,0.000000250,true,0\n"
+            "1,1,0.6,0.4000001,1.2,3/5,2/5,6/5,true,true,0,false,0.000000250,true,0,+8.00e-8,off\n"
         );
     }
 

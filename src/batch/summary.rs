@@ -1,8 +1,9 @@
 //! The totals of a batch: rows, laws, and per claimed output the count wrong, the largest and
 //! the median relative error (from a bounded histogram, so memory stays flat in the rows).
 
-use super::header::OUTPUTS;
-use super::row::SolvedRow;
+use super::audit::Finding;
+use super::header::CLAIMS;
+use super::row::{Diagnosis, SolvedRow};
 use crate::field::Q;
 use num_traits::Zero;
 use std::collections::BTreeMap;
@@ -26,8 +27,19 @@ pub struct Summary {
     pub laws_failed: usize,
     /// Rows whose laws were not checked (f64 arithmetic).
     pub laws_unchecked: usize,
-    outputs: [OutputStats; 3],
+    outputs: [OutputStats; 6],
+    /// Audited rows per finding (in [`Finding::ALL`] order), rows found `ok`, rows not audited.
+    findings: [usize; 8],
+    audited_ok: usize,
+    not_audited: usize,
+    findings_rows: usize,
+    /// Per finding, the first [`FINDING_EXAMPLES`] distinct row labels, and whether more rows
+    /// had it.
+    examples: [(Vec<String>, bool); 8],
 }
+
+/// How many rows (by `id`, or number) the summary names per finding.
+pub const FINDING_EXAMPLES: usize = 5;
 
 /// The claims of one output (v, V or omega) over the batch: counts, the largest relative
 /// error, and a histogram of relative errors rounded to two significant digits for the median.
@@ -54,6 +66,29 @@ impl Summary {
             Some(true) => {}
             Some(false) => self.laws_failed += 1,
             None => self.laws_unchecked += 1,
+        }
+        match &row.diagnosis {
+            None => {}
+            Some(Diagnosis::NotAudited) => self.not_audited += 1,
+            Some(Diagnosis::Findings(found)) if found.is_empty() => self.audited_ok += 1,
+            Some(Diagnosis::Findings(found)) => {
+                self.findings_rows += 1;
+                let label = row
+                    .label
+                    .clone()
+                    .unwrap_or_else(|| format!("row {}", row.number));
+                for f in found {
+                    self.findings[*f as usize] += 1;
+                    let (names, more) = &mut self.examples[*f as usize];
+                    if !names.contains(&label) {
+                        if names.len() < FINDING_EXAMPLES {
+                            names.push(label.clone());
+                        } else {
+                            *more = true;
+                        }
+                    }
+                }
+            }
         }
         for v in &row.checks {
             let s = &mut self.outputs[v.output];
@@ -96,7 +131,64 @@ impl Summary {
         self.outputs.iter().map(|c| c.wrong).sum()
     }
 
-    /// The statistics of each claimed output, named (`v`, `V`, `omega`), in that order;
+    /// Rows per diagnosis, in column order: each finding with its count (a row with several
+    /// findings counts once for each), then `ok`, then `not audited` (a state claim missing);
+    /// only those that occurred. Empty when no row was audited.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic, Summary};
+    /// let b = Batch::new("m,M,v,V,omega", Arithmetic::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "1,1,3/5,2/5,6/5").unwrap());
+    /// s.add(&b.row(2, "1,1,1,0,0").unwrap());
+    /// s.add(&b.row(3, "1,1,0.6,0.4,").unwrap());
+    /// assert_eq!(s.diagnoses(), [("no-contact", 1), ("ok", 1), ("not audited", 1)]);
+    /// ```
+    pub fn diagnoses(&self) -> Vec<(&'static str, usize)> {
+        Finding::ALL
+            .iter()
+            .map(|f| (f.name(), self.findings[*f as usize]))
+            .chain([("ok", self.audited_ok), ("not audited", self.not_audited)])
+            .filter(|(_, n)| *n > 0)
+            .collect()
+    }
+
+    /// The first [`FINDING_EXAMPLES`] distinct rows with `finding` (their `id`, or `row N`),
+    /// and whether other rows had it too.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic, Finding, Summary};
+    /// let b = Batch::new("id,m,M,v,V,omega", Arithmetic::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "missed,1,1,1,0,0").unwrap());
+    /// s.add(&b.row(2, "missed,1,1,1,0,0").unwrap());
+    /// let (names, more) = s.examples(Finding::NoContact);
+    /// assert_eq!((names, more), (&["missed".to_string()][..], false));
+    /// ```
+    pub fn examples(&self, finding: Finding) -> (&[String], bool) {
+        let (names, more) = &self.examples[finding as usize];
+        (names, *more)
+    }
+
+    /// Rows whose audit found something (each counted once).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic, Summary};
+    /// let b = Batch::new("m,M,v,V,omega", Arithmetic::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "1,1,1,0,0").unwrap()); // no contact
+    /// s.add(&b.row(2, "1,1,3/5,2/5,6/5").unwrap());
+    /// assert_eq!(s.rows_with_findings(), 1);
+    /// ```
+    pub fn rows_with_findings(&self) -> usize {
+        self.findings_rows
+    }
+
+    /// The statistics of each claimed output, named (`v`, `V`, `omega`, `J`, `energy_before`,
+    /// `energy_after`), in that order;
     /// outputs without a claim column have nothing compared.
     ///
     /// # Examples
@@ -106,10 +198,10 @@ impl Summary {
     /// let mut s = Summary::default();
     /// s.add(&b.row(1, "1,1,6/5").unwrap());
     /// let compared: Vec<(&str, usize)> = s.outputs().map(|(name, o)| (name, o.compared())).collect();
-    /// assert_eq!(compared, [("v", 0), ("V", 0), ("omega", 1)]);
+    /// assert_eq!(compared, [("v", 0), ("V", 0), ("omega", 1), ("J", 0), ("energy_before", 0), ("energy_after", 0)]);
     /// ```
     pub fn outputs(&self) -> impl Iterator<Item = (&'static str, &OutputStats)> {
-        OUTPUTS.into_iter().zip(&self.outputs)
+        CLAIMS.into_iter().zip(&self.outputs)
     }
 }
 

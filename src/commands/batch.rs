@@ -3,7 +3,7 @@
 use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
-use rodimpact::batch::{Arithmetic, Batch, MAX_LINE, Summary, run};
+use rodimpact::batch::{Agreement, Arithmetic, Batch, FloatFormat, MAX_LINE, Summary, run};
 use rodimpact::echo::{echo, echo_path};
 use rodimpact::io::AtomicFile;
 use rodimpact::report::batch_summary;
@@ -13,7 +13,8 @@ use std::path::PathBuf;
 
 #[derive(Args, Debug)]
 pub(crate) struct BatchArgs {
-    /// CSV file: header among m,M,l,a,v0,rod,e,pivot (m and M required) and claimed v,V,omega.
+    /// CSV file: header among m,M,l,a,v0,rod,e,pivot (m and M required), claimed
+    /// v,V,omega,J,energy_before,energy_after, and any other columns (passed through).
     #[arg(value_name = "FILE.csv")]
     pub(crate) file: PathBuf,
     /// Arithmetic: exact rationals, or the paper's closed form in f64 (the naive formula, not
@@ -26,6 +27,22 @@ pub(crate) struct BatchArgs {
     /// Write the rows here (all or nothing) instead of standard output.
     #[arg(long, value_name = "FILE")]
     pub(crate) out: Option<PathBuf>,
+    /// A claim agrees when its relative error is at most R (0 <= R <= 1).
+    #[arg(long, value_name = "R", conflicts_with = "ulps")]
+    pub(crate) rtol: Option<String>,
+    /// A claim agrees when it is at most N floats from the correctly rounded exact value
+    /// (exact backend).
+    #[arg(long, value_name = "N")]
+    pub(crate) ulps: Option<String>,
+    /// The float format of --ulps [default: f64].
+    #[arg(long, value_enum, requires = "ulps", value_name = "f32|f64")]
+    pub(crate) float: Option<FloatArg>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+pub(crate) enum FloatArg {
+    F32,
+    F64,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -59,6 +76,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         BackendArg::F64 => Arithmetic::F64,
     };
     let jobs = args.jobs.as_deref().map(parse_jobs).transpose()?;
+    let agreement = agreement(args)?;
     let read_error = |why: std::io::Error| {
         Error::io(
             "FILE",
@@ -100,6 +118,10 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         .into());
     }
     let batch = Batch::new(&header, arithmetic)?;
+    let batch = match &agreement {
+        Some(agreement) => batch.with_agreement(agreement.clone())?,
+        None => batch,
+    };
 
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = ProgressBar::new(size);
@@ -148,7 +170,23 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
-    report(&summary)
+    report(&summary, &batch.passed_through(), agreement.as_ref())
+}
+
+/// The agreement rule of `--rtol` or `--ulps [--float]` (clap refuses both at once), checked
+/// before the file is opened.
+fn agreement(args: &BatchArgs) -> Result<Option<Agreement>, Error> {
+    if let Some(r) = &args.rtol {
+        return Agreement::parse_rtol(r).map(Some);
+    }
+    let format = match args.float {
+        Some(FloatArg::F32) => FloatFormat::F32,
+        Some(FloatArg::F64) | None => FloatFormat::F64,
+    };
+    args.ulps
+        .as_deref()
+        .map(|n| Agreement::parse_ulps(n, format))
+        .transpose()
 }
 
 /// A writer that keeps its first error, so that the command can tell a failed write to
@@ -194,9 +232,20 @@ fn write_header(out: &mut impl Write, batch: &Batch) -> Result<(), Error> {
         .map_err(|why| Error::io("out", "cannot write", why))
 }
 
-fn report(summary: &Summary) -> Result<(), Failure> {
+fn report(
+    summary: &Summary,
+    passed: &[&str],
+    agreement: Option<&Agreement>,
+) -> Result<(), Failure> {
+    if !passed.is_empty() {
+        let names: Vec<String> = passed.iter().map(|name| echo(name)).collect();
+        super::print_err(&format!("passed through: {}\n", names.join(", ")));
+    }
+    if let Some(agreement) = agreement {
+        super::print_err(&format!("claims agree {}\n", agreement.describe()));
+    }
     super::print_err(&batch_summary(summary));
-    if summary.wrong() > 0 || summary.laws_failed > 0 {
+    if summary.wrong() > 0 || summary.laws_failed > 0 || summary.rows_with_findings() > 0 {
         Err(Failure::Check)
     } else {
         Ok(())

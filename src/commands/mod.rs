@@ -5,6 +5,7 @@ pub(crate) mod batch;
 pub(crate) mod check;
 pub(crate) mod claims;
 pub(crate) mod plot;
+pub(crate) mod scenes;
 pub(crate) mod simulate;
 pub(crate) mod solve;
 pub(crate) mod stability;

@@ -1,6 +1,6 @@
 //! The summary `rodimpact batch` prints on standard error.
 
-use crate::batch::{OutputStats, Summary};
+use crate::batch::{Finding, OutputStats, Summary};
 use crate::field::decimal;
 
 /// The summary of a batch: rows, laws (or that they were not checked, with the f64
@@ -23,12 +23,19 @@ use crate::field::decimal;
 /// let f = Batch::new("m,M", Arithmetic::F64).unwrap();
 /// let mut s = Summary::default();
 /// s.add(&f.row(1, "1,1").unwrap());
-/// assert_eq!(batch_summary(&s), "1 rows (f64: conservation laws not checked)\n");
+/// assert_eq!(batch_summary(&s), "1 rows (f64: conservation laws and diagnoses not checked)\n");
+///
+/// let engine = Batch::new("m,M,a,v,V,omega", Arithmetic::Exact).unwrap();
+/// let mut s = Summary::default();
+/// s.add(&engine.row(1, "1,1,1/2,3/11,8/11,12/11").unwrap());
+/// s.add(&engine.row(2, "1,1,1/2,0.63592,0.36408,0.54612").unwrap());
+/// assert!(batch_summary(&s).ends_with("diagnosis of 2 rows:\n  \
+///     energy-loss: 1 (row 2)\n  restitution-ignored: 1 (row 2)\n  ok: 1\n"), "{}", batch_summary(&s));
 /// ```
 pub fn batch_summary(summary: &Summary) -> String {
     let mut out = if summary.laws_unchecked > 0 {
         format!(
-            "{} rows (f64: conservation laws not checked)\n",
+            "{} rows (f64: conservation laws and diagnoses not checked)\n",
             summary.rows
         )
     } else {
@@ -57,6 +64,22 @@ pub fn batch_summary(summary: &Summary) -> String {
             stats.wrong(),
             wrong_rows_text(stats),
         ));
+    }
+    let diagnoses = summary.diagnoses();
+    if !diagnoses.is_empty() {
+        out.push_str(&format!("diagnosis of {} rows:\n", summary.rows));
+        for (name, count) in diagnoses {
+            let examples = Finding::ALL
+                .iter()
+                .find(|f| f.name() == name)
+                .map(|f| summary.examples(*f))
+                .filter(|(names, _)| !names.is_empty())
+                .map(|(names, more)| {
+                    format!(" ({}{})", names.join(", "), if more { ", ..." } else { "" })
+                })
+                .unwrap_or_default();
+            out.push_str(&format!("  {name}: {count}{examples}\n"));
+        }
     }
     out
 }
