@@ -13,12 +13,12 @@ use super::quantity::Quantity;
 use super::sigfig;
 use super::symbolic::{GivenScene, SymbolicScene, identity};
 use crate::error::{Error, ErrorKind};
-use crate::field::{Field, Q, QSqrt, RatFn};
+use crate::field::{Field, Poly, Q, QSqrt, RatFn};
 use crate::optimum::{a_star_squared, optimum};
-use crate::scene::{Params, SceneInput};
+use crate::scene::{Params, SceneInput, Support};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
-use num_traits::One;
+use num_traits::{One, Signed, Zero};
 
 /// Checks claims about one scene given as typed (numbers may carry units; any formula in a
 /// scene flag or a claim makes the whole check symbolic). `sig` overrides the claims'
@@ -149,6 +149,57 @@ fn exact_value(
     }
 }
 
+/// The domain condition of a symbolic a* on a free rod: a* (the stationary point of omega(a)) is
+/// where omega is largest on the rod only when a*^2 <= l^2, written as `lhs <= rhs` with the
+/// positive factors of a*^2 - l^2 (its denominator, and powers of symbols dividing every term,
+/// all positive quantities) cleared: `M <= 2*m` for the uniform rod. `None` for a pivoted rod
+/// or when the condition is a plain number.
+fn a_star_on_rod(p: &Params<RatFn>) -> Option<String> {
+    if p.support != Support::Free {
+        return None;
+    }
+    let l = &p.half_length;
+    let excess = a_star_squared(p) - &(l.clone() * l);
+    if excess.as_constant().is_some() {
+        return None;
+    }
+    let (mut num, den) = (excess.num().clone(), excess.den());
+    let positive_den = den.terms().count() == 1 && den.terms().all(|(_, c)| c.is_positive());
+    if !positive_den {
+        return Some(format!(
+            "a* lies on the rod (omega is largest there) when ({excess}) <= 0; otherwise omega is largest at a = l"
+        ));
+    }
+    for sym in num.symbols() {
+        let k = num.low_degree_in(sym);
+        if k > 0 {
+            num = num
+                .div_exact(&Poly::var(sym).pow(k))
+                .expect("every term holds sym^k");
+        }
+    }
+    let num = num.scale(&num.content().abs().recip());
+    let (mut lhs, mut rhs) = (Poly::zero(), Poly::zero());
+    for (monomial, c) in num.terms() {
+        let term = Poly::monomial(c.abs(), monomial.clone());
+        if c.is_positive() {
+            lhs = lhs + &term;
+        } else {
+            rhs = rhs + &term;
+        }
+    }
+    Some(if rhs.is_zero() {
+        // a*^2 - l^2 is a positive multiple of positive factors: a* is always beyond the end.
+        "a* lies beyond the end for every value of the symbols: omega is largest at a = l".into()
+    } else if lhs.is_zero() {
+        "a* lies on the rod for every value of the symbols, and omega is largest there".into()
+    } else {
+        format!(
+            "a* lies on the rod (omega is largest there) when {lhs} <= {rhs}; otherwise omega is largest at a = l"
+        )
+    })
+}
+
 /// Checks claims about a symbolic scene; every formula's work is charged to `budget`.
 ///
 /// # Errors
@@ -197,6 +248,11 @@ fn check_symbolic(
             }
         };
         let mut answer = identity(claim, &claimed, &exact, &scene, budget, &field)?;
+        if claim.quantity == Quantity::AStar
+            && let Some(condition) = a_star_on_rod(&scene.params)
+        {
+            answer.notes.push(condition);
+        }
         if matches!(claim.value, ClaimedValue::Printed(_)) {
             answer.notes.insert(
                 0,
