@@ -212,6 +212,7 @@ fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
         rod: g.rod,
         e,
         pivot: g.pivot,
+        ..SceneInput::default()
     };
     if p.claims.is_empty() || p.claims.len() > MAX_CLAIMS {
         return Err(Error::out_of_range(
