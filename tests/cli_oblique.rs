@@ -221,3 +221,52 @@ fn refusals_are_one_line_exit_2() {
         assert_eq!(stderr, *want, "{extra:?}");
     }
 }
+
+/// `check` decides claims on the new quantities against the exact oblique answer (the README
+/// scene above: vt = 38/25, Vt = 6/25, Jt = 12/25), and refuses what does not apply.
+#[test]
+fn check_claims_on_oblique_quantities() {
+    let mut args = vec!["check"];
+    args.extend_from_slice(OBLIQUE);
+    args.extend([
+        "--claim",
+        "vt=1.52 m/s",
+        "--claim",
+        "Vt=0.24",
+        "--claim",
+        "tangential_impulse=0.48",
+        "--claim",
+        "omega=1.8",
+        "--json",
+    ]);
+    let (code, stdout, stderr) = rodimpact(&args);
+    assert_eq!(code, 0, "{stderr}");
+    let j: Value = serde_json::from_str(&stdout).expect("JSON");
+    let text = j.to_string();
+    assert!(
+        text.contains("38/25") && text.contains("6/25") && text.contains("12/25"),
+        "{text}"
+    );
+    args.extend(["--claim", "Vt=0.3"]);
+    let (code, _, _) = rodimpact(&args);
+    assert_eq!(code, 1, "a wrong Vt disagrees");
+    for (extra, want) in [
+        (
+            vec!["--claim", "vt=1"],
+            "error: claim vt: only an oblique scene has it: give --v0t, --mu, --radius or the rod's motion before the impact\n",
+        ),
+        (
+            vec!["--mu", "1", "--claim", "omega=v0"],
+            "error: mu: an oblique or frictional scene is checked with numbers only (a formula in a scene flag or a claim makes the check symbolic)\n",
+        ),
+        (
+            vec!["--v0t", "1", "--claim", "spin=1"],
+            "error: claim spin: the projectile is a point (no --radius)\n",
+        ),
+    ] {
+        let mut args = vec!["check", "--m", "1", "--M", "1"];
+        args.extend(extra);
+        let (code, _, stderr) = rodimpact(&args);
+        assert_eq!((code, stderr.as_str()), (2, want));
+    }
+}
