@@ -4,7 +4,7 @@ pub(super) const ENTRY: Entry = Entry {
     id: "X27",
     location: BEYOND,
     group: Group::Beyond,
-    statement: "Friction never changes the spin of a thin rod struck on its axis: with the projectile sliding along the rod (v0t), Coulomb friction mu and a spinning disc projectile, omega, V and v are those of the frictionless perpendicular impact, whether the contact sticks or slides; on a pivot too",
+    statement: "Friction never changes the spin of a thin rod struck on its axis: with the projectile sliding along the rod (v0t), Coulomb friction mu_f and a spinning disc projectile, omega, V and v are those of the frictionless perpendicular impact, whether the contact sticks or slides; on a pivot too",
     formalise,
 };
 
@@ -55,9 +55,9 @@ fn formalise(_paper: &Paper) -> Formalised {
     proved(
         "Thin rod (m, M, I > 0, any a, v0, e; free, or on a pivot at p) struck at distance a from its \
          centre by a point or a solid disc (radius r, spin w) moving with v0 across and v0t along the \
-         rod, Coulomb friction mu at the contact; for each way the contact can end (stick; slide with \
+         rod, Coulomb friction mu_f at the contact; for each way the contact can end (stick; slide with \
          the slip along +y; slide along -y) the oblique solver's omega, V and v equal the frictionless \
-         perpendicular solver's, identically in v0t, mu, r and w. The tangential impulse acts along \
+         perpendicular solver's, identically in v0t, mu_f, r and w. The tangential impulse acts along \
          the rod's axis, through its centre (and the pivot), so it has no moment about either.",
         "omega, V and v from the oblique solver equal the frictionless ones identically in every contact case",
         certs,

@@ -78,7 +78,7 @@ fn formalise(_paper: &Paper) -> Formalised {
     }
     proved(
         "Free rod (m, M, I > 0, any a, e), solid disc projectile (radius r, spin w, velocity (v0, v0t)), \
-         friction mu; the rod's centre moves with (V0, Vt0) before the impact and does not turn. For the \
+         friction mu_f; the rod's centre moves with (V0, Vt0) before the impact and does not turn. For the \
          sticking and the sliding contact, the solver's answer minus the frame velocity equals the \
          solver's answer for the rod at rest with the projectile at (v0 - V0, v0t - Vt0), identically; \
          omega, the spin and both impulses are equal. Stick or slide is decided by relative velocities \

@@ -4,7 +4,7 @@ pub(super) const ENTRY: Entry = Entry {
     id: "X30",
     location: BEYOND,
     group: Group::Beyond,
-    statement: "The frictional energy loss: the kinetic energy lost is (1 - e^2) u_n^2/(2 k_n) to restitution plus u_t^2/(2 k_t) when the contact sticks or mu J (|u_t| - mu J k_t/2) when it slides; the sliding loss is positive",
+    statement: "The frictional energy loss: the kinetic energy lost is (1 - e^2) u_n^2/(2 k_n) to restitution plus u_t^2/(2 k_t) when the contact sticks or mu_f J (|u_t| - mu_f J k_t/2) when it slides; the sliding loss is positive",
     formalise,
 };
 
@@ -17,7 +17,7 @@ fn formalise(_paper: &Paper) -> Formalised {
     let slip = f("v0t") + &(f("w") * &f("r"));
     let restitution =
         (Formula::int(1) - &f("e").pow(2)) * &f("v0").pow(2) / &(Formula::int(2) * &k_n);
-    let mu_j = f("mu") * &one_plus_e_v0 / &k_n;
+    let mu_j = f("mu_f") * &one_plus_e_v0 / &k_n;
     let sliding =
         |speed: Formula| mu_j.clone() * &(speed - &(mu_j.clone() * &k_t / &Formula::int(2)));
     let mut certs = Vec::new();
@@ -37,7 +37,7 @@ fn formalise(_paper: &Paper) -> Formalised {
             restitution.clone() + &friction,
         ));
     }
-    // Sliding forward means u_t > mu J k_t: write u_t = mu J k_t + x with x > 0.
+    // Sliding forward means u_t > mu_f J k_t: write u_t = mu_f J k_t + x with x > 0.
     let slide = oblique_solved(&rod, &o, Contact::Slide { forward: true });
     let (mu_j_value, k_t_value) = (mu_j.value().clone(), k_t.value().clone());
     let excess = sym("x") + &(mu_j_value * &k_t_value) - &(sym("w") * &sym("r"));
@@ -46,14 +46,14 @@ fn formalise(_paper: &Paper) -> Formalised {
         quot(pc(1, 1), ps("M")),
         quot(PosExpr::Square(sym("a")), ps("I")),
     ]);
-    let mu_j_form = || quot(prod([ps("mu"), one_plus_e(), ps("v0")]), k_n_form.clone());
+    let mu_j_form = || quot(prod([ps("mu_f"), one_plus_e(), ps("v0")]), k_n_form.clone());
     let k_t_form = sum([quot(pc(3, 1), ps("m")), quot(pc(1, 1), ps("M"))]);
     certs.push(positive(
-        "sliding (u_t = mu J k_t + x, x > 0): energy lost (solver) - restitution = mu J (mu J k_t/2 + x) > 0",
+        "sliding (u_t = mu_f J k_t + x, x > 0): energy lost (solver) - restitution = mu_f J (mu_f J k_t/2 + x) > 0",
         slide.energy.lost.clone() - restitution.value(),
         true,
         &[("v0t", excess)],
-        &["m", "M", "I", "v0", "mu", "x"],
+        &["m", "M", "I", "v0", "mu_f", "x"],
         &["e"],
         prod([
             mu_j_form(),
@@ -62,12 +62,12 @@ fn formalise(_paper: &Paper) -> Formalised {
     ));
     proved(
         "Free rod (m, M, I, v0 > 0, e in [0, 1], any a) at rest, solid disc projectile (radius r, spin w, \
-         velocity (v0, v0t)), friction mu > 0; u_n = v0, u_t = v0t + w r, k_n = 1/m + 1/M + a^2/I, \
+         velocity (v0, v0t)), friction mu_f > 0; u_n = v0, u_t = v0t + w r, k_n = 1/m + 1/M + a^2/I, \
          k_t = 3/m + 1/M, J = (1+e) v0/k_n. For each way the contact ends, the kinetic energy lost by \
          the solver's states (translation along both axes, the rod's turn and the disc's spin) equals \
-         (1 - e^2) v0^2/(2 k_n) plus u_t^2/(2 k_t) (stick) or mu J (|u_t| - mu J k_t/2) (slide); when \
-         sliding, |u_t| > mu J k_t, and the frictional part is mu J (mu J k_t/2 + x) > 0 with \
-         x = |u_t| - mu J k_t (shown for u_t > 0; u_t < 0 is its mirror image).",
+         (1 - e^2) v0^2/(2 k_n) plus u_t^2/(2 k_t) (stick) or mu_f J (|u_t| - mu_f J k_t/2) (slide); when \
+         sliding, |u_t| > mu_f J k_t, and the frictional part is mu_f J (mu_f J k_t/2 + x) > 0 with \
+         x = |u_t| - mu_f J k_t (shown for u_t > 0; u_t < 0 is its mirror image).",
         "the solver's energy loss equals the closed forms in every contact case, and the sliding part is a visibly positive product",
         certs,
     )

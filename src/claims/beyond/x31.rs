@@ -19,7 +19,7 @@ fn formalise(paper: &Paper) -> Formalised {
         let out = oblique_solved(&rod, &oblique(true), contact);
         certs.push(Certificate::identity(
             format!(
-                "{}: omega (oblique solver, disc, v0t, mu) = (1+e) v0 a/(a*^2 + a^2), a* the paper's",
+                "{}: omega (oblique solver, disc, v0t, mu_f) = (1+e) v0 a/(a*^2 + a^2), a* the paper's",
                 case(contact)
             ),
             n("omega", out.after.rod.omega.clone()),
@@ -42,11 +42,11 @@ fn formalise(paper: &Paper) -> Formalised {
     ));
     proved(
         "Free rod (m, M, I > 0, any a, e), solid disc projectile (radius r, spin w) with velocity \
-         (v0, v0t), friction mu, the rod at rest or drifting with (V0, Vt0) without turning: for every \
+         (v0, v0t), friction mu_f, the rod at rest or drifting with (V0, Vt0) without turning: for every \
          contact case the solver's omega as a function of a is (1+e) u_n a/(a*^2 + a^2), u_n = v0 - V0, \
          with the paper's a*^2 = I (M + m)/(m M) (Eq. (maximal-a-general)); this is the paper's omega(a) \
          with v0 replaced by u_n, so |omega| is largest at the same a* (the paper's maximisation, C20).",
-        "the solver's omega(a) has the paper's shape with the paper's a* in every contact case, independent of v0t, mu, r, w, Vt0",
+        "the solver's omega(a) has the paper's shape with the paper's a* in every contact case, independent of v0t, mu_f, r, w, Vt0",
         certs,
     )
 }

@@ -1,6 +1,6 @@
 //! The symbolic oblique scene of the friction claims (X27-X31): the free rod of
 //! [`free_rod`](super::free_rod) struck by a projectile that also moves along the rod (`v0t`),
-//! with Coulomb friction `mu`, optionally a solid disc of radius `r` spinning with `w`, and the
+//! with Coulomb friction `mu_f` (the claims' mu is the reduced mass), optionally a solid disc of radius `r` spinning with `w`, and the
 //! rod optionally translating before the impact (`V0`, `Vt0`), solved by the same generic
 //! oblique solver as the numbers.
 
@@ -31,11 +31,11 @@ pub(crate) fn case(contact: Contact) -> &'static str {
     }
 }
 
-/// The oblique part in symbols: `v0t`, `mu`, a disc (`r`, spin `w`) if `disc`, the rod at rest.
+/// The oblique part in symbols: `v0t`, `mu_f`, a disc (`r`, spin `w`) if `disc`, the rod at rest.
 pub(crate) fn oblique(disc: bool) -> ObliqueParams<RatFn> {
     ObliqueParams {
         v0t: sym("v0t"),
-        mu: sym("mu"),
+        mu: sym("mu_f"),
         disc: disc.then(|| Disc {
             radius: sym("r"),
             spin: sym("w"),
