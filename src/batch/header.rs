@@ -43,14 +43,35 @@ impl Arithmetic {
     }
 }
 
-const SCENE_COLUMNS: [&str; 8] = ["m", "M", "l", "a", "v0", "rod", "e", "pivot"];
+const SCENE_COLUMNS: [&str; 15] = [
+    "m",
+    "M",
+    "l",
+    "a",
+    "v0",
+    "rod",
+    "e",
+    "pivot",
+    "v0t",
+    "mu",
+    "radius",
+    "spin",
+    "rod-v",
+    "rod-vt",
+    "rod-omega",
+];
+/// The first of the oblique scene columns (`v0t` ... `rod-omega`) in `SCENE_COLUMNS`.
+const FIRST_OBLIQUE: usize = 8;
+/// The columns an oblique header appends after `omega` (docs/conventions.md).
+pub(super) const OBLIQUE_OUTPUTS: [&str; 5] = ["vt", "Vt", "spin", "tangential_impulse", "contact"];
 pub(super) const OUTPUTS: [&str; 3] = ["v", "V", "omega"];
 
 /// A parsed header: which input column feeds which scene field or claim.
 #[derive(Debug, Clone)]
 pub struct Batch {
     pub(super) arithmetic: Arithmetic,
-    /// Per input column: index into `SCENE_COLUMNS`, or 8 + index into `OUTPUTS` for a claim.
+    /// Per input column: index into `SCENE_COLUMNS`, or its length + index into `OUTPUTS` for a
+    /// claim.
     columns: Vec<usize>,
     pub(super) claims: Vec<usize>,
     header: String,
@@ -68,7 +89,7 @@ impl Batch {
     /// let b = Batch::new("m,M,a,v", Arithmetic::Exact).unwrap();
     /// assert_eq!(b.output_header(), "m,M,a,v,v_exact,V,omega,laws_held,v_ok,v_rel_error\n");
     /// assert_eq!(Batch::new("m,M,x", Arithmetic::Exact).unwrap_err().to_string(),
-    ///            "header: unknown column 'x' (expected m, M, l, a, v0, rod, e, pivot, v, V, omega)");
+    ///            "header: unknown column 'x' (expected m, M, l, a, v0, rod, e, pivot, v0t, mu, radius, spin, rod-v, rod-vt, rod-omega, v, V, omega)");
     /// ```
     pub fn new(header: &str, arithmetic: Arithmetic) -> Result<Batch, Error> {
         let header = header.trim_start_matches('\u{feff}').trim_end();
@@ -103,13 +124,41 @@ impl Batch {
                 )));
             }
         }
-        let claims = (0..3).filter(|k| columns.contains(&(8 + k))).collect();
+        let claims = (0..3)
+            .filter(|k| columns.contains(&(SCENE_COLUMNS.len() + k)))
+            .collect();
+        let oblique = columns
+            .iter()
+            .find(|&&c| (FIRST_OBLIQUE..SCENE_COLUMNS.len()).contains(&c));
+        if let (Some(&c), Arithmetic::F64) = (oblique, arithmetic) {
+            return Err(bad(format!(
+                "column '{}': oblique and frictional scenes are solved exactly; the f64 arithmetic takes the paper's scene only",
+                SCENE_COLUMNS[c]
+            )));
+        }
         Ok(Batch {
             arithmetic,
             columns,
             claims,
             header: header.to_string(),
         })
+    }
+
+    /// Whether the header has an oblique scene column: then every row is solved as an oblique
+    /// scene and the output gains `vt, Vt, spin, tangential_impulse, contact` after `omega`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic};
+    /// assert!(Batch::new("m,M,mu", Arithmetic::Exact).unwrap().is_oblique());
+    /// assert!(!Batch::new("m,M,e", Arithmetic::Exact).unwrap().is_oblique());
+    /// let disc = Batch::new("m,M,radius,spin", Arithmetic::Exact).unwrap();
+    /// assert!(disc.output_header().contains(",spin_after,"));
+    /// ```
+    pub fn is_oblique(&self) -> bool {
+        self.columns
+            .iter()
+            .any(|&c| (FIRST_OBLIQUE..SCENE_COLUMNS.len()).contains(&c))
     }
 
     /// The header of the output file (with its newline). The computed columns are named for
@@ -133,6 +182,15 @@ impl Batch {
                 Arithmetic::Exact => "",
             };
             out.push_str(&format!(",{name}{suffix}"));
+        }
+        if self.is_oblique() {
+            for name in OBLIQUE_OUTPUTS {
+                // The disc's spin after the impact, beside the input column `spin` (before).
+                let input = SCENE_COLUMNS.iter().position(|c| *c == name);
+                let clash = input.is_some_and(|c| self.columns.contains(&c));
+                let suffix = if clash { "_after" } else { "" };
+                out.push_str(&format!(",{name}{suffix}"));
+            }
         }
         out.push_str(",laws_held");
         for &k in &self.claims {
