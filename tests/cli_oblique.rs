@@ -122,6 +122,8 @@ fn readme_spinning_disc() {
         assert_eq!(exact(&j, key), value, "{key}");
     }
     assert_eq!(j["contact"], "stick");
+    // mu* = (3/5)/(48/19) = 19/80 <= 1/2.
+    assert_eq!(exact(&j, "mu_star"), "19/80");
     assert_eq!(j["energy"]["lost"]["exact"], "3/5");
     assert_eq!(j["energy"]["lost_friction"]["exact"], "3/5");
     assert_eq!(j["energy"]["lost_restitution"]["exact"], "0");

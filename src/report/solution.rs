@@ -304,6 +304,7 @@ fn oblique_json(o: &ObliqueOutcome<Q>, out: &mut Map<String, Value>, value: &imp
     out.insert("tangential_impulse".into(), value(&o.tangential_impulse));
     if let Some(contact) = o.contact {
         out.insert("contact".into(), Value::String(contact.as_str().into()));
+        out.insert("mu_star".into(), value(&mu_star(o)));
     }
     let energy = &o.energy;
     out.insert(
@@ -321,6 +322,11 @@ fn oblique_json(o: &ObliqueOutcome<Q>, out: &mut Map<String, Value>, value: &imp
         out.insert("pivot_impulse_t".into(), value(along));
     }
     out.insert("residuals".into(), residuals_json(o.residuals.iter()));
+}
+
+/// The friction coefficient at which the contact just sticks, |Jt_stick|/J (J > 0).
+fn mu_star(o: &ObliqueOutcome<Q>) -> Q {
+    num_traits::Signed::abs(&o.stick_impulse) / &o.impulse
 }
 
 /// `{"name": "exact residual", ...}`.
@@ -382,12 +388,15 @@ fn oblique_rows(
     );
     if let Some(contact) = o.contact {
         let meaning = match contact {
-            oblique::Contact::Stick => "stick: the slip stops, |Jt| <= mu J".to_string(),
-            oblique::Contact::Slide { .. } => {
-                "slide: |Jt| = mu J, the slip never stops".to_string()
-            }
+            oblique::Contact::Stick => "contact: the slip stops (mu >= mu*)",
+            oblique::Contact::Slide { .. } => "contact: slides throughout, |Jt| = mu J",
         };
-        t.row("", "contact", plain(meaning));
+        t.row("", meaning, plain(contact.as_str().into()));
+        t.row(
+            "mu*",
+            "friction needed to stick, |Jt_stick|/J",
+            value(&mu_star(o), ""),
+        );
     }
     if let Some((across, along)) = &o.pivot_impulse {
         t.row(
@@ -404,12 +413,12 @@ fn oblique_rows(
     energy_rows(t, &o.energy, value);
     t.row(
         "",
-        "of it to restitution, (1 - e^2) u_n^2/(2 k_n)",
+        "to restitution (closed form)",
         value(&o.lost_restitution, "J"),
     );
     t.row(
         "",
-        "of it to friction (closed form)",
+        "to friction (closed form)",
         value(&o.lost_friction, "J"),
     );
     residual_rows(s, t, o.residuals.iter(), value);

@@ -143,6 +143,9 @@ pub struct ObliqueOutcome<F> {
     pub tangential_impulse: F,
     /// Stick or slide, when friction acts (mu != 0).
     pub contact: Option<Contact>,
+    /// The tangential impulse that would stop the slip, u_t/k_t (used when sticking); the
+    /// friction needed to stick is mu* = |stick_impulse|/J.
+    pub stick_impulse: F,
     /// The pivot's impulse on the rod across and along the rod (pivot only).
     pub pivot_impulse: Option<(F, F)>,
     /// Kinetic energy before, after and lost.
@@ -265,6 +268,7 @@ pub fn complete<F: Field>(
     let k_t = inv_m.clone() + &disc_term + &rod_term;
     let rim = |d: &Disc<F>| d.spin.clone() * &d.radius;
     let slip = o.v0t.clone() + &o.disc.as_ref().map_or_else(F::zero, rim) - &rod0.vt;
+    let stick_impulse = slip.clone() / &k_t;
     let contact = if o.mu.is_zero() {
         None
     } else {
@@ -276,7 +280,7 @@ pub fn complete<F: Field>(
     };
     let jt = match contact {
         None => F::zero(),
-        Some(Contact::Stick) => slip.clone() / &k_t,
+        Some(Contact::Stick) => stick_impulse.clone(),
         Some(Contact::Slide { forward: true }) => o.mu.clone() * &impulse,
         Some(Contact::Slide { forward: false }) => -(o.mu.clone() * &impulse),
     };
@@ -343,6 +347,7 @@ pub fn complete<F: Field>(
         impulse,
         tangential_impulse: jt,
         contact,
+        stick_impulse,
         pivot_impulse,
         energy: Energy {
             before: energy_before,
