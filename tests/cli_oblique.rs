@@ -118,9 +118,43 @@ fn readme_spinning_disc() {
         ("impulse", "48/19"),
         ("tangential_impulse", "3/5"),
     ];
-    for (key, value) in want {
-        assert_eq!(exact(&j, key), value, "{key}");
+    // The hand derivation, step by step.
+    let (m, big_m, i, a, v0, r, spin, mu) = (
+        rat("1"),
+        rat("3"),
+        rat("1"),
+        rat("1/2"),
+        rat("2"),
+        rat("1/4"),
+        rat("8"),
+        rat("1/2"),
+    );
+    let one = rat("1");
+    let k_n = &one / &m + &one / &big_m + &a * &a / &i;
+    let j_n = rat("2") * &v0 / &k_n;
+    let slip = &spin * &r;
+    let k_t = &one / &m + &r * &r / (&m * &r * &r / rat("2")) + &one / &big_m;
+    let j_t = &slip / &k_t;
+    assert!(j_t.abs() <= &mu * &j_n, "the hand derivation sticks");
+    let hand = [
+        &v0 - &j_n / &m,
+        &j_n / &big_m,
+        &j_n * &a / &i,
+        -(&j_t / &m),
+        &j_t / &big_m,
+        &spin - rat("2") * &j_t / (&m * &r),
+        j_n.clone(),
+        j_t.clone(),
+    ];
+    for ((key, value), by_hand) in want.into_iter().zip(hand) {
+        assert_eq!(by_hand.to_string(), value, "hand {key}");
+        assert_eq!(exact(&j, key), value, "solve {key}");
     }
+    assert_eq!(
+        &slip * &slip / (rat("2") * &k_t),
+        rat("3/5"),
+        "u_t^2/(2 k_t)"
+    );
     assert_eq!(j["contact"], "stick");
     // mu* = (3/5)/(48/19) = 19/80 <= 1/2.
     assert_eq!(exact(&j, "mu_star"), "19/80");
