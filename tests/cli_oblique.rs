@@ -306,3 +306,20 @@ fn check_claims_on_oblique_quantities() {
         assert_eq!((code, stderr.as_str()), (2, want));
     }
 }
+
+/// The oblique problem collection (written in the textbook style, not published: see its
+/// header) checks through the TOML path: units, a disc, a pivot, a sliding rod. Its answers come
+/// from an independent two-dimensional impulse balance, rounded to three figures.
+#[test]
+fn oblique_problem_collection_agrees() {
+    let (code, out, err) = rodimpact(&["check", "examples/oblique.toml"]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        out.ends_with("4 problems; 20 of 20 claims agree\n"),
+        "{out}"
+    );
+    assert!(
+        out.contains("2010/167 ≈ 12.0359"),
+        "the disc's spin after: {out}"
+    );
+}
