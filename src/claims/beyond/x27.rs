@@ -25,17 +25,17 @@ fn formalise(_paper: &Paper) -> Formalised {
                 )
             };
             certs.push(Certificate::identity(
-                &title("omega (oblique solver) = omega (frictionless solver)"),
+                title("omega (oblique solver) = omega (frictionless solver)"),
                 n("omega", out.after.rod.omega.clone()),
                 n("omega_0", paper.omega.clone()),
             ));
             certs.push(Certificate::identity(
-                &title("V (oblique solver) = V (frictionless solver)"),
+                title("V (oblique solver) = V (frictionless solver)"),
                 n("V", out.after.rod.v.clone()),
                 n("V_0", paper.rod_v.clone()),
             ));
             certs.push(Certificate::identity(
-                &title("v (oblique solver) = v (frictionless solver)"),
+                title("v (oblique solver) = v (frictionless solver)"),
                 n("v", out.after.v.clone()),
                 n("v_0", paper.v.clone()),
             ));
