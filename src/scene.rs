@@ -352,8 +352,8 @@ impl Scene {
     /// ```
     /// use rodimpact::scene::Scene;
     /// use rodimpact::field::q;
-    /// let s = Scene::builder(q(1, 1), q(1, 1)).pivot(q(-1, 1)).rod_before(q(0, 1), q(0, 1), q(2, 1)).build().unwrap();
-    /// assert_eq!(s.rod_before().v, q(2, 1));
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).pivot(q(-1, 1)).rod_before(q(0, 1), q(0, 1), q(-1, 2)).build().unwrap();
+    /// assert_eq!(s.rod_before().v, q(-1, 2)); // -omega0 p
     /// ```
     pub fn rod_before(&self) -> RodMotion<Q> {
         let given = self

@@ -167,9 +167,9 @@ pub struct ObliqueOutcome<F> {
 /// use rodimpact::scene::{Scene, RodMotion};
 /// use rodimpact::field::{q, Q};
 /// use rodimpact::solve::oblique::rod_before;
-/// let s = Scene::builder(q(1, 1), q(1, 1)).pivot(q(1, 2)).rod_before(q(0, 1), q(0, 1), q(2, 1)).build().unwrap();
+/// let s = Scene::builder(q(1, 1), q(1, 1)).pivot(q(1, 2)).rod_before(q(0, 1), q(0, 1), q(-2, 1)).build().unwrap();
 /// let r = rod_before(&s.params::<Q>(), &s.oblique().unwrap().params());
-/// assert_eq!(r, RodMotion { v: q(-1, 1), vt: q(0, 1), omega: q(2, 1) });
+/// assert_eq!(r, RodMotion { v: q(1, 1), vt: q(0, 1), omega: q(-2, 1) });
 /// ```
 pub fn rod_before<F: Field>(p: &Params<F>, o: &ObliqueParams<F>) -> RodMotion<F> {
     let given = &o.rod_before;
