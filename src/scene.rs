@@ -213,6 +213,31 @@ pub struct ObliqueParams<F> {
     pub rod_before: RodMotion<F>,
 }
 
+impl<F: Field> ObliqueParams<F> {
+    /// The rod's motion before the impact as the impulse equations see it: as given for a
+    /// free rod; on a pivot at p the centre moves with -omega0 p and not along the rod.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::{Oblique, RodMotion, Support};
+    /// use rodimpact::field::{q, Q};
+    /// let o = Oblique { rod_before: RodMotion { v: q(0, 1), vt: q(0, 1), omega: q(-2, 1) }, ..Default::default() };
+    /// let r = o.params::<Q>().rod_moving(&Support::Pivot(q(1, 2)));
+    /// assert_eq!(r, RodMotion { v: q(1, 1), vt: q(0, 1), omega: q(-2, 1) });
+    /// ```
+    pub fn rod_moving(&self, support: &Support<F>) -> RodMotion<F> {
+        let given = &self.rod_before;
+        match support {
+            Support::Free => given.clone(),
+            Support::Pivot(pivot) => RodMotion {
+                v: -(pivot.clone() * &given.omega),
+                vt: F::zero(),
+                omega: given.omega.clone(),
+            },
+        }
+    }
+}
+
 /// The numbers the solver needs, lifted into a field `F`.
 ///
 /// Built from a validated [`Scene`] by [`Scene::params`], or directly (for example with symbolic
@@ -356,19 +381,11 @@ impl Scene {
     /// assert_eq!(s.rod_before().v, q(-1, 2)); // -omega0 p
     /// ```
     pub fn rod_before(&self) -> RodMotion<Q> {
-        let given = self
-            .oblique
-            .as_ref()
-            .map(|o| o.rod_before.clone())
-            .unwrap_or_default();
-        match &self.support {
-            Support::Free => given,
-            Support::Pivot(p) => RodMotion {
-                v: -(p * &given.omega),
-                vt: Q::zero(),
-                omega: given.omega,
-            },
-        }
+        self.oblique
+            .clone()
+            .unwrap_or_default()
+            .params::<Q>()
+            .rod_moving(&self.support)
     }
 
     /// The approach speed at the contact: the projectile's normal velocity minus that of the

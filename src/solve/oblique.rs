@@ -159,30 +159,6 @@ pub struct ObliqueOutcome<F> {
     pub residuals: Residuals<F>,
 }
 
-/// The rod's motion before the impact as the equations see it: on a pivot at p the centre
-/// moves with -omega0 p and not along the rod.
-///
-/// # Examples
-/// ```
-/// use rodimpact::scene::{Scene, RodMotion};
-/// use rodimpact::field::{q, Q};
-/// use rodimpact::solve::oblique::rod_before;
-/// let s = Scene::builder(q(1, 1), q(1, 1)).pivot(q(1, 2)).rod_before(q(0, 1), q(0, 1), q(-2, 1)).build().unwrap();
-/// let r = rod_before(&s.params::<Q>(), &s.oblique().unwrap().params());
-/// assert_eq!(r, RodMotion { v: q(1, 1), vt: q(0, 1), omega: q(-2, 1) });
-/// ```
-pub fn rod_before<F: Field>(p: &Params<F>, o: &ObliqueParams<F>) -> RodMotion<F> {
-    let given = &o.rod_before;
-    match &p.support {
-        Support::Free => given.clone(),
-        Support::Pivot(pivot) => RodMotion {
-            v: -(pivot.clone() * &given.omega),
-            vt: F::zero(),
-            omega: given.omega.clone(),
-        },
-    }
-}
-
 /// The normal problem: `p` with the approach speed `u_n = v0 - (V0 + omega0 a)` as its v0.
 ///
 /// # Examples
@@ -194,7 +170,7 @@ pub fn rod_before<F: Field>(p: &Params<F>, o: &ObliqueParams<F>) -> RodMotion<F>
 /// assert_eq!(normal_params(&s.params::<Q>(), &s.oblique().unwrap().params()).v0, q(2, 1));
 /// ```
 pub fn normal_params<F: Field>(p: &Params<F>, o: &ObliqueParams<F>) -> Params<F> {
-    let rod = rod_before(p, o);
+    let rod = o.rod_moving(&p.support);
     Params {
         v0: p.v0.clone() - &(rod.v + &(rod.omega * &p.a)),
         ..p.clone()
@@ -251,7 +227,7 @@ pub fn complete<F: Field>(
     response: Motion<F>,
     given: Option<Contact>,
 ) -> Result<ObliqueOutcome<F>, Refusal> {
-    let rod0 = rod_before(p, o);
+    let rod0 = o.rod_moving(&p.support);
     let normal = normal_params(p, o);
     let approach = normal.v0.clone();
     let impulse = p.m.clone() * &(approach.clone() - &response.v);
@@ -481,6 +457,26 @@ mod tests {
         );
         assert_eq!(out.lost_friction, q(1, 8)); // u_t^2/(2 k_t)
         assert!(out.residuals.all_zero());
+    }
+
+    /// The same generic code in f64 decides the contact from float signs and lands within
+    /// rounding of the exact sliding end hit above.
+    #[test]
+    fn floats_take_the_same_route() {
+        let s = Scene::builder(q(1, 1), q(1, 1))
+            .v0t(q(1, 1))
+            .mu(q(1, 2))
+            .build()
+            .unwrap();
+        let out = solve(&s.params::<f64>(), &s.oblique().unwrap().params(), None).unwrap();
+        assert_eq!(out.contact, Some(Contact::Slide { forward: true }));
+        for (float, exact) in [
+            (out.after.vt, 0.8),
+            (out.after.rod.vt, 0.2),
+            (out.lost_friction, 0.16),
+        ] {
+            assert!((float - exact).abs() < 1e-15, "{float} vs {exact}");
+        }
     }
 
     /// A pivoted rod (m = 1, M = 3, l = 1, pivot at -1, end hit, v0t = -2, mu = 1/3) takes the tangential impulse at the pivot: the rod gains no slide, the
