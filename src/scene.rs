@@ -8,7 +8,7 @@ use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, RatFn};
 use crate::number;
 use crate::units::{Dimension, parse_si};
-use num_traits::{One, Signed};
+use num_traits::{One, Signed, Zero};
 use std::fmt;
 
 /// How the rod's mass is distributed (always symmetric about its centre).
@@ -123,6 +123,116 @@ pub struct Scene {
     v0: Q,
     e: Q,
     support: Support,
+    oblique: Option<Oblique>,
+}
+
+/// What an oblique, frictional scene adds to the paper's (docs/conventions.md, "Oblique and
+/// frictional impacts"): the projectile's velocity along the rod, Coulomb friction at the
+/// contact, a disc projectile with its spin, and the rod's motion before the impact.
+///
+/// A scene has one only when some part of it differs from the paper's scene; a plain scene
+/// reports exactly what it always did.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Oblique {
+    /// The projectile's velocity along the rod (+y) before the impact.
+    pub v0t: Q,
+    /// Coulomb friction coefficient at the contact (>= 0).
+    pub mu: Q,
+    /// The disc projectile, or `None` for a point projectile.
+    pub disc: Option<Disc>,
+    /// The rod's motion before the impact (zero: at rest).
+    pub rod_before: RodMotion<Q>,
+}
+
+/// A solid disc projectile (I = m r^2/2) sliding on the table, its rim touching the rod.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Disc<F = Q> {
+    /// The disc's radius r (> 0).
+    pub radius: F,
+    /// The disc's angular velocity before the impact, counterclockwise seen from above
+    /// (about z = x cross y).
+    pub spin: F,
+}
+
+/// The rod's motion: the velocity of its centre across (`v`, along x) and along (`vt`, along
+/// y) the rod, and its angular velocity `omega` (the sign of docs/conventions.md: the point at
+/// y moves along x with `v + omega y`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RodMotion<F> {
+    /// Centre velocity along x.
+    pub v: F,
+    /// Centre velocity along the rod (y).
+    pub vt: F,
+    /// Angular velocity.
+    pub omega: F,
+}
+
+impl Oblique {
+    /// Lifts the oblique part into the field `F`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Oblique;
+    /// use rodimpact::field::q;
+    /// let o = Oblique { mu: q(1, 2), ..Default::default() };
+    /// assert_eq!(o.params::<f64>().mu, 0.5);
+    /// ```
+    pub fn params<F: Field>(&self) -> ObliqueParams<F> {
+        let lift = F::from_rational;
+        ObliqueParams {
+            v0t: lift(&self.v0t),
+            mu: lift(&self.mu),
+            disc: self.disc.as_ref().map(|d| Disc {
+                radius: lift(&d.radius),
+                spin: lift(&d.spin),
+            }),
+            rod_before: RodMotion {
+                v: lift(&self.rod_before.v),
+                vt: lift(&self.rod_before.vt),
+                omega: lift(&self.rod_before.omega),
+            },
+        }
+    }
+}
+
+/// The oblique part of a scene lifted into a field `F` (see [`Oblique`]), or built directly
+/// with symbolic entries for a proof.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ObliqueParams<F> {
+    /// The projectile's velocity along the rod before the impact.
+    pub v0t: F,
+    /// Coulomb friction coefficient.
+    pub mu: F,
+    /// The disc projectile, if any.
+    pub disc: Option<Disc<F>>,
+    /// The rod's motion before the impact (for a pivoted rod only `omega` may be non-zero;
+    /// its centre then moves with `v = -omega p`).
+    pub rod_before: RodMotion<F>,
+}
+
+impl<F: Field> ObliqueParams<F> {
+    /// The rod's motion before the impact as the impulse equations see it: as given for a
+    /// free rod; on a pivot at p the centre moves with -omega0 p and not along the rod.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::{Oblique, RodMotion, Support};
+    /// use rodimpact::field::{q, Q};
+    /// let o = Oblique { rod_before: RodMotion { v: q(0, 1), vt: q(0, 1), omega: q(-2, 1) }, ..Default::default() };
+    /// let r = o.params::<Q>().rod_moving(&Support::Pivot(q(1, 2)));
+    /// assert_eq!(r, RodMotion { v: q(1, 1), vt: q(0, 1), omega: q(-2, 1) });
+    /// ```
+    pub fn rod_moving(&self, support: &Support<F>) -> RodMotion<F> {
+        let given = &self.rod_before;
+        match support {
+            Support::Free => given.clone(),
+            Support::Pivot(pivot) => RodMotion {
+                v: -(pivot.clone() * &given.omega),
+                vt: F::zero(),
+                omega: given.omega.clone(),
+            },
+        }
+    }
 }
 
 /// `I = M r^2`: the moment of inertia about the centre of a rod of mass `mass` with radius of
@@ -247,6 +357,7 @@ impl Scene {
             v0: Q::one(),
             e: Q::one(),
             support: Support::Free,
+            oblique: Oblique::default(),
         }
     }
 
@@ -282,6 +393,74 @@ impl Scene {
     pub fn support(&self) -> &Support {
         &self.support
     }
+    /// The oblique and frictional part, or `None` for the paper's scene.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Scene;
+    /// use rodimpact::field::q;
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+    /// assert!(s.oblique().is_none());
+    /// let t = Scene::builder(q(1, 1), q(1, 1)).v0t(q(1, 2)).build().unwrap();
+    /// assert_eq!(t.oblique().unwrap().v0t, q(1, 2));
+    /// ```
+    pub fn oblique(&self) -> Option<&Oblique> {
+        self.oblique.as_ref()
+    }
+
+    /// The rod's motion before the impact as it enters the impulse equations: for a pivoted
+    /// rod spinning with omega0 the centre moves with -omega0 p.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Scene;
+    /// use rodimpact::field::q;
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).pivot(q(-1, 1)).rod_before(q(0, 1), q(0, 1), q(-1, 2)).build().unwrap();
+    /// assert_eq!(s.rod_before().v, q(-1, 2)); // -omega0 p
+    /// ```
+    pub fn rod_before(&self) -> RodMotion<Q> {
+        self.oblique
+            .clone()
+            .unwrap_or_default()
+            .params::<Q>()
+            .rod_moving(&self.support)
+    }
+
+    /// The approach speed at the contact: the projectile's normal velocity minus that of the
+    /// struck point of the rod, v0 - (V0 + omega0 a). The paper's v0 for a rod at rest.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Scene;
+    /// use rodimpact::field::q;
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).v0(q(3, 1)).a(q(1, 2)).rod_before(q(1, 1), q(0, 1), q(2, 1)).build().unwrap();
+    /// assert_eq!(s.approach(), q(1, 1)); // 3 - (1 + 2 * 1/2)
+    /// ```
+    pub fn approach(&self) -> Q {
+        let rod = self.rod_before();
+        &self.v0 - (rod.v + rod.omega * &self.a)
+    }
+
+    /// The paper's scene with the same bodies, impact point, law and support, the rod at rest
+    /// and the projectile arriving at the approach speed [`Scene::approach`]: the normal
+    /// impulse problem of this scene. For a plain scene it is the scene itself.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::Scene;
+    /// use rodimpact::field::q;
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).v0(q(3, 1)).mu(q(1, 2)).rod_before(q(1, 1), q(0, 1), q(0, 1)).build().unwrap();
+    /// let n = s.normal_problem();
+    /// assert_eq!((n.v0(), n.oblique()), (&q(2, 1), None));
+    /// ```
+    pub fn normal_problem(&self) -> Scene {
+        Scene {
+            v0: self.approach(),
+            oblique: None,
+            ..self.clone()
+        }
+    }
+
     /// Moment of inertia about the rod's centre.
     pub fn inertia(&self) -> Q {
         self.rod.moment(&self.rod_mass, &self.half_length)
@@ -344,9 +523,32 @@ pub struct SceneBuilder {
     v0: Q,
     e: Q,
     support: Support,
+    oblique: Oblique,
 }
 
 impl SceneBuilder {
+    /// The projectile's velocity along the rod (+y) before the impact (default 0).
+    pub fn v0t(mut self, v0t: Q) -> Self {
+        self.oblique.v0t = v0t;
+        self
+    }
+    /// Coulomb friction coefficient at the contact (default 0).
+    pub fn mu(mut self, mu: Q) -> Self {
+        self.oblique.mu = mu;
+        self
+    }
+    /// A solid disc projectile of radius r spinning counterclockwise (seen from above) with
+    /// `spin` before the impact.
+    pub fn disc(mut self, radius: Q, spin: Q) -> Self {
+        self.oblique.disc = Some(Disc { radius, spin });
+        self
+    }
+    /// The rod's motion before the impact: centre velocity `v` across and `vt` along the rod,
+    /// angular velocity `omega` (a pivoted rod takes only `omega`).
+    pub fn rod_before(mut self, v: Q, vt: Q, omega: Q) -> Self {
+        self.oblique.rod_before = RodMotion { v, vt, omega };
+        self
+    }
     /// Rod half-length l.
     pub fn half_length(mut self, l: Q) -> Self {
         self.half_length = l;
@@ -431,7 +633,8 @@ impl SceneBuilder {
         if let Support::Pivot(p) = &self.support {
             check_on_rod("pivot", p, l)?;
         }
-        Ok(Scene {
+        let oblique = check_oblique(self.oblique, &self.support)?;
+        let scene = Scene {
             m: self.m,
             rod_mass: self.rod_mass,
             half_length: self.half_length,
@@ -440,8 +643,46 @@ impl SceneBuilder {
             v0: self.v0,
             e: self.e,
             support: self.support,
-        })
+            oblique,
+        };
+        let approach = scene.approach();
+        if !approach.is_positive() {
+            return Err(Error::out_of_range(
+                "v0",
+                format!(
+                    "no approach at the contact point: the projectile's normal velocity minus the struck point's, v0 - (V0 + omega0 a), is {approach}, not > 0"
+                ),
+            ));
+        }
+        Ok(scene)
     }
+}
+
+/// Validates the oblique part (mu >= 0, radius > 0, a pivoted rod's centre not moving on
+/// its own) and keeps it only when it differs from the paper's scene.
+fn check_oblique(o: Oblique, support: &Support) -> Result<Option<Oblique>, Error> {
+    if o.mu.is_negative() {
+        return Err(Error::out_of_range(
+            "mu",
+            format!("friction coefficient must be >= 0, got {}", o.mu),
+        ));
+    }
+    if let Some(d) = &o.disc {
+        check_positive("radius", &d.radius)?;
+    }
+    if let Support::Pivot(_) = support {
+        for (field, x) in [("rod-v", &o.rod_before.v), ("rod-vt", &o.rod_before.vt)] {
+            if !x.is_zero() {
+                return Err(Error::new(
+                    field,
+                    ErrorKind::Conflict(
+                        "a pivoted rod's centre moves only by turning about the pivot; give --rod-omega only".into(),
+                    ),
+                ));
+            }
+        }
+    }
+    Ok((o != Oblique::default()).then_some(o))
 }
 
 /// A scene as the user typed it: every number still a string, each parsed with its field name.
@@ -470,11 +711,26 @@ pub struct SceneInput {
     pub e: Option<String>,
     /// Pivot position, if the rod is pivoted.
     pub pivot: Option<String>,
+    /// The projectile's velocity along the rod (default 0).
+    pub v0t: Option<String>,
+    /// Coulomb friction coefficient at the contact (default 0).
+    pub mu: Option<String>,
+    /// Radius of a disc projectile (default: a point projectile).
+    pub radius: Option<String>,
+    /// The disc's spin before the impact, counterclockwise seen from above (needs `radius`).
+    pub spin: Option<String>,
+    /// The rod centre's velocity across the rod before the impact (default 0).
+    pub rod_v: Option<String>,
+    /// The rod centre's velocity along the rod before the impact (default 0).
+    pub rod_vt: Option<String>,
+    /// The rod's angular velocity before the impact (default 0).
+    pub rod_omega: Option<String>,
 }
 
 impl SceneInput {
     /// The slot of the input named `key` (the command-line flag without dashes: `m`, `M`, `l`,
-    /// `length`, `a`, `from-end`, `v0`, `rod`, `e`, `pivot`), or `None` for an unknown key.
+    /// `length`, `a`, `from-end`, `v0`, `rod`, `e`, `pivot`, `v0t`, `mu`, `radius`, `spin`,
+    /// `rod-v`, `rod-vt`, `rod-omega`), or `None` for an unknown key.
     ///
     /// Scene files, batch columns and tests fill a scene by name through this one map.
     ///
@@ -498,6 +754,13 @@ impl SceneInput {
             "rod" => &mut self.rod,
             "e" => &mut self.e,
             "pivot" => &mut self.pivot,
+            "v0t" => &mut self.v0t,
+            "mu" => &mut self.mu,
+            "radius" => &mut self.radius,
+            "spin" => &mut self.spin,
+            "rod-v" => &mut self.rod_v,
+            "rod-vt" => &mut self.rod_vt,
+            "rod-omega" => &mut self.rod_omega,
             _ => return None,
         })
     }
@@ -584,12 +847,44 @@ impl SceneInput {
         if let Some(p) = &self.pivot {
             builder = builder.pivot(number_of("pivot", p)?);
         }
+        let optional = |key: &str, text: &Option<String>| -> Result<Option<Q>, Error> {
+            text.as_deref().map(|t| number_of(key, t)).transpose()
+        };
+        if let Some(v0t) = optional("v0t", &self.v0t)? {
+            builder = builder.v0t(v0t);
+        }
+        if let Some(mu) = optional("mu", &self.mu)? {
+            builder = builder.mu(mu);
+        }
+        match (
+            optional("radius", &self.radius)?,
+            optional("spin", &self.spin)?,
+        ) {
+            (Some(radius), spin) => builder = builder.disc(radius, spin.unwrap_or_default()),
+            (None, Some(_)) => {
+                return Err(conflict(
+                    "spin",
+                    "a point projectile has no spin: give the disc's --radius too",
+                ));
+            }
+            (None, None) => {}
+        }
+        let rod = [
+            optional("rod-v", &self.rod_v)?,
+            optional("rod-vt", &self.rod_vt)?,
+            optional("rod-omega", &self.rod_omega)?,
+        ];
+        if rod.iter().any(Option::is_some) {
+            let [v, vt, omega] = rod.map(Option::unwrap_or_default);
+            builder = builder.rod_before(v, vt, omega);
+        }
         builder.build()
     }
 }
 
 /// The dimension of the numeric scene input named `key` (`m`, `M`, `l`, `length`, `a`,
-/// `from-end`, `v0`, `e`, `pivot`): what a unit written after its number must measure.
+/// `from-end`, `v0`, `e`, `pivot`, `v0t`, `mu`, `radius`, `spin`, `rod-v`, `rod-vt`,
+/// `rod-omega`): what a unit written after its number must measure.
 ///
 /// # Examples
 /// ```
@@ -600,8 +895,9 @@ impl SceneInput {
 pub fn dimension_of(key: &str) -> Dimension {
     match key {
         "m" | "M" => Dimension::Mass,
-        "l" | "length" | "a" | "from-end" | "pivot" => Dimension::Length,
-        "v0" => Dimension::Speed,
+        "l" | "length" | "a" | "from-end" | "pivot" | "radius" => Dimension::Length,
+        "v0" | "v0t" | "rod-v" | "rod-vt" => Dimension::Speed,
+        "spin" | "rod-omega" => Dimension::AngularSpeed,
         _ => Dimension::Pure,
     }
 }

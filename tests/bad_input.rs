@@ -200,6 +200,28 @@ fn scene_flags() {
             with(&["--v0", "1e1000000000000000000000000000000"]),
             "v0: ",
         ),
+        ("mu negative", with(&["--mu=-1"]), "mu: "),
+        ("mu NaN", with(&["--mu", "NaN"]), "mu: "),
+        ("mu with a unit", with(&["--mu", "1 m"]), "mu: "),
+        ("radius 0", with(&["--radius", "0"]), "radius: "),
+        ("spin without radius", with(&["--spin", "1"]), "spin: "),
+        ("v0t inf", with(&["--v0t", "inf"]), "v0t: "),
+        (
+            "rod-omega 1/0",
+            with(&["--rod-omega", "1/0"]),
+            "rod-omega: ",
+        ),
+        ("no approach", with(&["--rod-v", "5"]), "v0: "),
+        (
+            "pivot with rod-v",
+            with(&["--pivot", "0", "--rod-v", "1"]),
+            "rod-v: ",
+        ),
+        (
+            "v0t exponent 1e9",
+            with(&["--v0t", "1e1000000000"]),
+            "v0t: ",
+        ),
         ("digits 0", with(&["--digits", "0"]), "digits"),
         (
             "digits huge",

@@ -97,7 +97,7 @@ fn a_wrong_general_optimum_is_caught() {
         failing(&paper),
         [
             "C20", "C22", "C30", "C41", "X5", "X6", "X7", "X9", "X10", "X11", "X19", "X23", "X24",
-            "X26"
+            "X26", "X31"
         ]
     );
     let paper =
@@ -106,7 +106,7 @@ fn a_wrong_general_optimum_is_caught() {
         failing(&paper),
         [
             "C20", "C22", "C30", "C41", "X5", "X6", "X7", "X9", "X10", "X11", "X19", "X23", "X24",
-            "X26"
+            "X26", "X31"
         ]
     );
     // (M - m) for (M + m).
@@ -117,7 +117,7 @@ fn a_wrong_general_optimum_is_caught() {
         failing(&paper),
         [
             "C20", "C22", "C30", "C41", "X5", "X6", "X7", "X9", "X10", "X11", "X19", "X23", "X24",
-            "X26"
+            "X26", "X31"
         ]
     );
 }

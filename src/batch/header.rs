@@ -43,7 +43,27 @@ impl Arithmetic {
     }
 }
 
-const SCENE_COLUMNS: [&str; 8] = ["m", "M", "l", "a", "v0", "rod", "e", "pivot"];
+const SCENE_COLUMNS: [&str; 15] = [
+    "m",
+    "M",
+    "l",
+    "a",
+    "v0",
+    "rod",
+    "e",
+    "pivot",
+    "v0t",
+    "mu",
+    "radius",
+    "spin",
+    "rod-v",
+    "rod-vt",
+    "rod-omega",
+];
+/// The first of the oblique scene columns (`v0t` ... `rod-omega`) in `SCENE_COLUMNS`.
+const FIRST_OBLIQUE: usize = 8;
+/// The columns an oblique header appends after `omega` (docs/conventions.md).
+pub(super) const OBLIQUE_OUTPUTS: [&str; 5] = ["vt", "Vt", "spin", "tangential_impulse", "contact"];
 /// The claim columns, in the order of their checks: the state after the impact, the impulse on
 /// the rod, the energies.
 pub(super) const CLAIMS: [&str; 6] = ["v", "V", "omega", "J", "energy_before", "energy_after"];
@@ -127,6 +147,23 @@ impl Batch {
             .split(',')
             .zip(&columns)
             .position(|(name, c)| *c == Column::Passed && name.trim() == "id");
+        let oblique = columns.iter().find_map(|c| match c {
+            Column::Scene(k) if *k >= FIRST_OBLIQUE => Some(SCENE_COLUMNS[*k]),
+            _ => None,
+        });
+        if let Some(name) = oblique {
+            if arithmetic == Arithmetic::F64 {
+                return Err(bad(format!(
+                    "column '{name}': oblique and frictional scenes are solved exactly; the f64 arithmetic takes the paper's scene only"
+                )));
+            }
+            if let Some(k) = (STATE..CLAIMS.len()).find(|k| columns.contains(&Column::Claim(*k))) {
+                return Err(bad(format!(
+                    "claim column '{}' with column '{name}': J and the energies are checked for the paper's scene only (claim v, V, omega)",
+                    CLAIMS[k]
+                )));
+            }
+        }
         Ok(Batch {
             arithmetic,
             agreement: Agreement::Exact,
@@ -185,9 +222,29 @@ impl Batch {
             .collect()
     }
 
-    /// The claimed state (v, V and omega all claimed) is audited: exact arithmetic only.
+    /// The claimed state (v, V and omega all claimed) is audited: exact arithmetic and the
+    /// paper's scene only (the audit's laws are those of the perpendicular frictionless impact).
     pub(super) fn audits(&self) -> bool {
-        self.arithmetic == Arithmetic::Exact && (0..STATE).all(|k| self.claims.contains(&k))
+        self.arithmetic == Arithmetic::Exact
+            && !self.is_oblique()
+            && (0..STATE).all(|k| self.claims.contains(&k))
+    }
+
+    /// Whether the header has an oblique scene column: then every row is solved as an oblique
+    /// scene and the output gains `vt, Vt, spin, tangential_impulse, contact` after `omega`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic};
+    /// assert!(Batch::new("m,M,mu", Arithmetic::Exact).unwrap().is_oblique());
+    /// assert!(!Batch::new("m,M,e", Arithmetic::Exact).unwrap().is_oblique());
+    /// let disc = Batch::new("m,M,radius,spin", Arithmetic::Exact).unwrap();
+    /// assert!(disc.output_header().contains(",spin_after,"));
+    /// ```
+    pub fn is_oblique(&self) -> bool {
+        self.columns
+            .iter()
+            .any(|c| matches!(c, Column::Scene(k) if *k >= FIRST_OBLIQUE))
     }
 
     /// The header of the output file (with its newline). The computed columns are named for
@@ -221,6 +278,15 @@ impl Batch {
                 Arithmetic::Exact => "",
             };
             out.push_str(&format!(",{name}{suffix}"));
+        }
+        if self.is_oblique() {
+            for name in OBLIQUE_OUTPUTS {
+                // The disc's spin after the impact, beside the input column `spin` (before).
+                let input = SCENE_COLUMNS.iter().position(|c| *c == name);
+                let clash = input.is_some_and(|k| self.columns.contains(&Column::Scene(k)));
+                let suffix = if clash { "_after" } else { "" };
+                out.push_str(&format!(",{name}{suffix}"));
+            }
         }
         if self.arithmetic == Arithmetic::Exact {
             out.push_str(",laws_held");

@@ -6,7 +6,9 @@
 //! results, each compared with the computed value. Appended columns: `v, V, omega` (named
 //! `v_exact`, ... when the input already has a claim of that name; `v_f64, V_f64, omega_f64`
 //! in f64), `laws_held` (`-` in f64, which decides no law), and for each claim
-//! `<name>_ok, <name>_rel_error`.
+//! `<name>_ok, <name>_rel_error`. A header with an oblique column (`v0t, mu, radius, spin,
+//! rod-v, rod-vt, rod-omega`, exact arithmetic only) also gets `vt, Vt, spin,
+//! tangential_impulse, contact` after `omega`.
 //!
 //! Limits: at most [`MAX_ROWS`] rows and [`MAX_LINE`] bytes per line; each number at most
 //! [`number::MAX_DIGITS`](crate::number::MAX_DIGITS) digits. Memory stays flat in the number of

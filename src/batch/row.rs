@@ -8,7 +8,7 @@ use crate::error::Error;
 use crate::field::Q;
 use crate::mechanics::{Motion, kinetic_energy};
 use crate::scene::Scene;
-use crate::solve::{self, Route, Why};
+use crate::solve::{self, Route, Why, oblique};
 use num_traits::{Signed, Zero};
 
 /// One output row: the CSV line (with its newline) and what the summary needs.
@@ -63,6 +63,15 @@ impl Batch {
         out.push_str(line);
         let extra = |k: usize| self.claims.contains(&k);
         let (values, laws_held, exact_state) = match self.arithmetic {
+            Arithmetic::Exact if self.is_oblique() => {
+                let ([v, rod_v, omega], laws_hold) = oblique_values(&scene, &mut out);
+                out.push_str(if laws_hold { ",true" } else { ",false" });
+                (
+                    [Some(v), Some(rod_v), Some(omega), None, None, None],
+                    Some(laws_hold),
+                    None,
+                )
+            }
             Arithmetic::Exact => {
                 let solved = solve::with::<Q>(&scene, self.arithmetic.route())
                     .expect("the fraction-free route takes every scene in Q");
@@ -260,6 +269,44 @@ fn exact_values(
     ]
 }
 
+/// Writes v, V, omega and the oblique columns (`vt, Vt, spin, tangential_impulse, contact`;
+/// `spin` empty for a point projectile, `contact` empty without friction) of an oblique
+/// header's row, solved exactly (the normal problem fraction-free, then
+/// [`oblique::complete`]); returns v, V, omega and whether every law held.
+fn oblique_values(scene: &Scene, out: &mut String) -> ([Q; 3], bool) {
+    let normal = scene.normal_problem();
+    let solved = solve::with::<Q>(&normal, Route::FractionFree)
+        .expect("the fraction-free route takes every scene in Q");
+    let o = scene.oblique().cloned().unwrap_or_default();
+    let done = oblique::complete(&scene.params(), &o.params(), solved.after, None)
+        .expect("Q decides stick or slide, and every mass is positive");
+    let after = &done.after;
+    let values = [
+        Some(&after.v),
+        Some(&after.rod.v),
+        Some(&after.rod.omega),
+        Some(&after.vt),
+        Some(&after.rod.vt),
+        after.spin.as_ref(),
+        Some(&done.tangential_impulse),
+    ];
+    for value in values {
+        out.push(',');
+        if let Some(x) = value {
+            crate::field::decimal::write_exact(out, x);
+        }
+    }
+    out.push(',');
+    out.push_str(done.contact.map_or("", |c| c.as_str()));
+    let laws = solved.laws_hold == Some(true) && done.residuals.all_zero();
+    let exact = [
+        after.v.clone(),
+        after.rod.v.clone(),
+        after.rod.omega.clone(),
+    ];
+    (exact, laws)
+}
+
 /// v, V, omega by `route` in f64 (NaN where the system underflowed to a singular one; and J
 /// and the energies where `wanted`), as shortest round-trip text (a zero is written `0.0`,
 /// whatever its sign: `-0.0` only says which way the float rounded) and, when `compared`, as
@@ -329,5 +376,38 @@ mod tests {
             b.row(3, ",1,,").unwrap_err().to_string(),
             "row 3, column m: empty number"
         );
+    }
+
+    /// The oblique columns: the sliding end hit of `solve --v0t 1 --mu 1/2` (m = M = 1, by
+    /// hand v = 3/5, V = 2/5, omega = 6/5, vt = 4/5, Vt = 1/5, Jt = 1/5), a row without
+    /// friction, f64 refused, and J or energy claims refused with oblique columns.
+    #[test]
+    fn oblique_columns_are_solved_exactly() {
+        let b = Batch::new("m,M,v0t,mu,omega", Arithmetic::Exact).unwrap();
+        assert_eq!(
+            b.output_header(),
+            "m,M,v0t,mu,omega,v,V,omega_exact,vt,Vt,spin,tangential_impulse,contact,laws_held,omega_ok,omega_rel_error\n"
+        );
+        let row = b.row(1, "1,1,1,1/2,6/5").unwrap();
+        assert_eq!(
+            row.line,
+            "1,1,1,1/2,6/5,3/5,2/5,6/5,4/5,1/5,,1/5,slide,true,true,0\n"
+        );
+        let plain = b.row(2, "1,1,,,").unwrap();
+        assert_eq!(plain.line, "1,1,,,,3/5,2/5,6/5,0,0,,0,,true,,\n");
+        assert_eq!(
+            Batch::new("m,M,mu", Arithmetic::F64)
+                .unwrap_err()
+                .to_string(),
+            "header: column 'mu': oblique and frictional scenes are solved exactly; the f64 arithmetic takes the paper's scene only"
+        );
+        assert_eq!(
+            Batch::new("m,M,mu,J", Arithmetic::Exact)
+                .unwrap_err()
+                .to_string(),
+            "header: claim column 'J' with column 'mu': J and the energies are checked for the paper's scene only (claim v, V, omega)"
+        );
+        let audited = Batch::new("m,M,mu,v,V,omega", Arithmetic::Exact).unwrap();
+        assert!(!audited.output_header().contains("diagnosis"));
     }
 }

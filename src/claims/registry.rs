@@ -99,6 +99,11 @@ registry! {
     "beyond/x24.rs" => x24,
     "beyond/x25.rs" => x25,
     "beyond/x26.rs" => x26,
+    "beyond/x27.rs" => x27,
+    "beyond/x28.rs" => x28,
+    "beyond/x29.rs" => x29,
+    "beyond/x30.rs" => x30,
+    "beyond/x31.rs" => x31,
 }
 
 /// Every claim, in the order of `docs/claims.md`: the paper's, then the results beyond it.

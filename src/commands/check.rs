@@ -1,6 +1,6 @@
 //! `rodimpact check`: published answers against the exact ones.
 
-use super::{Failure, SceneFlags, print_out};
+use super::{Failure, ObliqueFlags, SceneFlags, print_out};
 use clap::Args;
 use rodimpact::report::{check_json, check_summary, check_table, problems_json, problems_text};
 use rodimpact::textbook::expr::Budget;
@@ -17,8 +17,11 @@ pub(crate) struct CheckArgs {
     pub(crate) file: Option<PathBuf>,
     #[command(flatten)]
     pub(crate) scene: SceneFlags,
+    #[command(flatten)]
+    pub(crate) oblique: ObliqueFlags,
     /// A claimed answer NAME=VALUE: NAME one of v, V, V_cm, omega, a_star, omega_max,
-    /// energy_before, energy_after, energy_lost, pivot_impulse, impulse; VALUE a number as
+    /// energy_before, energy_after, energy_lost, pivot_impulse, impulse, and for an oblique
+    /// scene vt, Vt, spin, tangential_impulse; VALUE a number as
     /// printed (with an optional unit), a fraction, or a formula in m M l L a d v0 e p I r.
     /// With formulas, a scene quantity not given is a free symbol, except e (1, elastic) and
     /// the rod (uniform), as in solve.
@@ -46,7 +49,7 @@ pub(crate) fn run_check(args: &CheckArgs) -> Result<(), Failure> {
 
 fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
     let label = rodimpact::echo::echo_path(path);
-    let s = args.scene.input();
+    let s = args.oblique.input(&args.scene);
     let scene_given = [
         &s.m,
         &s.rod_mass,
@@ -58,6 +61,13 @@ fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
         &s.rod,
         &s.e,
         &s.pivot,
+        &s.v0t,
+        &s.mu,
+        &s.radius,
+        &s.spin,
+        &s.rod_v,
+        &s.rod_vt,
+        &s.rod_omega,
     ]
     .iter()
     .any(|f| f.is_some());
@@ -142,7 +152,12 @@ fn check_flags(args: &CheckArgs) -> Result<bool, Error> {
         .iter()
         .map(|c| ClaimedAnswer::parse_within(c, &mut budget))
         .collect::<Result<Vec<_>, _>>()?;
-    let check = check_scene_within(&args.scene.input(), &claims, args.sig, &mut budget)?;
+    let check = check_scene_within(
+        &args.oblique.input(&args.scene),
+        &claims,
+        args.sig,
+        &mut budget,
+    )?;
     if args.json {
         print_out(&format!("{}\n", pretty(&check_json(&check))));
     } else {

@@ -80,6 +80,50 @@ impl SceneFlags {
             rod: self.rod.clone(),
             e,
             pivot: self.pivot.clone(),
+            ..SceneInput::default()
+        }
+    }
+}
+
+/// The oblique and frictional scene flags of `solve` and `check` (docs/conventions.md,
+/// "Oblique and frictional impacts").
+#[derive(Args, Debug, Default)]
+pub(crate) struct ObliqueFlags {
+    /// The projectile's velocity along the rod (+y, towards increasing a) [default: 0].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) v0t: Option<String>,
+    /// Coulomb friction coefficient at the contact, mu >= 0 [default: 0].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) mu: Option<String>,
+    /// A solid disc projectile of this radius (I = m r^2/2) instead of a point.
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) radius: Option<String>,
+    /// The disc's spin before the impact, counterclockwise seen from above [default: 0].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) spin: Option<String>,
+    /// The rod centre's velocity across the rod (along x) before the impact [default: 0].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) rod_v: Option<String>,
+    /// The rod centre's velocity along the rod before the impact [default: 0].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) rod_vt: Option<String>,
+    /// The rod's angular velocity before the impact (sign of omega) [default: 0].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) rod_omega: Option<String>,
+}
+
+impl ObliqueFlags {
+    /// The scene `flags` give, with these oblique inputs added.
+    pub(crate) fn input(&self, flags: &SceneFlags) -> SceneInput {
+        SceneInput {
+            v0t: self.v0t.clone(),
+            mu: self.mu.clone(),
+            radius: self.radius.clone(),
+            spin: self.spin.clone(),
+            rod_v: self.rod_v.clone(),
+            rod_vt: self.rod_vt.clone(),
+            rod_omega: self.rod_omega.clone(),
+            ..flags.input()
         }
     }
 }

@@ -5,8 +5,9 @@ use super::value_json;
 use crate::field::decimal::{self, Rounding};
 use crate::field::{Q, QSqrt};
 use crate::optimum::{Argmax, Optimum, PaperForm, Placement, optimum};
-use crate::scene::{RodInertia, Scene, Support};
-use crate::solve::{self, Outcome, Route};
+use crate::scene::{Oblique, RodInertia, Scene, Support};
+use crate::solve::oblique::{self, ObliqueOutcome};
+use crate::solve::{self, Energy, Outcome, Route};
 use num_traits::{One, Zero};
 use serde_json::{Map, Value, json};
 
@@ -15,10 +16,16 @@ use serde_json::{Map, Value, json};
 pub struct Solution {
     /// The scene.
     pub scene: Scene,
-    /// Velocities, energies, pivot impulse and residuals.
+    /// Velocities, energies, pivot impulse and residuals of the normal problem (for a plain
+    /// scene, of the scene itself: see [`Scene::normal_problem`]).
     pub outcome: Outcome<Q>,
-    /// a*, its in-rod decision and the exact maximum of omega.
-    pub optimum: Optimum,
+    /// The whole answer of an oblique or frictional scene (both axes, friction, disc spin,
+    /// the rod's motion before), `None` for the paper's scene.
+    pub oblique: Option<ObliqueOutcome<Q>>,
+    /// a*, its in-rod decision and the exact maximum of omega; `None` when the rod turns
+    /// before the impact (the approach speed then depends on a, and the paper's optimum does
+    /// not apply).
+    pub optimum: Option<Optimum>,
 }
 
 impl Solution {
@@ -32,13 +39,36 @@ impl Solution {
     /// assert_eq!(s.outcome.after.omega, q(6, 5));
     /// ```
     pub fn of(scene: &Scene) -> Solution {
-        let outcome = solve::with::<Q>(scene, Route::FractionFree)
+        let normal = scene.normal_problem();
+        let outcome = solve::with::<Q>(&normal, Route::FractionFree)
             .expect("the fraction-free route takes every scene in Q")
-            .outcome(&scene.params());
+            .outcome(&normal.params());
+        let oblique = scene.oblique().map(|o| {
+            oblique::complete(&scene.params(), &o.params(), outcome.after.clone(), None)
+                .expect("Q decides stick or slide, and every mass is positive")
+        });
+        let turning = scene.rod_before().omega != Q::zero();
         Solution {
             scene: scene.clone(),
             outcome,
-            optimum: optimum(scene),
+            oblique,
+            optimum: (!turning).then(|| optimum(&normal)),
+        }
+    }
+
+    /// Whether every conservation law that applies holds exactly (for an oblique scene also
+    /// the energy loss equal to its closed forms).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{report::Solution, scene::Scene, field::q};
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).v0t(q(1, 1)).mu(q(1, 2)).build().unwrap();
+    /// assert!(Solution::of(&s).laws_hold());
+    /// ```
+    pub fn laws_hold(&self) -> bool {
+        match &self.oblique {
+            Some(o) => o.residuals.all_zero(),
+            None => self.outcome.residuals.all_zero(),
         }
     }
 
@@ -61,32 +91,15 @@ impl Solution {
     pub fn to_json(&self, digits: usize) -> Value {
         let decimal_digits = digits.max(30);
         let value = |x: &Q| value_json(x, decimal_digits);
-        let after = &self.outcome.after;
         let mut out = Map::new();
         out.insert("scene".into(), scene_json(&self.scene));
-        out.insert("v".into(), value(&after.v));
-        out.insert("V".into(), value(&after.rod_v));
-        out.insert("omega".into(), value(&after.omega));
-        let energy = &self.outcome.energy;
-        out.insert(
-            "energy".into(),
-            json!({
-                "before": value(&energy.before),
-                "after": value(&energy.after),
-                "lost": value(&energy.lost),
-            }),
-        );
-        if let Some(p) = &self.outcome.pivot_impulse {
-            out.insert("pivot_impulse".into(), value(p));
+        match &self.oblique {
+            None => self.paper_json(&mut out, &value),
+            Some(o) => oblique_json(o, &mut out, &value),
         }
-        let residuals: Map<String, Value> = self
-            .outcome
-            .residuals
-            .iter()
-            .map(|(name, r)| (name.to_string(), Value::String(r.to_string())))
-            .collect();
-        out.insert("residuals".into(), Value::Object(residuals));
-        let o = &self.optimum;
+        let Some(o) = &self.optimum else {
+            return Value::Object(out);
+        };
         // Bounds one digit tighter than asked, printed outward with two more digits, so the
         // printed interval still encloses a* and is at most 10^-digits a* wide.
         let (lower, upper) = decimal::sqrt_bounds(&o.squared, digits + 1);
@@ -111,17 +124,42 @@ impl Solution {
             surd_json(&o.end_to_max(), decimal_digits),
         );
         out.insert("gain".into(), surd_json(&o.gain(), decimal_digits));
-        let form = PaperForm::of(&self.scene);
+        let normal = self.scene.normal_problem();
+        let form = PaperForm::of(&normal);
         out.insert(
             "paper_form".into(),
             json!({
                 "K": form.k.to_string(),
                 "b_squared": form.b_squared.to_string(),
                 "c": form.c.to_string(),
-                "verified": form.verify(&self.scene),
+                "verified": form.verify(&normal),
             }),
         );
         Value::Object(out)
+    }
+
+    /// The paper scene's `v`, `V`, `omega`, `energy`, `pivot_impulse` and `residuals`.
+    fn paper_json(&self, out: &mut Map<String, Value>, value: &impl Fn(&Q) -> Value) {
+        let after = &self.outcome.after;
+        out.insert("v".into(), value(&after.v));
+        out.insert("V".into(), value(&after.rod_v));
+        out.insert("omega".into(), value(&after.omega));
+        let energy = &self.outcome.energy;
+        out.insert(
+            "energy".into(),
+            json!({
+                "before": value(&energy.before),
+                "after": value(&energy.after),
+                "lost": value(&energy.lost),
+            }),
+        );
+        if let Some(p) = &self.outcome.pivot_impulse {
+            out.insert("pivot_impulse".into(), value(p));
+        }
+        out.insert(
+            "residuals".into(),
+            residuals_json(self.outcome.residuals.iter()),
+        );
     }
 
     /// The aligned, human-readable report of `solve` (decimals to `digits` significant digits),
@@ -137,7 +175,6 @@ impl Solution {
     /// ```
     pub fn to_text(&self, digits: usize) -> String {
         let s = &self.scene;
-        let after = &self.outcome.after;
         let mut t = Table::default();
         let mut out = String::new();
         out.push_str(&format!("Scene: {}\n", describe(s)));
@@ -151,45 +188,25 @@ impl Solution {
             length(s.a()),
             decimal::compact(s.v0())
         ));
+        if let Some(o) = s.oblique() {
+            out.push_str(&format!("  {}\n", describe_oblique(o)));
+        }
         out.push_str("  (SI units; a number given without a unit is read in SI)\n\n");
         let value = |x: &Q, unit: &str| rational_cells(x, unit, digits);
-        t.section("After the impact");
-        t.row("v", "projectile velocity", value(&after.v, "m/s"));
-        t.row("V", "rod centre velocity", value(&after.rod_v, "m/s"));
-        t.row(
-            "omega",
-            "rod angular velocity",
-            value(&after.omega, "rad/s"),
-        );
-        let impulse = self.outcome.impulse(&s.params::<Q>());
-        t.row(
-            "J",
-            "impulse on the rod, m (v0 - v)",
-            value(&impulse, "N s"),
-        );
-        if let Some(p) = &self.outcome.pivot_impulse {
-            t.row("P", "impulse of the pivot on the rod", value(p, "N s"));
+        match &self.oblique {
+            None => self.paper_rows(&mut t, &value),
+            Some(o) => oblique_rows(s, o, &mut t, &value),
         }
-        t.section("Kinetic energy");
-        let e = &self.outcome.energy;
-        t.row("K0", "before", value(&e.before, "J"));
-        t.row("K1", "after", value(&e.after, "J"));
-        t.row("dK", "lost", value(&e.lost, "J"));
-        t.section("Conservation residuals, after - before (0 = the law holds exactly)");
-        for (name, r) in self.outcome.residuals.iter() {
-            let (label, unit) = match (name, s.support()) {
-                ("angular_momentum", Support::Free) => {
-                    ("angular momentum about the rod's centre", "kg m^2/s")
-                }
-                ("angular_momentum", Support::Pivot(_)) => {
-                    ("angular momentum about the pivot", "kg m^2/s")
-                }
-                ("linear_momentum", _) => ("linear momentum", "kg m/s"),
-                _ => ("kinetic energy (elastic)", "J"),
-            };
-            t.row("", label, value(r, unit));
-        }
-        let o = &self.optimum;
+        let Some(o) = &self.optimum else {
+            t.section("Fastest spin");
+            t.row(
+                "",
+                "not reported",
+                plain("the rod turns before the impact, so the approach speed depends on a".into()),
+            );
+            out.push_str(&t.render());
+            return out;
+        };
         let (symbol, formula) = match s.support() {
             Support::Free => ("a*^2", "I (M + m)/(m M)"),
             Support::Pivot(_) => ("d*^2", "I_p/m, from the pivot"),
@@ -244,6 +261,226 @@ impl Solution {
         out.push_str(&t.render());
         out
     }
+    /// The paper scene's rows: velocities after, impulses, energy and residuals.
+    fn paper_rows(&self, t: &mut Table, value: &impl Fn(&Q, &str) -> [String; 2]) {
+        let s = &self.scene;
+        let after = &self.outcome.after;
+        t.section("After the impact");
+        t.row("v", "projectile velocity", value(&after.v, "m/s"));
+        t.row("V", "rod centre velocity", value(&after.rod_v, "m/s"));
+        t.row(
+            "omega",
+            "rod angular velocity",
+            value(&after.omega, "rad/s"),
+        );
+        let impulse = self.outcome.impulse(&s.params::<Q>());
+        t.row(
+            "J",
+            "impulse on the rod, m (v0 - v)",
+            value(&impulse, "N s"),
+        );
+        if let Some(p) = &self.outcome.pivot_impulse {
+            t.row("P", "impulse of the pivot on the rod", value(p, "N s"));
+        }
+        energy_rows(t, &self.outcome.energy, value);
+        residual_rows(s, t, self.outcome.residuals.iter(), value);
+    }
+}
+
+/// The oblique scene's `v`, `V`, `omega`, `vt`, `Vt`, `spin` (disc), `tangential_impulse`,
+/// `contact` (with friction), `energy` (with the closed-form losses), `pivot_impulse` and
+/// `pivot_impulse_t` (pivot) and `residuals`.
+fn oblique_json(o: &ObliqueOutcome<Q>, out: &mut Map<String, Value>, value: &impl Fn(&Q) -> Value) {
+    let after = &o.after;
+    out.insert("v".into(), value(&after.v));
+    out.insert("V".into(), value(&after.rod.v));
+    out.insert("omega".into(), value(&after.rod.omega));
+    out.insert("vt".into(), value(&after.vt));
+    out.insert("Vt".into(), value(&after.rod.vt));
+    if let Some(spin) = &after.spin {
+        out.insert("spin".into(), value(spin));
+    }
+    out.insert("impulse".into(), value(&o.impulse));
+    out.insert("tangential_impulse".into(), value(&o.tangential_impulse));
+    if let Some(contact) = o.contact {
+        out.insert("contact".into(), Value::String(contact.as_str().into()));
+        out.insert("mu_star".into(), value(&mu_star(o)));
+    }
+    let energy = &o.energy;
+    out.insert(
+        "energy".into(),
+        json!({
+            "before": value(&energy.before),
+            "after": value(&energy.after),
+            "lost": value(&energy.lost),
+            "lost_restitution": value(&o.lost_restitution),
+            "lost_friction": value(&o.lost_friction),
+        }),
+    );
+    if let Some((across, along)) = &o.pivot_impulse {
+        out.insert("pivot_impulse".into(), value(across));
+        out.insert("pivot_impulse_t".into(), value(along));
+    }
+    out.insert("residuals".into(), residuals_json(o.residuals.iter()));
+}
+
+/// The friction coefficient at which the contact just sticks, |Jt_stick|/J (J > 0).
+fn mu_star(o: &ObliqueOutcome<Q>) -> Q {
+    num_traits::Signed::abs(&o.stick_impulse) / &o.impulse
+}
+
+/// `{"name": "exact residual", ...}`.
+fn residuals_json<'a>(residuals: impl Iterator<Item = (&'static str, &'a Q)>) -> Value {
+    Value::Object(
+        residuals
+            .map(|(name, r)| (name.to_string(), Value::String(r.to_string())))
+            .collect(),
+    )
+}
+
+/// The oblique scene's rows: both axes after the impact, the disc's spin, both impulses, the
+/// contact, energy (with the closed-form losses) and residuals.
+fn oblique_rows(
+    s: &Scene,
+    o: &ObliqueOutcome<Q>,
+    t: &mut Table,
+    value: &impl Fn(&Q, &str) -> [String; 2],
+) {
+    let after = &o.after;
+    t.section("After the impact (x across the rod, t along it)");
+    t.row(
+        "v",
+        "projectile velocity across the rod",
+        value(&after.v, "m/s"),
+    );
+    t.row(
+        "vt",
+        "projectile velocity along the rod",
+        value(&after.vt, "m/s"),
+    );
+    if let Some(spin) = &after.spin {
+        t.row(
+            "spin",
+            "disc angular velocity (counterclockwise)",
+            value(spin, "rad/s"),
+        );
+    }
+    t.row(
+        "V",
+        "rod centre velocity across the rod",
+        value(&after.rod.v, "m/s"),
+    );
+    t.row(
+        "Vt",
+        "rod centre velocity along the rod",
+        value(&after.rod.vt, "m/s"),
+    );
+    t.row(
+        "omega",
+        "rod angular velocity",
+        value(&after.rod.omega, "rad/s"),
+    );
+    t.row("J", "normal impulse on the rod", value(&o.impulse, "N s"));
+    t.row(
+        "Jt",
+        "tangential impulse on the rod",
+        value(&o.tangential_impulse, "N s"),
+    );
+    if let Some(contact) = o.contact {
+        let meaning = match contact {
+            oblique::Contact::Stick => "contact: the slip stops (mu >= mu*)",
+            oblique::Contact::Slide { .. } => "contact: slides throughout, |Jt| = mu J",
+        };
+        t.row("", meaning, plain(contact.as_str().into()));
+        t.row(
+            "mu*",
+            "friction needed to stick, |Jt_stick|/J",
+            value(&mu_star(o), ""),
+        );
+    }
+    if let Some((across, along)) = &o.pivot_impulse {
+        t.row(
+            "P",
+            "impulse of the pivot across the rod",
+            value(across, "N s"),
+        );
+        t.row(
+            "Pt",
+            "impulse of the pivot along the rod",
+            value(along, "N s"),
+        );
+    }
+    energy_rows(t, &o.energy, value);
+    t.row(
+        "",
+        "to restitution (closed form)",
+        value(&o.lost_restitution, "J"),
+    );
+    t.row(
+        "",
+        "to friction (closed form)",
+        value(&o.lost_friction, "J"),
+    );
+    residual_rows(s, t, o.residuals.iter(), value);
+}
+
+/// The kinetic energy section.
+fn energy_rows(t: &mut Table, e: &Energy<Q>, value: &impl Fn(&Q, &str) -> [String; 2]) {
+    t.section("Kinetic energy");
+    t.row("K0", "before", value(&e.before, "J"));
+    t.row("K1", "after", value(&e.after, "J"));
+    t.row("dK", "lost", value(&e.lost, "J"));
+}
+
+/// The conservation residuals section.
+fn residual_rows<'a>(
+    s: &Scene,
+    t: &mut Table,
+    residuals: impl Iterator<Item = (&'static str, &'a Q)>,
+    value: &impl Fn(&Q, &str) -> [String; 2],
+) {
+    t.section("Conservation residuals, after - before (0 = the law holds exactly)");
+    for (name, r) in residuals {
+        let (label, unit) = match (name, s.support()) {
+            ("angular_momentum", Support::Free) => {
+                ("angular momentum about the rod's centre", "kg m^2/s")
+            }
+            ("angular_momentum", Support::Pivot(_)) => {
+                ("angular momentum about the pivot", "kg m^2/s")
+            }
+            ("linear_momentum", _) => ("linear momentum", "kg m/s"),
+            ("tangential_momentum", _) => ("linear momentum along the rod", "kg m/s"),
+            ("energy_loss", _) => ("energy lost - its closed forms", "J"),
+            _ => ("kinetic energy (elastic)", "J"),
+        };
+        t.row("", label, value(r, unit));
+    }
+}
+
+/// One line with the oblique inputs that are not zero.
+fn describe_oblique(o: &Oblique) -> String {
+    let c = decimal::compact;
+    let mut parts = vec![
+        format!("v0t = {} m/s", c(&o.v0t)),
+        format!("mu = {}", c(&o.mu)),
+    ];
+    if let Some(d) = &o.disc {
+        parts.push(format!(
+            "disc projectile r = {} m (I = m r^2/2), spin = {} rad/s",
+            c(&d.radius),
+            c(&d.spin)
+        ));
+    }
+    let rod = &o.rod_before;
+    if *rod != Default::default() {
+        parts.push(format!(
+            "rod before: V0 = {} m/s, Vt0 = {} m/s, omega0 = {} rad/s",
+            c(&rod.v),
+            c(&rod.vt),
+            c(&rod.omega)
+        ));
+    }
+    parts.join(", ")
 }
 
 /// "M ≤ 2m (here M = m)": the rod masses for which a* lies on the rod, in the scene's terms.
@@ -322,6 +559,17 @@ pub(super) fn scene_json(s: &Scene) -> Value {
             put("support", "pivot".into());
             put("pivot", p.to_string());
         }
+    }
+    if let Some(o) = s.oblique() {
+        put("v0t", o.v0t.to_string());
+        put("mu", o.mu.to_string());
+        if let Some(d) = &o.disc {
+            put("radius", d.radius.to_string());
+            put("spin", d.spin.to_string());
+        }
+        put("rod_v", o.rod_before.v.to_string());
+        put("rod_vt", o.rod_before.vt.to_string());
+        put("rod_omega", o.rod_before.omega.to_string());
     }
     Value::Object(out)
 }

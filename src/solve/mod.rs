@@ -18,6 +18,7 @@ pub mod closed_form;
 pub mod float;
 pub mod fraction_free;
 pub mod linear;
+pub mod oblique;
 mod outcome;
 
 pub use outcome::{Energy, Outcome, Residuals, outcome};

@@ -18,6 +18,7 @@ use crate::optimum::{a_star_squared, optimum};
 use crate::scene::{Params, SceneInput, Support};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
+use crate::solve::oblique;
 use num_traits::{One, Signed, Zero};
 
 /// Checks claims about one scene given as typed (numbers may carry units; any formula in a
@@ -67,6 +68,14 @@ pub fn check_scene_within(
     }
     let given = GivenScene::read(input, budget)?;
     if given.has_formula() || claims.iter().any(ClaimedAnswer::is_symbolic) {
+        if let Some(field) = oblique_field(input) {
+            return Err(Error::new(
+                field,
+                ErrorKind::Invalid(
+                    "an oblique or frictional scene is checked with numbers only (a formula in a scene flag or a claim makes the check symbolic)".into(),
+                ),
+            ));
+        }
         check_symbolic(&given, claims, sig, budget)
     } else {
         check_numeric(input, claims, sig)
@@ -87,12 +96,28 @@ fn check_numeric(
     let scene = input.build().map_err(|e| numeric_scene_needed(e, claims))?;
     let params = scene.params::<Q>();
     let out = solved(&params);
+    let oblique = scene.oblique().map(|o| {
+        oblique::solve(&params, &o.params(), None)
+            .expect("Q decides stick or slide, and the equations of a valid scene are nonsingular")
+    });
     let mut answers = Vec::with_capacity(claims.len());
     for claim in claims {
-        let exact = match claim.quantity.motion_value(&params, &out)? {
+        let value = match &oblique {
+            None => claim.quantity.motion_value(&params, &out)?,
+            Some(o) => claim.quantity.oblique_value(&params, o)?,
+        };
+        let exact = match value {
             Some(x) => Exact::Rational(x),
             None => {
-                let opt = optimum(&scene);
+                if scene.rod_before().omega != Q::from_integer(0.into()) {
+                    return Err(Error::new(
+                        format!("claim {}", claim.quantity.name()),
+                        ErrorKind::Invalid(
+                            "the rod turns before the impact, so the approach speed depends on a: the paper's optimum does not apply".into(),
+                        ),
+                    ));
+                }
+                let opt = optimum(&scene.normal_problem());
                 if claim.quantity == Quantity::AStar {
                     Exact::Surd(QSqrt::sqrt_of(&opt.squared))
                 } else {
@@ -109,6 +134,22 @@ fn check_numeric(
 }
 
 /// A missing mass in a scene of numbers only: numeric claims need a numeric scene.
+/// The first oblique input given (`v0t`, `mu`, `radius`, `spin`, `rod-v`, `rod-vt`,
+/// `rod-omega`), if any.
+fn oblique_field(input: &SceneInput) -> Option<&'static str> {
+    [
+        ("v0t", &input.v0t),
+        ("mu", &input.mu),
+        ("radius", &input.radius),
+        ("spin", &input.spin),
+        ("rod-v", &input.rod_v),
+        ("rod-vt", &input.rod_vt),
+        ("rod-omega", &input.rod_omega),
+    ]
+    .into_iter()
+    .find_map(|(key, text)| text.is_some().then_some(key))
+}
+
 fn numeric_scene_needed(e: Error, claims: &[ClaimedAnswer]) -> Error {
     if e.kind != ErrorKind::Missing {
         return e;

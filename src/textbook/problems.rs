@@ -14,6 +14,9 @@
 //! rod = "uniform"              # dumbbell, rg=..., I=...
 //! collision = "elastic"        # inelastic / sticking, or e = "0.5"
 //! pivot = "-2.0 m"             # optional, signed from the centre
+//! v0t = "1.0 m/s"              # optional oblique scene: velocity along the rod, friction mu,
+//! mu = "0.3"                   #   a disc projectile (radius, spin) and the rod's motion
+//!                              #   before the impact (rod_v, rod_vt, rod_omega)
 //! [problem.claims]
 //! v = "2.3 m/s"
 //! ```
@@ -68,6 +71,13 @@ struct GivenDoc {
     e: Option<String>,
     collision: Option<String>,
     pivot: Option<String>,
+    v0t: Option<String>,
+    mu: Option<String>,
+    radius: Option<String>,
+    spin: Option<String>,
+    rod_v: Option<String>,
+    rod_vt: Option<String>,
+    rod_omega: Option<String>,
 }
 
 /// One published problem: where it is from, its scene, its printed answers.
@@ -212,6 +222,13 @@ fn problem(label: &str, p: ProblemDoc) -> Result<Problem, Error> {
         rod: g.rod,
         e,
         pivot: g.pivot,
+        v0t: g.v0t,
+        mu: g.mu,
+        radius: g.radius,
+        spin: g.spin,
+        rod_v: g.rod_v,
+        rod_vt: g.rod_vt,
+        rod_omega: g.rod_omega,
     };
     if p.claims.is_empty() || p.claims.len() > MAX_CLAIMS {
         return Err(Error::out_of_range(

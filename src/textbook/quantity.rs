@@ -6,6 +6,7 @@ use crate::error::{Error, ErrorKind};
 use crate::field::Field;
 use crate::scene::Params;
 use crate::solve::Outcome;
+use crate::solve::oblique::ObliqueOutcome;
 
 /// A quantity a claim is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -32,9 +33,17 @@ pub enum Quantity {
     PivotImpulse,
     /// The impulse the projectile gives the rod.
     Impulse,
+    /// The projectile's velocity along the rod after the impact (oblique scenes).
+    Vt,
+    /// The velocity of the rod's centre along the rod after the impact (oblique scenes).
+    RodVt,
+    /// The disc projectile's spin after the impact (oblique scenes with a disc).
+    Spin,
+    /// The tangential impulse the projectile gives the rod (oblique scenes).
+    TangentialImpulse,
 }
 
-const NAMES: [(&str, Quantity); 11] = [
+const NAMES: [(&str, Quantity); 15] = [
     ("v", Quantity::V),
     ("V", Quantity::RodV),
     ("V_cm", Quantity::VCm),
@@ -46,6 +55,10 @@ const NAMES: [(&str, Quantity); 11] = [
     ("energy_lost", Quantity::EnergyLost),
     ("pivot_impulse", Quantity::PivotImpulse),
     ("impulse", Quantity::Impulse),
+    ("vt", Quantity::Vt),
+    ("Vt", Quantity::RodVt),
+    ("spin", Quantity::Spin),
+    ("tangential_impulse", Quantity::TangentialImpulse),
 ];
 
 impl Quantity {
@@ -94,13 +107,17 @@ impl Quantity {
     /// ```
     pub fn dimension(self) -> Dimension {
         match self {
-            Quantity::V | Quantity::RodV | Quantity::VCm => Dimension::Speed,
-            Quantity::Omega | Quantity::OmegaMax => Dimension::AngularSpeed,
+            Quantity::V | Quantity::RodV | Quantity::VCm | Quantity::Vt | Quantity::RodVt => {
+                Dimension::Speed
+            }
+            Quantity::Omega | Quantity::OmegaMax | Quantity::Spin => Dimension::AngularSpeed,
             Quantity::AStar => Dimension::Length,
             Quantity::EnergyBefore | Quantity::EnergyAfter | Quantity::EnergyLost => {
                 Dimension::Energy
             }
-            Quantity::PivotImpulse | Quantity::Impulse => Dimension::Impulse,
+            Quantity::PivotImpulse | Quantity::Impulse | Quantity::TangentialImpulse => {
+                Dimension::Impulse
+            }
         }
     }
 
@@ -145,6 +162,68 @@ impl Quantity {
                         ErrorKind::Invalid("the rod is free (no pivot)".into()),
                     ));
                 }
+            },
+            Quantity::AStar | Quantity::OmegaMax => return Ok(None),
+            Quantity::Vt | Quantity::RodVt | Quantity::Spin | Quantity::TangentialImpulse => {
+                return Err(Error::new(
+                    format!("claim {}", self.name()),
+                    ErrorKind::Invalid(
+                        "only an oblique scene has it: give --v0t, --mu, --radius or the rod's motion before the impact".into(),
+                    ),
+                ));
+            }
+        }))
+    }
+
+    /// The value after an oblique impact; `Ok(None)` for `a_star` and `omega_max`.
+    ///
+    /// # Errors
+    /// `pivot_impulse` of a free rod, `spin` of a point projectile.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::Quantity;
+    /// use rodimpact::{scene::Scene, solve::oblique::solve, field::{q, Q}};
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).v0t(q(1, 1)).mu(q(1, 2)).build().unwrap();
+    /// let p = s.params::<Q>();
+    /// let out = solve(&p, &s.oblique().unwrap().params(), None).unwrap();
+    /// assert_eq!(Quantity::Vt.oblique_value(&p, &out).unwrap(), Some(q(4, 5)));
+    /// assert!(Quantity::Spin.oblique_value(&p, &out).is_err());
+    /// ```
+    pub fn oblique_value<F: Field>(
+        self,
+        p: &Params<F>,
+        out: &ObliqueOutcome<F>,
+    ) -> Result<Option<F>, Error> {
+        let after = &out.after;
+        let missing = |why: &str| {
+            Error::new(
+                format!("claim {}", self.name()),
+                ErrorKind::Invalid(why.into()),
+            )
+        };
+        Ok(Some(match self {
+            Quantity::V => after.v.clone(),
+            Quantity::RodV => after.rod.v.clone(),
+            Quantity::VCm => {
+                let momentum = p.m.clone() * &after.v + &(p.rod_mass.clone() * &after.rod.v);
+                momentum / (p.m.clone() + &p.rod_mass)
+            }
+            Quantity::Omega => after.rod.omega.clone(),
+            Quantity::Vt => after.vt.clone(),
+            Quantity::RodVt => after.rod.vt.clone(),
+            Quantity::Spin => after
+                .spin
+                .clone()
+                .ok_or_else(|| missing("the projectile is a point (no --radius)"))?,
+            Quantity::EnergyBefore => out.energy.before.clone(),
+            Quantity::EnergyAfter => out.energy.after.clone(),
+            Quantity::EnergyLost => out.energy.lost.clone(),
+            Quantity::Impulse => out.impulse.clone(),
+            Quantity::TangentialImpulse => out.tangential_impulse.clone(),
+            Quantity::PivotImpulse => match &out.pivot_impulse {
+                Some((across, _)) => across.clone(),
+                None => return Err(missing("the rod is free (no pivot)")),
             },
             Quantity::AStar | Quantity::OmegaMax => return Ok(None),
         }))
