@@ -35,6 +35,9 @@ enum Command {
     Plot(Box<commands::plot::PlotArgs>),
     /// Check published answers (printed numbers, fractions, formulas) against the exact ones.
     Check(Box<commands::check::CheckArgs>),
+    /// The exact answer as formulas (v, V, omega, J, energy lost, a*^2, omega_max) in the
+    /// scene's free symbols: any scene flag may be a symbol or an expression (--M 2*m).
+    Formula(Box<commands::formula::FormulaArgs>),
     /// Float error against run time for every backend and formula on the stiff/extreme suite.
     Stability(commands::stability::StabilityArgs),
     /// Many scenes from a CSV file, exactly, streamed and in parallel; claimed v, V, omega,
@@ -82,6 +85,7 @@ fn main() -> ExitCode {
         Command::Table(args) => commands::table::run_table(args),
         Command::Plot(args) => commands::plot::run_plot(args),
         Command::Check(args) => commands::check::run_check(args),
+        Command::Formula(args) => commands::formula::run_formula(args),
         Command::Stability(args) => commands::stability::run_stability(args),
         Command::Batch(args) => commands::batch::run_batch(args),
         Command::Scenes(args) => commands::scenes::run_scenes(args),

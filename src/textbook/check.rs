@@ -8,18 +8,19 @@ use super::answer::{SceneCheck, SceneSummary};
 use super::claim::{ClaimedAnswer, ClaimedValue};
 use super::exact::Exact;
 use super::expr::{Budget, Radical};
+use super::formula::{OnRod, on_rod};
 use super::numeric::decide;
 use super::quantity::Quantity;
 use super::sigfig;
 use super::symbolic::{GivenScene, SymbolicScene, identity};
 use crate::error::{Error, ErrorKind};
-use crate::field::{Field, Poly, Q, QSqrt, RatFn};
+use crate::field::{Field, Q, QSqrt, RatFn};
 use crate::optimum::{a_star_squared, optimum};
 use crate::scene::{Params, SceneInput, Support};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
 use crate::solve::oblique;
-use num_traits::{One, Signed, Zero};
+use num_traits::One;
 
 /// Checks claims about one scene given as typed (numbers may carry units; any formula in a
 /// scene flag or a claim makes the whole check symbolic). `sig` overrides the claims'
@@ -190,54 +191,24 @@ fn exact_value(
     }
 }
 
-/// The domain condition of a symbolic a* on a free rod: a* (the stationary point of omega(a)) is
-/// where omega is largest on the rod only when a*^2 <= l^2, written as `lhs <= rhs` with the
-/// positive factors of a*^2 - l^2 (its denominator, and powers of symbols dividing every term,
-/// all positive quantities) cleared: `M <= 2*m` for the uniform rod. `None` for a pivoted rod
-/// or when the condition is a plain number.
+/// The domain condition of a symbolic a* on a free rod ([`on_rod`]): a* (the stationary point of
+/// omega(a)) is where omega is largest on the rod only when a*^2 <= l^2. `None` for a pivoted
+/// rod or when a* is on the rod for every value of the symbols and that is all there is to say.
 fn a_star_on_rod(p: &Params<RatFn>) -> Option<String> {
     if p.support != Support::Free {
         return None;
     }
-    let l = &p.half_length;
-    let excess = a_star_squared(p) - &(l.clone() * l);
-    if excess.as_constant().is_some() {
-        return None;
-    }
-    let (mut num, den) = (excess.num().clone(), excess.den());
-    let positive_den = den.terms().count() == 1 && den.terms().all(|(_, c)| c.is_positive());
-    if !positive_den {
-        return Some(format!(
-            "a* lies on the rod (omega is largest there) when ({excess}) <= 0; otherwise omega is largest at a = l"
-        ));
-    }
-    for sym in num.symbols() {
-        let k = num.low_degree_in(sym);
-        if k > 0 {
-            num = num
-                .div_exact(&Poly::var(sym).pow(k))
-                .expect("every term holds sym^k");
+    Some(match on_rod(&a_star_squared(p), &p.half_length) {
+        OnRod::Never => {
+            "a* lies beyond the end for every value of the symbols: omega is largest at a = l"
+                .into()
         }
-    }
-    let num = num.scale(&num.content().abs().recip());
-    let (mut lhs, mut rhs) = (Poly::zero(), Poly::zero());
-    for (monomial, c) in num.terms() {
-        let term = Poly::monomial(c.abs(), monomial.clone());
-        if c.is_positive() {
-            lhs = lhs + &term;
-        } else {
-            rhs = rhs + &term;
+        OnRod::Always => {
+            "a* lies on the rod for every value of the symbols, and omega is largest there".into()
         }
-    }
-    Some(if rhs.is_zero() {
-        // a*^2 - l^2 is a positive multiple of positive factors: a* is always beyond the end.
-        "a* lies beyond the end for every value of the symbols: omega is largest at a = l".into()
-    } else if lhs.is_zero() {
-        "a* lies on the rod for every value of the symbols, and omega is largest there".into()
-    } else {
-        format!(
-            "a* lies on the rod (omega is largest there) when {lhs} <= {rhs}; otherwise omega is largest at a = l"
-        )
+        OnRod::When(c) => format!(
+            "a* lies on the rod (omega is largest there) when {c}; otherwise omega is largest at a = l"
+        ),
     })
 }
 

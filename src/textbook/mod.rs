@@ -32,6 +32,7 @@ mod check;
 mod claim;
 mod exact;
 pub mod expr;
+pub mod formula;
 pub mod numeric;
 pub mod problems;
 mod quantity;

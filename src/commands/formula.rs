@@ -1,0 +1,42 @@
+//! `rodimpact formula`: the exact answer as formulas in the scene's free symbols.
+
+use super::{Failure, SceneFlags, print_out};
+use clap::Args;
+use rodimpact::report::{formula_json, formula_latex, formula_markdown, formula_text};
+use rodimpact::textbook::formula::formulas;
+use rodimpact::{Error, ErrorKind};
+
+#[derive(Args, Debug)]
+pub(crate) struct FormulaArgs {
+    #[command(flatten)]
+    pub(crate) scene: SceneFlags,
+    /// Output format: text, latex, markdown or json.
+    #[arg(long, value_name = "FORMAT", default_value = "text")]
+    pub(crate) format: String,
+}
+
+pub(crate) fn run_formula(args: &FormulaArgs) -> Result<(), Failure> {
+    let format = args.format.as_str();
+    if !["text", "latex", "markdown", "json"].contains(&format) {
+        return Err(Error::new(
+            "format",
+            ErrorKind::Invalid(format!(
+                "expected text, latex, markdown or json, got '{}'",
+                rodimpact::echo::echo(format)
+            )),
+        )
+        .into());
+    }
+    let f = formulas(&args.scene.input())?;
+    let text = match format {
+        "latex" => formula_latex(&f),
+        "markdown" => formula_markdown(&f),
+        "json" => format!(
+            "{}\n",
+            serde_json::to_string_pretty(&formula_json(&f)).expect("JSON of strings")
+        ),
+        _ => formula_text(&f),
+    };
+    print_out(&text);
+    Ok(())
+}

@@ -1,0 +1,249 @@
+//! `rodimpact formula` rendered: text, Markdown, LaTeX and JSON, with a LaTeX writer for
+//! rational functions (`\frac`, juxtaposed products, `v_0`, `r_G`).
+
+use crate::field::{Poly, Q, RatFn};
+use crate::textbook::expr::Radical;
+use crate::textbook::formula::Formulas;
+use num_traits::{One, Signed};
+use serde_json::{Map, Value, json};
+
+/// What each key means, for the text and Markdown renderings.
+fn meaning(key: &str) -> &'static str {
+    match key {
+        "v" => "projectile's velocity after the impact",
+        "V" => "velocity of the rod's centre after the impact",
+        "omega" => "rod's angular velocity after the impact",
+        "impulse" => "impulse of the projectile on the rod, J = m (v0 - v)",
+        "energy_lost" => "kinetic energy lost in the impact",
+        "pivot_impulse" => "impulse of the pivot on the rod",
+        "a_star_squared" => {
+            "a*^2, the impact point of fastest spin (squared; from the pivot on a pivoted rod)"
+        }
+        "omega_max" => "largest omega over the impact points",
+        _ => "",
+    }
+}
+
+/// The scene line: free symbols and defaults.
+fn preamble(f: &Formulas) -> Vec<String> {
+    let mut lines = vec![format!(
+        "free symbols: {}",
+        if f.free.is_empty() {
+            "none".to_string()
+        } else {
+            f.free.join(", ")
+        }
+    )];
+    if !f.defaults.is_empty() {
+        lines.push(format!("defaults: {}", f.defaults.join("; ")));
+    }
+    lines
+}
+
+/// Plain text: one `key = formula` per line, with its condition below.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::formula_text, scene::SceneInput, textbook::formula::formulas};
+/// let f = formulas(&SceneInput { rod_mass: Some("m".into()), ..Default::default() })?;
+/// assert!(formula_text(&f).contains("omega = 6*a*v0/(3*a^2 + 2*l^2)"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn formula_text(f: &Formulas) -> String {
+    let mut out = String::new();
+    for line in preamble(f) {
+        out.push_str(&format!("{line}\n"));
+    }
+    for x in &f.formulas {
+        out.push_str(&format!("\n{} = {}\n", x.key, x.value));
+        out.push_str(&format!("    {}\n", meaning(x.key)));
+        if let Some(c) = &x.condition {
+            out.push_str(&format!("    {c}\n"));
+        }
+    }
+    out
+}
+
+/// Markdown: a table of the formulas in LaTeX math (`$...$`).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::formula_markdown, scene::SceneInput, textbook::formula::formulas};
+/// let f = formulas(&SceneInput::default())?;
+/// assert!(formula_markdown(&f).contains("| `omega` |"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn formula_markdown(f: &Formulas) -> String {
+    let mut out = String::new();
+    for line in preamble(f) {
+        out.push_str(&format!("{line}  \n"));
+    }
+    out.push_str("\n| quantity | formula | meaning |\n|---|---|---|\n");
+    for x in &f.formulas {
+        let mut what = meaning(x.key).to_string();
+        if let Some(c) = &x.condition {
+            what.push_str(&format!("; {c}"));
+        }
+        out.push_str(&format!(
+            "| `{}` | ${}$ | {} |\n",
+            x.key,
+            radical_latex(&x.value),
+            what.replace('|', "\\|")
+        ));
+    }
+    out
+}
+
+/// LaTeX: a document fragment, one `align*` row per formula (compiles with amsmath).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::formula_latex, scene::SceneInput, textbook::formula::formulas};
+/// let f = formulas(&SceneInput::default())?;
+/// assert!(formula_latex(&f).contains(r"\omega &= \frac{6 a m v_0}{"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn formula_latex(f: &Formulas) -> String {
+    let mut out = String::new();
+    for line in preamble(f) {
+        out.push_str(&format!("% {line}\n"));
+    }
+    out.push_str("\\begin{align*}\n");
+    let rows: Vec<String> = f
+        .formulas
+        .iter()
+        .map(|x| format!("  {} &= {}", key_latex(x.key), radical_latex(&x.value)))
+        .collect();
+    out.push_str(&rows.join(" \\\\\n"));
+    out.push_str("\n\\end{align*}\n");
+    for x in &f.formulas {
+        if let Some(c) = &x.condition {
+            out.push_str(&format!("% {}: {c}\n", x.key));
+        }
+    }
+    out
+}
+
+/// JSON: `free_symbols`, `defaults`, and per key `{"text", "latex"}` (plus `condition`).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::formula_json, scene::SceneInput, textbook::formula::formulas};
+/// let f = formulas(&SceneInput::default())?;
+/// let j = formula_json(&f);
+/// assert_eq!(j["a_star_squared"]["text"], "(1/3*M*l^2 + 1/3*l^2*m)/m");
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn formula_json(f: &Formulas) -> Value {
+    let mut map = Map::new();
+    map.insert("free_symbols".into(), json!(f.free));
+    map.insert("defaults".into(), json!(f.defaults));
+    for x in &f.formulas {
+        let mut entry = Map::new();
+        entry.insert("text".into(), json!(x.value.to_string()));
+        entry.insert("latex".into(), json!(radical_latex(&x.value)));
+        if let Some(c) = &x.condition {
+            entry.insert("condition".into(), json!(c));
+        }
+        map.insert(x.key.into(), Value::Object(entry));
+    }
+    Value::Object(map)
+}
+
+fn key_latex(key: &str) -> &'static str {
+    match key {
+        "v" => "v",
+        "V" => "V",
+        "omega" => "\\omega",
+        "impulse" => "J",
+        "energy_lost" => "\\Delta E",
+        "pivot_impulse" => "J_p",
+        "a_star_squared" => "a^{*2}",
+        "omega_max" => "\\omega_{\\max}",
+        _ => "?",
+    }
+}
+
+fn symbol_latex(name: &str) -> String {
+    match name {
+        "v0" => "v_0".into(),
+        "r" => "r_G".into(),
+        other => other.into(),
+    }
+}
+
+/// A rational number in LaTeX (`\frac{p}{q}` or an integer), without sign.
+fn rational_latex(c: &Q) -> String {
+    if c.is_integer() {
+        c.numer().to_string()
+    } else {
+        format!("\\frac{{{}}}{{{}}}", c.numer(), c.denom())
+    }
+}
+
+/// A polynomial in LaTeX: terms joined by + and -, products juxtaposed.
+fn poly_latex(p: &Poly) -> String {
+    let mut out = String::new();
+    // Largest term first, as the text form prints them.
+    let terms: Vec<_> = p.terms().collect();
+    for (i, (monomial, c)) in terms.into_iter().rev().enumerate() {
+        let negative = c.is_negative();
+        let abs = c.abs();
+        if i == 0 {
+            if negative {
+                out.push('-');
+            }
+        } else {
+            out.push_str(if negative { " - " } else { " + " });
+        }
+        let factors: Vec<String> = monomial
+            .factors()
+            .iter()
+            .map(|&(s, e)| {
+                let s = symbol_latex(s.name());
+                if e == 1 { s } else { format!("{s}^{{{e}}}") }
+            })
+            .collect();
+        if factors.is_empty() {
+            out.push_str(&rational_latex(&abs));
+        } else {
+            if !abs.is_one() {
+                out.push_str(&rational_latex(&abs));
+                out.push(' ');
+            }
+            out.push_str(&factors.join(" "));
+        }
+    }
+    if out.is_empty() {
+        out.push('0');
+    }
+    out
+}
+
+/// A rational function in LaTeX: `\frac{num}{den}`, or the numerator alone over 1.
+fn ratfn_latex(f: &RatFn) -> String {
+    if f.den().is_one() {
+        poly_latex(f.num())
+    } else {
+        format!(
+            "\\frac{{{}}}{{{}}}",
+            poly_latex(f.num()),
+            poly_latex(f.den())
+        )
+    }
+}
+
+/// `coeff \sqrt{radicand}` in LaTeX.
+fn radical_latex(r: &Radical) -> String {
+    if r.is_rational() {
+        return ratfn_latex(&r.coeff);
+    }
+    let root = format!("\\sqrt{{{}}}", ratfn_latex(&r.radicand));
+    if r.coeff.is_one() {
+        root
+    } else if r.coeff.num().terms().count() > 1 && r.coeff.den().is_one() {
+        format!("\\left({}\\right) {root}", ratfn_latex(&r.coeff))
+    } else {
+        format!("{} {root}", ratfn_latex(&r.coeff))
+    }
+}

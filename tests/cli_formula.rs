@@ -1,0 +1,147 @@
+//! `rodimpact formula` against formulas derived by hand, independently of the solver:
+//! free rod, elastic, omega = (1 + e) m a v0/(I (1 + m/M) + m a^2); V = (1 + e) (m/M) v0/D';
+//! pivoted rod, omega = (1 + e) m d v0/(I + M p^2 + m d^2) with d = a - p; the energy lost
+//! (1 - e^2) v0^2/(2 (1/m + 1/M + a^2/I)); a*^2 = I (M + m)/(m M); omega_max = (1 + e) v0/(2 a*).
+//! Each printed formula is parsed back and compared as an exact rational function (so the test
+//! does not depend on the order the terms are printed in).
+
+use rodimpact::textbook::expr::{Radical, parse};
+use std::process::Command;
+
+fn formula_json(args: &[&str]) -> serde_json::Value {
+    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .arg("formula")
+        .args(args)
+        .args(["--format", "json"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+fn value(text: &str) -> Radical {
+    parse("test", text).unwrap_or_else(|e| panic!("{text}: {e}"))
+}
+
+/// `coeff^2 * radicand`, to compare roots written with different factors outside the root.
+fn square(r: &Radical) -> rodimpact::field::RatFn {
+    r.coeff.clone() * &r.coeff * &r.radicand
+}
+
+fn assert_formula(j: &serde_json::Value, key: &str, expected: &str) {
+    let got = j[key]["text"]
+        .as_str()
+        .unwrap_or_else(|| panic!("no {key} in {j}"));
+    assert_eq!(
+        square(&value(got)),
+        square(&value(expected)),
+        "{key}: got {got}, expected {expected}"
+    );
+}
+
+#[test]
+fn free_uniform_rod_elastic_the_paper() {
+    let j = formula_json(&[]);
+    assert_eq!(
+        j["free_symbols"],
+        serde_json::json!(["m", "M", "l", "a", "v0"])
+    );
+    let d = "(M*l^2/3*(1+m/M) + m*a^2)";
+    assert_formula(&j, "omega", &format!("2*m*a*v0/{d}"));
+    assert_formula(&j, "V", &format!("2*(m/M)*v0*(M*l^2/3)/{d}"));
+    assert_formula(
+        &j,
+        "v",
+        "-(1-m/M-3*m*a^2/(M*l^2))/(1+m/M+3*m*a^2/(M*l^2))*v0",
+    );
+    assert_formula(&j, "impulse", &format!("2*m*(M*l^2/3)*v0/{d}"));
+    assert_formula(&j, "a_star_squared", "(M+m)*l^2/(3*m)");
+    assert_formula(&j, "omega_max", "v0/sqrt((M+m)*l^2/(3*m))");
+    assert!(j.get("energy_lost").is_none(), "elastic: nothing lost");
+    assert!(j.get("pivot_impulse").is_none(), "free rod: no pivot");
+    assert_eq!(
+        j["omega_max"]["condition"],
+        "when M <= 2*m (a* on the rod); otherwise omega_max = omega(end) = 6*m*v0/(M*l + 4*l*m)"
+    );
+    assert_eq!(
+        j["omega"]["latex"],
+        r"\frac{6 a m v_0}{M l^{2} + 3 a^{2} m + l^{2} m}"
+    );
+}
+
+#[test]
+fn dumbbell_gyration_and_threshold_mass() {
+    let dumbbell = formula_json(&["--rod", "dumbbell"]);
+    assert_formula(&dumbbell, "omega", "2*m*a*v0/(M*l^2 + m*l^2 + m*a^2)");
+    assert!(
+        dumbbell["omega_max"]["condition"]
+            .as_str()
+            .unwrap()
+            .starts_with("never")
+    );
+    let rg = formula_json(&["--rod", "rg=r"]);
+    assert_formula(&rg, "omega", "2*m*a*v0/(M*r^2 + m*r^2 + m*a^2)");
+    assert_formula(&rg, "a_star_squared", "(M+m)*r^2/m");
+    // M = 2m: a* is the end exactly, for every m and l: no condition left.
+    let threshold = formula_json(&["--M", "2*m"]);
+    assert_formula(&threshold, "a_star_squared", "l^2");
+    assert!(threshold["omega_max"].get("condition").is_none());
+}
+
+#[test]
+fn restitution_sticking_and_pivot() {
+    let e = formula_json(&["--rod", "rg=r", "--e", "e"]);
+    assert_formula(&e, "omega", "(1+e)*m*a*v0/(M*r^2 + m*r^2 + m*a^2)");
+    assert_formula(
+        &e,
+        "energy_lost",
+        "(1-e^2)*v0^2/(2*(1/m + 1/M + a^2/(M*r^2)))",
+    );
+    assert_formula(&e, "omega_max", "(1+e)*v0/(2*sqrt((M+m)*r^2/m))");
+    let half = formula_json(&["--e", "1/2", "--M", "m", "--a", "l"]);
+    assert_formula(&half, "omega", "(3/2)*m*l*v0/(m*l^2/3*2 + m*l^2)");
+    // Sticking on a pivot at p: omega = m d v0/(I + M p^2 + m d^2), d = a - p.
+    let pivot = formula_json(&["--pivot", "p", "--e", "0"]);
+    assert_formula(&pivot, "omega", "m*(a-p)*v0/(M*l^2/3 + M*p^2 + m*(a-p)^2)");
+    assert_formula(&pivot, "a_star_squared", "(M*l^2/3 + M*p^2)/m");
+    assert_formula(&pivot, "omega_max", "v0/(2*sqrt((M*l^2/3 + M*p^2)/m))");
+    assert!(pivot.get("pivot_impulse").is_some() && pivot.get("energy_lost").is_some());
+}
+
+#[test]
+fn every_format_renders_and_bad_input_is_refused() {
+    let run = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+            .arg("formula")
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let text = String::from_utf8(run(&[]).stdout).unwrap();
+    assert!(
+        text.contains("omega = 6*a*m*v0/(M*l^2 + 3*a^2*m + l^2*m)"),
+        "{text}"
+    );
+    let latex = String::from_utf8(run(&["--format", "latex"]).stdout).unwrap();
+    assert!(latex.contains(r"\begin{align*}") && latex.contains(r"\omega_{\max} &= v_0 \sqrt{"));
+    let md = String::from_utf8(run(&["--format", "markdown"]).stdout).unwrap();
+    assert!(md.contains("| `a_star_squared` |"));
+    for (args, message) in [
+        (
+            &["--format", "pdf"][..],
+            "error: format: expected text, latex, markdown or json, got 'pdf'\n",
+        ),
+        (
+            &["--M", "2*q"][..],
+            "error: M: unknown symbol 'q' at character 3 (symbols: m M l L a d v0 e p I r, function sqrt)\n",
+        ),
+    ] {
+        let out = run(args);
+        assert_eq!(out.status.code(), Some(2));
+        assert_eq!(String::from_utf8(out.stderr).unwrap(), message);
+    }
+}
