@@ -145,3 +145,18 @@ fn every_format_renders_and_bad_input_is_refused() {
         assert_eq!(String::from_utf8(out.stderr).unwrap(), message);
     }
 }
+
+/// The README's `formula` example is the command's output, verbatim (a rational omega_max
+/// where a* = l: `sqrt(1/l^2)` is written `1/l`).
+#[test]
+fn readme_example_is_current() {
+    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .args(["formula", "--M", "2*m", "--e", "e"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("omega_max = (1/2*e*v0 + 1/2*v0)/l"), "{text}");
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    assert!(readme.contains(&format!("$ rodimpact formula --M 2*m --e e\n{text}```")));
+}

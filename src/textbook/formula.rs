@@ -11,7 +11,8 @@
 use super::expr::{Budget, Radical};
 use super::symbolic::{GivenScene, SymbolicScene};
 use crate::error::Error;
-use crate::field::{Field, Poly, RatFn};
+use crate::field::poly::Monomial;
+use crate::field::{Field, Poly, RatFn, TrySqrt};
 use crate::optimum::a_star_squared;
 use crate::scene::{Params, SceneInput, Support};
 use crate::solve::linear::solve;
@@ -93,9 +94,14 @@ pub fn formulas(input: &SceneInput) -> Result<Formulas, Error> {
 /// end (a = l, or the end farther from the pivot) stated for the other case.
 fn omega_max(p: &Params<RatFn>, omega: &RatFn, squared: &RatFn) -> AnswerFormula {
     let two = RatFn::from_i64(2);
-    let value = Radical {
-        coeff: (RatFn::one() + &p.e) * &p.v0 / two,
-        radicand: RatFn::one() / squared.clone(),
+    let coeff = (RatFn::one() + &p.e) * &p.v0 / two;
+    let inverse = RatFn::one() / squared.clone();
+    let value = match square_root(&inverse) {
+        Some(root) => Radical::rational(coeff * &root),
+        None => Radical {
+            coeff,
+            radicand: inverse,
+        },
     };
     let at_end = end_omega(p, omega);
     let otherwise = match &at_end {
@@ -119,6 +125,28 @@ fn omega_max(p: &Params<RatFn>, omega: &RatFn, squared: &RatFn) -> AnswerFormula
         value,
         condition,
     }
+}
+
+/// The square root of a quotient of two monomials whose exponents are even and whose
+/// coefficient is a rational square (`1/l^2` -> `1/l`; the symbols are positive quantities);
+/// `None` otherwise.
+fn square_root(f: &RatFn) -> Option<RatFn> {
+    let root = |p: &Poly| -> Option<Poly> {
+        let mut terms = p.terms();
+        let (monomial, c) = terms.next()?;
+        if terms.next().is_some() {
+            return None;
+        }
+        let mut half = Monomial::one();
+        for &(sym, e) in monomial.factors() {
+            if e % 2 != 0 {
+                return None;
+            }
+            half = half.mul(&Monomial::var(sym, e / 2));
+        }
+        Some(Poly::monomial(c.try_sqrt()?, half))
+    };
+    RatFn::new(root(f.num())?, root(f.den())?)
 }
 
 /// omega at the end the paper strikes: a = l for a free rod (a a symbol); `None` when a is
