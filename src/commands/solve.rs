@@ -2,7 +2,7 @@
 
 use super::{Failure, ObliqueFlags, SceneFlags, parse_digits, print_out};
 use clap::{Args, ValueEnum};
-use rodimpact::report::{Solution, backend_values};
+use rodimpact::report::{ExplainFormat, Solution, backend_values, explain};
 use rodimpact::solve::float::FloatFormula;
 use rodimpact::stability::Backend;
 use serde_json::Value;
@@ -62,6 +62,10 @@ pub(crate) struct SolveArgs {
     /// Also solve in this backend and report its error against the exact answer.
     #[arg(long, value_enum, default_value = "exact")]
     pub(crate) backend: BackendArg,
+    /// Print the working instead: the balance equations with the scene's numbers, the
+    /// elimination, D, the result and the a* step, as text, markdown or latex.
+    #[arg(long, value_name = "FORMAT", num_args = 0..=1, default_missing_value = "text")]
+    pub(crate) explain: Option<String>,
 }
 
 pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
@@ -75,6 +79,34 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
             ),
         )
         .into());
+    }
+    if let Some(format) = &args.explain {
+        let format = match format.as_str() {
+            "text" => ExplainFormat::Text,
+            "markdown" => ExplainFormat::Markdown,
+            "latex" => ExplainFormat::Latex,
+            other => {
+                return Err(rodimpact::Error::new(
+                    "explain",
+                    rodimpact::error::ErrorKind::Invalid(format!(
+                        "expected text, markdown or latex, got '{}'",
+                        rodimpact::echo::echo(other)
+                    )),
+                )
+                .into());
+            }
+        };
+        if scene.oblique().is_some() || args.json || backend != Backend::Exact {
+            return Err(rodimpact::Error::new(
+                "explain",
+                rodimpact::error::ErrorKind::Conflict(
+                    "the working is written for the paper's scene, exactly: not with --json, --backend or oblique flags".into(),
+                ),
+            )
+            .into());
+        }
+        print_out(&explain(&scene, format));
+        return Ok(());
     }
     let floats = match backend {
         Backend::Exact => None,

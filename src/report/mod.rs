@@ -7,6 +7,7 @@ mod batch;
 mod certificate;
 mod check;
 mod claims_doc;
+mod explain;
 mod formula;
 pub mod markup;
 mod paper_tables;
@@ -25,6 +26,7 @@ pub use check::{
     check_summary, check_table, problems_json, problems_text, rel_error_text,
 };
 pub use claims_doc::claims_markdown;
+pub use explain::{ExplainFormat, explain};
 pub use formula::{formula_json, formula_latex, formula_markdown, formula_text};
 pub use paper_tables::{TABLE_IDS, TableOptions, all_tables, t1, t2, t3, t4, t5, tables};
 pub use plot::{

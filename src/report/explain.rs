@@ -1,0 +1,321 @@
+//! `solve --explain`: the working for one scene as a student would write it: the balance
+//! equations with the scene's numbers, the elimination, D, the result, and the a* step
+//! (f(x) = x/(b^2 + c^2 x^2) is largest at x = b/c), with whether a* lies on the rod. One list
+//! of steps, rendered as text, Markdown or LaTeX.
+
+use crate::field::notation::{Notation, surd};
+use crate::field::{Q, QSqrt};
+use crate::mechanics::Groups;
+use crate::optimum::{Placement, optimum};
+use crate::scene::{Scene, Support};
+use crate::solve::linear::solve;
+use num_traits::{One, Signed};
+
+/// The output format of [`explain`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ExplainFormat {
+    /// Plain text.
+    Text,
+    /// Markdown (equations in `$...$`).
+    Markdown,
+    /// A LaTeX fragment (equations in `align*`).
+    Latex,
+}
+
+/// A step: a heading, sentences, and equations written in the crate's ASCII math (`*`, `/`,
+/// `omega`, `v0`, `a*`), which the LaTeX rendering spells in TeX.
+struct Step {
+    title: &'static str,
+    prose: Vec<String>,
+    equations: Vec<String>,
+}
+
+/// A number in an equation: negative ones in parentheses.
+fn n(x: &Q) -> String {
+    if x.is_negative() {
+        format!("({x})")
+    } else {
+        x.to_string()
+    }
+}
+
+/// The working for `scene`.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{field::q, scene::Scene, report::{explain, ExplainFormat}};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 1)).build()?;
+/// let text = explain(&s, ExplainFormat::Text);
+/// assert!(text.contains("1*1 = 1*v + 1*V"));
+/// assert!(text.contains("D = 1 + q = 5"));
+/// assert!(text.contains("omega = (1 + e)*(m*a/I)/D*v0 = 6/5"));
+/// assert!(text.contains("a*^2 = b^2/c^2 = 2/3"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn explain(scene: &Scene, format: ExplainFormat) -> String {
+    let steps = steps(scene);
+    match format {
+        ExplainFormat::Text => render(
+            &steps,
+            |t| format!("{t}\n"),
+            |e| format!("    {e}\n"),
+            |p| format!("{}\n", prose(p, |m| m.to_string())),
+        ),
+        ExplainFormat::Markdown => render(
+            &steps,
+            |t| format!("### {t}\n\n"),
+            |e| format!("$$ {} $$\n\n", latex(e)),
+            |p| format!("{}\n\n", prose(p, |m| format!("${}$", latex(m)))),
+        ),
+        ExplainFormat::Latex => render(
+            &steps,
+            |t| format!("\\paragraph{{{t}}}\n"),
+            |e| format!("\\[ {} \\]\n", latex(e)),
+            |p| format!("{}\n\n", prose(p, |m| format!("${}$", latex(m)))),
+        ),
+    }
+}
+
+/// A sentence whose math is marked with backticks, the math written by `math`.
+fn prose(p: &str, math: impl Fn(&str) -> String) -> String {
+    p.split('`')
+        .enumerate()
+        .map(|(i, part)| {
+            if i % 2 == 1 {
+                math(part)
+            } else {
+                part.to_string()
+            }
+        })
+        .collect()
+}
+
+fn render(
+    steps: &[Step],
+    title: impl Fn(&str) -> String,
+    equation: impl Fn(&str) -> String,
+    prose: impl Fn(&str) -> String,
+) -> String {
+    let mut out = String::new();
+    for (i, s) in steps.iter().enumerate() {
+        out.push_str(&title(&format!("{}. {}", i + 1, s.title)));
+        for p in &s.prose {
+            out.push_str(&prose(p));
+        }
+        for e in &s.equations {
+            out.push_str(&equation(e));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// ASCII math in TeX: `omega` -> `\omega`, `v0` -> `v_0`, `a*` -> `a^*`, `*` -> `\cdot`,
+/// `sqrt(x)` -> `\sqrt{x}`, `<=` -> `\le`, `=>` -> `\Rightarrow`, wide gaps -> `\qquad`.
+fn latex(e: &str) -> String {
+    // Names first, into placeholders that the operator rules below cannot touch.
+    const NAMES: [(&str, &str); 6] = [
+        ("omega_max", "\\omega_{\\max}"),
+        ("omega", "\\omega"),
+        ("v0", "v_0"),
+        ("a*^2", "a^{*2}"),
+        ("a* ", "a^{*} "),
+        ("≈", "\\approx"),
+    ];
+    let mut s = e.to_string();
+    for (k, (from, _)) in NAMES.iter().enumerate() {
+        s = s.replace(from, &format!("\u{1}{k}\u{2}"));
+    }
+    s = s
+        .replace("   ", " \\qquad ")
+        .replace("=>", "\\Rightarrow")
+        .replace("<=", "\\le")
+        .replace('*', " \\cdot ");
+    while let Some(i) = s.find("sqrt(") {
+        let rest = &s[i + 5..];
+        let mut depth = 1;
+        let close = rest
+            .char_indices()
+            .find(|&(_, c)| {
+                depth += match c {
+                    '(' => 1,
+                    ')' => -1,
+                    _ => 0,
+                };
+                depth == 0
+            })
+            .map_or(rest.len(), |(k, _)| k);
+        let after = &rest[(close + 1).min(rest.len())..];
+        s = format!("{}\\sqrt{{{}}}{after}", &s[..i], &rest[..close]);
+    }
+    for (k, (_, to)) in NAMES.iter().enumerate() {
+        s = s.replace(&format!("\u{1}{k}\u{2}"), &format!("{to} "));
+    }
+    s
+}
+
+fn steps(scene: &Scene) -> Vec<Step> {
+    let (m, big_m, a, v0, e) = (
+        scene.m(),
+        scene.rod_mass(),
+        scene.a(),
+        scene.v0(),
+        scene.e(),
+    );
+    let inertia = scene.inertia();
+    let out = solve(&scene.params::<Q>()).expect("a valid scene is nonsingular");
+    let x = &out.after;
+    let mut steps = vec![Step {
+        title: "The scene",
+        prose: vec![format!(
+            "`m = {m}`, `M = {big_m}`, `l = {}`, `a = {a}`, `v0 = {v0}`, `e = {e}`; {} rod, `I = {inertia}` (about its centre); {}.",
+            scene.half_length(),
+            scene.rod(),
+            match scene.support() {
+                Support::Free => "free on the table".to_string(),
+                Support::Pivot(p) => format!("on a fixed pivot at `p = {p}`"),
+            }
+        )],
+        equations: vec![],
+    }];
+    match scene.support() {
+        Support::Free => free_rod_steps(scene, &inertia, x, &mut steps),
+        Support::Pivot(p) => pivot_steps(scene, p, &inertia, x, &mut steps),
+    }
+    steps.push(a_star_step(scene));
+    steps
+}
+
+fn free_rod_steps(
+    scene: &Scene,
+    inertia: &Q,
+    x: &crate::mechanics::Motion<Q>,
+    steps: &mut Vec<Step>,
+) {
+    let (m, big_m, a, v0, e) = (
+        scene.m(),
+        scene.rod_mass(),
+        scene.a(),
+        scene.v0(),
+        scene.e(),
+    );
+    steps.push(Step {
+        title: "The three balance equations",
+        prose: vec![
+            "Linear momentum, angular momentum about the rod's centre (the table is frictionless and the rod free), and the restitution law at the contact point (its velocity after the impact is `V + a*omega`):".into(),
+        ],
+        equations: vec![
+            format!("m*v0 = m*v + M*V:   {}*{} = {}*v + {}*V", n(m), n(v0), n(m), n(big_m)),
+            format!(
+                "m*a*v0 = m*a*v + I*omega:   {}*{}*{} = {}*{}*v + {}*omega",
+                n(m), n(a), n(v0), n(m), n(a), n(inertia)
+            ),
+            format!("V + a*omega - v = e*v0:   V + {}*omega - v = {}*{}", n(a), n(e), n(v0)),
+        ],
+    });
+    let g = Groups::of(m, big_m, inertia, a);
+    steps.push(Step {
+        title: "Elimination",
+        prose: vec![
+            "The first two give V and omega in terms of v; the third then gives v. With `r = m/M`, `s = m*a^2/I`, `q = r + s` and `D = 1 + q`:".into(),
+        ],
+        equations: vec![
+            "V = (m/M)*(v0 - v),   omega = (m*a/I)*(v0 - v)".into(),
+            "(v0 - v)*q = v + e*v0   =>   v = (q - e)/D*v0".into(),
+            format!("r = m/M = {},   s = m*a^2/I = {},   q = {}", g.r, g.s, g.q),
+            format!("D = 1 + q = {}", g.d),
+        ],
+    });
+    steps.push(Step {
+        title: "The result",
+        prose: vec![],
+        equations: vec![
+            format!("v = (q - e)/D*v0 = {}", x.v),
+            format!("V = (1 + e)*r/D*v0 = {}", x.rod_v),
+            format!("omega = (1 + e)*(m*a/I)/D*v0 = {}", x.omega),
+        ],
+    });
+}
+
+fn pivot_steps(
+    scene: &Scene,
+    p: &Q,
+    inertia: &Q,
+    x: &crate::mechanics::Motion<Q>,
+    steps: &mut Vec<Step>,
+) {
+    let (m, big_m, a, v0, e) = (
+        scene.m(),
+        scene.rod_mass(),
+        scene.a(),
+        scene.v0(),
+        scene.e(),
+    );
+    let d = a - p;
+    let about_pivot = inertia + big_m * p * p;
+    steps.push(Step {
+        title: "The balance equations",
+        prose: vec![
+            "The pivot pushes on the rod during the impact, so linear momentum is not conserved: angular momentum about the pivot replaces it, and the rod turns about the pivot (its centre moves with `V = -p*omega`). The restitution law holds at the contact point, at distance `d = a - p` from the pivot:".into(),
+        ],
+        equations: vec![
+            format!(
+                "m*d*v0 = m*d*v + (I + M*p^2)*omega:   {}*{}*{} = {}*{}*v + {}*omega",
+                n(m), n(&d), n(v0), n(m), n(&d), n(&about_pivot)
+            ),
+            format!("d*omega - v = e*v0:   {}*omega - v = {}*{}", n(&d), n(e), n(v0)),
+        ],
+    });
+    let q = m * &d * &d / &about_pivot;
+    steps.push(Step {
+        title: "Elimination",
+        prose: vec!["With `q = m*d^2/(I + M*p^2)` and `D = 1 + q`:".into()],
+        equations: vec![
+            "omega = m*d/(I + M*p^2)*(v0 - v),   (v0 - v)*q = v + e*v0".into(),
+            format!("q = {q},   D = 1 + q = {}", Q::one() + &q),
+        ],
+    });
+    steps.push(Step {
+        title: "The result",
+        prose: vec![],
+        equations: vec![
+            format!("v = (q - e)/D*v0 = {}", x.v),
+            format!("omega = (1 + e)*(m*d/(I + M*p^2))/D*v0 = {}", x.omega),
+            format!("V = -p*omega = {}", x.rod_v),
+        ],
+    });
+}
+
+fn a_star_step(scene: &Scene) -> Step {
+    let o = optimum(scene);
+    let root = surd(&QSqrt::sqrt_of(&o.squared), Notation::Ascii);
+    let approx = QSqrt::sqrt_of(&o.squared).decimal(6);
+    let (lever, moment) = match scene.support() {
+        Support::Free => ("a", "I*(M + m)/M".to_string()),
+        Support::Pivot(_) => ("d", "I + M*p^2".to_string()),
+    };
+    let placement = match o.placement {
+        Placement::Inside => format!(
+            "`a* = {root} ≈ {approx} < {}`: a* lies on the rod, and hitting there spins the rod faster than hitting the end.",
+            o.arm
+        ),
+        Placement::AtEnd => format!("`a* = {root}`: exactly the end of the rod."),
+        Placement::Beyond => format!(
+            "`a* = {root} ≈ {approx} > {}`: a* lies beyond the end, so omega grows all the way to the end, which gives the fastest spin.",
+            o.arm
+        ),
+    };
+    Step {
+        title: "Where omega is largest",
+        prose: vec![
+            format!(
+                "As a function of the lever arm `{lever}`, `omega` has the form `K*x/(b^2 + c^2*x^2)` with `x = {lever}`, `b^2 = {moment}` and `c^2 = m`; `f(x) = x/(b^2 + c^2*x^2)` is largest at `x = b/c`, so"
+            ),
+            placement,
+        ],
+        equations: vec![
+            format!("a*^2 = b^2/c^2 = {}", o.squared),
+            format!("omega_max = {}", surd(&o.omega_max, Notation::Ascii)),
+        ],
+    }
+}

@@ -1,0 +1,102 @@
+//! `solve --explain`: the working with the scene's numbers, checked against values derived by
+//! hand. Free uniform rod, m = M = 1, l = 1, a = 1/2, e = 1/2: I = 1/3, r = 1, s = m a^2/I = 3/4,
+//! q = 7/4, D = 11/4; v = (q - e)/D v0 = 5/11, V = (1 + e) r/D v0 = 6/11,
+//! omega = (1 + e)(m a/I)/D v0 = (3/2)(3/2)/(11/4) = 9/11; a*^2 = I (M + m)/(m M) = 2/3.
+//! Pivot at p = 1/2, M = 3, a = 1, sticking: I = 1, d = 1/2, I + M p^2 = 7/4, q = m d^2/(7/4) = 1/7,
+//! D = 8/7, v = q/D = 1/8, omega = (m d/(7/4))/D = 1/4, V = -p omega = -1/8.
+
+use std::process::Command;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .arg("solve")
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+#[test]
+fn free_rod_working_with_its_numbers() {
+    let (code, text, _) = run(&[
+        "--m",
+        "1",
+        "--M",
+        "1",
+        "--a",
+        "1/2",
+        "--e",
+        "1/2",
+        "--explain",
+    ]);
+    assert_eq!(code, 0);
+    for line in [
+        "m*v0 = m*v + M*V:   1*1 = 1*v + 1*V",
+        "m*a*v0 = m*a*v + I*omega:   1*1/2*1 = 1*1/2*v + 1/3*omega",
+        "V + a*omega - v = e*v0:   V + 1/2*omega - v = 1/2*1",
+        "r = m/M = 1,   s = m*a^2/I = 3/4,   q = 7/4",
+        "D = 1 + q = 11/4",
+        "v = (q - e)/D*v0 = 5/11",
+        "V = (1 + e)*r/D*v0 = 6/11",
+        "omega = (1 + e)*(m*a/I)/D*v0 = 9/11",
+        "a*^2 = b^2/c^2 = 2/3",
+        "a* = sqrt(6)/3 ≈ 0.816497 < 1: a* lies on the rod",
+    ] {
+        assert!(text.contains(line), "missing {line:?} in\n{text}");
+    }
+}
+
+#[test]
+fn pivot_working_replaces_linear_momentum() {
+    let (code, text, _) = run(&[
+        "--m",
+        "1",
+        "--M",
+        "3",
+        "--a",
+        "1",
+        "--pivot",
+        "1/2",
+        "--inelastic",
+        "--explain",
+    ]);
+    assert_eq!(code, 0);
+    assert!(!text.contains("m*v0 = m*v + M*V"), "{text}");
+    for line in [
+        "angular momentum about the pivot replaces it",
+        "m*d*v0 = m*d*v + (I + M*p^2)*omega:   1*1/2*1 = 1*1/2*v + 7/4*omega",
+        "q = 1/7,   D = 1 + q = 8/7",
+        "v = (q - e)/D*v0 = 1/8",
+        "omega = (1 + e)*(m*d/(I + M*p^2))/D*v0 = 1/4",
+        "V = -p*omega = -1/8",
+    ] {
+        assert!(text.contains(line), "missing {line:?} in\n{text}");
+    }
+}
+
+#[test]
+fn markdown_and_latex_and_refusals() {
+    let (_, md, _) = run(&["--m", "1", "--M", "1", "--explain", "markdown"]);
+    assert!(md.contains("### 2. The three balance equations") && md.contains("$$ "));
+    let (_, tex, _) = run(&["--m", "1", "--M", "1", "--explain", "latex"]);
+    assert!(tex.contains(r"\paragraph{4. The result}"));
+    assert!(tex.contains(r"\omega_{\max}") && !tex.contains('≈') && !tex.contains('`'));
+    for (args, message) in [
+        (
+            &["--m", "1", "--M", "1", "--explain", "pdf"][..],
+            "error: explain: expected text, markdown or latex, got 'pdf'\n",
+        ),
+        (
+            &["--m", "1", "--M", "1", "--explain", "--json"][..],
+            "error: explain: the working is written for the paper's scene, exactly: not with --json, --backend or oblique flags\n",
+        ),
+    ] {
+        let (code, _, err) = run(args);
+        assert_eq!(code, 2);
+        assert_eq!(err, message);
+    }
+}
