@@ -155,13 +155,7 @@ fn latex(e: &str) -> String {
 }
 
 fn steps(scene: &Scene) -> Vec<Step> {
-    let (m, big_m, a, v0, e) = (
-        scene.m(),
-        scene.rod_mass(),
-        scene.a(),
-        scene.v0(),
-        scene.e(),
-    );
+    let (m, big_m, a, v0, e) = numbers(scene);
     let inertia = scene.inertia();
     let out = solve(&scene.params::<Q>()).expect("a valid scene is nonsingular");
     let x = &out.after;
@@ -186,19 +180,24 @@ fn steps(scene: &Scene) -> Vec<Step> {
     steps
 }
 
+/// m, M, a, v0 and e of `scene`, the numbers every equation is written with.
+fn numbers(scene: &Scene) -> (&Q, &Q, &Q, &Q, &Q) {
+    (
+        scene.m(),
+        scene.rod_mass(),
+        scene.a(),
+        scene.v0(),
+        scene.e(),
+    )
+}
+
 fn free_rod_steps(
     scene: &Scene,
     inertia: &Q,
     x: &crate::mechanics::Motion<Q>,
     steps: &mut Vec<Step>,
 ) {
-    let (m, big_m, a, v0, e) = (
-        scene.m(),
-        scene.rod_mass(),
-        scene.a(),
-        scene.v0(),
-        scene.e(),
-    );
+    let (m, big_m, a, v0, e) = numbers(scene);
     steps.push(Step {
         title: "The three balance equations",
         prose: vec![
@@ -244,13 +243,7 @@ fn pivot_steps(
     x: &crate::mechanics::Motion<Q>,
     steps: &mut Vec<Step>,
 ) {
-    let (m, big_m, a, v0, e) = (
-        scene.m(),
-        scene.rod_mass(),
-        scene.a(),
-        scene.v0(),
-        scene.e(),
-    );
+    let (m, big_m, a, v0, e) = numbers(scene);
     let d = a - p;
     let about_pivot = inertia + big_m * p * p;
     steps.push(Step {

@@ -275,16 +275,8 @@ fn primitive_prs(mut f: Vec<Poly>, mut g: Vec<Poly>) -> Vec<Poly> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::tests::{k, v};
     use super::*;
-    use crate::field::q;
-
-    fn v(name: &str) -> Poly {
-        Poly::var(Sym::new(name))
-    }
-
-    fn k(n: i64) -> Poly {
-        Poly::constant(q(n, 1))
-    }
 
     #[test]
     fn modular_coprimality_test_never_claims_a_shared_factor_away() {

@@ -657,11 +657,13 @@ mod tests {
     use crate::field::q;
     use proptest::prelude::*;
 
-    fn v(name: &str) -> Poly {
+    /// The symbol `name` as a polynomial (also used by the gcd tests).
+    pub(super) fn v(name: &str) -> Poly {
         Poly::var(Sym::new(name))
     }
 
-    fn k(n: i64) -> Poly {
+    /// The integer constant `n` as a polynomial.
+    pub(super) fn k(n: i64) -> Poly {
         Poly::constant(q(n, 1))
     }
 
