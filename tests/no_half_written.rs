@@ -108,10 +108,23 @@ fn a_batch_killed_midway_leaves_the_previous_output_intact() {
 /// Regression (F5 of the hostile-input review): SIGINT (Ctrl-C), SIGTERM and SIGHUP left the
 /// hidden temporary file behind, 5-8 MB after a second of work and up to the full output later;
 /// only SIGKILL was documented to do so. A handler now removes every registered temporary file
-/// and the process then ends by the same signal (exit status 130, 143, 129 in a shell).
+/// and the process then ends by the same signal (exit status 130, 143, 129 in a shell). A signal
+/// the process inherits as ignored stays ignored (as `nohup` and `&` intend).
 #[test]
 fn sigint_sigterm_and_sighup_leave_no_temporary_file() {
+    // A signal this test runs with ignored (a job started with `&` or under `nohup` ignores
+    // SIGINT or SIGHUP) is inherited by the child, which honours it by design: nothing to test.
+    let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+    let ignored = status
+        .lines()
+        .find_map(|line| line.strip_prefix("SigIgn:"))
+        .and_then(|mask| u64::from_str_radix(mask.trim(), 16).ok())
+        .unwrap_or(0);
     for (signal, number) in [("INT", 2), ("TERM", 15), ("HUP", 1)] {
+        if ignored & (1 << (number - 1)) != 0 {
+            eprintln!("SIG{signal} is ignored by this test process (inherited): not tested");
+            continue;
+        }
         let dir = scratch(&format!("signal-{signal}"));
         std::fs::write(dir.join("out.csv"), PREVIOUS).unwrap();
         let (mut child, _) = batch_midway(&dir);
