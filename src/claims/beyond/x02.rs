@@ -7,7 +7,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "e = 1 reproduces Eqs. (v), (V), (omega) and conserves energy exactly; with C7, energy conservation is equivalent to e = 1",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let i = sym("I");

@@ -9,7 +9,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Sticking model: y_c = ma/(M+m), V_c = m v0/(M+m), I_c = I + mu a^2, omega = mu a v0/(I + mu a^2). It is identical to Newton e = 0 at the impact instant",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(_paper: &Paper) -> Formalised {
     let (m, big_m, a, i, v0) = (sym("m"), sym("M"), sym("a"), sym("I"), sym("v0"));

@@ -8,7 +8,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "omega_e = (1+e) v0 a/(a*^2 + a^2): a* does not depend on e or v0. At a* the rotational compliance a^2/I equals the translational compliance 1/m + 1/M, and J(a*) = J(0)/2",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let i = sym("I");

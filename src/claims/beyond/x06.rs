@@ -6,7 +6,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "omega(a*) = (1+e) v0/(2a*) = (1+e)(v0/2) sqrt(mu/I); uniform rod: (1+e)(v0/2l) sqrt(3m/(M+m)); maximum on [0,l] is omega(min(a*, l))",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let half_kick = one_plus_e_f() * &f("v0") / &Formula::int(2);

@@ -9,7 +9,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Uniform rod with k = M/m <= 2: (omega(l)/omega_max)^2 = 12(1+k)/(4+k)^2, which lies in (3/4, 1]; at M = m the ratio is 2sqrt6/5 = 0.9798. Aiming at a* therefore gains less than 2/sqrt3 - 1 = 15.5% over hitting the end. For a general r_G the gain is unbounded",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m) = (sym("m"), sym("M"));

@@ -7,7 +7,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Elastic, at a*: v = V = m v0/(M+m), the CM velocity of the system. The rotational KE is mu v0^2/2, all of the CM-frame energy, which is a fraction M/(M+m) of K0. König's theorem gives I omega^2/2 = mu v0^2/2 - [m(v - v_cm)^2 + M(V - v_cm)^2]/2, an energy proof that omega <= v0/a*",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, i, v0) = (sym("m"), sym("M"), sym("I"), sym("v0"));

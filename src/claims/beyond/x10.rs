@@ -6,7 +6,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "General e, at a*: v - V = (1-e) v0/2, V = (1+e) m v0/(2(M+m)), K_rot = ((1+e)/2)^2 mu v0^2/2",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (i, e) = (sym("I"), sym("e"));

@@ -6,7 +6,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Energy lost ΔK = (1 - e^2) m_eff v0^2/2 >= 0; for e = 0, ΔK/K0 = 1/D; at a*, ΔK/K0 = (1 - e^2) M/(2(M+m))",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (i, e) = (sym("I"), sym("e"));

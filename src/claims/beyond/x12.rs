@@ -8,7 +8,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "v = v0 (m - e M_eff)/(m + M_eff) with M_eff = M r_G^2/(r_G^2 + a^2): the projectile bounces back iff m < e M_eff, stops iff m = e M_eff, goes on iff m > e M_eff. Uniform rod, e = 1: M_eff runs over [M/4, M] and the projectile stops at a0 = l sqrt((M - m)/(3m)), which lies on the rod for m <= M <= 4m. It always goes on for e = 0, and at a* for e = 1",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, e, v0) = (sym("m"), sym("e"), sym("v0"));

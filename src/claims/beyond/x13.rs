@@ -8,7 +8,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The rod point momentarily at rest after the impact is at y0 = -r_G^2/a, whatever m, v0 and e are; a·|y0| = r_G^2 (centre-of-percussion conjugacy). Uniform rod: y0 is on the rod iff a >= l/3; an end hit gives y0 = -l/3",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(_paper: &Paper) -> Formalised {
     let (a, l, e) = (sym("a"), sym("l"), sym("e"));

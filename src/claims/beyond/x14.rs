@@ -7,7 +7,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The far end moves with V(1 - a l/r_G^2): it moves backwards iff a > r_G^2/l (uniform rod: a > l/3)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let l = sym("l");

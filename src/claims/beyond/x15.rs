@@ -6,7 +6,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The elastic rod takes all of K0 where the projectile stops (a0), not at a*: a*^2 - a0^2 = 2l^2/3",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, l, a, v0) = (sym("m"), sym("M"), sym("l"), sym("a"), sym("v0"));

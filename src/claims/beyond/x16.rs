@@ -8,7 +8,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "M -> 0 with r_G fixed: v -> v0, V -> 2v0 r^2/(r^2 + a^2), omega -> 2v0 a/(r^2 + a^2), the struck point -> 2v0, a* -> r_G",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (a, v0) = (sym("a"), sym("v0"));

@@ -8,7 +8,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "M -> oo: omega ~ 2m a v0/(M r_G^2), v + v0 ~ 2m v0(1 + a^2/r_G^2)/M; with restitution, v -> -e v0",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, a, v0) = (sym("m"), sym("M"), sym("a"), sym("v0"));

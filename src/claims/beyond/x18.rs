@@ -7,7 +7,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Pivoted rod (fixed axis): omega = (1+e) m d v0/(I_p + m d^2), maximal at d* = sqrt(I_p/m) (inside a door iff M < 3m). The pivot impulse vanishes at d = I_p/(M h), the centre of percussion (2L/3 for a door)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, a, p) = (sym("m"), sym("M"), sym("a"), sym("p"));

@@ -6,7 +6,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Elastic, at a*: the projectile is at rest relative to the rod's centre, so half a turn later (t = pi a*/v0) the other arm hits it from behind at closing speed v0. A second impact is unavoidable",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let after = motion(&free_rod(sym("I"), int(1)));

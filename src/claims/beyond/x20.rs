@@ -6,7 +6,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The rod's share of the angular momentum, I omega/(m v0 a) = (1+e)/D, decreases strictly with a",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(_paper: &Paper) -> Formalised {
     let (m, a, t, v0, inertia) = (sym("m"), sym("a"), sym("t"), sym("v0"), sym("I"));

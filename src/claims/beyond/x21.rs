@@ -7,7 +7,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The struck point's speed after the impact, (1+e) v0 m/(m + M_eff(a)), increases strictly with a: intuition holds for the struck point but not for omega",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(_paper: &Paper) -> Formalised {
     let (big_m, a, t) = (sym("M"), sym("a"), sym("t"));

@@ -9,7 +9,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Rod not symmetric: every formula holds with a replaced by a - c (c the CM offset; I taken about the CM)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (a, c, l) = (sym("a"), sym("c"), sym("l"));

@@ -7,7 +7,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Sticking loses (mu v0^2/2) I/(I + mu a^2) = K0/D; at a*, I_c = 2I and omega = v0/(2a*)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, a, v0, inertia) = (sym("m"), sym("M"), sym("a"), sym("v0"), sym("I"));

@@ -6,7 +6,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "For every e, the b^2 of the paper's f(x) argument is I(1/m + 1/M), with c = 1",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let after = motion(&free_rod(sym("I"), sym("e")));

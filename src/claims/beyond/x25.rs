@@ -6,7 +6,10 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "After the impact the rod's K_rot/K_trans = a^2/r_G^2 for any m and e (uniform rod hit at the end: 3)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated("PENDING");
 
 fn formalise(paper: &Paper) -> Formalised {
     let l = sym("l");
