@@ -9,7 +9,20 @@ pub(super) const ENTRY: Entry = Entry {
     export: EXPORT,
 };
 
-const EXPORT: Export = Export::Unstated("PENDING");
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution),
+    &[
+        Check::holds(
+            "omega_e = (1+e)/2 Eq. (omega)",
+            "omega = (1 + e)/2*(2*m*a/I)/(1 + m/M + m*a^2/I)*v0",
+        ),
+        Check::holds(
+            "e = 0: Eq. (omega) = 2 omega_inel",
+            "2*omega = (2*m*a/I)/(1 + m/M + m*a^2/I)*v0",
+        )
+        .given(&["e = 0"]),
+    ],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let i = sym("I");

@@ -11,7 +11,32 @@ pub(super) const ENTRY: Entry = Entry {
     export: EXPORT,
 };
 
-const EXPORT: Export = Export::Unstated("PENDING");
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Restitution).impulses(),
+        &[
+            Check::holds(
+                "omega_e = (1+e) v0 a/(a*^2 + a^2)",
+                "omega = (1 + e)*v0*a/(s^2 + a^2)",
+            ),
+            Check::holds(
+                "a* maximises omega_e over a >= 0 for every e and v0",
+                "a >= 0 and a != s => omega < omega_s",
+            ),
+            Check::holds(
+                "at a* the rotational compliance equals the translational one",
+                "s^2/I = 1/m + 1/M",
+            ),
+            Check::holds("J(a*) = J(0)/2", "J_s = J_0/2"),
+        ],
+    )
+    .at(&[
+        Impact { at: "a", tag: "" },
+        Impact { at: "s", tag: "s" },
+        Impact { at: "0", tag: "0" },
+    ])
+    .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let i = sym("I");

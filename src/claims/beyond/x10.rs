@@ -9,7 +9,14 @@ pub(super) const ENTRY: Entry = Entry {
     export: EXPORT,
 };
 
-const EXPORT: Export = Export::Unstated("PENDING");
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution),
+    &[
+        Check::holds("at a*: v - V, V and the rotational energy", "v_s - V_s = (1 - e)*v0/2 and V_s = (1 + e)*m*v0/(2*(M + m)) and I*omega_s^2 = ((1 + e)/2)^2*(m*M/(M + m))*v0^2"),
+    ],
+)
+.at(&[Impact { at: "s", tag: "s" }])
+.given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (i, e) = (sym("I"), sym("e"));

@@ -11,7 +11,19 @@ pub(super) const ENTRY: Entry = Entry {
     export: EXPORT,
 };
 
-const EXPORT: Export = Export::Unstated("PENDING");
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Gyration, Law::Restitution),
+    &[
+        Check::holds("v = v0 (m - e M_eff)/(m + M_eff), M_eff = M r_G^2/(r_G^2 + a^2)", "v = v0*(m - e*Me)/(m + Me)"),
+        Check::holds("bounces back iff m < e M_eff, stops iff m = e M_eff", "(v < 0 => m < e*Me) and (m < e*Me => v < 0) and (v = 0 => m = e*Me) and (m = e*Me => v = 0)"),
+        Check::holds("uniform rod: M_eff in [M/4, M] on the rod", "M/4 <= Me and Me <= M").given(&["3*r^2 = l^2", "0 <= a", "a <= l"]),
+        Check::holds("uniform rod, e = 1: the projectile stops at a0 = l sqrt((M - m)/(3m)), on the rod iff M <= 4m", "v = 0 and (a <= l => M <= 4*m) and (M <= 4*m => a <= l)").given(&["e = 1", "3*r^2 = l^2", "M >= m", "a >= 0", "a^2 = l^2*(M - m)/(3*m)"]),
+        Check::holds("e = 0: it always goes on", "v > 0").given(&["e = 0"]),
+        Check::holds("e = 1 at a*: it goes on", "v_s > 0").given(&["e = 1"]),
+    ],
+)
+.at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+.given(&["l > 0", "Me = M*r^2/(r^2 + a^2)", "s > 0", "s^2 = (M + m)*r^2/m"]));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, e, v0) = (sym("m"), sym("e"), sym("v0"));

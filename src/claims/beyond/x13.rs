@@ -11,7 +11,28 @@ pub(super) const ENTRY: Entry = Entry {
     export: EXPORT,
 };
 
-const EXPORT: Export = Export::Unstated("PENDING");
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Gyration, Law::Restitution),
+        &[
+            Check::holds(
+                "the rod point y0 = -r_G^2/a is at rest after the impact",
+                "V + omega*y0 = 0 and a*(-y0) = r^2",
+            ),
+            Check::holds(
+                "uniform rod: y0 on the rod iff a >= l/3",
+                "(-y0 <= l => a >= l/3) and (a >= l/3 => -y0 <= l)",
+            )
+            .given(&["3*r^2 = l^2", "l > 0"]),
+            Check::holds("uniform rod hit at the end: y0 = -l/3", "y0 = -l/3").given(&[
+                "3*r^2 = l^2",
+                "l > 0",
+                "a = l",
+            ]),
+        ],
+    )
+    .given(&["a > 0", "y0 = -r^2/a"]),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let (a, l, e) = (sym("a"), sym("l"), sym("e"));

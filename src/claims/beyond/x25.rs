@@ -9,7 +9,14 @@ pub(super) const ENTRY: Entry = Entry {
     export: EXPORT,
 };
 
-const EXPORT: Export = Export::Unstated("PENDING");
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Gyration, Law::Restitution),
+    &[
+        Check::holds("K_rot/K_trans = a^2/r_G^2", "I*omega^2 = (a^2/r^2)*M*V^2"),
+        Check::holds("uniform rod hit at the end: 3", "I*omega^2 = 3*M*V^2")
+            .given(&["3*r^2 = l^2", "a = l"]),
+    ],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let l = sym("l");

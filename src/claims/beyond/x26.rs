@@ -9,7 +9,9 @@ pub(super) const ENTRY: Entry = Entry {
     export: EXPORT,
 };
 
-const EXPORT: Export = Export::Unstated("PENDING");
+const EXPORT: Export = Export::Unstated(
+    "the second impact is decided by the root of tan tau = kappa tau, a transcendental equation outside real arithmetic",
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, a, e, inertia) = (sym("m"), sym("M"), sym("a"), sym("e"), sym("I"));

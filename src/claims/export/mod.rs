@@ -65,12 +65,20 @@ pub struct Exported {
     pub text: String,
 }
 
-/// The first lines of every exported file: the claim, as `docs/claims.md` lists it.
-fn header(entry: &Entry, comment: &str) -> String {
-    format!(
+/// The first lines of every exported file: the claim, as `docs/claims.md` lists it, and the
+/// part left out, if any.
+fn header(entry: &Entry, statement: &Statement, comment: &str) -> String {
+    let mut out = format!(
         "{comment}rodimpact prove --export: claim {} ({})\n{comment}{}\n",
         entry.id, entry.location, entry.statement
-    )
+    );
+    if !statement.outside.is_empty() {
+        out.push_str(&format!(
+            "{comment}Not stated here: {}\n",
+            statement.outside
+        ));
+    }
+    out
 }
 
 /// Why a claim is not exported in `format`, or `None` when it is.
@@ -85,8 +93,8 @@ pub fn not_exported(entry: &Entry, format: Format) -> Option<&'static str> {
     match (&entry.export, format) {
         (Export::Unstated(why), _) => Some(why),
         (Export::Stated(_), Format::Smt2) => None,
-        (Export::Stated(s), Format::Sympy) => (!sympy_supported(s)).then_some(
-            "an inequality over a domain (not an identity or a check at given values): z3 decides it, see smt2/",
+        (Export::Stated(s), Format::Sympy) => (!sympy_supported(s).contains(&true)).then_some(
+            "only inequalities over a domain (no identity, no check at given values): z3 decides them, see smt2/",
         ),
     }
 }
@@ -98,7 +106,7 @@ pub fn not_exported(entry: &Entry, format: Format) -> Option<&'static str> {
 /// use rodimpact::claims::{export::{Format, export}, find};
 /// let file = export(find("C15").unwrap(), Format::Smt2).unwrap();
 /// assert_eq!(file.name, "C15.smt2");
-/// assert!(file.text.contains("(check-sat)") && file.text.ends_with("; expect: sat unsat\n"));
+/// assert!(file.text.contains("(check-sat-using qfnra-nlsat)") && file.text.ends_with("; expect: sat unsat\n"));
 /// ```
 pub fn export(entry: &Entry, format: Format) -> Option<Exported> {
     if not_exported(entry, format).is_some() {
@@ -140,7 +148,8 @@ fn index(entries: &[Entry], format: Format) -> String {
     let (checker, run, extension) = match format {
         Format::Smt2 => (
             "z3",
-            "`z3 FILE` prints one answer per `(check-sat)`; the last line of each file, \
+            "`z3 FILE` prints one answer per `(check-sat-using qfnra-nlsat)` (z3's complete \
+             procedure for nonlinear real arithmetic); the last line of each file, \
              `; expect: ...`, says which answers are meant (`unsat`: the claim holds; `sat`: a \
              reading meant to fail, or a witness, with its model).",
             "smt2",
@@ -162,7 +171,23 @@ fn index(entries: &[Entry], format: Format) -> String {
     );
     for e in entries {
         let file = match not_exported(e, format) {
-            None => format!("[{0}.{extension}]({0}.{extension})", e.id),
+            None => {
+                let mut cell = format!("[{0}.{extension}]({0}.{extension})", e.id);
+                if let Export::Stated(s) = &e.export {
+                    let decided = sympy_supported(s);
+                    let n = decided.iter().filter(|d| **d).count();
+                    if format == Format::Sympy && n < decided.len() {
+                        cell.push_str(&format!(
+                            " ({n} of {} checks; the others, inequalities over a domain, are z3's)",
+                            decided.len()
+                        ));
+                    }
+                    if !s.outside.is_empty() {
+                        cell.push_str(&format!("; not stated: {}", s.outside));
+                    }
+                }
+                cell
+            }
             Some(why) => format!("not exported: {why}"),
         };
         out.push_str(&format!(

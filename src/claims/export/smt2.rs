@@ -1,5 +1,7 @@
 //! SMT-LIB 2 (QF_NRA) for z3: the hypotheses asserted, then for each check the negation of the
-//! conclusion (or the conclusion, for a witness), `(check-sat)`, and a last line
+//! conclusion (or the conclusion, for a witness), `(check-sat-using qfnra-nlsat)` (z3's complete
+//! procedure for nonlinear real arithmetic; its default incremental solver times out on some of
+//! these after a `push`), and a last line
 //! `; expect: ...` with the answers meant, in order.
 
 use super::expr::{Cmp, Expr, Prop, parse};
@@ -79,7 +81,7 @@ pub(super) fn write(entry: &Entry, statement: &Statement) -> Exported {
             (c, given, claim)
         })
         .collect();
-    let mut out = header(entry, "; ");
+    let mut out = header(entry, statement, "; ");
     out.push_str(
         "; The hypotheses are the physics (balance equations and contact law in fresh unknowns,\n\
          ; the domain), not rodimpact's solution. Each check asserts the negation of its\n\
@@ -109,7 +111,7 @@ pub(super) fn write(entry: &Entry, statement: &Statement) -> Exported {
             if let Some(asserted) = asserted {
                 out.push_str(&format!("(assert {asserted})\n"));
             }
-            out.push_str("(check-sat)\n");
+            out.push_str("(check-sat-using qfnra-nlsat)\n");
             if answer == "sat" {
                 out.push_str("(get-model)\n");
             }
@@ -119,8 +121,7 @@ pub(super) fn write(entry: &Entry, statement: &Statement) -> Exported {
         let negated = Some(format!("(not {})", prop(claim)));
         match check.expect {
             Expect::Holds => {
-                // Not vacuous: the hypotheses alone have a model (a block of its own, for z3's
-                // incremental solver is far slower after a first check-sat in the same scope).
+                // Not vacuous: the hypotheses alone have a model.
                 block("the hypotheses are consistent", None, "sat");
                 block("the negation of the conclusion is not", negated, "unsat");
             }

@@ -22,6 +22,8 @@ pub struct Statement {
     pub given: &'static [&'static str],
     /// The checks, in order.
     pub checks: &'static [Check],
+    /// The part of the claim the checks leave out, and why (empty when they state it whole).
+    pub outside: &'static str,
 }
 
 /// One impact of the scene: where it strikes and the suffix of its unknowns (`v_1`, `V_1`,
@@ -180,6 +182,7 @@ impl Statement {
             impacts: AT_A,
             given: &[],
             checks,
+            outside: "",
         }
     }
 
@@ -191,5 +194,10 @@ impl Statement {
     /// The statement with hypotheses every check shares.
     pub const fn given(self, given: &'static [&'static str]) -> Statement {
         Statement { given, ..self }
+    }
+
+    /// The statement of part of the claim: `outside` says what is left out and why.
+    pub const fn partly(self, outside: &'static str) -> Statement {
+        Statement { outside, ..self }
     }
 }

@@ -3,7 +3,7 @@
 //! evaluation (a counterexample or witness at given values). Exit status 0 when confirmed.
 //!
 //! Only identities and checks at given values go to SymPy; an inequality over a domain is
-//! z3's (see [`supported`]).
+//! z3's, and the script says so (see [`supported`]).
 
 use super::expr::{Cmp, Expr, Prop, parse};
 use super::physics::{hypotheses, unknowns};
@@ -89,51 +89,62 @@ fn all_unknowns(statement: &Statement) -> BTreeSet<String> {
         .collect()
 }
 
-/// Whether SymPy decides every check of the statement: each is an identity (a conclusion of
-/// equations) or is checked at values fixed by definitions, and every hypothesis is a
-/// definition, a domain condition or about the unknowns.
+/// Which checks of the statement SymPy decides: an identity (a conclusion of equations) or a
+/// check at values fixed by definitions, every hypothesis being a definition, a domain
+/// condition or about the unknowns.
 ///
 /// # Examples
 /// ```
 /// use rodimpact::claims::export::{Check, Law, Rod, Scene, Statement, sympy_supported};
-/// const ID: &[Check] = &[Check::holds("V", "V = 2*m*v0/(M + m)").given(&["a = 0"])];
-/// const INEQ: &[Check] = &[Check::holds("V > 0", "V > 0")];
+/// const CHECKS: &[Check] = &[
+///     Check::holds("V", "V = 2*m*v0/(M + m)").given(&["a = 0"]),
+///     Check::holds("V > 0", "V > 0"),
+/// ];
 /// let scene = Scene::new(Rod::Free, Law::Elastic);
-/// assert!(sympy_supported(&Statement::new(scene, ID)));
-/// assert!(!sympy_supported(&Statement::new(scene, INEQ)));
+/// assert_eq!(sympy_supported(&Statement::new(scene, CHECKS)), [true, false]);
 /// ```
-pub fn supported(statement: &Statement) -> bool {
+pub fn supported(statement: &Statement) -> Vec<bool> {
     let unknown = all_unknowns(statement);
     let shared: Vec<Prop> = hypotheses(statement)
         .iter()
         .map(|h| parsed(&h.text))
         .collect();
-    statement.checks.iter().all(|c| {
-        let given: Vec<Prop> = shared
-            .iter()
-            .cloned()
-            .chain(c.given.iter().map(|g| parsed(g)))
-            .collect();
-        let mut defined = BTreeSet::new();
-        for g in &given {
-            match classify(g, &unknown) {
-                Use::Unusable => return false,
-                Use::Define(n, _) => {
-                    defined.insert(n);
-                }
-                Use::Filter(_) | Use::Domain => {}
-            }
-        }
-        let claim = parsed(c.claim);
-        match c.expect {
-            Expect::Holds => claim.is_equational(),
-            Expect::Fails | Expect::Exists => given
+    statement
+        .checks
+        .iter()
+        .map(|c| {
+            let given: Vec<Prop> = shared
                 .iter()
-                .chain([&claim])
-                .flat_map(Prop::names)
-                .all(|n| unknown.contains(&n) || defined.contains(&n)),
-        }
-    })
+                .cloned()
+                .chain(c.given.iter().map(|g| parsed(g)))
+                .collect();
+            let mut defined = BTreeSet::new();
+            for g in &given {
+                match classify(g, &unknown) {
+                    Use::Unusable => return false,
+                    Use::Define(n, _) => {
+                        defined.insert(n);
+                    }
+                    Use::Filter(_) | Use::Domain => {}
+                }
+            }
+            let claim = parsed(c.claim);
+            // An equation about the unknowns would constrain the parameters, not pick a solution.
+            let constrains = c
+                .given
+                .iter()
+                .map(|g| parsed(g))
+                .any(|g| matches!(classify(&g, &unknown), Use::Filter(_)) && g.is_equational());
+            match c.expect {
+                Expect::Holds => claim.is_equational() && !constrains,
+                Expect::Fails | Expect::Exists => given
+                    .iter()
+                    .chain([&claim])
+                    .flat_map(Prop::names)
+                    .all(|n| unknown.contains(&n) || defined.contains(&n)),
+            }
+        })
+        .collect()
 }
 
 const PRELUDE: &str = r#"import sys
@@ -205,7 +216,7 @@ def confirm(what, expect, holds, found):
     return ok
 "#;
 
-/// The SymPy script of a stated claim (only when [`supported`]).
+/// The SymPy script of a stated claim: its [`supported`] checks (at least one).
 pub(super) fn write(entry: &Entry, statement: &Statement) -> Exported {
     let unknown = all_unknowns(statement);
     let hyps = hypotheses(statement);
@@ -219,7 +230,7 @@ pub(super) fn write(entry: &Entry, statement: &Statement) -> Exported {
         }
     }
     let mut out = String::from("#!/usr/bin/env python3\n");
-    out.push_str(&header(entry, "# "));
+    out.push_str(&header(entry, statement, "# "));
     out.push_str(
         "# Re-derived with SymPy from the balance equations (not from rodimpact's solution): solve\n\
          # them for the unknowns, substitute, and check each conclusion exactly. Exit status 0 when\n\
@@ -266,7 +277,24 @@ pub(super) fn write(entry: &Entry, statement: &Statement) -> Exported {
         &filters.iter().map(|f| lambda(f)).collect::<Vec<_>>(),
     ));
     out.push_str("\nok = True\n");
-    for (i, c) in statement.checks.iter().enumerate() {
+    for (i, (c, decided)) in statement
+        .checks
+        .iter()
+        .zip(supported(statement))
+        .enumerate()
+    {
+        if !decided {
+            out.push_str(&format!(
+                "\n# check {}: {}\nprint({:?})\n",
+                i + 1,
+                c.what,
+                format!(
+                    "left to z3 (not an identity or a check at given values): {}",
+                    c.what
+                )
+            ));
+            continue;
+        }
         let (mut defs, mut own_filters) = (Vec::new(), Vec::new());
         for g in c.given {
             match classify(&parsed(g), &unknown) {
