@@ -197,10 +197,11 @@ impl Parser {
         if self.peek() == Some(&Token::Op("(")) {
             let start = self.at;
             self.at += 1;
-            if let Ok(p) = self.implication() {
-                if self.eat_op(")") && !self.at_comparison() {
-                    return Ok(p);
-                }
+            if let Ok(p) = self.implication()
+                && self.eat_op(")")
+                && !self.at_comparison()
+            {
+                return Ok(p);
             }
             self.at = start;
         }
