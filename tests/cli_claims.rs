@@ -59,7 +59,11 @@ fn prove_write_reproduces_the_committed_certificates() {
     let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("proofs");
     let mut count = 0;
     for entry in std::fs::read_dir(&committed).unwrap() {
-        let name = entry.unwrap().file_name();
+        let entry = entry.unwrap();
+        if entry.path().is_dir() {
+            continue; // the exports for independent checkers (proofs/smt2, proofs/sympy)
+        }
+        let name = entry.file_name();
         let written = std::fs::read_to_string(dir.join(&name)).expect("written");
         assert_eq!(
             written,
@@ -288,4 +292,44 @@ fn the_current_directory_is_not_an_output_directory() {
     assert!(stderr.contains("holds the current directory"), "{stderr}");
     assert_eq!(snapshot(&root), before);
     std::fs::remove_dir_all(&root).unwrap();
+}
+
+#[test]
+fn prove_export_reproduces_the_committed_exports() {
+    for format in ["smt2", "sympy"] {
+        let dir =
+            std::env::temp_dir().join(format!("rodimpact-export-{format}-{}", std::process::id()));
+        let (code, _, stderr) = rodimpact(&["prove", "--export", format, dir.to_str().unwrap()]);
+        assert_eq!(code, 0, "{stderr}");
+        let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("proofs")
+            .join(format);
+        let mut count = 0;
+        for entry in std::fs::read_dir(&committed).unwrap() {
+            let name = entry.unwrap().file_name();
+            let written = std::fs::read_to_string(dir.join(&name)).expect("written");
+            assert_eq!(
+                written,
+                std::fs::read_to_string(committed.join(&name)).unwrap(),
+                "{name:?}"
+            );
+            count += 1;
+        }
+        assert_eq!(count, std::fs::read_dir(&dir).unwrap().count());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
+
+/// An unknown export format is bad usage: exit 2, the field and the formats named, nothing
+/// written.
+#[test]
+fn an_unknown_export_format_exits_2() {
+    let dir = std::env::temp_dir().join(format!("rodimpact-export-coq-{}", std::process::id()));
+    let (code, _, stderr) = rodimpact(&["prove", "C1", "--export", "coq", dir.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(
+        stderr.contains("export") && stderr.contains("smt2 and sympy"),
+        "{stderr}"
+    );
+    assert!(!dir.exists());
 }

@@ -2,6 +2,7 @@
 //! why a check can fail. The claims themselves are in `paper/` and `beyond/`, listed in
 //! [`registry`](super::registry()).
 
+use super::export::Export;
 use super::{Certificate, CertificateError, Paper};
 
 /// The location of every result beyond the paper.
@@ -237,6 +238,8 @@ pub struct Entry {
     pub statement: &'static str,
     /// Formalises the claim and decides it (doing the computation) from the paper's formulas.
     pub formalise: fn(&Paper) -> Formalised,
+    /// The claim in real arithmetic for independent checkers (z3, SymPy), from the physics.
+    pub export: Export,
 }
 
 impl Entry {

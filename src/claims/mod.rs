@@ -19,6 +19,7 @@ pub mod certificate;
 mod claim;
 mod decide;
 mod dsl;
+pub mod export;
 mod formula;
 mod printed;
 mod registry;

@@ -2,6 +2,7 @@
 
 use super::{Failure, parse_ratios, print_out};
 use clap::Args;
+use rodimpact::claims::export::{Format as ExportFormat, export_all};
 use rodimpact::claims::{self, Decided, Paper};
 use rodimpact::io::write_directory;
 use rodimpact::report::{self, Format, TableOptions};
@@ -19,6 +20,11 @@ pub(crate) struct ProveArgs {
     /// DIR's other files are kept.
     #[arg(long, value_name = "DIR")]
     pub(crate) write: Option<PathBuf>,
+    /// Also export the claims for independent checkers into DIR: FORMAT `smt2` (one SMT-LIB 2
+    /// file per claim, for z3) or `sympy` (one Python script per claim), and README.md listing
+    /// the claims not exported and why. All or nothing, like --write.
+    #[arg(long, num_args = 2, value_names = ["FORMAT", "DIR"])]
+    pub(crate) export: Option<Vec<String>>,
     /// Print a JSON list instead of one line per claim.
     #[arg(long)]
     pub(crate) json: bool,
@@ -121,8 +127,26 @@ fn all_checked(decided: &[Decided]) -> Result<(), Failure> {
     }
 }
 
+/// The format and directory of `--export FORMAT DIR`, the format checked.
+fn export_target(values: &[String]) -> Result<(ExportFormat, PathBuf), Error> {
+    let [format, dir] = values else {
+        unreachable!("clap takes exactly two values for --export");
+    };
+    let format = ExportFormat::parse(format).ok_or_else(|| {
+        Error::new(
+            "export",
+            ErrorKind::Invalid(format!(
+                "unknown format '{}'; the formats are smt2 and sympy",
+                rodimpact::echo::echo(format)
+            )),
+        )
+    })?;
+    Ok((format, PathBuf::from(dir)))
+}
+
 pub(crate) fn run_prove(args: &ProveArgs) -> Result<(), Failure> {
     let entries = select_claims(&args.ids)?;
+    let export = args.export.as_deref().map(export_target).transpose()?;
     let paper = Paper::as_printed();
     let decided: Vec<Decided> = entries
         .iter()
@@ -143,6 +167,14 @@ pub(crate) fn run_prove(args: &ProveArgs) -> Result<(), Failure> {
     }
     if let Some(dir) = &args.write {
         write_certificates("write", dir, &decided, args.ids.is_empty())?;
+    }
+    if let Some((format, dir)) = export {
+        let selected: Vec<claims::Entry> = entries.iter().map(|e| **e).collect();
+        let files: Vec<(String, String)> = export_all(&selected, format)
+            .into_iter()
+            .map(|f| (f.name, f.text))
+            .collect();
+        write_directory("export", &dir, &files)?;
     }
     all_checked(&decided)
 }

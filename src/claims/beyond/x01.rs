@@ -8,7 +8,25 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "General restitution e in [0,1] (Newton's law at the contact): the solution is unique (det = -(mI + MI + Mma^2)), with J = (1+e) v0/(1/m + 1/M + a^2/I), v = v0 - J/m, V = J/M, omega = J a/I",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Restitution).impulses(),
+        &[
+            Check::holds(
+                "the impulse and the velocities",
+                "J = (1 + e)*v0/(1/m + 1/M + a^2/I) and v = v0 - J/m and V = J/M and omega = J*a/I",
+            ),
+            Check::holds(
+                "the solution is unique: two solutions of the same equations agree",
+                "v = v_2 and V = V_2 and omega = omega_2 and J = J_2",
+            ),
+        ],
+    )
+    .at(&[Impact { at: "a", tag: "" }, Impact { at: "a", tag: "2" }]),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let i = sym("I");

@@ -7,7 +7,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "e = 1 reproduces Eqs. (v), (V), (omega) and conserves energy exactly; with C7, energy conservation is equivalent to e = 1",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution),
+    &[
+        Check::holds("e = 1 gives Eqs. (v), (V), (omega)", "v = -(1 - m/M - m*a^2/I)/(1 + m/M + m*a^2/I)*v0 and V = (2*m/M)/(1 + m/M + m*a^2/I)*v0 and omega = (2*m*a/I)/(1 + m/M + m*a^2/I)*v0").given(&["e = 1"]),
+        Check::holds("e = 1 conserves kinetic energy", "m*v0^2 = m*v^2 + M*V^2 + I*omega^2").given(&["e = 1"]),
+        Check::holds("conserved kinetic energy forces e = 1", "e = 1").given(&["m*v0^2 = m*v^2 + M*V^2 + I*omega^2"]),
+    ],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let i = sym("I");

@@ -9,7 +9,22 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Sticking model: y_c = ma/(M+m), V_c = m v0/(M+m), I_c = I + mu a^2, omega = mu a v0/(I + mu a^2). It is identical to Newton e = 0 at the impact instant",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Sticking),
+    &[
+        Check::holds(
+            "omega = mu a v0/(I + mu a^2), mu = m M/(M + m)",
+            "omega = (m*M/(M + m))*a*v0/(I + (m*M/(M + m))*a^2)",
+        ),
+        Check::holds(
+            "the pair moves as one rigid body: its CM y_c = m a/(M + m) at V_c = m v0/(M + m), each point y at V_c + omega (y - y_c)",
+            "(m*v + M*V)/(M + m) = m*v0/(M + m) and v = m*v0/(M + m) + omega*(a - m*a/(M + m)) and V = m*v0/(M + m) + omega*(0 - m*a/(M + m))",
+        ),
+    ],
+));
 
 fn formalise(_paper: &Paper) -> Formalised {
     let (m, big_m, a, i, v0) = (sym("m"), sym("M"), sym("a"), sym("I"), sym("v0"));

@@ -6,7 +6,23 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "omega_e(a) = (1+e)/2 omega_el(a) for every a; omega_el = 2 omega_inel",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution),
+    &[
+        Check::holds(
+            "omega_e = (1+e)/2 Eq. (omega)",
+            "omega = (1 + e)/2*(2*m*a/I)/(1 + m/M + m*a^2/I)*v0",
+        ),
+        Check::holds(
+            "e = 0: Eq. (omega) = 2 omega_inel",
+            "2*omega = (2*m*a/I)/(1 + m/M + m*a^2/I)*v0",
+        )
+        .given(&["e = 0"]),
+    ],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let i = sym("I");

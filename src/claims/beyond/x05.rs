@@ -8,7 +8,35 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "omega_e = (1+e) v0 a/(a*^2 + a^2): a* does not depend on e or v0. At a* the rotational compliance a^2/I equals the translational compliance 1/m + 1/M, and J(a*) = J(0)/2",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Restitution).impulses(),
+        &[
+            Check::holds(
+                "omega_e = (1+e) v0 a/(a*^2 + a^2)",
+                "omega = (1 + e)*v0*a/(s^2 + a^2)",
+            ),
+            Check::holds(
+                "a* maximises omega_e over a >= 0 for every e and v0",
+                "a >= 0 and a != s => omega < omega_s",
+            ),
+            Check::holds(
+                "at a* the rotational compliance equals the translational one",
+                "s^2/I = 1/m + 1/M",
+            ),
+            Check::holds("J(a*) = J(0)/2", "J_s = J_0/2"),
+        ],
+    )
+    .at(&[
+        Impact { at: "a", tag: "" },
+        Impact { at: "s", tag: "s" },
+        Impact { at: "0", tag: "0" },
+    ])
+    .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let i = sym("I");

@@ -6,7 +6,20 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "omega(a*) = (1+e) v0/(2a*) = (1+e)(v0/2) sqrt(mu/I); uniform rod: (1+e)(v0/2l) sqrt(3m/(M+m)); maximum on [0,l] is omega(min(a*, l))",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution),
+    &[
+        Check::holds("omega(a*) = (1+e) v0/(2a*)", "omega_s = (1 + e)*v0/(2*s)"),
+        Check::holds("omega(a*)^2 = ((1+e) v0/2)^2 mu/I", "omega_s^2 = ((1 + e)*v0/2)^2*(m*M/(M + m))/I"),
+        Check::holds("the maximum on [0, l] is omega(min(a*, l))", "(s <= l and 0 <= a and a <= l => omega <= omega_s) and (s > l and 0 <= a and a <= l => omega <= omega_l)").given(&["l > 0"]),
+        Check::holds("uniform rod: omega(a*) = (1+e)(v0/2l) sqrt(3m/(M+m))", "omega_s^2 = ((1 + e)*v0/(2*l))^2*3*m/(M + m)").given(&["I = M*l^2/3"]),
+    ],
+)
+.at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }, Impact { at: "l", tag: "l" }])
+.given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]));
 
 fn formalise(paper: &Paper) -> Formalised {
     let half_kick = one_plus_e_f() * &f("v0") / &Formula::int(2);

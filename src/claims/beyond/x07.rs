@@ -6,7 +6,30 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Universal curve: omega(a)/omega(a*) = 2s/(1+s^2) with s = a/a*; reciprocity omega(a) = omega(a*^2/a)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Restitution),
+        &[
+            Check::holds(
+                "omega(a)/omega(a*) = 2s/(1+s^2) with s = a/a*",
+                "omega/omega_s = 2*(a/s)/(1 + (a/s)^2)",
+            ),
+            Check::holds("reciprocity omega(a) = omega(a*^2/a)", "omega = omega_r"),
+        ],
+    )
+    .at(&[
+        Impact { at: "a", tag: "" },
+        Impact { at: "s", tag: "s" },
+        Impact {
+            at: "s^2/a",
+            tag: "r",
+        },
+    ])
+    .given(&["a > 0", "s > 0", "s^2 = (M + m)*I/(m*M)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let (a, big_a) = (sym("a"), sym("A"));

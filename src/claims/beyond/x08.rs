@@ -9,7 +9,33 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Uniform rod with k = M/m <= 2: (omega(l)/omega_max)^2 = 12(1+k)/(4+k)^2, which lies in (3/4, 1]; at M = m the ratio is 2sqrt6/5 = 0.9798. Aiming at a* therefore gains less than 2/sqrt3 - 1 = 15.5% over hitting the end. For a general r_G the gain is unbounded",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Restitution),
+        &[
+            Check::holds(
+                "(omega(l)/omega(a*))^2 = 12(1+k)/(4+k)^2, k = M/m",
+                "(omega_l/omega_s)^2 = 12*(1 + M/m)/(4 + M/m)^2",
+            ),
+            Check::holds(
+                "which lies in (3/4, 1] for k <= 2",
+                "3/4 < (omega_l/omega_s)^2 and (omega_l/omega_s)^2 <= 1",
+            )
+            .given(&["M <= 2*m"]),
+            Check::holds(
+                "at M = m the ratio is 2 sqrt6/5, so the gain is below 2/sqrt3 - 1",
+                "(omega_l/omega_s)^2 = 24/25 and omega_s/omega_l < 2*q/3",
+            )
+            .given(&["M = m", "q > 0", "q^2 = 3"]),
+        ],
+    )
+    .at(&[Impact { at: "s", tag: "s" }, Impact { at: "l", tag: "l" }])
+    .given(&["s > 0", "s^2 = (M + m)*l^2/(3*m)"])
+    .partly("the unbounded gain for a general r_G (a statement about a limit over rods)"),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m) = (sym("m"), sym("M"));

@@ -7,7 +7,20 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Elastic, at a*: v = V = m v0/(M+m), the CM velocity of the system. The rotational KE is mu v0^2/2, all of the CM-frame energy, which is a fraction M/(M+m) of K0. König's theorem gives I omega^2/2 = mu v0^2/2 - [m(v - v_cm)^2 + M(V - v_cm)^2]/2, an energy proof that omega <= v0/a*",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Elastic),
+    &[
+        Check::holds("at a*: v = V = m v0/(M + m), the CM velocity", "v_s = m*v0/(M + m) and V_s = m*v0/(M + m)"),
+        Check::holds("at a* the rotational energy is mu v0^2/2, a fraction M/(M+m) of K0", "I*omega_s^2 = (m*M/(M + m))*v0^2 and (m*M/(M + m))*v0^2 = M/(M + m)*(m*v0^2)"),
+        Check::holds("König: I omega^2/2 = mu v0^2/2 - [m (v - v_cm)^2 + M (V - v_cm)^2]/2", "I*omega^2 = (m*M/(M + m))*v0^2 - (m*(v - m*v0/(M + m))^2 + M*(V - m*v0/(M + m))^2)"),
+        Check::holds("hence omega <= v0/a* for a >= 0", "a >= 0 => omega <= v0/s"),
+    ],
+)
+.at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+.given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, i, v0) = (sym("m"), sym("M"), sym("I"), sym("v0"));

@@ -6,7 +6,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "General e, at a*: v - V = (1-e) v0/2, V = (1+e) m v0/(2(M+m)), K_rot = ((1+e)/2)^2 mu v0^2/2",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution),
+    &[
+        Check::holds("at a*: v - V, V and the rotational energy", "v_s - V_s = (1 - e)*v0/2 and V_s = (1 + e)*m*v0/(2*(M + m)) and I*omega_s^2 = ((1 + e)/2)^2*(m*M/(M + m))*v0^2"),
+    ],
+)
+.at(&[Impact { at: "s", tag: "s" }])
+.given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (i, e) = (sym("I"), sym("e"));

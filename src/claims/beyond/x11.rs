@@ -6,7 +6,32 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Energy lost ΔK = (1 - e^2) m_eff v0^2/2 >= 0; for e = 0, ΔK/K0 = 1/D; at a*, ΔK/K0 = (1 - e^2) M/(2(M+m))",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Restitution),
+        &[
+            Check::holds(
+                "energy lost: 2 dK = (1 - e^2) m_eff v0^2, m_eff = 1/(1/m + 1/M + a^2/I)",
+                "m*v0^2 - (m*v^2 + M*V^2 + I*omega^2) = (1 - e^2)*v0^2/(1/m + 1/M + a^2/I)",
+            ),
+            Check::holds("dK >= 0", "m*v^2 + M*V^2 + I*omega^2 <= m*v0^2"),
+            Check::holds(
+                "e = 0: dK/K0 = 1/D",
+                "(m*v0^2 - (m*v^2 + M*V^2 + I*omega^2))/(m*v0^2) = 1/(1 + m/M + m*a^2/I)",
+            )
+            .given(&["e = 0"]),
+            Check::holds(
+                "at a*: dK/K0 = (1 - e^2) M/(2(M+m))",
+                "(m*v0^2 - (m*v_s^2 + M*V_s^2 + I*omega_s^2))/(m*v0^2) = (1 - e^2)*M/(2*(M + m))",
+            ),
+        ],
+    )
+    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let (i, e) = (sym("I"), sym("e"));

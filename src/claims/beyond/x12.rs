@@ -8,7 +8,22 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "v = v0 (m - e M_eff)/(m + M_eff) with M_eff = M r_G^2/(r_G^2 + a^2): the projectile bounces back iff m < e M_eff, stops iff m = e M_eff, goes on iff m > e M_eff. Uniform rod, e = 1: M_eff runs over [M/4, M] and the projectile stops at a0 = l sqrt((M - m)/(3m)), which lies on the rod for m <= M <= 4m. It always goes on for e = 0, and at a* for e = 1",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Gyration, Law::Restitution),
+    &[
+        Check::holds("v = v0 (m - e M_eff)/(m + M_eff), M_eff = M r_G^2/(r_G^2 + a^2)", "v = v0*(m - e*Me)/(m + Me)"),
+        Check::holds("bounces back iff m < e M_eff, stops iff m = e M_eff", "(v < 0 => m < e*Me) and (m < e*Me => v < 0) and (v = 0 => m = e*Me) and (m = e*Me => v = 0)"),
+        Check::holds("uniform rod: M_eff in [M/4, M] on the rod", "M/4 <= Me and Me <= M").given(&["3*r^2 = l^2", "0 <= a", "a <= l"]),
+        Check::holds("uniform rod, e = 1: the projectile stops at a0 = l sqrt((M - m)/(3m)), on the rod iff M <= 4m", "v = 0 and (a <= l => M <= 4*m) and (M <= 4*m => a <= l)").given(&["e = 1", "3*r^2 = l^2", "M >= m", "a >= 0", "a^2 = l^2*(M - m)/(3*m)"]),
+        Check::holds("e = 0: it always goes on", "v > 0").given(&["e = 0"]),
+        Check::holds("e = 1 at a*: it goes on", "v_s > 0").given(&["e = 1"]),
+    ],
+)
+.at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+.given(&["l > 0", "Me = M*r^2/(r^2 + a^2)", "s > 0", "s^2 = (M + m)*r^2/m"]));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, e, v0) = (sym("m"), sym("e"), sym("v0"));

@@ -8,7 +8,31 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The rod point momentarily at rest after the impact is at y0 = -r_G^2/a, whatever m, v0 and e are; a·|y0| = r_G^2 (centre-of-percussion conjugacy). Uniform rod: y0 is on the rod iff a >= l/3; an end hit gives y0 = -l/3",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Gyration, Law::Restitution),
+        &[
+            Check::holds(
+                "the rod point y0 = -r_G^2/a is at rest after the impact",
+                "V + omega*y0 = 0 and a*(-y0) = r^2",
+            ),
+            Check::holds(
+                "uniform rod: y0 on the rod iff a >= l/3",
+                "(-y0 <= l => a >= l/3) and (a >= l/3 => -y0 <= l)",
+            )
+            .given(&["3*r^2 = l^2", "l > 0"]),
+            Check::holds("uniform rod hit at the end: y0 = -l/3", "y0 = -l/3").given(&[
+                "3*r^2 = l^2",
+                "l > 0",
+                "a = l",
+            ]),
+        ],
+    )
+    .given(&["a > 0", "y0 = -r^2/a"]),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let (a, l, e) = (sym("a"), sym("l"), sym("e"));

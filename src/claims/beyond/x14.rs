@@ -7,7 +7,30 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The far end moves with V(1 - a l/r_G^2): it moves backwards iff a > r_G^2/l (uniform rod: a > l/3)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Gyration, Law::Restitution),
+        &[
+            Check::holds(
+                "the far end moves with V (1 - a l/r_G^2)",
+                "V - omega*l = V*(1 - a*l/r^2)",
+            ),
+            Check::holds(
+                "backwards iff a > r_G^2/l",
+                "(V - omega*l < 0 => a*l > r^2) and (a*l > r^2 => V - omega*l < 0)",
+            ),
+            Check::holds(
+                "uniform rod: iff a > l/3",
+                "(V - omega*l < 0 => a > l/3) and (a > l/3 => V - omega*l < 0)",
+            )
+            .given(&["3*r^2 = l^2"]),
+        ],
+    )
+    .given(&["a > 0", "l > 0"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let l = sym("l");

@@ -6,7 +6,31 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The elastic rod takes all of K0 where the projectile stops (a0), not at a*: a*^2 - a0^2 = 2l^2/3",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[
+            Check::holds(
+                "v = v0 (a^2 - a0^2)/(a^2 + a*^2), a0^2 = l^2 (M - m)/(3m)",
+                "v = v0*(a^2 - z)/(a^2 + s^2)",
+            ),
+            Check::holds(
+                "the rod's energy is K0 (1 - (v/v0)^2): all of K0 exactly where v = 0",
+                "M*V^2 + I*omega^2 = m*v0^2*(1 - (v/v0)^2)",
+            ),
+            Check::holds("a*^2 - a0^2 = 2 l^2/3", "s^2 - z = 2*l^2/3"),
+            Check::holds(
+                "at a* the projectile keeps v = v0 l^2/(3 a*^2) > 0",
+                "v_s = v0*l^2/(3*s^2) and v_s > 0",
+            ),
+        ],
+    )
+    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .given(&["z = l^2*(M - m)/(3*m)", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, l, a, v0) = (sym("m"), sym("M"), sym("l"), sym("a"), sym("v0"));

@@ -8,7 +8,18 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "M -> 0 with r_G fixed: v -> v0, V -> 2v0 r^2/(r^2 + a^2), omega -> 2v0 a/(r^2 + a^2), the struck point -> 2v0, a* -> r_G",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Gyration, Law::Elastic),
+    &[
+        Check::holds("bounds vanishing as M -> 0+: |v - v0|, |V - 2 v0 r^2/(r^2 + a^2)| and |V + omega a - 2 v0| are at most 2 v0 M/m, |omega - 2 v0 a/(r^2 + a^2)| at most 2 v0 |a| M/(m (r^2 + a^2))", "(v - v0)^2 <= (2*v0*M/m)^2 and (V - 2*v0*r^2/(r^2 + a^2))^2 <= (2*v0*M/m)^2 and (omega - 2*v0*a/(r^2 + a^2))^2 <= (2*v0*a*M/(m*(r^2 + a^2)))^2 and (V + omega*a - 2*v0)^2 <= (2*v0*M/m)^2"),
+        Check::holds("a*^2 - r_G^2 = (M/m) r_G^2", "s^2 - r^2 = (M/m)*r^2"),
+    ],
+)
+.given(&["s > 0", "s^2 = (M + m)*r^2/m"])
+.partly("the struck point's limit (1+e) v0 with restitution (the elastic case is stated)"));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (a, v0) = (sym("a"), sym("v0"));

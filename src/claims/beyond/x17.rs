@@ -8,7 +8,23 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "M -> oo: omega ~ 2m a v0/(M r_G^2), v + v0 ~ 2m v0(1 + a^2/r_G^2)/M; with restitution, v -> -e v0",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Gyration, Law::Restitution),
+    &[
+        Check::holds(
+            "bounds vanishing as M -> oo: |v + e v0| <= (1+e) v0 m (r^2 + a^2)/(M r^2), |M omega - (1+e) m a v0/r^2| <= (1+e) m^2 |a| v0 (r^2 + a^2)/(M r^4)",
+            "(v + e*v0)^2 <= ((1 + e)*v0*m*(r^2 + a^2)/(M*r^2))^2 and (M*omega - (1 + e)*m*a*v0/r^2)^2 <= ((1 + e)*m^2*a*v0*(r^2 + a^2)/(M*r^4))^2",
+        ),
+        Check::holds(
+            "elastic: |M (v + v0) - 2 m v0 (1 + a^2/r^2)| <= 2 m^2 v0 (r^2 + a^2)^2/(M r^4)",
+            "(M*(v + v0) - 2*m*v0*(1 + a^2/r^2))^2 <= (2*m^2*v0*(r^2 + a^2)^2/(M*r^4))^2",
+        )
+        .given(&["e = 1"]),
+    ],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, a, v0) = (sym("m"), sym("M"), sym("a"), sym("v0"));

@@ -7,7 +7,42 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Pivoted rod (fixed axis): omega = (1+e) m d v0/(I_p + m d^2), maximal at d* = sqrt(I_p/m) (inside a door iff M < 3m). The pivot impulse vanishes at d = I_p/(M h), the centre of percussion (2L/3 for a door)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Pivot, Law::Restitution).impulses(),
+        &[
+            Check::holds(
+                "omega = (1+e) m d v0/(I_p + m d^2)",
+                "omega = (1 + e)*m*d*v0/(Ip + m*d^2)",
+            ),
+            Check::holds(
+                "the unique maximum over d >= 0 is at d* = sqrt(I_p/m)",
+                "d >= 0 and d != ds => omega < omega_s",
+            ),
+            Check::holds(
+                "door (I_p = M L^2/3): d* < L iff M < 3m",
+                "(ds < L => M < 3*m) and (M < 3*m => ds < L)",
+            )
+            .given(&["L > 0", "Ip = M*L^2/3"]),
+            Check::holds(
+                "the pivot's impulse vanishes iff d = I_p/(M h), the centre of percussion",
+                "P = 0 => d*M*h = Ip and (d*M*h = Ip => P = 0)",
+            )
+            .given(&["h > 0", "d > 0"]),
+            Check::holds("door: at 2L/3 from the hinge", "P = 0").given(&[
+                "L > 0",
+                "Ip = M*L^2/3",
+                "h = L/2",
+                "d = 2*L/3",
+            ]),
+        ],
+    )
+    .at(&[Impact { at: "d", tag: "" }, Impact { at: "ds", tag: "s" }])
+    .given(&["ds > 0", "ds^2 = Ip/m"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, a, p) = (sym("m"), sym("M"), sym("a"), sym("p"));

@@ -6,7 +6,18 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Elastic, at a*: the projectile is at rest relative to the rod's centre, so half a turn later (t = pi a*/v0) the other arm hits it from behind at closing speed v0. A second impact is unavoidable",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Elastic),
+    &[
+        Check::holds("at a*: v = V = m v0/(M + m) and omega a* = v0 (the projectile rests relative to the rod's centre, which meets it again after half a turn with closing speed omega a* = v0)", "v_s = m*v0/(M + m) and V_s = m*v0/(M + m) and omega_s*s = v0"),
+    ],
+)
+.at(&[Impact { at: "s", tag: "s" }])
+.given(&["s > 0", "s^2 = (M + m)*I/(m*M)"])
+.partly("the kinematic step after the impact (the rod turns by pi in time pi a*/v0), argued by hand as in the certificate"));
 
 fn formalise(paper: &Paper) -> Formalised {
     let after = motion(&free_rod(sym("I"), int(1)));

@@ -6,7 +6,30 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The rod's share of the angular momentum, I omega/(m v0 a) = (1+e)/D, decreases strictly with a",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Restitution),
+        &[
+            Check::holds(
+                "the rod's share I omega/(m v0 a) = (1+e)/D",
+                "I*omega/(m*v0*a) = (1 + e)/(1 + m/M + m*a^2/I)",
+            )
+            .given(&["a > 0"]),
+            Check::holds(
+                "the share decreases strictly with a > 0",
+                "0 < a1 and a1 < a2 => I*omega_2/(m*v0*a2) < I*omega_1/(m*v0*a1)",
+            ),
+        ],
+    )
+    .at(&[
+        Impact { at: "a", tag: "" },
+        Impact { at: "a1", tag: "1" },
+        Impact { at: "a2", tag: "2" },
+    ]),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let (m, a, t, v0, inertia) = (sym("m"), sym("a"), sym("t"), sym("v0"), sym("I"));

@@ -7,7 +7,42 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The struck point's speed after the impact, (1+e) v0 m/(m + M_eff(a)), increases strictly with a: intuition holds for the struck point but not for omega",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Gyration, Law::Restitution),
+        &[
+            Check::holds(
+                "the struck point's speed is (1+e) v0 m/(m + M_eff)",
+                "V + omega*a = (1 + e)*v0*m/(m + M*r^2/(r^2 + a^2))",
+            ),
+            Check::holds(
+                "it increases strictly with a >= 0",
+                "0 <= a1 and a1 < a2 => V_1 + omega_1*a1 < V_2 + omega_2*a2",
+            ),
+            Check::exists(
+                "omega does not: M = m, r_G = l/2, omega(0.7 l) > omega(l)",
+                "omega_1 > omega_2",
+            )
+            .given(&[
+                "m = 1",
+                "M = 1",
+                "r = 1/2",
+                "v0 = 1",
+                "e = 1",
+                "a1 = 7/10",
+                "a2 = 1",
+            ]),
+        ],
+    )
+    .at(&[
+        Impact { at: "a", tag: "" },
+        Impact { at: "a1", tag: "1" },
+        Impact { at: "a2", tag: "2" },
+    ]),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let (big_m, a, t) = (sym("M"), sym("a"), sym("t"));

@@ -7,7 +7,18 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Sticking loses (mu v0^2/2) I/(I + mu a^2) = K0/D; at a*, I_c = 2I and omega = v0/(2a*)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Sticking),
+    &[
+        Check::holds("sticking loses (mu v0^2/2) I/(I + mu a^2) = K0/D", "m*v0^2 - (m*v^2 + M*V^2 + I*omega^2) = (m*M/(M + m))*v0^2*I/(I + (m*M/(M + m))*a^2) and (m*M/(M + m))*v0^2*I/(I + (m*M/(M + m))*a^2) = m*v0^2/(1 + m/M + m*a^2/I)"),
+        Check::holds("at a*: I_c = 2I and omega = v0/(2a*)", "I + (m*M/(M + m))*s^2 = 2*I and omega_s = v0/(2*s)"),
+    ],
+)
+.at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+.given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, a, v0, inertia) = (sym("m"), sym("M"), sym("a"), sym("v0"), sym("I"));

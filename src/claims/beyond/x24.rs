@@ -6,7 +6,16 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "For every e, the b^2 of the paper's f(x) argument is I(1/m + 1/M), with c = 1",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution),
+    &[Check::holds(
+        "omega = (1+e) v0 f(a), f(x) = x/(b^2 + x^2), b^2 = I (1/m + 1/M)",
+        "omega = (1 + e)*v0*a/(I*(1/m + 1/M) + a^2)",
+    )],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let after = motion(&free_rod(sym("I"), sym("e")));

@@ -6,7 +6,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "After the impact the rod's K_rot/K_trans = a^2/r_G^2 for any m and e (uniform rod hit at the end: 3)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Gyration, Law::Restitution),
+    &[
+        Check::holds("K_rot/K_trans = a^2/r_G^2", "I*omega^2 = (a^2/r^2)*M*V^2"),
+        Check::holds("uniform rod hit at the end: 3", "I*omega^2 = 3*M*V^2")
+            .given(&["3*r^2 = l^2", "a = l"]),
+    ],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let l = sym("l");

@@ -6,7 +6,12 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Second impact (outside the paper's single-impulse model). In the rod-centre frame the projectile meets the rod's line when tan tau = kappa tau, where tau = omega t and kappa = (v - V)/(a omega) = (s^2 - e)/((1+e)s^2), s = a/a*. The root tau1 in (pi/2, 3pi/2) is unique because 1 - kappa >= 0. The impact recurs iff a <= l|cos tau1| (kappa = 0 gives tau1 = pi)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated(
+    "the second impact is decided by the root of tan tau = kappa tau, a transcendental equation outside real arithmetic",
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let (m, big_m, a, e, inertia) = (sym("m"), sym("M"), sym("a"), sym("e"), sym("I"));

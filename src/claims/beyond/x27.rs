@@ -6,7 +6,21 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Friction never changes the spin of a thin rod struck on its axis: with the projectile sliding along the rod (v0t), Coulomb friction mu_f and a spinning disc projectile, omega, V and v are those of the frictionless perpendicular impact, whether the contact sticks or slides; on a pivot too",
     formalise,
+    export: EXPORT,
 };
+
+// The claim for z3 and SymPy: the physics (the impulses across and along the rod, the disc's
+// spin, Newton's law) with no friction law at all, so it holds whatever the tangential impulse.
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Restitution).oblique(Friction::Any),
+        &[Check::holds(
+            "whatever the tangential impulse Jt (stick, slide, any mu_f): omega, V and v are the frictionless impact's, J = (1+e) v0/k_n, k_n = 1/m + 1/M + a^2/I",
+            "omega = (1 + e)*v0*a/(I*(1/m + 1/M + a^2/I)) and V = (1 + e)*v0/(M*(1/m + 1/M + a^2/I)) and v = v0 - (1 + e)*v0/(m*(1/m + 1/M + a^2/I))",
+        )],
+    )
+    .partly("the rod on a pivot (its Jt acts through the pivot too) is certified by rodimpact only: one scene per exported statement"),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let rod = oblique_rod();

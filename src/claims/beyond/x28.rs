@@ -6,7 +6,36 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The stick/slide threshold in closed form (mu_f the Coulomb friction coefficient): the contact sticks iff mu_f >= mu_f* = |u_t| k_n/((1+e) u_n k_t), u_t the slip, u_n the approach speed, k_n = 1/m + 1/M + a^2/I and k_t = 1/m + 1/M (+ 2/m for a solid disc); at mu_f = mu_f* sliding and sticking give the same impulse",
     formalise,
+    export: EXPORT,
 };
+
+// The claim for z3 and SymPy: the physics of a sticking contact (the disc's contact point ends
+// moving with the rod's) and the threshold in closed form; u_t = v0t + w rd.
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution).oblique(Friction::Stick),
+    &[
+        Check::holds(
+            "disc: the sticking impulse over the normal one is u_t k_n/((1+e) v0 k_t), k_t = 3/m + 1/M",
+            "Jt*(1 + e)*v0*(3/m + 1/M) = J*(v0t + w*rd)*(1/m + 1/M + a^2/I)",
+        )
+        .given(&["rd > 0"]),
+        Check::holds(
+            "point (rd = 0): the sticking impulse over the normal one is v0t k_n/((1+e) v0 k_t), k_t = 1/m + 1/M",
+            "Jt*(1 + e)*v0*(1/m + 1/M) = J*v0t*(1/m + 1/M + a^2/I)",
+        )
+        .given(&["rd = 0"]),
+        Check::holds(
+            "disc, u_t >= 0: the sticking impulse is within the friction cone (|Jt| <= mu_f J) exactly when mu_f >= mu_f*",
+            "((Jt <= mu_f*J and -Jt <= mu_f*J) => mu_f*(1 + e)*v0*(3/m + 1/M) >= (v0t + w*rd)*(1/m + 1/M + a^2/I)) and (mu_f*(1 + e)*v0*(3/m + 1/M) >= (v0t + w*rd)*(1/m + 1/M + a^2/I) => (Jt <= mu_f*J and -Jt <= mu_f*J))",
+        )
+        .given(&["rd > 0", "mu_f >= 0", "v0t + w*rd >= 0"]),
+        Check::holds(
+            "disc, at mu_f = mu_f*: the sticking impulse obeys the sliding law Jt = mu_f J, so slide and stick coincide",
+            "Jt = mu_f*J",
+        )
+        .given(&["rd > 0", "mu_f*(1 + e)*v0*(3/m + 1/M) = (v0t + w*rd)*(1/m + 1/M + a^2/I)"]),
+    ],
+));
 
 fn formalise(_paper: &Paper) -> Formalised {
     let rod = oblique_rod();

@@ -6,7 +6,24 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "Galilean invariance: a rod sliding with (V0, Vt0) before the impact gives, relative to that frame, exactly the answer of the rod at rest struck with (v0 - V0, v0t - Vt0): the velocities shift by the frame's, omega, the disc's spin, both impulses and the contact do not change",
     formalise,
+    export: EXPORT,
 };
+
+// The claim for z3 and SymPy: a rod drifting with (V0, Vt0) and a sticking contact; the
+// impulses depend on the relative approach only and every velocity changes as at rest.
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Restitution)
+            .oblique(Friction::Stick)
+            .moving(),
+        &[Check::holds(
+            "the rod at rest's answer in the relative velocities (v0 - V0, v0t - Vt0): J, Jt and omega from the relative approach, each velocity shifted by the frame's",
+            "J*(1/m + 1/M + a^2/I) = (1 + e)*(v0 - V0) and Jt*(3/m + 1/M) = v0t - Vt0 + w*rd and I*omega = a*J and v - V0 = v0 - V0 - J/m and vt - Vt0 = v0t - Vt0 - Jt/m and V - V0 = J/M and Vt - Vt0 = Jt/M and spin = w - 2*Jt/(m*rd)",
+        )
+        .given(&["rd > 0"])],
+    )
+    .partly("the sliding contact (the same invariance) is certified by rodimpact only: one scene per exported statement"),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let rod = oblique_rod();

@@ -6,7 +6,21 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Beyond,
     statement: "The paper's a* is unchanged by the projectile's slide along the rod, by friction, by a disc's spin and by the rod's drift: omega(a) = (1+e) u_n a/(a*^2 + a^2) with the paper's a*^2 = I (M + m)/(m M) in every contact case",
     formalise,
+    export: EXPORT,
 };
+
+// The claim for z3 and SymPy: no friction law (any tangential impulse) and the rod drifting,
+// so the shape of omega(a) holds in every contact case.
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution)
+        .oblique(Friction::Any)
+        .moving(),
+    &[Check::holds(
+        "whatever the tangential impulse: omega (a*^2 + a^2) = (1+e) (v0 - V0) a with the paper's a*^2 = I (M + m)/(m M)",
+        "omega*(s^2 + a^2) = (1 + e)*(v0 - V0)*a",
+    )
+    .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"])],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let rod = oblique_rod();

@@ -6,7 +6,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Introduction,
     statement: "There exist masses for which the maximum of omega over [0,l] is not at a = l (witness M = m)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Uniform, Law::Elastic),
+    &[
+        Check::exists("a point a < l where omega exceeds omega(l): the witness M = m = l = v0 = 1, a = a* (a^2 = 2/3)", "0 <= a and a < l and omega > omega_l").given(&["m = 1", "M = 1", "l = 1", "v0 = 1", "a^2 = 2/3"]),
+    ],
+)
+.at(&[Impact { at: "a", tag: "" }, Impact { at: "l", tag: "l" }])
+.given(&["a >= 0"]));
 
 fn formalise(_paper: &Paper) -> Formalised {
     Formalised {

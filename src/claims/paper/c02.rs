@@ -7,7 +7,19 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Introduction,
     statement: "a = 0 gives pure translation: omega = 0, V = 2m v0/(M+m) > 0",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Elastic),
+        &[
+            Check::holds("pure translation and V", "omega = 0 and V = 2*m*v0/(M + m)"),
+            Check::holds("V > 0", "V > 0"),
+        ],
+    )
+    .given(&["a = 0"]),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let after = elastic();

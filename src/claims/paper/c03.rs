@@ -7,7 +7,21 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Introduction,
     statement: "Intuition: \"omega increases with a, maximum at a = l whatever the masses\"",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[Check::fails(
+            "the intuition, refuted at M = m = l = v0 = 1 between a1 = a* (a1^2 = 2/3) and a2 = l",
+            "0 <= a1 and a1 < a2 and a2 <= l => omega_1 < omega_2",
+        )
+        .given(&["m = 1", "M = 1", "l = 1", "v0 = 1", "a1^2 = 2/3", "a2 = 1"])],
+    )
+    .at(&[Impact { at: "a1", tag: "1" }, Impact { at: "a2", tag: "2" }])
+    .given(&["a1 >= 0"]),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let slope = uniform_omega().derivative(Sym::new("a"));

@@ -7,7 +7,20 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Introduction,
     statement: "A rod light compared with the projectile has its optimum at a < l",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[Check::holds(
+            "M < 2m: a* < l and omega(a*) > omega(l)",
+            "s < l and omega_s > omega_l",
+        )],
+    )
+    .at(&[Impact { at: "s", tag: "s" }, Impact { at: "l", tag: "l" }])
+    .given(&["M < 2*m", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     // "Light": M < 2m, parametrised as m = (M + q)/2 with M, q > 0.

@@ -6,7 +6,16 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Equations,
     statement: "m v0 = m v + M V",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution).impulses(),
+    &[Check::holds(
+        "Eq. (linear) from each body's impulse law",
+        "m*v0 = m*v + M*V",
+    )],
+));
 
 fn formalise(_paper: &Paper) -> Formalised {
     let p = rod(sym("e"));

@@ -7,7 +7,16 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Equations,
     statement: "m v0 a = m v a + I omega about the fixed point at the rod's centre",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution).impulses(),
+    &[Check::holds(
+        "Eq. (angular) about the fixed point at the rod's centre, from each body's impulse law",
+        "m*v0*a = m*v*a + I*omega",
+    )],
+));
 
 fn formalise(_paper: &Paper) -> Formalised {
     let p = rod(sym("e"));

@@ -7,7 +7,24 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Equations,
     statement: "Kinetic energy is conserved",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution),
+    &[
+        Check::holds(
+            "e = 1: kinetic energy conserved",
+            "m*v0^2 = m*v^2 + M*V^2 + I*omega^2",
+        )
+        .given(&["e = 1"]),
+        Check::holds(
+            "e < 1: kinetic energy strictly lost",
+            "m*v^2 + M*V^2 + I*omega^2 < m*v0^2",
+        )
+        .given(&["e < 1"]),
+    ],
+));
 
 fn formalise(_paper: &Paper) -> Formalised {
     let lost = |e: RatFn| solved(&rod(e)).energy.lost;

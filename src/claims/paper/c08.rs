@@ -6,7 +6,21 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Equations,
     statement: "\"v and V are the speeds\"; omega is a magnitude",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Elastic),
+    &[
+        Check::fails(
+            "reading: v and V are speeds (>= 0); refuted at M = 3m, a = 0",
+            "v >= 0 and V >= 0",
+        )
+        .given(&["m = 1", "M = 3", "I = 1", "a = 0", "v0 = 1"]),
+        Check::holds("V > 0 always", "V > 0"),
+        Check::holds("omega >= 0 for a >= 0", "a >= 0 => omega >= 0"),
+    ],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let after = elastic();

@@ -6,7 +6,16 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Equations,
     statement: "V = (m/M)(v0 - v), omega = (ma/I)(v0 - v)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution),
+    &[Check::holds(
+        "Eq. (linear-angular), any restitution",
+        "V = (m/M)*(v0 - v) and omega = (m*a/I)*(v0 - v)",
+    )],
+));
 
 fn formalise(_paper: &Paper) -> Formalised {
     let p = rod(sym("e"));

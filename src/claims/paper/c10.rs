@@ -7,7 +7,16 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Equations,
     statement: "m(v0^2 - v^2) = (m^2/M)(v0 - v)^2 + (m^2 a^2/I)(v0 - v)^2",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Energy),
+    &[Check::holds(
+        "Eq. (kinetic2)",
+        "m*(v0^2 - v^2) = (m^2/M)*(v0 - v)^2 + (m^2*a^2/I)*(v0 - v)^2",
+    )],
+));
 
 fn formalise(_paper: &Paper) -> Formalised {
     let p = rod(k(1, 1));

@@ -6,7 +6,16 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Equations,
     statement: "(kinetic2) is quadratic in v with roots exactly v0 and Eq. (v); v = v0 gives V = omega = 0 (no collision)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Energy),
+    &[Check::holds(
+        "the roots of (kinetic2): v = v0 with V = omega = 0 (no collision), or Eq. (v)",
+        "(v = v0 and V = 0 and omega = 0) or v = -(1 - m/M - m*a^2/I)/(1 + m/M + m*a^2/I)*v0",
+    )],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (v, v0) = (f("v"), f("v0"));

@@ -6,7 +6,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Equations,
     statement: "(kinetic2) = (v0 - v) x (kinetic-divided); dividing is valid for v != v0",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Energy),
+    &[Check::holds(
+        "for v != v0, Eq. (kinetic-divided)",
+        "m*(v0 + v) = (m^2/M)*(v0 - v) + (m^2*a^2/I)*(v0 - v)",
+    )
+    .given(&["v != v0"])],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (v, v0) = (f("v"), f("v0"));

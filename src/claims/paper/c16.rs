@@ -6,7 +6,13 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::LimitingCases,
     statement: "a = 0 gives omega = 0",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Restitution),
+    &[Check::holds("a = 0: omega = 0, any restitution", "omega = 0").given(&["a = 0"])],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let centre = [("a", k(0, 1))];

@@ -6,7 +6,13 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::LimitingCases,
     statement: "a = 0 and m = M give v = 0, V = v0",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Elastic),
+    &[Check::holds("a = 0, M = m: v = 0, V = v0", "v = 0 and V = v0").given(&["a = 0", "M = m"])],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let head_on = [("a", k(0, 1)), ("M", sym("m"))];

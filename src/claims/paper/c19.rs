@@ -6,7 +6,22 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "For b, c > 0, f(x) = x/(b^2 + c^2 x^2) has its unique maximum on x > 0 at x = b/c, with value 1/(2bc)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Nothing, Law::Elastic),
+        &[
+            Check::holds("f(b/c) = 1/(2bc)", "(b/c)/(b^2 + c^2*(b/c)^2) = 1/(2*b*c)"),
+            Check::holds(
+                "b/c is the unique maximiser of f on x >= 0",
+                "x >= 0 and x != b/c => x/(b^2 + c^2*x^2) < 1/(2*b*c)",
+            ),
+        ],
+    )
+    .given(&["b > 0", "c > 0"]),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let (b, c, x) = (sym("b"), sym("c"), sym("x"));

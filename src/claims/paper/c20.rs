@@ -6,7 +6,23 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "omega = 2 v0 a/(a*^2 + a^2), so the unconstrained maximum over a > 0 is at a* = sqrt((M+m)I/(mM))",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Elastic),
+        &[
+            Check::holds("omega = 2 v0 a/(a*^2 + a^2)", "omega = 2*v0*a/(s^2 + a^2)"),
+            Check::holds(
+                "the maximum over a >= 0 is at a* and only there",
+                "a >= 0 and a != s => omega < omega_s",
+            ),
+        ],
+    )
+    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let shape = peak_shape(Formula::named("a*^2", paper.a_star_squared.clone()));

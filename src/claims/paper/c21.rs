@@ -7,7 +7,12 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "I = M(2l)^2/12 = Ml^2/3",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated(
+    "an integral over the rod's mass density (the moment of inertia of the uniform rod), not a statement about finitely many reals",
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let (big_m, l) = (sym("M"), sym("l"));

@@ -6,7 +6,26 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "a* = sqrt((M+m)/(3m)) l",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[
+            Check::holds(
+                "a* = sqrt((M+m)/(3m)) l is the a*^2 = (M+m) I/(mM) of C20 for I = M l^2/3",
+                "s^2 = (M + m)*I/(m*M)",
+            ),
+            Check::holds(
+                "and the maximiser of omega over a >= 0",
+                "a >= 0 and a != s => omega < omega_s",
+            ),
+        ],
+    )
+    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .given(&["s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let shape = peak_shape(Formula::named("a*^2", paper.a_star_uniform_squared.clone()));

@@ -7,7 +7,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "M > 2m implies a* > l (unphysical)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[Check::holds("M > 2m: a* > l", "s > l")],
+    )
+    .at(&[])
+    .given(&["M > 2*m", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     // Independent derivation: a*^2 = I (M + m)/(m M) with I = M l^2/3.

@@ -6,7 +6,20 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "If M > 2m, omega is strictly increasing on [0,l], so the maximum is at a = l",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[Check::holds(
+            "M > 2m: omega strictly increasing on [0, l]",
+            "0 <= a1 and a1 < a2 and a2 <= l => omega_1 < omega_2",
+        )],
+    )
+    .at(&[Impact { at: "a1", tag: "1" }, Impact { at: "a2", tag: "2" }])
+    .given(&["M > 2*m"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     Formalised {

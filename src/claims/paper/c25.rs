@@ -6,7 +6,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "M <= 2m implies 0 < a* <= l",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[Check::holds("M <= 2m: 0 < a* <= l", "0 < s and s <= l")],
+    )
+    .at(&[])
+    .given(&["M <= 2*m", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let a2 = a_star_squared(&uniform_inertia());

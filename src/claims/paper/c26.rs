@@ -6,7 +6,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "M = 2m gives a* = l",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[Check::holds("M = 2m: a* = l", "s = l")],
+    )
+    .at(&[])
+    .given(&["M = 2*m", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let mass = paper.threshold.clone() * &sym("m");

@@ -7,7 +7,24 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "M < 2m: the unique maximiser on [0,l] is a* < l, and omega(a*) > omega(l)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[Check::holds(
+            "M < 2m: a* < l, omega(a*) > omega(l), and a* is the only maximiser on [0, l]",
+            "s < l and omega_s > omega_l and (0 <= a and a <= l and a != s => omega < omega_s)",
+        )],
+    )
+    .at(&[
+        Impact { at: "a", tag: "" },
+        Impact { at: "s", tag: "s" },
+        Impact { at: "l", tag: "l" },
+    ])
+    .given(&["M < 2*m", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let omega = uniform_omega();

@@ -6,7 +6,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "M = m gives a* = sqrt(2/3) l",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[Check::holds("M = m: a*^2 = 2 l^2/3", "s^2 = 2*l^2/3")],
+    )
+    .at(&[])
+    .given(&["M = m", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let m = sym("m");

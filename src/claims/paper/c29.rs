@@ -6,7 +6,26 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Optimum,
     statement: "M << m gives a* close to l/sqrt3",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[
+            Check::holds(
+                "a*^2 - l^2/3 = (M/m) l^2/3, which tends to 0 as M/m -> 0",
+                "s^2 - l^2/3 = (M/m)*l^2/3",
+            ),
+            Check::holds(
+                "and a* is the maximiser of omega over a >= 0",
+                "a >= 0 and a != s => omega < omega_s",
+            ),
+        ],
+    )
+    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .given(&["s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let l2 = sq(&sym("l"));

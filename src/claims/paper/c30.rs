@@ -6,7 +6,20 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Inelastic,
     statement: "\"Exactly the same behaviour\" for a totally inelastic (sticking) collision",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Sticking),
+        &[Check::holds(
+            "sticking: omega = m a v0/(I + mu a^2) is maximal at the same a* over a >= 0",
+            "a >= 0 and a != s => omega < omega_s",
+        )],
+    )
+    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .given(&["s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let stuck = sticking(sym("I"));

@@ -8,7 +8,22 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Inelastic,
     statement: "The inelastic case needs the shifted CM and the modified I",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Free, Law::Sticking),
+    &[
+        Check::holds(
+            "the reading that omega after sticking needs the composite's CM and I_c is refuted: the momentum balances about the rod's centre with the rod's own I give the composite's omega = mu a v0/(I + mu a^2), mu = m M/(M + m), for every a",
+            "omega = m*M*a*v0/(M + m)/(I + m*M*a^2/(M + m))",
+        ),
+        Check::holds(
+            "what is true: the pair's CM y_c = m a/(M + m) moves at V_c = m v0/(M + m), and the energy after is (M + m) V_c^2/2 + I_c omega^2/2 with I_c = I + mu a^2",
+            "(m*v + M*V)/(M + m) = m*v0/(M + m) and m*v^2 + M*V^2 + I*omega^2 = (M + m)*(m*v0/(M + m))^2 + (I + m*M*a^2/(M + m))*omega^2",
+        ),
+    ],
+));
 
 fn formalise(_paper: &Paper) -> Formalised {
     let inertia = sym("I");

@@ -7,7 +7,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Intuition,
     statement: "About a fixed axis (doors, levers), the farther from the axis one strikes, the bigger the angular velocity (decide it in this paper's setting: a projectile of mass m, speed v0, striking a rod on a fixed pivot)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Pivot, Law::Restitution),
+    &[
+        Check::fails("reading: omega grows with the arm d; refuted for a door (Ip = M (2l)^2/3) with M = m = l = v0 = 1, e = 1 between d1 = 1 and d2 = 2", "0 < d1 and d1 < d2 => omega_1 < omega_2").given(&["m = 1", "M = 1", "Ip = 4/3", "v0 = 1", "e = 1", "d1 = 1", "d2 = 2"]),
+        Check::holds("qualified: it grows on every arm up to d* = sqrt(Ip/m)", "0 <= d1 and d1 < d2 and d2 <= ds => omega_1 < omega_2").given(&["ds > 0", "ds^2 = Ip/m"]),
+    ],
+)
+.at(&[Impact { at: "d1", tag: "1" }, Impact { at: "d2", tag: "2" }]));
 
 fn formalise(_paper: &Paper) -> Formalised {
     let general = pivoted_rod(sym("I"), sym("e"));

@@ -6,7 +6,27 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Intuition,
     statement: "A given impulse J gives the largest omega at a = l",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Nothing, Law::Elastic),
+        &[Check::holds(
+            "for a given impulse J > 0, omega = J a/I is largest at a = l",
+            "0 <= a and a < l => omega < omega_l",
+        )],
+    )
+    .at(&[])
+    .given(&[
+        "M > 0",
+        "l > 0",
+        "J > 0",
+        "I = M*l^2/3",
+        "I*omega = J*a",
+        "I*omega_l = J*l",
+    ]),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let p = free_rod(sym("I"), sym("e"));

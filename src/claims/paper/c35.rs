@@ -6,7 +6,16 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Intuition,
     statement: "I_lin = MV = 2m v0/(1 + m/M + 3ma^2/(Ml^2)) (uniform rod)",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Uniform, Law::Elastic),
+    &[Check::holds(
+        "Eq. (impulse-linear)",
+        "M*V = 2*m*v0/(1 + m/M + 3*m*a^2/(M*l^2))",
+    )],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let p = free_rod(uniform_inertia(), one());

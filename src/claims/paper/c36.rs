@@ -6,7 +6,19 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Intuition,
     statement: "I_lin decreases as a increases",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[Check::holds(
+            "I_lin = M V decreases as a increases (a >= 0)",
+            "0 <= a1 and a1 < a2 => M*V_2 < M*V_1",
+        )],
+    )
+    .at(&[Impact { at: "a1", tag: "1" }, Impact { at: "a2", tag: "2" }]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let lin = &paper.impulse_linear;

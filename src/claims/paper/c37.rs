@@ -6,7 +6,16 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Intuition,
     statement: "(Ml^2/3) omega = a ΔP = M a V",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Uniform, Law::Elastic),
+    &[Check::holds(
+        "Eq. (impulse-angular)",
+        "(M*l^2/3)*omega = a*M*V",
+    )],
+));
 
 fn formalise(paper: &Paper) -> Formalised {
     let general = motion(&free_rod(uniform_inertia(), sym("e")));

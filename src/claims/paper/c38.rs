@@ -7,7 +7,23 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Intuition,
     statement: "A competition between increasing a and decreasing V",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Free, Law::Restitution),
+        &[Check::holds(
+            "I omega = a (M V) with M V > 0 strictly decreasing on a >= 0",
+            "I*omega = a*M*V and M*V > 0 and (0 <= a1 and a1 < a2 => M*V_2 < M*V_1)",
+        )],
+    )
+    .at(&[
+        Impact { at: "a", tag: "" },
+        Impact { at: "a1", tag: "1" },
+        Impact { at: "a2", tag: "2" },
+    ]),
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let after = motion(&free_rod(sym("I"), sym("e")));

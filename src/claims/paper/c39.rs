@@ -6,7 +6,20 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Intuition,
     statement: "For M large enough, a = l wins",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Uniform, Law::Elastic),
+        &[Check::holds(
+            "M >= 2m: a = l wins on [0, l]",
+            "0 <= a and a < l => omega < omega_l",
+        )],
+    )
+    .at(&[Impact { at: "a", tag: "" }, Impact { at: "l", tag: "l" }])
+    .given(&["M >= 2*m"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let big_m = paper.threshold.clone() * &sym("m") + &sym("q");

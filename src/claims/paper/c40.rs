@@ -7,7 +7,12 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Inhomogeneous,
     statement: "I = M r_G^2; hidden: r_G <= l, with equality only when all the mass is at the ends",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated(
+    "r_G <= l rests on an integral over the mass density (and equality on a limit of densities), not a statement about finitely many reals",
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     // A symmetric polynomial density c0 + c2 y^2 + c4 y^4 (c_i >= 0).

@@ -7,7 +7,20 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Inhomogeneous,
     statement: "a* = sqrt((M+m)/m) r_G",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Gyration, Law::Elastic),
+        &[Check::holds(
+            "a* = sqrt((M+m)/m) r_G maximises omega over a >= 0",
+            "a >= 0 and a != s => omega < omega_s",
+        )],
+    )
+    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .given(&["s > 0", "s^2 = (M + m)*r^2/m"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     let omega = free_omega(gyration_inertia());

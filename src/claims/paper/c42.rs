@@ -7,7 +7,19 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Inhomogeneous,
     statement: "Mass concentrated near the middle (r_G << l) gives a* < l \"even for M >> m\"",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Gyration, Law::Elastic),
+    &[
+        Check::fails("reading: a small r_G/l gives a* < l even for M >> m; refuted at r_G = l/20, M = 1000 m", "s < l").given(&["m = 1", "M = 1000", "l = 20", "r = 1"]),
+        Check::holds("qualified: M < m (l^2/r_G^2 - 1) gives a* < l", "s < l").given(&["M < m*(l^2/r^2 - 1)"]),
+        Check::holds("and only it", "s >= l").given(&["M >= m*(l^2/r^2 - 1)"]),
+    ],
+)
+.at(&[])
+.given(&["l > 0", "r < l", "s > 0", "s^2 = (M + m)*r^2/m"]));
 
 fn formalise(paper: &Paper) -> Formalised {
     let omega = free_omega(gyration_inertia());

@@ -7,7 +7,17 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Inhomogeneous,
     statement: "Mass concentrated near the ends (r_G close to l): a* < l only for M << m",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(Statement::new(
+    Scene::new(Rod::Gyration, Law::Elastic),
+    &[
+        Check::holds("a* < l iff M/m < l^2/r_G^2 - 1 = u (2l - u)/(l - u)^2 for r_G = l - u, a bound that vanishes as u -> 0+", "(s < l => M/m < u*(2*l - u)/(l - u)^2) and (M/m < u*(2*l - u)/(l - u)^2 => s < l)"),
+    ],
+)
+.at(&[])
+.given(&["l > 0", "u > 0", "u < l", "r = l - u", "s > 0", "s^2 = (M + m)*r^2/m"]));
 
 fn formalise(paper: &Paper) -> Formalised {
     let (l, rg) = (sym("l"), sym("r_G"));

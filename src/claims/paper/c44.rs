@@ -6,7 +6,20 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Inhomogeneous,
     statement: "Ideal dumbbell (r_G = l): a* is always unphysical and the maximum is at a = l",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Stated(
+    Statement::new(
+        Scene::new(Rod::Dumbbell, Law::Elastic),
+        &[Check::holds(
+            "a* > l always, and the maximum on [0, l] is at a = l",
+            "s > l and (0 <= a and a < l => omega < omega_l)",
+        )],
+    )
+    .at(&[Impact { at: "a", tag: "" }, Impact { at: "l", tag: "l" }])
+    .given(&["s > 0", "s^2 = (M + m)*l^2/m"]),
+);
 
 fn formalise(paper: &Paper) -> Formalised {
     Formalised {

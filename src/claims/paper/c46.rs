@@ -6,7 +6,12 @@ pub(super) const ENTRY: Entry = Entry {
     group: Group::Inhomogeneous,
     statement: "A symmetric mass distribution puts the CM at the centre",
     formalise,
+    export: EXPORT,
 };
+
+const EXPORT: Export = Export::Unstated(
+    "an integral over a symmetric mass density (the centre of mass), not a statement about finitely many reals",
+);
 
 fn formalise(_paper: &Paper) -> Formalised {
     let even = [("c0", 0), ("c2", 2), ("c4", 4), ("c6", 6)];

@@ -1,0 +1,56 @@
+; rodimpact prove --export: claim C4 (intro ¶2)
+; A rod light compared with the projectile has its optimum at a < l
+; The hypotheses are the physics (balance equations and contact law in fresh unknowns,
+; the domain), not rodimpact's solution. Each check asserts the negation of its
+; conclusion, so `unsat` proves it (after a `sat`, with a model, showing that the
+; hypotheses alone are consistent, so the proof is not vacuous); a reading meant to fail,
+; or a witness, answers `sat` with a model. Run: z3 FILE
+(set-logic QF_NRA)
+(declare-const I Real)
+(declare-const M Real)
+(declare-const V_l Real)
+(declare-const V_s Real)
+(declare-const l Real)
+(declare-const m Real)
+(declare-const omega_l Real)
+(declare-const omega_s Real)
+(declare-const s Real)
+(declare-const v0 Real)
+(declare-const v_l Real)
+(declare-const v_s Real)
+; projectile mass and speed
+(assert (and (> m 0) (> v0 0)))
+; rod mass, half-length
+(assert (and (> M 0) (> l 0)))
+; uniform rod of length 2l
+(assert (= I (/ (* M (* l l)) 3)))
+; linear momentum (impact s, at s)
+(assert (= (* m v0) (+ (* m v_s) (* M V_s))))
+; angular momentum about the fixed point at the rod's centre (impact s, at s)
+(assert (= (* (* m v0) s) (+ (* (* m v_s) s) (* I omega_s))))
+; Newton's law, e = 1 (impact s, at s)
+(assert (= (- (+ V_s (* omega_s s)) v_s) v0))
+; linear momentum (impact l, at l)
+(assert (= (* m v0) (+ (* m v_l) (* M V_l))))
+; angular momentum about the fixed point at the rod's centre (impact l, at l)
+(assert (= (* (* m v0) l) (+ (* (* m v_l) l) (* I omega_l))))
+; Newton's law, e = 1 (impact l, at l)
+(assert (= (- (+ V_l (* omega_l l)) v_l) v0))
+; hypothesis of the claim
+(assert (< M (* 2 m)))
+; hypothesis of the claim
+(assert (> s 0))
+; hypothesis of the claim
+(assert (= (* s s) (/ (* (+ M m) (* l l)) (* 3 m))))
+; check 1: M < 2m: a* < l and omega(a*) > omega(l)
+; the hypotheses are consistent
+(push 1)
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (not (and (< s l) (> omega_s omega_l))))
+(check-sat-using qfnra)
+(pop 1)
+; expect: sat unsat

@@ -1,0 +1,44 @@
+; rodimpact prove --export: claim C6 (Eq. (angular))
+; m v0 a = m v a + I omega about the fixed point at the rod's centre
+; The hypotheses are the physics (balance equations and contact law in fresh unknowns,
+; the domain), not rodimpact's solution. Each check asserts the negation of its
+; conclusion, so `unsat` proves it (after a `sat`, with a model, showing that the
+; hypotheses alone are consistent, so the proof is not vacuous); a reading meant to fail,
+; or a witness, answers `sat` with a model. Run: z3 FILE
+(set-logic QF_NRA)
+(declare-const I Real)
+(declare-const J Real)
+(declare-const M Real)
+(declare-const V Real)
+(declare-const a Real)
+(declare-const e Real)
+(declare-const m Real)
+(declare-const omega Real)
+(declare-const v Real)
+(declare-const v0 Real)
+; projectile mass and speed
+(assert (and (> m 0) (> v0 0)))
+; rod mass, moment of inertia about its centre
+(assert (and (> M 0) (> I 0)))
+; restitution coefficient
+(assert (and (<= 0 e) (<= e 1)))
+; projectile: impulse -J
+(assert (= (- (* m v) (* m v0)) (- J)))
+; rod, linear: impulse J
+(assert (= (* M V) J))
+; rod, angular: moment of J
+(assert (= (* I omega) (* J a)))
+; Newton's law, restitution e
+(assert (= (- (+ V (* omega a)) v) (* e v0)))
+; check 1: Eq. (angular) about the fixed point at the rod's centre, from each body's impulse law
+; the hypotheses are consistent
+(push 1)
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (not (= (* (* m v0) a) (+ (* (* m v) a) (* I omega)))))
+(check-sat-using qfnra)
+(pop 1)
+; expect: sat unsat

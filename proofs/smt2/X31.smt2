@@ -1,0 +1,69 @@
+; rodimpact prove --export: claim X31 (beyond the paper)
+; The paper's a* is unchanged by the projectile's slide along the rod, by friction, by a disc's spin and by the rod's drift: omega(a) = (1+e) u_n a/(a*^2 + a^2) with the paper's a*^2 = I (M + m)/(m M) in every contact case
+; The hypotheses are the physics (balance equations and contact law in fresh unknowns,
+; the domain), not rodimpact's solution. Each check asserts the negation of its
+; conclusion, so `unsat` proves it (after a `sat`, with a model, showing that the
+; hypotheses alone are consistent, so the proof is not vacuous); a reading meant to fail,
+; or a witness, answers `sat` with a model. Run: z3 FILE
+(set-logic QF_NRA)
+(declare-const I Real)
+(declare-const J Real)
+(declare-const Jt Real)
+(declare-const M Real)
+(declare-const V Real)
+(declare-const V0 Real)
+(declare-const Vt Real)
+(declare-const Vt0 Real)
+(declare-const a Real)
+(declare-const d Real)
+(declare-const e Real)
+(declare-const m Real)
+(declare-const omega Real)
+(declare-const rd Real)
+(declare-const s Real)
+(declare-const spin Real)
+(declare-const v Real)
+(declare-const v0 Real)
+(declare-const v0t Real)
+(declare-const vt Real)
+(declare-const w Real)
+; projectile mass and speed
+(assert (and (> m 0) (> v0 0)))
+; rod mass, moment of inertia about its centre
+(assert (and (> M 0) (> I 0)))
+; restitution coefficient
+(assert (and (<= 0 e) (<= e 1)))
+; the projectile a solid disc of radius rd (rd = 0: a point), moment m*rd^2/2 about its centre
+(assert (>= rd 0))
+; the rod struck on its axis: the contact point is (d, a) from the centre, d = 0 (a thin rod)
+(assert (= d 0))
+; projectile: impulse -J
+(assert (= (- (* m v) (* m v0)) (- J)))
+; rod, linear: impulse J
+(assert (= (* M (- V V0)) J))
+; rod, angular: moment of (J, Jt) applied at (d, a)
+(assert (= (* I omega) (- (* a J) (* d Jt))))
+; Newton's law, restitution e
+(assert (= (- (+ V (* omega a)) v) (* e (- v0 V0))))
+; projectile, along the rod: impulse -Jt
+(assert (= (- (* m vt) (* m v0t)) (- Jt)))
+; rod, along its axis: impulse Jt
+(assert (= (* M (- Vt Vt0)) Jt))
+; disc, angular about its centre: moment of -Jt at its rim
+(assert (= (* (* m (* rd rd)) (- spin w)) (* (* (- 2) rd) Jt)))
+; check 1: whatever the tangential impulse: omega (a*^2 + a^2) = (1+e) (v0 - V0) a with the paper's a*^2 = I (M + m)/(m M)
+; the hypotheses are consistent
+(push 1)
+(assert (> s 0))
+(assert (= (* s s) (/ (* (+ M m) I) (* m M))))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (> s 0))
+(assert (= (* s s) (/ (* (+ M m) I) (* m M))))
+(assert (not (= (* omega (+ (* s s) (* a a))) (* (* (+ 1 e) (- v0 V0)) a))))
+(check-sat-using qfnra)
+(pop 1)
+; expect: sat unsat

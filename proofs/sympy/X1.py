@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+# rodimpact prove --export: claim X1 (beyond the paper)
+# General restitution e in [0,1] (Newton's law at the contact): the solution is unique (det = -(mI + MI + Mma^2)), with J = (1+e) v0/(1/m + 1/M + a^2/I), v = v0 - J/m, V = J/M, omega = J a/I
+# Re-derived with SymPy from the balance equations (not from rodimpact's solution): solve
+# them for the unknowns, substitute, and check each conclusion exactly. Exit status 0 when
+# every check is confirmed. Run: python3 FILE
+import sys
+from sympy import Integer, Symbol, simplify, solve, sqrt
+
+
+def zero(x):
+    return simplify(x) == 0
+
+
+def sign(x):
+    """The exact sign of x, or exit 1 when SymPy cannot decide it."""
+    x = simplify(x)
+    if x.is_zero:
+        return 0
+    if x.is_positive:
+        return 1
+    if x.is_negative:
+        return -1
+    sys.exit(f"undecided sign: {x}")
+
+
+def EQ(x, y):
+    return zero(x - y)
+
+
+def NE(x, y):
+    return not zero(x - y)
+
+
+def LT(x, y):
+    return sign(y - x) > 0
+
+
+def LE(x, y):
+    return sign(y - x) >= 0
+
+
+def GT(x, y):
+    return sign(x - y) > 0
+
+
+def GE(x, y):
+    return sign(x - y) >= 0
+
+
+def substitute(x, definitions):
+    """x with every definition applied, until none applies (a definition may use another)."""
+    for _ in range(len(definitions) + 1):
+        for name, value in definitions:
+            x = x.subs(name, value)
+    return x
+
+
+def solutions(balance, unknowns, definitions, filters):
+    """The solutions of the balance equations after the definitions, those meeting the filters."""
+    equations = [substitute(b, definitions) for b in balance]
+    found = solve(equations, unknowns, dict=True) if unknowns else [{}]
+    kept = [s for s in found if all(f(lambda x: substitute(x, definitions).subs(s)) for f in filters)]
+    if not kept:
+        sys.exit("the balance equations have no solution")
+    return kept
+
+
+def confirm(what, expect, holds, found):
+    results = [holds(lambda x: substitute(x, found[1]).subs(s)) for s in found[0]]
+    ok = all(results) if expect == "holds" else (not all(results) if expect == "fails" else any(results))
+    print(("confirmed: " if ok else "NOT confirmed: ") + what)
+    return ok
+
+I = Symbol("I", positive=True)
+J = Symbol("J", real=True)
+J_2 = Symbol("J_2", real=True)
+M = Symbol("M", positive=True)
+V = Symbol("V", real=True)
+V_2 = Symbol("V_2", real=True)
+a = Symbol("a", positive=True)
+e = Symbol("e", positive=True)
+m = Symbol("m", positive=True)
+omega = Symbol("omega", real=True)
+omega_2 = Symbol("omega_2", real=True)
+v = Symbol("v", real=True)
+v0 = Symbol("v0", positive=True)
+v_2 = Symbol("v_2", real=True)
+balance = [
+    ((m * v) - (m * v0)) - ((-J)),  # projectile: impulse -J
+    (M * V) - (J),  # rod, linear: impulse J
+    (I * omega) - ((J * a)),  # rod, angular: moment of J
+    ((V + (omega * a)) - v) - ((e * v0)),  # Newton's law, restitution e
+    ((m * v_2) - (m * v0)) - ((-J_2)),  # projectile: impulse -J (impact 2, at a)
+    (M * V_2) - (J_2),  # rod, linear: impulse J (impact 2, at a)
+    (I * omega_2) - ((J_2 * a)),  # rod, angular: moment of J (impact 2, at a)
+    ((V_2 + (omega_2 * a)) - v_2) - ((e * v0)),  # Newton's law, restitution e (impact 2, at a)
+]
+unknowns = [J, J_2, V, V_2, omega, omega_2, v, v_2]
+definitions = [
+]
+filters = [
+]
+
+ok = True
+
+# check 1: the impulse and the velocities
+defs = definitions + []
+found = (solutions(balance, unknowns, defs, filters + [
+]), defs)
+ok = confirm("the impulse and the velocities", "holds", lambda at: all([EQ(at(J), at((((Integer(1) + e) * v0) / (((Integer(1) / m) + (Integer(1) / M)) + ((a ** 2) / I))))), EQ(at(v), at((v0 - (J / m)))), EQ(at(V), at((J / M))), EQ(at(omega), at(((J * a) / I)))]), found) and ok
+
+# check 2: the solution is unique: two solutions of the same equations agree
+defs = definitions + []
+found = (solutions(balance, unknowns, defs, filters + [
+]), defs)
+ok = confirm("the solution is unique: two solutions of the same equations agree", "holds", lambda at: all([EQ(at(v), at(v_2)), EQ(at(V), at(V_2)), EQ(at(omega), at(omega_2)), EQ(at(J), at(J_2))]), found) and ok
+
+sys.exit(0 if ok else 1)

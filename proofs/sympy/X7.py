@@ -1,0 +1,123 @@
+#!/usr/bin/env python3
+# rodimpact prove --export: claim X7 (beyond the paper)
+# Universal curve: omega(a)/omega(a*) = 2s/(1+s^2) with s = a/a*; reciprocity omega(a) = omega(a*^2/a)
+# Re-derived with SymPy from the balance equations (not from rodimpact's solution): solve
+# them for the unknowns, substitute, and check each conclusion exactly. Exit status 0 when
+# every check is confirmed. Run: python3 FILE
+import sys
+from sympy import Integer, Symbol, simplify, solve, sqrt
+
+
+def zero(x):
+    return simplify(x) == 0
+
+
+def sign(x):
+    """The exact sign of x, or exit 1 when SymPy cannot decide it."""
+    x = simplify(x)
+    if x.is_zero:
+        return 0
+    if x.is_positive:
+        return 1
+    if x.is_negative:
+        return -1
+    sys.exit(f"undecided sign: {x}")
+
+
+def EQ(x, y):
+    return zero(x - y)
+
+
+def NE(x, y):
+    return not zero(x - y)
+
+
+def LT(x, y):
+    return sign(y - x) > 0
+
+
+def LE(x, y):
+    return sign(y - x) >= 0
+
+
+def GT(x, y):
+    return sign(x - y) > 0
+
+
+def GE(x, y):
+    return sign(x - y) >= 0
+
+
+def substitute(x, definitions):
+    """x with every definition applied, until none applies (a definition may use another)."""
+    for _ in range(len(definitions) + 1):
+        for name, value in definitions:
+            x = x.subs(name, value)
+    return x
+
+
+def solutions(balance, unknowns, definitions, filters):
+    """The solutions of the balance equations after the definitions, those meeting the filters."""
+    equations = [substitute(b, definitions) for b in balance]
+    found = solve(equations, unknowns, dict=True) if unknowns else [{}]
+    kept = [s for s in found if all(f(lambda x: substitute(x, definitions).subs(s)) for f in filters)]
+    if not kept:
+        sys.exit("the balance equations have no solution")
+    return kept
+
+
+def confirm(what, expect, holds, found):
+    results = [holds(lambda x: substitute(x, found[1]).subs(s)) for s in found[0]]
+    ok = all(results) if expect == "holds" else (not all(results) if expect == "fails" else any(results))
+    print(("confirmed: " if ok else "NOT confirmed: ") + what)
+    return ok
+
+I = Symbol("I", positive=True)
+M = Symbol("M", positive=True)
+V = Symbol("V", real=True)
+V_r = Symbol("V_r", real=True)
+V_s = Symbol("V_s", real=True)
+a = Symbol("a", positive=True)
+e = Symbol("e", positive=True)
+m = Symbol("m", positive=True)
+omega = Symbol("omega", real=True)
+omega_r = Symbol("omega_r", real=True)
+omega_s = Symbol("omega_s", real=True)
+s = Symbol("s", positive=True)
+v = Symbol("v", real=True)
+v0 = Symbol("v0", positive=True)
+v_r = Symbol("v_r", real=True)
+v_s = Symbol("v_s", real=True)
+balance = [
+    (m * v0) - (((m * v) + (M * V))),  # linear momentum
+    ((m * v0) * a) - ((((m * v) * a) + (I * omega))),  # angular momentum about the fixed point at the rod's centre
+    ((V + (omega * a)) - v) - ((e * v0)),  # Newton's law, restitution e
+    (m * v0) - (((m * v_s) + (M * V_s))),  # linear momentum (impact s, at s)
+    ((m * v0) * s) - ((((m * v_s) * s) + (I * omega_s))),  # angular momentum about the fixed point at the rod's centre (impact s, at s)
+    ((V_s + (omega_s * s)) - v_s) - ((e * v0)),  # Newton's law, restitution e (impact s, at s)
+    (m * v0) - (((m * v_r) + (M * V_r))),  # linear momentum (impact r, at s^2/a)
+    ((m * v0) * ((s ** 2) / a)) - ((((m * v_r) * ((s ** 2) / a)) + (I * omega_r))),  # angular momentum about the fixed point at the rod's centre (impact r, at s^2/a)
+    ((V_r + (omega_r * ((s ** 2) / a))) - v_r) - ((e * v0)),  # Newton's law, restitution e (impact r, at s^2/a)
+]
+unknowns = [V, V_r, V_s, omega, omega_r, omega_s, v, v_r, v_s]
+definitions = [
+    (s, sqrt((((M + m) * I) / (m * M)))),  # hypothesis of the claim
+]
+filters = [
+]
+
+ok = True
+
+# check 1: omega(a)/omega(a*) = 2s/(1+s^2) with s = a/a*
+defs = definitions + []
+found = (solutions(balance, unknowns, defs, filters + [
+]), defs)
+ok = confirm("omega(a)/omega(a*) = 2s/(1+s^2) with s = a/a*", "holds", lambda at: EQ(at((omega / omega_s)), at(((Integer(2) * (a / s)) / (Integer(1) + ((a / s) ** 2))))), found) and ok
+
+# check 2: reciprocity omega(a) = omega(a*^2/a)
+defs = definitions + []
+found = (solutions(balance, unknowns, defs, filters + [
+]), defs)
+ok = confirm("reciprocity omega(a) = omega(a*^2/a)", "holds", lambda at: EQ(at(omega), at(omega_r)), found) and ok
+
+sys.exit(0 if ok else 1)
