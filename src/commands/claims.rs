@@ -4,9 +4,10 @@ use super::{Failure, parse_ratios, print_out};
 use clap::Args;
 use rodimpact::claims::export::{Format as ExportFormat, export_all};
 use rodimpact::claims::{self, Decided, Paper};
-use rodimpact::io::write_directory;
+use rodimpact::io::{write_atomic, write_directory};
 use rodimpact::report::{self, Format, TableOptions};
 use rodimpact::scene::{RodInertia, SceneInput};
+use rodimpact::textbook::formula::formulas;
 use rodimpact::{Error, ErrorKind};
 use std::path::{Path, PathBuf};
 
@@ -32,9 +33,23 @@ pub(crate) struct ProveArgs {
 
 #[derive(Args, Debug)]
 pub(crate) struct PaperArgs {
-    // Help: what `--out DIR` writes, one certificate per claim named from the registry.
-    #[arg(long, value_name = "DIR", help = out_help())]
+    // Help: what `--out` writes, one certificate per claim named from the registry.
+    #[arg(long, value_name = "DIR|FILE.html", help = out_help())]
     pub(crate) out: Option<PathBuf>,
+    /// `text`: the report on the terminal (and the directory of --out DIR); `html`: one
+    /// self-contained web page (verdicts, foldable certificates, MathML formulas, tables, inline
+    /// SVG figures; no network), written to --out FILE.html, or to standard output without --out.
+    #[arg(long, value_enum, default_value_t = PaperFormat::Text)]
+    pub(crate) format: PaperFormat,
+}
+
+/// The forms of the paper's report.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum PaperFormat {
+    /// The terminal report; `--out DIR` writes the directory of files.
+    Text,
+    /// One self-contained web page.
+    Html,
 }
 
 /// The ids `prove` takes, both ranges: `C1-C46 and X1-X26`.
@@ -58,10 +73,11 @@ fn ids_help() -> String {
 fn out_help() -> String {
     let (paper, beyond) = (claims::paper_ids(), claims::beyond_ids());
     format!(
-        "Also write into DIR: README.md (what each file holds), report.md (the report with the \
-         tables and figures), one certificate per claim ({}.md ... {}.md, {}.md ... {}.md), \
-         tables.md, tables.tex, T1.csv ... T5.csv, omega.svg, optimum.svg and figure1.svg. All \
-         or nothing: the files are written beside DIR, then moved in; DIR's other files are kept",
+        "With --format text, also write into DIR: README.md (what each file holds), report.md \
+         (the report with the tables and figures), one certificate per claim ({}.md ... {}.md, \
+         {}.md ... {}.md), tables.md, tables.tex, T1.csv ... T5.csv, omega.svg, optimum.svg and \
+         figure1.svg. All or nothing: the files are written beside DIR, then moved in; DIR's \
+         other files are kept. With --format html, the page FILE.html, written whole or not at all",
         paper.first, paper.last, beyond.first, beyond.last
     )
 }
@@ -183,6 +199,19 @@ pub(crate) fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     let paper = Paper::as_printed();
     let decided = claims::decide_all(&paper);
     let tables = report::all_tables(&TableOptions::default())?;
+    if args.format == PaperFormat::Html {
+        let page = report::paper_html(
+            &decided,
+            &formulas(&SceneInput::default())?,
+            &tables,
+            &paper_figures()?,
+        );
+        match &args.out {
+            Some(file) => write_atomic("out", file, &page)?,
+            None => print_out(&page),
+        }
+        return all_checked(&decided);
+    }
     print_out(&report::paper_report(&decided));
     print_out("Tables (exact; m = l = v0 = 1)\n\n");
     print_out(&report::render_document(&tables[..3], Format::Markdown));

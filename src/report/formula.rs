@@ -8,7 +8,7 @@ use num_traits::{One, Signed};
 use serde_json::{Map, Value, json};
 
 /// What each key means, for the text and Markdown renderings.
-fn meaning(key: &str) -> &'static str {
+pub(super) fn meaning(key: &str) -> &'static str {
     match key {
         "v" => "projectile's velocity after the impact",
         "V" => "velocity of the rod's centre after the impact",
@@ -150,7 +150,7 @@ pub fn formula_json(f: &Formulas) -> Value {
     Value::Object(map)
 }
 
-fn key_latex(key: &str) -> &'static str {
+pub(super) fn key_latex(key: &str) -> &'static str {
     match key {
         "v" => "v",
         "V" => "V",
@@ -234,7 +234,7 @@ fn ratfn_latex(f: &RatFn) -> String {
 }
 
 /// `coeff \sqrt{radicand}` in LaTeX.
-fn radical_latex(r: &Radical) -> String {
+pub(super) fn radical_latex(r: &Radical) -> String {
     if r.is_rational() {
         return ratfn_latex(&r.coeff);
     }

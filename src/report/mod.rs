@@ -10,6 +10,8 @@ mod claims_doc;
 mod explain;
 mod formula;
 pub mod markup;
+pub mod mathml;
+mod paper_html;
 mod paper_tables;
 mod plot;
 mod proofs;
@@ -28,6 +30,7 @@ pub use check::{
 pub use claims_doc::claims_markdown;
 pub use explain::{ExplainFormat, explain};
 pub use formula::{formula_json, formula_latex, formula_markdown, formula_text};
+pub use paper_html::paper_html;
 pub use paper_tables::{TABLE_IDS, TableOptions, all_tables, t1, t2, t3, t4, t5, tables};
 pub use plot::{
     Figure, PlotData, PlotValue, energy_figure, mass_ratio_family, omega_figure, optimum_figure,

@@ -32,7 +32,7 @@ fn rests_on_hand_step(claim: &Claim) -> bool {
 }
 
 /// Whether `d` refutes an intuition that the paper itself states in order to refute it.
-fn refutes_intuition_as_paper(d: &Decided) -> bool {
+pub(super) fn refutes_intuition_as_paper(d: &Decided) -> bool {
     d.verdict == Ok(Verdict::Refuted) && d.claim.statement.starts_with("Intuition:")
 }
 
@@ -285,10 +285,10 @@ pub fn hand_step_note(all: &[Decided]) -> Option<String> {
     })
 }
 
-const TITLE: &str =
+pub(super) const TITLE: &str =
     "Verification of N. A. Lemos, \"Failure of intuition in elementary rigid body dynamics\"";
 
-const METHOD: &str = "Every verdict comes from re-checking its certificates by exact computation (rational functions, Q(√d)).";
+pub(super) const METHOD: &str = "Every verdict comes from re-checking its certificates by exact computation (rational functions, Q(√d)).";
 
 /// One claim's reason, qualification and failure, each with its label.
 fn notes(d: &Decided) -> Vec<(&'static str, String)> {
@@ -304,7 +304,7 @@ fn notes(d: &Decided) -> Vec<(&'static str, String)> {
 }
 
 /// The report groups in the paper's order.
-fn groups(all: &[Decided]) -> Vec<Group> {
+pub(super) fn groups(all: &[Decided]) -> Vec<Group> {
     let mut groups: Vec<Group> = all.iter().map(|d| d.claim.group).collect();
     groups.dedup();
     groups

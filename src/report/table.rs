@@ -7,7 +7,7 @@
 //! `<name>_decimal` column. Titles, notes and headings are [`markup`](super::markup): plain
 //! text with `$…$` math.
 
-use super::markup;
+use super::{markup, mathml};
 use crate::field::decimal;
 use crate::field::notation::{self, Notation};
 use crate::field::{Q, QSqrt};
@@ -252,6 +252,62 @@ impl Table {
     /// ```
     pub fn github_markdown(&self) -> String {
         self.markdown_with(markup::github)
+    }
+
+    /// The table as an HTML `<table>` for a web page: its id and title as the caption, the
+    /// note under it, headings and exact values in MathML, the decimals beside them.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::{Cell, Column, Table};
+    /// use rodimpact::field::q;
+    /// let t = Table { id: "T0", title: "Demo".into(), note: "$x$ exact.".into(),
+    ///     columns: vec![Column::with_decimals("$x$", "x")], rows: vec![vec![Cell::Rational(q(1, 3))]] };
+    /// let html = t.html();
+    /// assert!(html.starts_with("<table id=\"T0\">\n<caption>T0. Demo"));
+    /// assert!(html.contains("<mfrac><mn>1</mn><mn>3</mn></mfrac>"));
+    /// assert!(html.contains("<td class=\"decimal\">0.333333333333</td>"));
+    /// ```
+    pub fn html(&self) -> String {
+        let mut out = format!(
+            "<table id=\"{}\">\n<caption>{}. {}<br><span class=\"note\">{}</span></caption>\n<thead><tr>",
+            self.id,
+            self.id,
+            mathml::text(&self.title),
+            mathml::text(&self.note)
+        );
+        for column in &self.columns {
+            let _ = write!(
+                out,
+                "<th scope=\"col\">{}</th>",
+                mathml::text(&column.heading)
+            );
+            if column.approx {
+                out.push_str("<th scope=\"col\" class=\"decimal\">≈</th>");
+            }
+        }
+        out.push_str("</tr></thead>\n<tbody>\n");
+        for row in &self.rows {
+            out.push_str("<tr>");
+            for (cell, column) in row.iter().zip(&self.columns) {
+                let shown = match cell {
+                    Cell::Text(t) => mathml::text(t),
+                    Cell::Absent => "none".into(),
+                    Cell::Rational(_) | Cell::Surd(_) => mathml::text(&cell.render(Format::Latex)),
+                };
+                let _ = write!(out, "<td>{shown}</td>");
+                if column.approx {
+                    let _ = write!(
+                        out,
+                        "<td class=\"decimal\">{}</td>",
+                        cell.decimal(TABLE_DIGITS).unwrap_or_default()
+                    );
+                }
+            }
+            out.push_str("</tr>\n");
+        }
+        out.push_str("</tbody>\n</table>\n");
+        out
     }
 
     fn markdown(&self) -> String {

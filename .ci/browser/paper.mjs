@@ -1,0 +1,85 @@
+// The report page of `rodimpact paper --format html` in headless Chromium.
+// Usage: node paper.mjs PAGE.html CLAIMS SCREENSHOT_DIR
+import puppeteer from "puppeteer-core";
+import { pathToFileURL } from "node:url";
+
+const [file, claimCount, shots] = process.argv.slice(2);
+const url = pathToFileURL(file).href;
+const failures = [];
+const check = (ok, what) => {
+  console.log(`${ok ? "ok  " : "FAIL"} paper: ${what}`);
+  if (!ok) failures.push(what);
+};
+
+const browser = await puppeteer.launch({
+  executablePath: process.env.CHROMIUM,
+  headless: true,
+  args: ["--no-sandbox", "--disable-gpu"],
+});
+try {
+  const page = await browser.newPage();
+  const problems = [];
+  page.on("console", (m) => { if (m.type() === "error" || m.type() === "warn") problems.push(`console ${m.type()}: ${m.text()}`); });
+  page.on("pageerror", (e) => problems.push(`script error: ${e}`));
+  page.on("requestfailed", (r) => problems.push(`request failed: ${r.url()}`));
+  page.on("request", (r) => { if (!r.url().startsWith(url.split("#")[0])) problems.push(`request beyond the page: ${r.url()}`); });
+  await page.setViewport({ width: 1100, height: 1400 });
+  await page.goto(url, { waitUntil: "load" });
+
+  const facts = await page.evaluate(() => {
+    const details = [...document.querySelectorAll("details.claim")];
+    const frac = document.querySelector("table#T2 mfrac");
+    const svgs = [...document.querySelectorAll("figure svg")].map((s) => s.getBoundingClientRect());
+    return {
+      title: document.title,
+      claims: details.length,
+      open: details.filter((d) => d.open).length,
+      maths: document.querySelectorAll("math").length,
+      // MathML laid out: a fraction stacks its numerator over its denominator.
+      fracHeight: frac ? frac.getBoundingClientRect().height : 0,
+      numerHeight: frac ? frac.firstElementChild.getBoundingClientRect().height : 0,
+      svgs: svgs.map((r) => [r.width, r.height]),
+      tables: [...document.querySelectorAll("main table[id]")].map((t) => t.id),
+    };
+  });
+  check(facts.title.startsWith("Verification of N. A. Lemos"), `title "${facts.title}"`);
+  check(facts.claims === Number(claimCount), `${facts.claims} claims folded (expected ${claimCount})`);
+  check(facts.open === 0, `all folded at first (${facts.open} open)`);
+  check(facts.maths > 100, `${facts.maths} MathML formulas`);
+  check(facts.numerHeight > 0 && facts.fracHeight > 1.8 * facts.numerHeight, `MathML laid out (a fraction ${facts.fracHeight.toFixed(1)} px tall, its numerator ${facts.numerHeight.toFixed(1)} px)`);
+  check(facts.svgs.length === 3 && facts.svgs.every(([w, h]) => w > 300 && h > 200), `3 figures drawn ${JSON.stringify(facts.svgs)}`);
+  check(JSON.stringify(facts.tables) === JSON.stringify(["T1", "T2", "T3", "T4", "T5"]), `tables ${facts.tables}`);
+  await page.screenshot({ path: `${shots}/paper-top.png` });
+
+  // The buttons, by keyboard: focus and press Enter.
+  await page.focus("#unfold");
+  await page.keyboard.press("Enter");
+  check(await page.$$eval("details.claim", (ds) => ds.every((d) => d.open)), "Unfold opens every certificate");
+  await page.focus("#fold");
+  await page.keyboard.press("Enter");
+  check(await page.$$eval("details.claim", (ds) => ds.every((d) => !d.open)), "Fold closes them");
+
+  // A link to a claim opens it.
+  await page.goto(`${url}#C15`, { waitUntil: "load" });
+  const c15 = await page.$eval("#C15", (d) => ({ open: d.open, text: d.innerText }));
+  check(c15.open && c15.text.includes("Identity certificate"), "#C15 opens C15's certificate");
+  await page.screenshot({ path: `${shots}/paper-C15.png` });
+  for (const id of ["T2", "figure1"]) {
+    await page.evaluate((id) => document.getElementById(id).scrollIntoView(), id);
+    await page.screenshot({ path: `${shots}/paper-${id}.png` });
+  }
+
+  // Print: every certificate unfolded on paper, and folded back after.
+  const pdf = await page.pdf({ format: "A4", path: `${shots}/paper.pdf` });
+  const pages = (Buffer.from(pdf).toString("latin1").match(/\/Type\s*\/Page[^s]/g) || []).length;
+  check(pages > 60, `printed on ${pages} A4 pages, every certificate unfolded`);
+  check(await page.$$eval("details.claim", (ds) => ds.filter((d) => d.open).map((d) => d.id).join(",")) === "C15", "after printing, only C15 is open again");
+
+  for (const p of problems) check(false, p);
+} finally {
+  await browser.close();
+}
+if (failures.length) {
+  console.log(`${failures.length} browser checks failed`);
+  process.exit(1);
+}

@@ -1,0 +1,310 @@
+//! `paper --format html`: the verification report as one self-contained web page. The verdicts
+//! grouped as the paper runs, each certificate folded under its claim, the paper's results as
+//! MathML formulas, every table, the figures as inline SVG; no request leaves the page (no
+//! font, script or image from the network), and it prints whole (every certificate unfolded).
+
+use super::formula::{key_latex, meaning, radical_latex};
+use super::mathml::{self, escape};
+use super::proofs::{
+    METHOD, TITLE, groups, refutes_intuition_as_paper, summary_line, verdict_label, verdict_mark,
+};
+use super::{PaperFigure, Table, claim_markdown, hand_step_note, markup};
+use crate::claims::Decided;
+use crate::textbook::formula::Formulas;
+use pulldown_cmark::{Event, HeadingLevel, Parser, Tag, TagEnd};
+use std::fmt::Write as _;
+
+/// The page's style: readable on screen, every certificate unfolded and no controls in print.
+const STYLE: &str = include_str!("paper_html.css");
+
+/// The page's only script: unfold every certificate before printing (and fold them back after),
+/// open the claim a link points to, and the two buttons that unfold or fold them all.
+const SCRIPT: &str = include_str!("paper_html.js");
+
+/// The whole page: the verdicts of `all` grouped as the paper runs, `formulas` (the paper's
+/// results for its own scene), the `tables` and the `figures`.
+///
+/// # Examples
+/// ```
+/// use rodimpact::claims::{decide, Paper};
+/// use rodimpact::report::paper_html;
+/// use rodimpact::scene::SceneInput;
+/// use rodimpact::textbook::formula::formulas;
+/// let d = decide("C15", &Paper::as_printed()).unwrap();
+/// let page = paper_html(&[d], &formulas(&SceneInput::default())?, &[], &[]);
+/// assert!(page.starts_with("<!DOCTYPE html>"));
+/// assert!(page.contains("<details id=\"C15\" class=\"claim proved\">"));
+/// assert!(page.contains("<math display=\"block\">"));
+/// assert!(!page.contains("http://") && !page.contains("https://"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn paper_html(
+    all: &[Decided],
+    formulas: &Formulas,
+    tables: &[Table],
+    figures: &[PaperFigure],
+) -> String {
+    let mut body = String::new();
+    let _ = write!(
+        body,
+        "<header>\n<h1>{}</h1>\n<p class=\"summary\">{} {}</p>\n",
+        escape(TITLE),
+        escape(&summary_line(all)),
+        escape(METHOD)
+    );
+    if let Some(note) = hand_step_note(all) {
+        let _ = writeln!(body, "<p class=\"hand\">{}</p>", escape(&note));
+    }
+    body.push_str(
+        "<p class=\"controls\"><button type=\"button\" id=\"unfold\">Unfold every certificate</button> \
+         <button type=\"button\" id=\"fold\">Fold them</button></p>\n</header>\n",
+    );
+    body.push_str(&contents(all, tables, figures));
+    body.push_str("<main>\n");
+    body.push_str(&formula_section(formulas));
+    for group in groups(all) {
+        let _ = writeln!(
+            body,
+            "<section id=\"{}\">\n<h2>{}</h2>",
+            group_anchor(group.title()),
+            escape(group.title())
+        );
+        for d in all.iter().filter(|d| d.claim.group == group) {
+            body.push_str(&claim_details(d));
+        }
+        body.push_str("</section>\n");
+    }
+    if !tables.is_empty() {
+        body.push_str(
+            "<section id=\"tables\">\n<h2>Tables</h2>\n<p>Exact, with m = l = v<sub>0</sub> = 1 \
+             (lengths in units of l, velocities in units of v<sub>0</sub>); each exact value beside \
+             its decimal, correctly rounded.</p>\n",
+        );
+        for t in tables {
+            body.push_str(&t.html());
+        }
+        body.push_str("</section>\n");
+    }
+    if !figures.is_empty() {
+        body.push_str("<section id=\"figures\">\n<h2>Figures</h2>\n");
+        for (i, f) in figures.iter().enumerate() {
+            let _ = writeln!(
+                body,
+                "<figure id=\"{}\">\n{}<figcaption><b>Figure {}.</b> {}</figcaption>\n</figure>",
+                f.file.trim_end_matches(".svg"),
+                inline_svg(&f.svg, &markup::unicode(&f.caption)),
+                i + 1,
+                mathml::text(&f.caption)
+            );
+        }
+        body.push_str("</section>\n");
+    }
+    body.push_str("</main>\n");
+    let _ = writeln!(
+        body,
+        "<footer><p>Written by <code>rodimpact paper --format html</code> (rodimpact {}). Every \
+         verdict is re-checked by <code>rodimpact prove ID</code>; the claims for independent \
+         checkers by <code>rodimpact prove --export smt2|sympy DIR</code>.</p></footer>",
+        env!("CARGO_PKG_VERSION")
+    );
+    format!(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
+         <title>{}</title>\n<style>\n{STYLE}</style>\n</head>\n<body>\n{body}<script>\n{SCRIPT}</script>\n</body>\n</html>\n",
+        escape(TITLE)
+    )
+}
+
+/// The anchor of a group's section: its title in lower case, words joined by `-`.
+fn group_anchor(title: &str) -> String {
+    title
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .map(str::to_ascii_lowercase)
+        .collect::<Vec<_>>()
+        .join("-")
+}
+
+/// The list of contents: the formulas, each group with its claim count, tables, figures.
+fn contents(all: &[Decided], tables: &[Table], figures: &[PaperFigure]) -> String {
+    let mut out = String::from(
+        "<nav aria-label=\"Contents\">\n<h2>Contents</h2>\n<ol>\n\
+         <li><a href=\"#formulas\">The results as formulas</a></li>\n",
+    );
+    for group in groups(all) {
+        let n = all.iter().filter(|d| d.claim.group == group).count();
+        let _ = writeln!(
+            out,
+            "<li><a href=\"#{}\">{}</a> ({n} claim{})</li>",
+            group_anchor(group.title()),
+            escape(group.title()),
+            if n == 1 { "" } else { "s" }
+        );
+    }
+    if !tables.is_empty() {
+        let _ = writeln!(
+            out,
+            "<li><a href=\"#tables\">Tables</a> ({})</li>",
+            tables.iter().map(|t| t.id).collect::<Vec<_>>().join(", ")
+        );
+    }
+    if !figures.is_empty() {
+        let _ = writeln!(out, "<li><a href=\"#figures\">Figures</a></li>");
+    }
+    out.push_str("</ol>\n</nav>\n");
+    out
+}
+
+/// The paper's results for its own scene (free uniform rod, elastic), each in MathML with
+/// what it means and when it applies.
+fn formula_section(f: &Formulas) -> String {
+    let mut out = String::from(
+        "<section id=\"formulas\">\n<h2>The results as formulas</h2>\n<p>The exact answer of \
+         <code>rodimpact formula</code> for the paper's scene",
+    );
+    if !f.defaults.is_empty() {
+        let _ = write!(out, " ({})", escape(&f.defaults.join("; ")));
+    }
+    let _ = write!(
+        out,
+        ", in the symbols {}.</p>\n<table class=\"formulas\">\n<thead><tr><th scope=\"col\">quantity</th>\
+         <th scope=\"col\">formula</th><th scope=\"col\">meaning</th></tr></thead>\n<tbody>\n",
+        escape(&f.free.join(", "))
+    );
+    for x in &f.formulas {
+        let mut what = escape(&markup::ascii_math(meaning(x.key)));
+        if let Some(c) = &x.condition {
+            let _ = write!(what, "; {}", escape(&markup::ascii_math(c)));
+        }
+        let _ = writeln!(
+            out,
+            "<tr><th scope=\"row\">{}</th><td>{}</td><td>{what}</td></tr>",
+            mathml::math(key_latex(x.key), false),
+            mathml::math(&radical_latex(&x.value), true)
+        );
+    }
+    out.push_str("</tbody>\n</table>\n</section>\n");
+    out
+}
+
+/// One claim: a `<details>` whose summary is the id, verdict and statement, and whose body is
+/// its certificate (the formalisation, the reason, the evidence, how to re-check it).
+fn claim_details(d: &Decided) -> String {
+    let c = &d.claim;
+    let class = if refutes_intuition_as_paper(d) {
+        "as-paper".to_string()
+    } else {
+        verdict_label(d).to_ascii_lowercase()
+    };
+    let mut out = format!(
+        "<details id=\"{id}\" class=\"claim {class}\">\n<summary><span class=\"id\">{id}</span> \
+         <span class=\"verdict\">{}</span> <span class=\"where\">{}</span> \
+         <span class=\"statement\">{}</span></summary>\n<div class=\"body\">\n",
+        escape(&verdict_mark(d)),
+        escape(c.location),
+        escape(&markup::ascii_math(c.statement)),
+        id = c.id
+    );
+    out.push_str(&certificate_html(&claim_markdown(d)));
+    out.push_str("</div>\n</details>\n");
+    out
+}
+
+/// A certificate's Markdown as HTML inside its claim: its title line left out (the summary
+/// shows it), the headings moved two levels down.
+fn certificate_html(markdown: &str) -> String {
+    let mut skipping_title = false;
+    let events = Parser::new(markdown).filter_map(|event| match event {
+        Event::Start(Tag::Heading {
+            level: HeadingLevel::H1,
+            ..
+        }) => {
+            skipping_title = true;
+            None
+        }
+        Event::End(TagEnd::Heading(HeadingLevel::H1)) => {
+            skipping_title = false;
+            None
+        }
+        _ if skipping_title => None,
+        Event::Start(Tag::Heading {
+            level,
+            id,
+            classes,
+            attrs,
+        }) => Some(Event::Start(Tag::Heading {
+            level: lower(level),
+            id,
+            classes,
+            attrs,
+        })),
+        Event::End(TagEnd::Heading(level)) => Some(Event::End(TagEnd::Heading(lower(level)))),
+        // Raw HTML in a certificate is shown as text, never interpreted.
+        Event::Html(raw) | Event::InlineHtml(raw) => Some(Event::Text(raw)),
+        other => Some(other),
+    });
+    let mut out = String::new();
+    pulldown_cmark::html::push_html(&mut out, events);
+    out
+}
+
+/// A heading two levels down (`##` becomes `h4`), at most `h6`.
+fn lower(level: HeadingLevel) -> HeadingLevel {
+    match level {
+        HeadingLevel::H1 => HeadingLevel::H3,
+        HeadingLevel::H2 => HeadingLevel::H4,
+        HeadingLevel::H3 => HeadingLevel::H5,
+        _ => HeadingLevel::H6,
+    }
+}
+
+/// An SVG document placed in the page: its XML declaration (if any) removed, labelled for
+/// screen readers with `label` (`role="img"`).
+fn inline_svg(svg: &str, label: &str) -> String {
+    let start = svg.find("<svg").unwrap_or(0);
+    let svg = &svg[start..];
+    svg.replacen(
+        "<svg ",
+        &format!("<svg role=\"img\" aria-label=\"{}\" ", escape(label)),
+        1,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn certificate_headings_move_down_and_raw_html_is_text() {
+        let html =
+            certificate_html("# C1 — title\n\n## Claim\n\n> x <b>y</b>\n\n```text\na < b\n```\n");
+        assert!(!html.contains("title"), "{html}");
+        assert!(html.contains("<h4>Claim</h4>"), "{html}");
+        assert!(html.contains("&lt;b&gt;y&lt;/b&gt;"), "{html}");
+        assert!(
+            html.contains("<pre><code class=\"language-text\">a &lt; b\n</code></pre>"),
+            "{html}"
+        );
+    }
+
+    #[test]
+    fn svg_is_labelled_and_its_declaration_dropped() {
+        let svg = inline_svg("<?xml version=\"1.0\"?>\n<svg width=\"1\"></svg>", "ω & a");
+        assert_eq!(
+            svg,
+            "<svg role=\"img\" aria-label=\"ω &amp; a\" width=\"1\"></svg>"
+        );
+    }
+
+    #[test]
+    fn anchors_of_groups() {
+        assert_eq!(
+            group_anchor("The optimum impact point"),
+            "the-optimum-impact-point"
+        );
+        assert_eq!(
+            group_anchor("Abstract and introduction"),
+            "abstract-and-introduction"
+        );
+    }
+}

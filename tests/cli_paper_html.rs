@@ -1,0 +1,109 @@
+//! `rodimpact paper --format html`: one self-contained page with every claim folded under its
+//! verdict, the formulas and exact table values in MathML, the figures inline, and no request
+//! to the network. (The page is also loaded in headless Chromium by `.ci/browser/run`, which
+//! `cargo test` does not need.)
+
+use std::process::Command;
+
+fn rodimpact(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn page_to_stdout() -> String {
+    let out = rodimpact(&["paper", "--format", "html"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn the_page_holds_every_claim_table_figure_and_formula() {
+    let page = page_to_stdout();
+    assert!(page.starts_with("<!DOCTYPE html>\n<html lang=\"en\">"));
+    assert!(page.ends_with("</html>\n"));
+    // Every registered claim once, folded, with its verdict class.
+    let ids: Vec<&str> = rodimpact::claims::registry().iter().map(|e| e.id).collect();
+    assert_eq!(page.matches("<details id=\"").count(), ids.len());
+    for id in &ids {
+        assert_eq!(
+            page.matches(&format!("<details id=\"{id}\" class=\"claim "))
+                .count(),
+            1,
+            "{id}"
+        );
+    }
+    assert!(page.contains("<details id=\"C3\" class=\"claim as-paper\">"));
+    assert!(page.contains("<details id=\"C8\" class=\"claim qualified\">"));
+    assert!(page.contains("<details id=\"C15\" class=\"claim proved\">"));
+    assert!(!page.contains("class=\"claim failed\""));
+    // The certificate under its claim: C15's identity, as `prove` writes it.
+    assert!(page.contains("rhs     = (2*m*a/I)/(1 + m/M + m*a^2/I)*v0"));
+    // The five tables, and T2's optimum a* = sqrt(6)/3 l in MathML beside its decimal.
+    for t in ["T1", "T2", "T3", "T4", "T5"] {
+        assert!(page.contains(&format!("<table id=\"{t}\">")), "{t}");
+    }
+    assert!(page.contains(
+        "<td><math><mfrac><msqrt><mn>6</mn></msqrt><mn>3</mn></mfrac></math></td>\
+         <td class=\"decimal\">0.816496580928</td>"
+    ));
+    // The paper's a*^2 = (M + m) l^2/(3 m) in the formula section, as a MathML fraction.
+    assert!(page.contains("<msup><mi>a</mi><mrow><mo>*</mo><mn>2</mn></mrow></msup>"));
+    // Three figures, inline and labelled.
+    assert_eq!(page.matches("<svg role=\"img\" aria-label=").count(), 3);
+    assert_eq!(page.matches("<figure id=").count(), 3);
+}
+
+/// Nothing is fetched: no external script, style sheet, image, font or frame. (The SVG
+/// namespace `http://www.w3.org/2000/svg` is a name, not a request.)
+#[test]
+fn the_page_asks_nothing_of_the_network() {
+    let page = page_to_stdout();
+    for needle in [
+        " src=", "<link", "@import", "url(", "<iframe", "<object", "<embed", "https://",
+    ] {
+        assert!(!page.contains(needle), "{needle}");
+    }
+    let http: Vec<&str> = page
+        .match_indices("http://")
+        .map(|(i, _)| &page[i..i + 34])
+        .collect();
+    assert!(
+        http.iter()
+            .all(|h| *h == "http://www.w3.org/2000/svg\" width="),
+        "{http:?}"
+    );
+}
+
+#[test]
+fn out_writes_the_same_page_and_refuses_a_bad_path() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("paper.html");
+    let out = rodimpact(&["paper", "--format", "html", "--out", file.to_str().unwrap()]);
+    assert!(out.status.success());
+    assert!(out.stdout.is_empty(), "the page goes to the file only");
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), page_to_stdout());
+    // A directory that does not exist: exit 2, one line naming the field, nothing written.
+    let missing = dir.path().join("no/such/dir/paper.html");
+    let out = rodimpact(&[
+        "paper",
+        "--format",
+        "html",
+        "--out",
+        missing.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.starts_with("error: out:"), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    // An unknown format: clap's message, exit 2.
+    let out = rodimpact(&["paper", "--format", "pdf"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("possible values: text, html"));
+}
