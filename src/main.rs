@@ -38,6 +38,9 @@ enum Command {
     /// The exact answer as formulas (v, V, omega, J, energy lost, a*^2, omega_max) in the
     /// scene's free symbols: any scene flag may be a symbol or an expression (--M 2*m).
     Formula(Box<commands::formula::FormulaArgs>),
+    /// An interactive page (one self-contained HTML file) on which a student predicts where to
+    /// hit the rod, then finds the exact answer, the curve and the motion.
+    Explore(commands::explore::ExploreArgs),
     /// Float error against run time for every backend and formula on the stiff/extreme suite.
     Stability(commands::stability::StabilityArgs),
     /// Many scenes from a CSV file, exactly, streamed and in parallel; claimed v, V, omega,
@@ -86,6 +89,7 @@ fn main() -> ExitCode {
         Command::Plot(args) => commands::plot::run_plot(args),
         Command::Check(args) => commands::check::run_check(args),
         Command::Formula(args) => commands::formula::run_formula(args),
+        Command::Explore(args) => commands::explore::run_explore(args),
         Command::Stability(args) => commands::stability::run_stability(args),
         Command::Batch(args) => commands::batch::run_batch(args),
         Command::Scenes(args) => commands::scenes::run_scenes(args),

@@ -4,6 +4,7 @@
 pub(crate) mod batch;
 pub(crate) mod check;
 pub(crate) mod claims;
+pub(crate) mod explore;
 pub(crate) mod formula;
 pub(crate) mod plot;
 pub(crate) mod scenes;

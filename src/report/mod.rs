@@ -8,6 +8,7 @@ mod certificate;
 mod check;
 mod claims_doc;
 mod explain;
+pub mod explore;
 mod formula;
 pub mod markup;
 pub mod mathml;

@@ -1,0 +1,114 @@
+// The interactive page of `rodimpact explore` in headless Chromium, driven as a student would:
+// by keyboard and by typing into the fields.
+// Usage: node explore.mjs PAGE.html SCREENSHOT_DIR SOLVE_JSON
+//   SOLVE_JSON: `rodimpact solve --m 1 --M 3 --a 1 --e 1/2 --json` (the page must agree).
+import puppeteer from "puppeteer-core";
+import { readFileSync } from "node:fs";
+import { pathToFileURL } from "node:url";
+
+const [file, shots, solveJson] = process.argv.slice(2);
+const solved = JSON.parse(readFileSync(solveJson, "utf8"));
+const url = pathToFileURL(file).href;
+const failures = [];
+const check = (ok, what) => {
+  console.log(`${ok ? "ok  " : "FAIL"} explore: ${what}`);
+  if (!ok) failures.push(what);
+};
+
+const browser = await puppeteer.launch({
+  executablePath: process.env.CHROMIUM,
+  headless: true,
+  args: ["--no-sandbox", "--disable-gpu"],
+});
+try {
+  const page = await browser.newPage();
+  const problems = [];
+  page.on("console", (m) => { if (m.type() === "error" || m.type() === "warn") problems.push(`console ${m.type()}: ${m.text()}`); });
+  page.on("pageerror", (e) => problems.push(`script error: ${e}`));
+  page.on("requestfailed", (r) => problems.push(`request failed: ${r.url()}`));
+  page.on("request", (r) => { if (r.url() !== url && !r.url().startsWith("data:")) problems.push(`request beyond the page: ${r.url()}`); });
+  await page.setViewport({ width: 1200, height: 1000 });
+  await page.goto(url, { waitUntil: "load" });
+  const text = (id) => page.$eval(id, (e) => e.textContent);
+  const cell = (name) => page.$$eval("#values-body tr", (rows, name) => {
+    const row = rows.find((r) => r.querySelector("th").textContent === name);
+    return row ? row.querySelector("td.exact").textContent : null;
+  }, name);
+
+  // The default scene, M = m: a* = sqrt(2/3) l = √6/3 l ≈ 0.8165 l, on the rod.
+  check((await text("#self-check")).startsWith("Self-check: on opening, the page recomputed"), "the page's arithmetic agrees with rodimpact's embedded answers");
+  const summary = await text("#summary");
+  check(summary.includes("a* = √6/3 l ≈ 0.8165 l") && summary.includes("lies on the rod"), `default scene shows a* = √6/3 l ≈ 0.8165 l: "${summary.slice(0, 80)}…"`);
+  check((await cell("a*")) === "√6/3 l" && (await cell("ω")) === "12/11", "the table: a* = √6/3 l, ω = 12/11 at a = l/2");
+  await page.screenshot({ path: `${shots}/explore-default.png`, fullPage: true });
+
+  // Moving the a slider by keyboard changes the shown values.
+  await page.focus("#a-slider");
+  for (let i = 0; i < 10; i++) await page.keyboard.press("ArrowRight");
+  check((await page.$eval("#a", (e) => e.value)) === "0.6", `ArrowRight ×10 on the a slider: a/l = ${await page.$eval("#a", (e) => e.value)}`);
+  // omega = (1 + e) a/(a*^2 + a^2) = 2 (3/5)/(2/3 + 9/25) = 90/77.
+  check((await cell("ω")) === "90/77", `ω at a = 3/5 is 90/77 (was 12/11): ${await cell("ω")}`);
+
+  // Typing a scene: M = 3m, a = l, e = 1/2: a* beyond the end, and the page agrees with solve.
+  const type = async (id, value) => {
+    await page.$eval(id, (e) => { e.value = ""; });
+    await page.type(id, value);
+  };
+  await type("#ratio", "3");
+  await type("#a", "1");
+  await type("#e", "1/2");
+  const heavy = await text("#summary");
+  check(heavy.includes("beyond the end") && heavy.includes("2√3/3"), `M = 3m: a* = 2√3/3 l beyond the end: "${heavy.slice(0, 70)}…"`);
+  const unicode = (s) => s.replace(/-/g, "−").replace(/(\d*)\*?sqrt\((\d+)\)/g, (_, c, r) => `${c}√${r}`);
+  for (const [name, key] of [["v", "v"], ["V", "V"], ["ω", "omega"], ["ω max", "omega_max"]]) {
+    const shown = name === "ω max" ? await cell("ωmax") : await cell(name);
+    check(shown === unicode(solved[key].exact), `${name} = ${shown}, rodimpact solve says ${solved[key].exact}`);
+  }
+  const lost = await cell("ΔK/K0");
+  check(lost !== null, `e = 1/2 shows the energy lost (${lost})`);
+  await page.screenshot({ path: `${shots}/explore-heavy-rod.png`, fullPage: true });
+
+  // A bad entry: named, marked invalid, no script error.
+  await type("#ratio", "-2");
+  check((await text("#ratio-error")).includes("M/m: must be > 0") && (await page.$eval("#ratio", (e) => e.getAttribute("aria-invalid"))) === "true", "M/m = -2 is refused with its reason");
+  await type("#ratio", "1");
+  await type("#e", "1");
+
+  // X19: struck at a*, elastic, the rod meets the puck again half a turn later, t = π a*/v0.
+  await page.click("#hit-a-star");
+  const second = await text("#second");
+  const t = Number((/t ≈ ([\d.]+)/.exec(second) || [])[1]);
+  check(Math.abs(t - Math.PI * Math.sqrt(2 / 3)) < 2e-3 && second.includes("X19"), `second impact at t ≈ ${t} = π a*/v0 = ${(Math.PI * Math.sqrt(2 / 3)).toFixed(3)}`);
+  await page.$eval("#time", (e, t) => { e.value = t; e.dispatchEvent(new Event("input")); }, String(t + 0.01));
+  await page.evaluate(() => document.getElementById("motion").scrollIntoView());
+  await page.screenshot({ path: `${shots}/explore-second-impact.png` });
+  // Play runs the animation forward.
+  await page.$eval("#time", (e) => { e.value = e.min; e.dispatchEvent(new Event("input")); });
+  await page.click("#play");
+  await new Promise((r) => setTimeout(r, 700));
+  const running = await page.$eval("#time", (e) => Number(e.value));
+  check(running > -1.5, `Play moves time forward (t = ${running.toFixed(2)})`);
+  await page.click("#play");
+
+  // Pivoted dumbbell, predict-first mode: the answer is hidden until revealed.
+  await page.click("input[name=kind][value=dumbbell]");
+  await page.click("#pivoted");
+  await type("#pivot", "-1");
+  await page.click("#predict");
+  check(await page.$eval("body", (b) => b.classList.contains("answer-hidden")), "predict first hides the answer");
+  check(!(await text("#summary")).includes("a* ="), "the summary keeps a* back");
+  await page.focus("#guess");
+  for (let i = 0; i < 20; i++) await page.keyboard.press("ArrowLeft");
+  await page.click("#reveal");
+  const revealed = await text("#summary");
+  check(revealed.includes("Your guess a/l = 4/5") && revealed.includes("a* ="), `after Reveal: "${revealed.slice(0, 90)}…"`);
+  await page.screenshot({ path: `${shots}/explore-pivoted-dumbbell.png`, fullPage: true });
+
+  for (const p of problems) check(false, p);
+} finally {
+  await browser.close();
+}
+if (failures.length) {
+  console.log(`${failures.length} browser checks failed`);
+  process.exit(1);
+}

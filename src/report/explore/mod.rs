@@ -1,0 +1,114 @@
+//! `rodimpact explore`: one self-contained interactive page on which a student finds the
+//! paper's surprise: sliders for M/m, a, e, the rod and the pivot; the exact answer (fractions
+//! and surds, computed in the page with JavaScript BigInt); |omega| along the rod with a* and the
+//! end marked; a* against M/m with the threshold; an animation of the impact and of the second
+//! impact that follows a hit beyond the stop point (X19), with energy bars; and a predict-first
+//! mode.
+//!
+//! The page carries rodimpact's own exact answers for a set of reference scenes
+//! ([`REFERENCE_SCENES`]), and checks its arithmetic against them each time it opens.
+
+use super::Solution;
+use crate::Error;
+use crate::scene::SceneInput;
+use serde_json::{Value, json};
+
+const TEMPLATE: &str = include_str!("page.html");
+const STYLE: &str = include_str!("page.css");
+const EXACT: &str = include_str!("exact.js");
+const PHYSICS: &str = include_str!("physics.js");
+const UI: &str = include_str!("ui.js");
+
+/// The scenes (M/m, a/l, e, rod, pivot p/l; m = l = v0 = 1) whose exact answers the page
+/// carries to check its own arithmetic: free and pivoted, every rod kind, elastic to sticking,
+/// a* inside and beyond the end, on either side of a pivot.
+pub const REFERENCE_SCENES: &[(&str, &str, &str, &str, Option<&str>)] = &[
+    ("1", "1/2", "1", "uniform", None),
+    ("3/2", "1/2", "1/2", "uniform", None),
+    ("3", "1", "1", "uniform", None),
+    ("1/10", "1", "0", "uniform", None),
+    ("1", "3/4", "0", "dumbbell", None),
+    ("2", "1/3", "1", "rg=1/2", None),
+    ("7/3", "-2/5", "3/10", "rg=3/10", None),
+    ("3/2", "1/2", "1/2", "uniform", Some("1/4")),
+    ("1", "-1/2", "1", "uniform", Some("-1")),
+    ("3/2", "1/2", "1/2", "uniform", Some("1")),
+    ("5", "0", "1/2", "dumbbell", Some("1/2")),
+];
+
+/// rodimpact's exact answers for [`REFERENCE_SCENES`], as the page reads them: per scene its
+/// `input` and the exact strings of `v`, `V`, `omega`, `energy_lost`, `a_star`, `omega_max`
+/// (and `pivot_impulse` on a pivot), as `solve --json` prints them.
+///
+/// # Errors
+/// None in practice: the reference scenes are valid (an error would name the bad field).
+///
+/// # Examples
+/// ```
+/// let reference = rodimpact::report::explore::reference_answers()?;
+/// assert_eq!(reference[0]["a_star"], "sqrt(6)/3");
+/// assert_eq!(reference[0]["omega"], "12/11");
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn reference_answers() -> Result<Vec<Value>, Error> {
+    REFERENCE_SCENES
+        .iter()
+        .map(|&(ratio, a, e, rod, pivot)| {
+            let input = SceneInput {
+                m: Some("1".into()),
+                rod_mass: Some(ratio.into()),
+                a: Some(a.into()),
+                e: Some(e.into()),
+                rod: Some(rod.into()),
+                pivot: pivot.map(Into::into),
+                ..Default::default()
+            };
+            let json = Solution::of(&input.build()?).to_json(6);
+            let exact = |path: &[&str]| {
+                path.iter()
+                    .fold(&json, |v, key| &v[*key])
+                    .as_str()
+                    .map(str::to_string)
+            };
+            let mut answer = json!({
+                "input": { "M": ratio, "a": a, "e": e, "rod": rod, "pivot": pivot },
+                "v": exact(&["v", "exact"]),
+                "V": exact(&["V", "exact"]),
+                "omega": exact(&["omega", "exact"]),
+                "energy_lost": exact(&["energy", "lost", "exact"]),
+                "a_star": exact(&["a_star", "exact"]),
+                "omega_max": exact(&["omega_max", "exact"]),
+            });
+            if pivot.is_some() {
+                answer["pivot_impulse"] = json!(exact(&["pivot_impulse", "exact"]));
+            }
+            Ok(answer)
+        })
+        .collect()
+}
+
+/// The page, complete: the template with its style, scripts and the reference answers.
+///
+/// # Errors
+/// As [`reference_answers`].
+///
+/// # Examples
+/// ```
+/// let page = rodimpact::report::explore::explore_html()?;
+/// assert!(page.starts_with("<!DOCTYPE html>"));
+/// assert!(page.contains("\"a_star\":\"sqrt(6)/3\""));
+/// assert!(!page.contains("{{"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn explore_html() -> Result<String, Error> {
+    // Inside <script>, "</" would end the element: JSON allows "<\/".
+    let reference = serde_json::to_string(&reference_answers()?)
+        .expect("JSON of strings")
+        .replace("</", "<\\/");
+    let script = format!("{EXACT}\n{PHYSICS}\n{UI}");
+    Ok(TEMPLATE
+        .replace("{{VERSION}}", env!("CARGO_PKG_VERSION"))
+        .replace("{{STYLE}}", STYLE)
+        .replace("{{REFERENCE}}", &reference)
+        .replace("{{SCRIPT}}", &script))
+}

@@ -1,0 +1,128 @@
+"use strict";
+// The impact, exactly, in units m = l = v0 = 1 (the page's sliders are ratios): a projectile of
+// mass 1 and speed 1 strikes a rod of mass M, half-length 1, moment of inertia I = k M about
+// its centre (k = 1/3 uniform, 1 dumbbell, (r_G/l)^2), at a from the centre, with restitution e;
+// the rod free, or on a fixed pivot at p along it. Signs as in rodimpact's docs/conventions.md:
+// omega > 0 when the struck point moves forward for a > 0 (a > p on a pivot).
+//
+// Both cases share one shape: with the lever arm x (x = a free, x = a - p on a pivot) and
+// A = I (M + m)/(m M) (free) or A = I_p/m (pivot, I_p = I + M p^2),
+//   J = (1 + e) v0 / (1/m + x^2/I_eff),  omega = (1 + e) v0 x/(A + x^2),
+// largest over the arm at x = sqrt(A) = a*, where omega_max = (1 + e) v0/(2 a*).
+
+const Physics = (() => {
+  const { Q, Surd } = Exact;
+  const one = Q.of(1);
+  const two = Q.of(2);
+  const half = Q.of(1, 2);
+
+  /** The moment of inertia's factor k (I = k M l^2) for a rod kind. */
+  function inertiaFactor(kind, rg) {
+    if (kind === "uniform") return Q.of(1, 3);
+    if (kind === "dumbbell") return one;
+    return rg.mul(rg);
+  }
+
+  /**
+   * The exact answer for a scene { M, a, e, k, pivot } (Q values; pivot null for a free rod).
+   * Returns every quantity the page shows, exact.
+   */
+  function solve(scene) {
+    const { M, a, e, k } = scene;
+    const p = scene.pivot;
+    const I = k.mul(M);
+    const pivoted = p !== null;
+    const Ieff = pivoted ? I.add(M.mul(p).mul(p)) : I; // about the pivot, or the centre
+    const x = pivoted ? a.sub(p) : a;
+    // 1/m + (1/M for a free rod) + x^2/I_eff
+    let k_n = one.add(x.mul(x).div(Ieff));
+    if (!pivoted) k_n = k_n.add(one.div(M));
+    const J = one.add(e).div(k_n);
+    const omega = J.mul(x).div(Ieff);
+    const v = one.sub(J);
+    const V = pivoted ? omega.mul(p).neg() : J.div(M); // the centre's velocity
+    const pivotImpulse = pivoted ? M.mul(V).sub(J) : null;
+    const K0 = half;
+    const projectile = v.mul(v).mul(half);
+    const translation = M.mul(V).mul(V).mul(half);
+    const rotation = I.mul(omega).mul(omega).mul(half); // about the centre
+    const lost = K0.sub(projectile).sub(translation).sub(rotation);
+    // The optimum over the arm on the struck side.
+    const A = pivoted ? Ieff : I.mul(M.add(one)).div(M);
+    const side = x.sign() < 0 ? -1 : 1;
+    const arm = pivoted ? (side > 0 ? one.sub(p) : one.add(p)) : one;
+    const aStar = Surd.sqrt(A);
+    const inside = A.cmp(arm.mul(arm)) <= 0;
+    const omegaAt = (lever) => one.add(e).mul(lever).div(A.add(lever.mul(lever)));
+    const omegaEnd = omegaAt(arm); // magnitude at the end of the arm
+    // omega_max = (1 + e)/(2 sqrt(A)) = (1 + e) sqrt(A)/(2 A), or the end's when a* is beyond it.
+    const omegaMax = inside ? aStar.scale(one.add(e).div(two.mul(A))) : Surd.rational(omegaEnd);
+    // Where a* is along the rod: a = a* (free) or a = p + side a* (pivot).
+    return {
+      pivoted, I, Ieff, x, J, v, V, omega, pivotImpulse, K0, projectile, translation, rotation, lost,
+      A, aStar, arm, side, inside, omegaEnd, omegaMax,
+      // The threshold mass ratio below which a* lies on the rod (free rod): M/m < 1/k - 1.
+      threshold: pivoted ? null : one.div(k).sub(one),
+    };
+  }
+
+  /** |omega(x)|/omega_max as a float, for drawing the curve (x the lever arm). */
+  function shape(A, x, omegaMaxNumber, e) {
+    return ((1 + e) * Math.abs(x)) / (A + x * x) / omegaMaxNumber;
+  }
+
+  /**
+   * The motion after the impact, in floats for the animation: positions at time t (t < 0: the
+   * approach), and the time of the second impact, if the projectile meets the rod again within
+   * `horizon` (l/v0 units), found by scanning and bisection.
+   */
+  function motion(scene, out, horizon = 12) {
+    const a = scene.a.toNumber();
+    const p = out.pivoted ? scene.pivot.toNumber() : 0;
+    const v = out.v.toNumber();
+    const V = out.V.toNumber();
+    const w = out.omega.toNumber();
+    const at = (t) => {
+      if (t <= 0) return { ball: [t, a], centre: [0, 0], phi: 0 };
+      const phi = -w * t; // counter-clockwise angle of the rod
+      const centre = out.pivoted
+        ? [p * Math.sin(phi), p - p * Math.cos(phi)] // the centre turns about the pivot (0, p)
+        : [V * t, 0];
+      return { ball: [v * t, a], centre, phi };
+    };
+    // Signed distance of the ball from the rod's line, and where along the rod it is.
+    const relative = (t) => {
+      const s = at(t);
+      const dx = s.ball[0] - s.centre[0];
+      const dy = s.ball[1] - s.centre[1];
+      const normal = dx * Math.cos(s.phi) + dy * Math.sin(s.phi);
+      const along = -dx * Math.sin(s.phi) + dy * Math.cos(s.phi);
+      return { normal, along };
+    };
+    const touches = (r) => Math.abs(r.along) <= 1;
+    let second = null;
+    const dt = 1e-3;
+    let before = relative(dt);
+    for (let t = 2 * dt; t <= horizon; t += dt) {
+      const now = relative(t);
+      const crossed = (before.normal < 0) !== (now.normal < 0);
+      if (crossed && (touches(now) || touches(before))) {
+        let lo = t - dt;
+        let hi = t;
+        for (let i = 0; i < 60; i++) {
+          const mid = (lo + hi) / 2;
+          if ((relative(mid).normal < 0) === (before.normal < 0)) lo = mid;
+          else hi = mid;
+        }
+        if (touches(relative(hi))) {
+          second = hi;
+          break;
+        }
+      }
+      before = now;
+    }
+    return { at, second };
+  }
+
+  return { inertiaFactor, solve, shape, motion };
+})();

@@ -1,0 +1,511 @@
+"use strict";
+// The page: reads the controls into an exact scene, shows the exact answer, draws the curve,
+// the threshold and the motion, runs the predict-first mode, and checks its own arithmetic
+// against rodimpact's answers embedded in the page.
+
+(() => {
+  const { Q, Surd, parse } = Exact;
+  const $ = (id) => document.getElementById(id);
+  const SVG = "http://www.w3.org/2000/svg";
+  const reduceMotion = window.matchMedia("(prefers-reduced-motion: reduce)").matches;
+
+  // ---- reading the controls ------------------------------------------------------------
+  const fields = {
+    ratio: { check: (q) => (q.sign() > 0 ? null : "must be > 0"), name: "M/m" },
+    a: { check: (q) => (q.abs().cmp(Q.of(1)) <= 0 ? null : "must lie on the rod, −1 ≤ a/l ≤ 1"), name: "a/l" },
+    e: { check: (q) => (q.sign() >= 0 && q.cmp(Q.of(1)) <= 0 ? null : "must lie in 0 ≤ e ≤ 1"), name: "e" },
+    rg: { check: (q) => (q.sign() > 0 ? null : "must be > 0"), name: "r_G/l" },
+    pivot: { check: (q) => (q.abs().cmp(Q.of(1)) <= 0 ? null : "must lie on the rod, −1 ≤ p/l ≤ 1"), name: "p/l" },
+  };
+
+  /** The field's exact value, or null with its error shown. */
+  function read(id) {
+    const input = $(id);
+    const error = $(`${id}-error`);
+    let value = null;
+    let message = "";
+    try {
+      value = parse(input.value);
+      message = fields[id].check(value) || "";
+      if (message) value = null;
+    } catch (e) {
+      message = e.message;
+    }
+    error.textContent = message ? `${fields[id].name}: ${message}` : "";
+    input.setAttribute("aria-invalid", message ? "true" : "false");
+    return value;
+  }
+
+  function kind() {
+    return document.querySelector("input[name=kind]:checked").value;
+  }
+
+  /** The scene of the controls, or null when a field is invalid. */
+  function scene() {
+    const M = read("ratio");
+    const a = read("a");
+    const e = read("e");
+    const k = kind();
+    const rg = k === "gyration" ? read("rg") : Q.of(1, 2);
+    const pivoted = $("pivoted").checked;
+    const p = pivoted ? read("pivot") : Q.of(0);
+    if (!M || !a || !e || !rg || !p) return null;
+    return { M, a, e, k: Physics.inertiaFactor(k, rg), kind: k, rg, pivot: pivoted ? p : null };
+  }
+
+  // ---- sliders and text fields, kept in step -------------------------------------------
+  /** A slider's value as a short exact decimal string. */
+  const tidy = (x, digits) => {
+    const s = Number(x).toFixed(digits).replace(/\.?0+$/, "");
+    return s === "-0" ? "0" : s;
+  };
+  const ratioFromSlider = (s) => {
+    const x = 10 ** Number(s);
+    const magnitude = Math.floor(Math.log10(x));
+    const step = 10 ** (magnitude - 1); // two significant digits
+    return tidy(Math.round(x / step) * step, Math.max(0, 1 - magnitude));
+  };
+  const link = (slider, field, toText, toSlider) => {
+    $(slider).addEventListener("input", () => {
+      $(field).value = toText($(slider).value);
+      update();
+    });
+    $(field).addEventListener("input", () => {
+      try {
+        $(slider).value = toSlider(parse($(field).value).toNumber());
+      } catch (_) {
+        // An unfinished entry: the slider stays where it was.
+      }
+      update();
+    });
+  };
+  link("ratio-slider", "ratio", ratioFromSlider, (x) => Math.log10(x));
+  link("a-slider", "a", (s) => tidy(s, 2), (x) => x);
+  link("e-slider", "e", (s) => tidy(s, 2), (x) => x);
+  for (const id of ["rg", "pivot"]) $(id).addEventListener("input", update);
+  for (const r of document.querySelectorAll("input[name=kind]")) {
+    r.addEventListener("change", () => {
+      $("rg").disabled = kind() !== "gyration";
+      update();
+    });
+  }
+  $("pivoted").addEventListener("change", () => {
+    $("pivot").disabled = !$("pivoted").checked;
+    update();
+  });
+
+  // ---- predict first -------------------------------------------------------------------
+  let revealed = true;
+  let guess = null;
+  const hidden = () => $("predict").checked && !revealed;
+  $("predict").addEventListener("change", () => {
+    revealed = !$("predict").checked;
+    guess = null;
+    $("guess-box").hidden = !$("predict").checked;
+    update();
+  });
+  $("guess").addEventListener("input", () => {
+    $("guess-value").value = tidy($("guess").value, 2);
+    $("guess").setAttribute("aria-valuetext", `a/l = ${$("guess-value").value}`);
+    draw();
+  });
+  $("reveal").addEventListener("click", () => {
+    guess = parse($("guess-value").value);
+    revealed = true;
+    update();
+    $("summary").focus();
+  });
+
+  $("hit-a-star").addEventListener("click", () => {
+    if (!current) return;
+    const { out, scene: s } = current;
+    // a* is irrational in general: hit at its decimal to 4 digits (exact for a rational a*).
+    const place = s.pivot ? out.aStar.toNumber() * out.side + s.pivot.toNumber() : out.aStar.toNumber();
+    const exact = out.aStar.isRational() ? (s.pivot ? s.pivot.add(out.aStar.c.mul(Q.of(out.side))) : out.aStar.c) : null;
+    const value = exact && exact.abs().cmp(Q.of(1)) <= 0 ? exact.toString() : tidy(Math.max(-1, Math.min(1, place)), 4);
+    $("a").value = value;
+    $("a-slider").value = parse(value).toNumber();
+    update();
+  });
+
+  // ---- the answer ----------------------------------------------------------------------
+  let current = null;
+
+  const unicode = (q) => q.pretty();
+  const row = (name, exact, decimal, meaning, answerOnly = false) =>
+    `<tr${answerOnly ? ' class="answer-only"' : ""}><th scope="row">${name}</th><td class="exact">${exact}</td><td class="decimal">${decimal}</td><td>${meaning}</td></tr>`;
+
+  function thresholdText(s, out) {
+    if (s.pivot) return "";
+    const t = out.threshold;
+    if (t.sign() <= 0) return "for this rod a* lies beyond the end whatever the masses";
+    return `a* is on the rod exactly when M/m ≤ ${unicode(t)}`;
+  }
+
+  function update() {
+    const s = scene();
+    if (!s) {
+      $("summary").textContent = "Correct the highlighted field to see the answer.";
+      return;
+    }
+    const out = Physics.solve(s);
+    current = { scene: s, out };
+    $("guess").min = s.pivot ? "-1" : "0";
+    for (const [slider, value, label] of [["ratio-slider", s.M, "M/m"], ["a-slider", s.a, "a/l"], ["e-slider", s.e, "e"]]) {
+      $(slider).setAttribute("aria-valuetext", `${label} = ${unicode(value)}`);
+    }
+    const v0l = "<i>v</i><sub>0</sub>/<i>l</i>";
+    const ratioToMax = out.inside
+      ? out.aStar.scale(out.omega.abs().mul(Q.of(2)).div(Q.of(1).add(s.e)))
+      : Surd.rational(out.omega.abs().div(out.omegaEnd));
+    const from = s.pivot ? "from the pivot" : "from the centre";
+    let rows = "";
+    rows += row("<i>v</i>", unicode(out.v), out.v.decimal(), "the puck after (× <i>v</i><sub>0</sub>; negative: it bounces back)");
+    rows += row("<i>V</i>", unicode(out.V), out.V.decimal(), "the rod's centre after (× <i>v</i><sub>0</sub>)");
+    rows += row("<i>ω</i>", unicode(out.omega), out.omega.decimal(), `the rod's spin (× ${v0l})`);
+    rows += row("<i>J</i>", unicode(out.J), out.J.decimal(), "impulse of the puck on the rod (× <i>m v</i><sub>0</sub>)");
+    if (s.pivot) rows += row("<i>J</i><sub>p</sub>", unicode(out.pivotImpulse), out.pivotImpulse.decimal(), "impulse of the pivot on the rod (× <i>m v</i><sub>0</sub>)");
+    if (s.e.cmp(Q.of(1)) < 0) {
+      const lost = out.lost.div(out.K0);
+      rows += row("Δ<i>K</i>/<i>K</i><sub>0</sub>", unicode(lost), lost.decimal(), "fraction of the kinetic energy lost");
+    }
+    rows += row("<i>a</i>*", `${out.aStar.spell(false)} <i>l</i>`, out.aStar.decimal(), `the fastest-spin point, ${from}${out.inside ? "" : " (beyond the end)"}`, true);
+    rows += row("<i>ω</i><sub>max</sub>", out.omegaMax.spell(false), out.omegaMax.decimal(), `fastest spin over the rod (× ${v0l}), ${out.inside ? "at a*" : "at the end"}`, true);
+    rows += row("<i>ω</i>/<i>ω</i><sub>max</sub>", ratioToMax.spell(false), ratioToMax.decimal(), "this hit against the best one", true);
+    $("values-body").innerHTML = rows;
+
+    const aStar = `a* = ${out.aStar.spell(false)} l ≈ ${out.aStar.decimal(4)} l`;
+    let summary;
+    if (hidden()) {
+      summary = `M/m = ${unicode(s.M)}, a/l = ${unicode(s.a)}, e = ${unicode(s.e)}: ω = ${unicode(out.omega)} v0/l ≈ ${out.omega.decimal(4)}. Where is the fastest spin? Make your guess, then reveal.`;
+    } else if (out.inside) {
+      summary = `${aStar} ${from} lies on the rod: hitting there spins it fastest, ω_max = ${out.omegaMax.spell(false)} v0/l ≈ ${out.omegaMax.decimal(4)} v0/l, faster than at the end (${unicode(out.omegaEnd)} v0/l).`;
+    } else {
+      summary = `${aStar} ${from} lies beyond the end: the end is the best place after all, ω_max = ω(end) = ${out.omegaMax.spell(false)} v0/l.`;
+    }
+    if (!s.pivot && !hidden()) summary += ` (${thresholdText(s, out)}.)`;
+    if (guess && !hidden()) {
+      const lever = s.pivot ? guess.sub(s.pivot) : guess;
+      const atGuess = Q.of(1).add(s.e).mul(lever.abs()).div(out.A.add(lever.mul(lever)));
+      const share = out.inside ? out.aStar.scale(atGuess.mul(Q.of(2)).div(Q.of(1).add(s.e))) : Surd.rational(atGuess.div(out.omegaEnd));
+      summary += ` Your guess a/l = ${unicode(guess)} gives ${share.decimal(3).replace("−", "-")} of ω_max (${(share.toNumber() * 100).toFixed(1)} %).`;
+    }
+    $("summary").textContent = summary;
+    $("hidden-note").hidden = !hidden();
+    document.body.classList.toggle("answer-hidden", hidden());
+    motion = Physics.motion(s, out);
+    const end = motion.second !== null ? Math.min(motion.second + 1, 12) : 6;
+    $("time").max = end.toFixed(2);
+    if (Number($("time").value) > end) $("time").value = end;
+    let second;
+    if (motion.second === null) {
+      second = "The puck and the rod do not meet again (within 12 l/v0).";
+    } else {
+      second = `Second impact: the rod comes round and meets the puck again at t ≈ ${motion.second.toFixed(3)} l/v0`;
+      // a* is irrational in general, so "at a*" means within the 4-digit decimal of the button.
+      const nearAStar = !s.pivot && s.e.cmp(Q.of(1)) === 0 && out.inside && Math.abs(s.a.toNumber() - out.aStar.toNumber()) <= 5e-4;
+      second += nearAStar
+        ? `, as X19 says: struck at a* (here a* to 4 digits) the puck rests relative to the rod's centre, and half a turn later the other arm hits it, at t = π a*/v0 = ${(Math.PI * out.aStar.toNumber()).toFixed(3)} l/v0 exactly.`
+        : ".";
+    }
+    $("second").textContent = second;
+    draw();
+  }
+
+  // ---- drawing: the curve and the threshold ----------------------------------------------
+  const el = (name, attrs, text) => {
+    const e = document.createElementNS(SVG, name);
+    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+    if (text !== undefined) e.textContent = text;
+    return e;
+  };
+
+  function axes(svg, box, xs, ys, xlabel, ylabel, xticks, yticks, xfmt) {
+    const [x0, y0, w, h] = box;
+    const X = (x) => x0 + ((x - xs[0]) / (xs[1] - xs[0])) * w;
+    const Y = (y) => y0 + h - ((y - ys[0]) / (ys[1] - ys[0])) * h;
+    for (const t of xticks) {
+      svg.append(el("line", { x1: X(t), x2: X(t), y1: y0, y2: y0 + h, class: "grid" }));
+      svg.append(el("text", { x: X(t), y: y0 + h + 16, class: "tick", "text-anchor": "middle" }, xfmt(t)));
+    }
+    for (const t of yticks) {
+      svg.append(el("line", { x1: x0, x2: x0 + w, y1: Y(t), y2: Y(t), class: "grid" }));
+      svg.append(el("text", { x: x0 - 6, y: Y(t) + 4, class: "tick", "text-anchor": "end" }, t.toFixed(1)));
+    }
+    svg.append(el("rect", { x: x0, y: y0, width: w, height: h, class: "frame" }));
+    svg.append(el("text", { x: x0 + w / 2, y: y0 + h + 34, class: "label", "text-anchor": "middle" }, xlabel));
+    svg.append(el("text", { x: 14, y: y0 + h / 2, class: "label", "text-anchor": "middle", transform: `rotate(-90 14 ${y0 + h / 2})` }, ylabel));
+    return { X, Y };
+  }
+
+  function drawCurve() {
+    const svg = $("curve");
+    svg.replaceChildren();
+    const { scene: s, out } = current;
+    const e = s.e.toNumber();
+    const A = out.A.toNumber();
+    const p = s.pivot ? s.pivot.toNumber() : 0;
+    const aStar = out.aStar.toNumber();
+    const xs = s.pivot ? [-1, 1] : [0, Math.max(1, Math.min(2, aStar * 1.15))];
+    const omegaAt = (a) => ((1 + e) * Math.abs(a - p)) / (A + (a - p) ** 2);
+    const peak = Math.max((1 + e) / (2 * Math.sqrt(A)), omegaAt(1), omegaAt(-1));
+    const ys = [0, Math.ceil(peak * 1.15 * 5) / 5];
+    const yticks = [];
+    for (let t = 0; t <= ys[1] + 1e-9; t += ys[1] > 1.2 ? 0.4 : 0.2) yticks.push(t);
+    const xticks = s.pivot ? [-1, -0.5, 0, 0.5, 1] : [0, 0.25, 0.5, 0.75, 1, ...(xs[1] > 1.2 ? [1.5] : []), ...(xs[1] > 1.9 ? [2] : [])];
+    const { X, Y } = axes(svg, [58, 18, 440, 220], xs, ys, s.pivot ? "impact point a/l (from the centre)" : "impact point a/l", "|ω| l/v0", xticks, yticks, (t) => tidy(t, 2));
+    const path = (from, to) => {
+      let d = "";
+      for (let i = 0; i <= 200; i++) {
+        const a = from + ((to - from) * i) / 200;
+        d += `${i ? "L" : "M"}${X(a).toFixed(1)},${Y(omegaAt(a)).toFixed(1)}`;
+      }
+      return d;
+    };
+    svg.append(el("path", { d: path(xs[0], Math.min(1, xs[1])), class: "curve" }));
+    if (xs[1] > 1) svg.append(el("path", { d: path(1, xs[1]), class: "curve beyond" }));
+    // The rod's end(s), and the pivot.
+    svg.append(el("line", { x1: X(1), x2: X(1), y1: Y(ys[1]), y2: Y(0), class: "end" }));
+    svg.append(el("text", { x: X(1) - 4, y: Y(ys[1]) + 14, class: "note", "text-anchor": "end" }, "end of the rod"));
+    if (s.pivot) svg.append(el("text", { x: X(p), y: Y(0) - 6, class: "note", "text-anchor": "middle" }, "pivot"));
+    if (!hidden()) {
+      const omax = out.omegaMax.toNumber();
+      svg.append(el("line", { x1: X(xs[0]), x2: X(xs[1]), y1: Y(omax), y2: Y(omax), class: "max" }));
+      svg.append(el("text", { x: X(xs[0]) + 6, y: Y(omax) - 5, class: "note max-label" }, `ω_max = ${out.omegaMax.spell(false)} ≈ ${out.omegaMax.decimal(4)}`));
+      for (const side of s.pivot ? [-1, 1] : [1]) {
+        const at = p + side * aStar;
+        if (at < xs[0] - 1e-9 || at > xs[1] + 1e-9) continue;
+        svg.append(el("line", { x1: X(at), x2: X(at), y1: Y(0), y2: Y(omegaAt(at)), class: "astar" }));
+        svg.append(el("circle", { cx: X(at), cy: Y(omegaAt(at)), r: 5, class: "astar-dot" }));
+        svg.append(el("text", { x: X(at), y: Y(0) - 20, class: "note astar-label", "text-anchor": at > xs[1] - 0.15 ? "end" : "middle" }, `a* = ${out.aStar.spell(false)}`));
+      }
+    }
+    const a = s.a.toNumber();
+    svg.append(el("circle", { cx: X(a), cy: Y(omegaAt(a)), r: 6, class: "here" }));
+    if ($("predict").checked) {
+      const g = Number($("guess").value);
+      svg.append(el("line", { x1: X(g), x2: X(g), y1: Y(0), y2: Y(ys[1]), class: "guess" }));
+      svg.append(el("text", { x: X(g) + 4, y: Y(ys[1]) + 28, class: "note guess-label" }, "my guess"));
+    }
+    const caption = hidden()
+      ? `|ω| against the impact point; the dot is the chosen point, ω = ${unicode(out.omega)} v0/l.`
+      : `|ω| against the impact point: the dot is the chosen point (ω = ${unicode(out.omega)} v0/l); a* = ${out.aStar.spell(false)} l ≈ ${out.aStar.decimal(4)} l ${out.inside ? "is on the rod" : "is beyond the end (dashed)"}; ω_max = ${out.omegaMax.spell(false)} v0/l.`;
+    $("curve-caption").textContent = caption;
+  }
+
+  function drawThreshold() {
+    const svg = $("threshold");
+    svg.replaceChildren();
+    const { scene: s, out } = current;
+    const k = s.k.toNumber();
+    const p = s.pivot ? s.pivot.toNumber() : 0;
+    const arm = out.arm.toNumber();
+    const star = (mu) => (s.pivot ? Math.sqrt(mu * (k + p * p)) : Math.sqrt(k * (mu + 1)));
+    const xs = [-2, 2];
+    const top = Math.max(2, arm * 1.25);
+    const { X, Y } = axes(svg, [58, 18, 440, 220], xs, [0, top], "mass ratio M/m (log scale)", s.pivot ? "a*/l from the pivot" : "a*/l", [-2, -1, 0, 1, 2], [0, 0.5, 1, 1.5, 2, ...(top > 2.4 ? [2.5, 3] : [])].filter((t) => t <= top), (t) => tidy(10 ** t, 2));
+    // The curve up to the top of the frame (a* grows without bound with M/m).
+    let d = "";
+    for (let i = 0; i <= 400; i++) {
+      const lx = -2 + (4 * i) / 400;
+      const y = star(10 ** lx);
+      d += `${i ? "L" : "M"}${X(lx).toFixed(1)},${Y(Math.min(top, y)).toFixed(1)}`;
+      if (y > top) break;
+    }
+    svg.append(el("path", { d, class: "curve" }));
+    svg.append(el("line", { x1: X(-2), x2: X(2), y1: Y(arm), y2: Y(arm), class: "end" }));
+    svg.append(el("text", { x: X(-2) + 6, y: Y(arm) - 5, class: "note" }, s.pivot ? "end of the arm" : "end of the rod, a = l"));
+    if (!s.pivot && out.threshold.sign() > 0 && !hidden()) {
+      const lt = Math.log10(out.threshold.toNumber());
+      if (lt > -2 && lt < 2) {
+        svg.append(el("line", { x1: X(lt), x2: X(lt), y1: Y(0), y2: Y(top), class: "threshold" }));
+        svg.append(el("text", { x: X(lt) + 5, y: Y(0) - 8, class: "note threshold-label" }, `M = ${unicode(out.threshold)} m: a* reaches the end`));
+      }
+    }
+    const mu = s.M.toNumber();
+    if (!hidden() && mu >= 0.01 && mu <= 100) svg.append(el("circle", { cx: X(Math.log10(mu)), cy: Y(Math.min(top, out.aStar.toNumber())), r: 6, class: "here" }));
+    $("threshold-caption").textContent = hidden()
+      ? "Where the fastest-spin point lies for each mass ratio (hidden until you reveal)."
+      : s.pivot
+        ? `The fastest-spin distance from the pivot, a* = √(M (I/M + p²)/m), against M/m; it is on the rod while below the end of the arm (${unicode(out.arm)} l).`
+        : `a*/l against M/m for this rod: ${thresholdText(s, out)}; the dot is the chosen M/m.`;
+  }
+
+  // ---- the motion ------------------------------------------------------------------------
+  let motion = null;
+  let playing = false;
+  let last = null;
+  const canvas = $("stage");
+  const ctx = canvas.getContext("2d");
+
+  function drawStage() {
+    const { scene: s, out } = current;
+    const t = Number($("time").value);
+    $("time-value").value = t.toFixed(2).replace("-", "−");
+    const state = motion.at(t);
+    const W = canvas.width;
+    const H = canvas.height;
+    const scale = 110;
+    // A free rod is shown from the system's centre of mass (it moves at m v0/(m + M)); a
+    // pivoted one from the table.
+    const camera = s.pivot ? 0 : t / (1 + s.M.toNumber());
+    const px = (x) => W * 0.42 + (x - camera) * scale;
+    const py = (y) => H / 2 - y * scale;
+    ctx.clearRect(0, 0, W, H);
+    ctx.fillStyle = "#f4efe4";
+    ctx.fillRect(0, 0, W, H);
+    // The rod.
+    const [cx, cy] = state.centre;
+    const dir = [-Math.sin(state.phi), Math.cos(state.phi)];
+    ctx.lineCap = "round";
+    ctx.strokeStyle = "#6b4423";
+    ctx.lineWidth = 10;
+    ctx.beginPath();
+    ctx.moveTo(px(cx - dir[0]), py(cy - dir[1]));
+    ctx.lineTo(px(cx + dir[0]), py(cy + dir[1]));
+    ctx.stroke();
+    if (s.kind === "dumbbell") {
+      ctx.fillStyle = "#6b4423";
+      for (const sgn of [-1, 1]) {
+        ctx.beginPath();
+        ctx.arc(px(cx + sgn * dir[0]), py(cy + sgn * dir[1]), 12, 0, 2 * Math.PI);
+        ctx.fill();
+      }
+    }
+    ctx.fillStyle = "#000";
+    ctx.beginPath();
+    ctx.arc(px(cx), py(cy), 4, 0, 2 * Math.PI);
+    ctx.fill();
+    if (s.pivot) {
+      const pv = s.pivot.toNumber();
+      ctx.strokeStyle = "#000";
+      ctx.lineWidth = 2;
+      ctx.beginPath();
+      ctx.arc(px(0), py(pv), 8, 0, 2 * Math.PI);
+      ctx.stroke();
+    }
+    // The puck.
+    const [bx, by] = state.ball;
+    ctx.fillStyle = "#0072b2";
+    ctx.beginPath();
+    ctx.arc(px(bx) - 9, py(by), 9, 0, 2 * Math.PI);
+    ctx.fill();
+    // Labels.
+    ctx.fillStyle = "#222";
+    ctx.font = "15px sans-serif";
+    ctx.fillText(t < 0 ? "before the impact" : motion.second !== null && t >= motion.second ? "second impact" : "after the impact", 12, 22);
+    ctx.fillText(s.pivot ? "view: the table" : "view: moving with the centre of mass", 12, H - 12);
+    if (motion.second !== null && t >= motion.second) {
+      ctx.strokeStyle = "#d55e00";
+      ctx.lineWidth = 3;
+      ctx.beginPath();
+      ctx.arc(px(bx), py(by), 20, 0, 2 * Math.PI);
+      ctx.stroke();
+    }
+    drawBars(t);
+  }
+
+  function drawBars(t) {
+    const { scene: s, out } = current;
+    const K0 = out.K0;
+    const parts = t < 0
+      ? [["puck", K0, "puck"], ["rod, moving", Q.of(0), "move"], ["rod, turning", Q.of(0), "turn"]]
+      : [["puck", out.projectile, "puck"], ["rod, moving", out.translation, "move"], ["rod, turning", out.rotation, "turn"]];
+    if (t >= 0 && s.e.cmp(Q.of(1)) < 0) parts.push(["lost in the impact", out.lost, "lost"]);
+    let html = "<h3>Kinetic energy, as a share of <i>K</i><sub>0</sub></h3>";
+    const label = [];
+    for (const [name, value, cls] of parts) {
+      const share = value.div(K0);
+      // The exact share when it is short; its decimal (the exact one in the tooltip) otherwise.
+      const exact = share.pretty();
+      const shown = exact.length <= 9 ? exact : `≈ ${share.decimal(4)}`;
+      label.push(`${name} ${exact.length <= 9 ? exact : share.decimal(4)}`);
+      html += `<div class="bar"><span class="name">${name}</span><span class="track"><span class="fill ${cls}" style="width:${(share.toNumber() * 100).toFixed(2)}%"></span></span><span class="share" title="${exact}">${shown}</span></div>`;
+    }
+    $("bars").innerHTML = html;
+    $("bars").setAttribute("aria-label", `Kinetic energy as a share of the initial: ${label.join("; ")}`);
+  }
+
+  function draw() {
+    if (!current) return;
+    drawCurve();
+    drawThreshold();
+    drawStage();
+  }
+
+  const stepSize = 0.05;
+  function tick(now) {
+    if (!playing) return;
+    const time = $("time");
+    const dt = reduceMotion ? 0.5 : ((now - (last ?? now)) / 1000) * 0.8;
+    last = now;
+    const next = Number(time.value) + dt;
+    if (next >= Number(time.max)) {
+      time.value = time.max;
+      setPlaying(false);
+    } else {
+      time.value = next;
+    }
+    drawStage();
+    if (playing) {
+      if (reduceMotion) setTimeout(() => requestAnimationFrame(tick), 600);
+      else requestAnimationFrame(tick);
+    }
+  }
+  function setPlaying(on) {
+    playing = on;
+    last = null;
+    $("play").textContent = on ? "Pause" : "Play";
+    $("play").setAttribute("aria-pressed", on ? "true" : "false");
+    if (on) {
+      if (Number($("time").value) >= Number($("time").max)) $("time").value = $("time").min;
+      requestAnimationFrame(tick);
+    }
+  }
+  $("play").addEventListener("click", () => setPlaying(!playing));
+  $("step").addEventListener("click", () => {
+    $("time").value = Math.min(Number($("time").max), Number($("time").value) + stepSize * 5);
+    drawStage();
+  });
+  $("step-back").addEventListener("click", () => {
+    $("time").value = Math.max(Number($("time").min), Number($("time").value) - stepSize * 5);
+    drawStage();
+  });
+  $("time").addEventListener("input", drawStage);
+
+  // ---- the self-check against rodimpact ----------------------------------------------------
+  function selfCheck() {
+    const reference = JSON.parse($("reference").textContent);
+    const wrong = [];
+    for (const r of reference) {
+      const rod = r.input.rod;
+      const rg = rod.startsWith("rg=") ? parse(rod.slice(3)) : Q.of(1, 2);
+      const k = Physics.inertiaFactor(rod.startsWith("rg=") ? "gyration" : rod, rg);
+      const s = { M: parse(r.input.M), a: parse(r.input.a), e: parse(r.input.e), k, pivot: r.input.pivot === null ? null : parse(r.input.pivot) };
+      const out = Physics.solve(s);
+      const mine = {
+        v: out.v.toString(),
+        V: out.V.toString(),
+        omega: out.omega.toString(),
+        energy_lost: out.lost.toString(),
+        a_star: out.aStar.spell(true),
+        omega_max: out.omegaMax.spell(true),
+      };
+      if (s.pivot) mine.pivot_impulse = out.pivotImpulse.toString();
+      for (const [key, value] of Object.entries(mine)) {
+        if (r[key] !== value) wrong.push(`${JSON.stringify(r.input)} ${key}: page ${value}, rodimpact ${r[key]}`);
+      }
+    }
+    const line = $("self-check");
+    if (wrong.length) {
+      line.textContent = `Self-check FAILED: the page's arithmetic disagrees with rodimpact: ${wrong.join("; ")}`;
+      line.classList.add("failed");
+      console.error(line.textContent);
+    } else {
+      line.textContent = `Self-check: on opening, the page recomputed ${reference.length} scenes (free and pivoted, uniform, dumbbell and r_G rods, elastic to sticking) and agrees with rodimpact's exact answers on every value.`;
+    }
+  }
+
+  selfCheck();
+  update();
+})();

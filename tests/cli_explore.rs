@@ -1,0 +1,126 @@
+//! `rodimpact explore`: the interactive page, written whole, self-contained and small, with
+//! rodimpact's exact answers for its reference scenes embedded (the page checks its own
+//! arithmetic against them when it opens; `.ci/browser/run` drives it in headless Chromium).
+
+use std::process::Command;
+
+fn rodimpact(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn page() -> String {
+    let out = rodimpact(&["explore"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn a_small_page_that_asks_nothing_of_the_network() {
+    let page = page();
+    assert!(page.starts_with("<!DOCTYPE html>"));
+    assert!(page.len() < 3_000_000, "{} bytes", page.len());
+    assert!(!page.contains("{{"), "a template slot left unfilled");
+    for needle in [
+        " src=",
+        "<link",
+        "@import",
+        "url(",
+        "https://",
+        "<iframe",
+        "fetch(",
+        "XMLHttpRequest",
+    ] {
+        assert!(!page.contains(needle), "{needle}");
+    }
+    // The only http:// is the SVG namespace the script creates elements in.
+    assert_eq!(page.matches("http://").count(), 1);
+    assert!(page.contains("\"http://www.w3.org/2000/svg\""));
+    // Every control is labelled: a <label for=ID> or an aria-label on the input itself.
+    for id in [
+        "ratio",
+        "a",
+        "e",
+        "rg",
+        "pivot",
+        "guess",
+        "time",
+        "ratio-slider",
+        "a-slider",
+        "e-slider",
+    ] {
+        let tag_start = page
+            .find(&format!("<input id=\"{id}\""))
+            .unwrap_or_else(|| panic!("{id}"));
+        let tag = &page[tag_start..tag_start + page[tag_start..].find('>').unwrap()];
+        assert!(
+            page.contains(&format!("<label for=\"{id}\"")) || tag.contains("aria-label="),
+            "{id} has no label"
+        );
+    }
+}
+
+/// The embedded answers are rodimpact's: the default scene (M = m, a = l/2, elastic, uniform
+/// rod) has a*^2 = (M + m) l^2/(3 m) = 2/3 l^2, a* = sqrt(6)/3 l, omega = 2 a/(a*^2 + a^2) =
+/// 12/11 v0/l; the heavy rod M = 3m struck elastically at the end has a*^2 = 4/3 l^2, a* =
+/// 2 sqrt(3)/3 l beyond the end, and omega_max = omega(l) = 2 l/(4/3 + 1) = 6/7 v0/l; the pivoted rod
+/// (p = l/4, M = 3m/2, e = 1/2) has its pivot impulse -11/7 m v0.
+#[test]
+fn the_reference_answers_are_rodimpacts() {
+    let page = page();
+    let start = page
+        .find("<script type=\"application/json\" id=\"reference\">")
+        .unwrap();
+    let json = &page[start..];
+    let json = &json[json.find('>').unwrap() + 1..json.find("</script>").unwrap()];
+    let reference: serde_json::Value = serde_json::from_str(json).unwrap();
+    let first = &reference[0];
+    assert_eq!(first["input"]["M"], "1");
+    assert_eq!(first["a_star"], "sqrt(6)/3");
+    assert_eq!(first["omega"], "12/11");
+    let heavy = reference
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["input"]["M"] == "3")
+        .unwrap();
+    assert_eq!(heavy["a_star"], "2*sqrt(3)/3");
+    assert_eq!(heavy["omega_max"], "6/7");
+    let pivot = reference
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["input"]["pivot"] == "1/4")
+        .unwrap();
+    assert_eq!(pivot["pivot_impulse"], "-11/7");
+    assert_eq!(
+        reference.as_array().unwrap().len(),
+        rodimpact::report::explore::REFERENCE_SCENES.len()
+    );
+}
+
+#[test]
+fn out_writes_the_page_whole_and_refuses_a_bad_path() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("explore.html");
+    let out = rodimpact(&["explore", "--out", file.to_str().unwrap()]);
+    assert!(out.status.success());
+    assert!(out.stdout.is_empty());
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), page());
+    let missing = dir.path().join("none/explore.html");
+    let out = rodimpact(&["explore", "--out", missing.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.starts_with("error: out:") && err.trim_end().lines().count() == 1,
+        "{err}"
+    );
+    let out = rodimpact(&["explore", "--bogus"]);
+    assert_eq!(out.status.code(), Some(2));
+}
