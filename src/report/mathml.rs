@@ -7,7 +7,8 @@
 //! operators, `^` and `_` with one character or a braced group (both on one base give
 //! `msubsup`), `\frac{..}{..}`, `\sqrt{..}`, `\mathrm{..}`, `\left( .. \right)`,
 //! `\lvert .. \rvert`, the spaces `\,` `\;` `\quad`, the Greek letters and the named operators
-//! of [`command`]. Anything else is shown as written, in `<merror>`, never dropped.
+//! listed below (`\omega`, `\le`, `\max`, ...). Anything else is shown as written, in `<merror>`,
+//! never dropped.
 
 /// `latex` (math mode, without dollars) as a `<math>` element; `block` centres it on a line
 /// of its own (`display="block"`).
