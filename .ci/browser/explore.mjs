@@ -11,15 +11,18 @@ const solved = JSON.parse(readFileSync(solveJson, "utf8"));
 const url = pathToFileURL(file).href;
 const failures = [];
 const check = (ok, what) => {
-  console.log(`${ok ? "ok  " : "FAIL"} explore: ${what}`);
+  console.log(`${ok ? "ok  " : "FAIL"} explore (${name}): ${what}`);
   if (!ok) failures.push(what);
 };
 
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM,
-  headless: true,
-  args: ["--no-sandbox", "--disable-gpu"],
-});
+// BROWSER: chromium (default) or firefox; its executable in BROWSER_PATH.
+const firefox = process.env.BROWSER === "firefox";
+const browser = await puppeteer.launch(
+  firefox
+    ? { browser: "firefox", executablePath: process.env.BROWSER_PATH, headless: true }
+    : { executablePath: process.env.BROWSER_PATH, headless: true, args: ["--no-sandbox", "--disable-gpu"] },
+);
+const name = firefox ? "firefox" : "chromium";
 try {
   const page = await browser.newPage();
   const problems = [];
@@ -40,7 +43,7 @@ try {
   const summary = await text("#summary");
   check(summary.includes("a* = √6/3 l ≈ 0.8165 l") && summary.includes("lies on the rod"), `default scene shows a* = √6/3 l ≈ 0.8165 l: "${summary.slice(0, 80)}…"`);
   check((await cell("a*")) === "√6/3 l" && (await cell("ω")) === "12/11", "the table: a* = √6/3 l, ω = 12/11 at a = l/2");
-  await page.screenshot({ path: `${shots}/explore-default.png`, fullPage: true });
+  await page.screenshot({ path: `${shots}/${name}-explore-default.png`, fullPage: true });
 
   // Moving the a slider by keyboard changes the shown values.
   await page.focus("#a-slider");
@@ -66,7 +69,7 @@ try {
   }
   const lost = await cell("ΔK/K0");
   check(lost !== null, `e = 1/2 shows the energy lost (${lost})`);
-  await page.screenshot({ path: `${shots}/explore-heavy-rod.png`, fullPage: true });
+  await page.screenshot({ path: `${shots}/${name}-explore-heavy-rod.png`, fullPage: true });
 
   // A bad entry: named, marked invalid, no script error.
   await type("#ratio", "-2");
@@ -81,7 +84,7 @@ try {
   check(Math.abs(t - Math.PI * Math.sqrt(2 / 3)) < 2e-3 && second.includes("X19"), `second impact at t ≈ ${t} = π a*/v0 = ${(Math.PI * Math.sqrt(2 / 3)).toFixed(3)}`);
   await page.$eval("#time", (e, t) => { e.value = t; e.dispatchEvent(new Event("input")); }, String(t + 0.01));
   await page.evaluate(() => document.getElementById("motion").scrollIntoView());
-  await page.screenshot({ path: `${shots}/explore-second-impact.png` });
+  await page.screenshot({ path: `${shots}/${name}-explore-second-impact.png` });
   // Play runs the animation forward.
   await page.$eval("#time", (e) => { e.value = e.min; e.dispatchEvent(new Event("input")); });
   await page.click("#play");
@@ -102,7 +105,7 @@ try {
   await page.click("#reveal");
   const revealed = await text("#summary");
   check(revealed.includes("Your guess a/l = 4/5") && revealed.includes("a* ="), `after Reveal: "${revealed.slice(0, 90)}…"`);
-  await page.screenshot({ path: `${shots}/explore-pivoted-dumbbell.png`, fullPage: true });
+  await page.screenshot({ path: `${shots}/${name}-explore-pivoted-dumbbell.png`, fullPage: true });
 
   for (const p of problems) check(false, p);
 } finally {

@@ -7,22 +7,26 @@ const [file, claimCount, shots] = process.argv.slice(2);
 const url = pathToFileURL(file).href;
 const failures = [];
 const check = (ok, what) => {
-  console.log(`${ok ? "ok  " : "FAIL"} paper: ${what}`);
+  console.log(`${ok ? "ok  " : "FAIL"} paper (${name}): ${what}`);
   if (!ok) failures.push(what);
 };
 
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM,
-  headless: true,
-  args: ["--no-sandbox", "--disable-gpu"],
-});
+// BROWSER: chromium (default) or firefox; its executable in BROWSER_PATH.
+const firefox = process.env.BROWSER === "firefox";
+const browser = await puppeteer.launch(
+  firefox
+    ? { browser: "firefox", executablePath: process.env.BROWSER_PATH, headless: true }
+    : { executablePath: process.env.BROWSER_PATH, headless: true, args: ["--no-sandbox", "--disable-gpu"] },
+);
+const name = firefox ? "firefox" : "chromium";
 try {
   const page = await browser.newPage();
   const problems = [];
   page.on("console", (m) => { if (m.type() === "error" || m.type() === "warn") problems.push(`console ${m.type()}: ${m.text()}`); });
   page.on("pageerror", (e) => problems.push(`script error: ${e}`));
   page.on("requestfailed", (r) => problems.push(`request failed: ${r.url()}`));
-  page.on("request", (r) => { if (!r.url().startsWith(url.split("#")[0])) problems.push(`request beyond the page: ${r.url()}`); });
+  // data: URLs are the browser's own (Firefox's built-in MathML font), not the network.
+  page.on("request", (r) => { if (!r.url().startsWith(url.split("#")[0]) && !r.url().startsWith("data:")) problems.push(`request beyond the page: ${r.url()}`); });
   await page.setViewport({ width: 1100, height: 1400 });
   await page.goto(url, { waitUntil: "load" });
 
@@ -49,7 +53,7 @@ try {
   check(facts.numerHeight > 0 && facts.fracHeight > 1.8 * facts.numerHeight, `MathML laid out (a fraction ${facts.fracHeight.toFixed(1)} px tall, its numerator ${facts.numerHeight.toFixed(1)} px)`);
   check(facts.svgs.length === 3 && facts.svgs.every(([w, h]) => w > 300 && h > 200), `3 figures drawn ${JSON.stringify(facts.svgs)}`);
   check(JSON.stringify(facts.tables) === JSON.stringify(["T1", "T2", "T3", "T4", "T5"]), `tables ${facts.tables}`);
-  await page.screenshot({ path: `${shots}/paper-top.png` });
+  await page.screenshot({ path: `${shots}/${name}-paper-top.png` });
 
   // The buttons, by keyboard: focus and press Enter.
   await page.focus("#unfold");
@@ -63,16 +67,29 @@ try {
   await page.goto(`${url}#C15`, { waitUntil: "load" });
   const c15 = await page.$eval("#C15", (d) => ({ open: d.open, text: d.innerText }));
   check(c15.open && c15.text.includes("Identity certificate"), "#C15 opens C15's certificate");
-  await page.screenshot({ path: `${shots}/paper-C15.png` });
+  await page.screenshot({ path: `${shots}/${name}-paper-C15.png` });
   for (const id of ["T2", "figure1"]) {
     await page.evaluate((id) => document.getElementById(id).scrollIntoView(), id);
-    await page.screenshot({ path: `${shots}/paper-${id}.png` });
+    await page.screenshot({ path: `${shots}/${name}-paper-${id}.png` });
   }
 
   // Print: every certificate unfolded on paper, and folded back after.
-  const pdf = await page.pdf({ format: "A4", path: `${shots}/paper.pdf` });
-  const pages = (Buffer.from(pdf).toString("latin1").match(/\/Type\s*\/Page[^s]/g) || []).length;
-  check(pages > 60, `printed on ${pages} A4 pages, every certificate unfolded`);
+  const pdf = Buffer.from(await page.pdf({ format: "A4", path: `${shots}/${name}-paper.pdf` }));
+  // The page count from the PDF's page tree (Chromium writes it plainly; Firefox compresses it).
+  const counts = [...pdf.toString("latin1").matchAll(/\/Type\s*\/Pages[^>]*?\/Count\s+(\d+)|\/Count\s+(\d+)[^>]*?\/Type\s*\/Pages/g)].map((m) => Number(m[1] || m[2]));
+  const pages = counts.length ? Math.max(...counts) : 0;
+  if (pages > 0) {
+    check(pages > 60, `printed on ${pages} A4 pages, every certificate unfolded`);
+  } else {
+    check(pdf.length > 100000, `printed (${(pdf.length / 1e6).toFixed(1)} MB of PDF; its page tree is compressed)`);
+    const unfolded = await page.evaluate(() => {
+      window.dispatchEvent(new Event("beforeprint"));
+      const all = [...document.querySelectorAll("details.claim")].every((d) => d.open);
+      window.dispatchEvent(new Event("afterprint"));
+      return all;
+    });
+    check(unfolded, "before printing every certificate is unfolded");
+  }
   check(await page.$$eval("details.claim", (ds) => ds.filter((d) => d.open).map((d) => d.id).join(",")) === "C15", "after printing, only C15 is open again");
 
   for (const p of problems) check(false, p);
