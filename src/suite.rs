@@ -20,6 +20,18 @@
 //! | `pivot-cop` | pivot at the end, struck at the centre of percussion | a zero pivot impulse |
 //! | `pivot-at-impact` | pivot at the impact point | the joint takes the whole impulse |
 //! | `pivot-low-speed` | pivot at the centre, v0 = 1/2, 1, 2 | thresholds and joints together |
+//! | `oblique-frictionless` | v0t along the rod, mu = 0 | the slide must pass through unchanged |
+//! | `oblique-slide` | v0t = v0, mu = 1/10, a = ±l/2: the contact slides | Coulomb's cone, spin from friction |
+//! | `oblique-stick` | v0t = 1, mu = 1: the contact sticks | static friction in one impact |
+//! | `oblique-threshold` | mu = mu* exactly, and 9/10 and 11/10 of it | stick against slide at the boundary |
+//! | `spinning-disc` | a spinning disc, no v0t; sticking and sliding | spin coupled to the slip |
+//! | `moving-rod` | the rod drifting before the impact | Galilean invariance |
+//! | `pivot-friction` | pivot at the centre, v0t towards it; sticking and sliding | the joint takes the tangential impulse |
+//!
+//! The oblique classes (issue 20) strike with a solid disc of radius l/20 (the radius every
+//! engine's ball has), with the rod thin: engines model it as a box of half-thickness l/100, so
+//! their tangential impulse acts l/100 off the axis and turns the rod a little (docs/engines.md
+//! gives the size of that effect); the thin rod's exact omega does not depend on friction (X27).
 
 use crate::field::{Q, q};
 use crate::scene::{RodInertia, Scene};
@@ -55,11 +67,32 @@ pub struct SuiteScene {
     pub e: Q,
     /// Pivot position, or `None` for a free rod.
     pub pivot: Option<Q>,
+    /// The oblique part (issue 20), or `None` for the paper's perpendicular frictionless impact.
+    pub oblique: Option<SuiteOblique>,
+}
+
+/// The oblique part of a suite scene: the projectile's slide, friction, the disc and the rod's
+/// motion before the impact (the rod never turns before it in the suite).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SuiteOblique {
+    /// The projectile's velocity along the rod, v0t.
+    pub v0t: Q,
+    /// Coulomb friction coefficient mu.
+    pub mu: Q,
+    /// The disc's radius.
+    pub radius: Q,
+    /// The disc's spin before the impact (counterclockwise).
+    pub spin: Q,
+    /// The rod centre's velocity across the rod before the impact.
+    pub rod_v: Q,
+    /// The rod centre's velocity along the rod before the impact.
+    pub rod_vt: Q,
 }
 
 /// The header of the suite's CSV (the columns `rodimpact batch` reads, with `id` and `class`
 /// passed through).
-pub const HEADER: &str = "id,class,m,M,l,a,v0,rod,e,pivot";
+pub const HEADER: &str =
+    "id,class,m,M,l,a,v0,rod,e,pivot,v0t,mu,radius,spin,rod-v,rod-vt,rod-omega";
 
 /// A variation of the base scene: the fields it changes.
 #[derive(Clone, Default)]
@@ -72,6 +105,20 @@ struct Vary {
     rod: Option<RodInertia>,
     e: Option<Q>,
     pivot: Option<Q>,
+    oblique: Option<SuiteOblique>,
+}
+
+/// The base of the oblique classes: a disc of radius l/20, no slide, no friction, no spin, the
+/// rod at rest.
+fn oblique_base() -> SuiteOblique {
+    SuiteOblique {
+        v0t: q(0, 1),
+        mu: q(0, 1),
+        radius: q(1, 20),
+        spin: q(0, 1),
+        rod_v: q(0, 1),
+        rod_vt: q(0, 1),
+    }
 }
 
 impl Vary {
@@ -111,6 +158,39 @@ impl Vary {
             ..self
         }
     }
+    /// The oblique part, changed by `change` from what the variation has (or the base).
+    fn oblique(self, change: impl FnOnce(&mut SuiteOblique)) -> Self {
+        let mut o = self.oblique.clone().unwrap_or_else(oblique_base);
+        change(&mut o);
+        Vary {
+            oblique: Some(o),
+            ..self
+        }
+    }
+    fn v0t(self, x: Q) -> Self {
+        self.oblique(|o| o.v0t = x)
+    }
+    fn mu(self, x: Q) -> Self {
+        self.oblique(|o| o.mu = x)
+    }
+    fn spin(self, x: Q) -> Self {
+        self.oblique(|o| o.spin = x)
+    }
+    fn drift(self, v: Q, vt: Q) -> Self {
+        self.oblique(|o| {
+            o.rod_v = v;
+            o.rod_vt = vt;
+        })
+    }
+}
+
+/// The friction coefficient at which the base scene struck at a = l/2 with `v0t` (and the
+/// disc of radius 1/20, m = M = l = 1, v0 = 3, uniform rod, `e`) is on the stick/slide boundary:
+/// mu* = u_t k_n/((1 + e) u_n k_t), k_n = 1/m + 1/M + a^2/I = 11/4, k_t = 3/m + 1/M = 4 (X28).
+fn threshold_mu(v0t: Q, e: Q) -> Q {
+    let k_n = q(11, 4);
+    let k_t = q(4, 1);
+    v0t * &k_n / &((q(1, 1) + &e) * &q(3, 1) * &k_t)
 }
 
 fn at() -> Vary {
@@ -133,6 +213,7 @@ fn class(name: &'static str, variations: Vec<Vary>) -> impl Iterator<Item = Suit
             rod: v.rod.unwrap_or(RodInertia::Uniform),
             e: v.e.unwrap_or_else(|| q(1, 1)),
             pivot: v.pivot,
+            oblique: v.oblique,
         })
 }
 
@@ -153,13 +234,13 @@ fn near(end: Q) -> Vec<Vary> {
     v
 }
 
-/// The engine suite, in order: 88 scenes in 12 classes.
+/// The engine suite, in order: 107 scenes in 19 classes (the last 7 oblique).
 ///
 /// # Examples
 /// ```
 /// use rodimpact::suite::engine_suite;
 /// let suite = engine_suite();
-/// assert_eq!(suite.len(), 88);
+/// assert_eq!(suite.len(), 107);
 /// assert_eq!(suite[0].id, "free-inside-1");
 /// assert!(suite.iter().all(|s| s.scene().is_ok()));
 /// ```
@@ -240,6 +321,39 @@ pub fn engine_suite() -> Vec<SuiteScene> {
         .to_vec();
     pivot_low_speed.push(struck_end.v0(q(1, 2)).e(q(1, 2)));
 
+    let frictionless = vec![
+        at().v0t(q(1, 1)),
+        at().v0t(q(3, 1)),
+        at().v0t(q(-2, 1)),
+        at().v0t(q(1, 1)).e(q(1, 2)),
+    ];
+    let sliding = at().v0t(q(3, 1)).mu(q(1, 10));
+    let slide = vec![
+        sliding.clone(),
+        sliding.clone().e(q(1, 2)),
+        sliding.a(q(-1, 2)),
+    ];
+    let sticking_oblique = at().v0t(q(1, 1)).mu(q(1, 1));
+    let stick = vec![sticking_oblique.clone(), sticking_oblique.e(q(1, 2))];
+    let boundary = threshold_mu(q(3, 1), q(1, 1));
+    let threshold = [q(1, 1), q(9, 10), q(11, 10)]
+        .map(|f| at().v0t(q(3, 1)).mu(&boundary * &f))
+        .to_vec();
+    let spinning_disc = vec![
+        at().spin(q(20, 1)).mu(q(1, 1)),
+        at().spin(q(20, 1)).mu(q(1, 20)),
+        at().spin(q(-20, 1)).mu(q(1, 1)),
+    ];
+    let moving_rod = vec![
+        at().v0t(q(1, 1)).mu(q(1, 2)).drift(q(-1, 1), q(1, 2)),
+        at().v0t(q(1, 1)).mu(q(1, 2)).drift(q(1, 1), q(-1, 2)),
+    ];
+    // Struck inside the rod and sliding towards the pivot: never over the rod's end.
+    let pivot_friction = vec![
+        at().pivot(q(0, 1)).v0t(q(-2, 1)).mu(q(1, 2)),
+        at().pivot(q(0, 1)).v0t(q(-2, 1)).mu(q(1, 20)),
+    ];
+
     class("free-inside", free_inside)
         .chain(class("free-end", near(q(1, 1))))
         .chain(class("free-near-end", near(q(999, 1000))))
@@ -252,6 +366,13 @@ pub fn engine_suite() -> Vec<SuiteScene> {
         .chain(class("pivot-cop", pivot_cop))
         .chain(class("pivot-at-impact", pivot_at_impact))
         .chain(class("pivot-low-speed", pivot_low_speed))
+        .chain(class("oblique-frictionless", frictionless))
+        .chain(class("oblique-slide", slide))
+        .chain(class("oblique-stick", stick))
+        .chain(class("oblique-threshold", threshold))
+        .chain(class("spinning-disc", spinning_disc))
+        .chain(class("moving-rod", moving_rod))
+        .chain(class("pivot-friction", pivot_friction))
         .collect()
 }
 
@@ -274,6 +395,14 @@ impl SuiteScene {
             .v0(self.v0.clone())
             .rod(self.rod.clone())
             .e(self.e.clone());
+        let builder = match &self.oblique {
+            Some(o) => builder
+                .v0t(o.v0t.clone())
+                .mu(o.mu.clone())
+                .disc(o.radius.clone(), o.spin.clone())
+                .rod_before(o.rod_v.clone(), o.rod_vt.clone(), q(0, 1)),
+            None => builder,
+        };
         match &self.pivot {
             Some(p) => builder.pivot(p.clone()).build(),
             None => builder.build(),
@@ -286,7 +415,9 @@ impl SuiteScene {
     /// ```
     /// use rodimpact::suite::engine_suite;
     /// let suite = engine_suite();
-    /// assert_eq!(suite[6].csv_line(), "free-inside-7,free-inside,1,1,1,1/2,3,I=1/5,1/2,\n");
+    /// assert_eq!(suite[6].csv_line(), "free-inside-7,free-inside,1,1,1,1/2,3,I=1/5,1/2,,,,,,,,\n");
+    /// let slide = suite.iter().find(|s| s.id == "oblique-slide-1").unwrap();
+    /// assert_eq!(slide.csv_line(), "oblique-slide-1,oblique-slide,1,1,1,1/2,3,uniform,1,,3,1/10,1/20,0,0,0,0\n");
     /// ```
     pub fn csv_line(&self) -> String {
         let rod = match &self.rod {
@@ -296,8 +427,15 @@ impl SuiteScene {
             RodInertia::Moment(i) => format!("I={i}"),
         };
         let pivot = self.pivot.as_ref().map(Q::to_string).unwrap_or_default();
+        let oblique = match &self.oblique {
+            Some(o) => format!(
+                "{},{},{},{},{},{},0",
+                o.v0t, o.mu, o.radius, o.spin, o.rod_v, o.rod_vt
+            ),
+            None => ",,,,,,".to_string(),
+        };
         format!(
-            "{},{},{},{},{},{},{},{rod},{},{pivot}\n",
+            "{},{},{},{},{},{},{},{rod},{},{pivot},{oblique}\n",
             self.id, self.class, self.m, self.rod_mass, self.l, self.a, self.v0, self.e
         )
     }
@@ -309,8 +447,9 @@ impl SuiteScene {
 /// ```
 /// use rodimpact::suite::{engine_suite, suite_csv};
 /// let csv = suite_csv(&engine_suite());
-/// assert!(csv.starts_with("id,class,m,M,l,a,v0,rod,e,pivot\nfree-inside-1,free-inside,1,1,1,1/2,3,uniform,1,\n"));
-/// assert_eq!(csv.lines().count(), 89);
+/// assert!(csv.starts_with("id,class,m,M,l,a,v0,rod,e,pivot,v0t,mu,radius,spin,rod-v,rod-vt,rod-omega\n\
+///     free-inside-1,free-inside,1,1,1,1/2,3,uniform,1,,,,,,,,\n"));
+/// assert_eq!(csv.lines().count(), 108);
 /// ```
 pub fn suite_csv(scenes: &[SuiteScene]) -> String {
     let mut out = format!("{HEADER}\n");
@@ -344,6 +483,13 @@ mod tests {
             ("pivot-cop", 6),
             ("pivot-at-impact", 3),
             ("pivot-low-speed", 4),
+            ("oblique-frictionless", 4),
+            ("oblique-slide", 3),
+            ("oblique-stick", 2),
+            ("oblique-threshold", 3),
+            ("spinning-disc", 3),
+            ("moving-rod", 2),
+            ("pivot-friction", 2),
         ]
         .to_vec();
         for (class, n) in sizes {

@@ -13,11 +13,14 @@ kinetic energies of the engine's own state (all velocity components and spin).
 import csv
 import math
 import os
+import sys
 from fractions import Fraction
 
 HEADER = ("id,engine,version,float,dt,iters,class,m,M,l,a,v0,rod,e,pivot,"
           "v,V,omega,J,energy_before,energy_after").split(",")
-SUITE_COLUMNS = "id,class,m,M,l,a,v0,rod,e,pivot".split(",")
+SUITE_COLUMNS = ("id,class,m,M,l,a,v0,rod,e,pivot,"
+                 "v0t,mu,radius,spin,rod-v,rod-vt,rod-omega").split(",")
+OBLIQUE_COLUMNS = SUITE_COLUMNS[10:]
 
 # Geometry relative to the rod's half-length l (the same as engines/rapier2d): the rod is a box
 # of half extents (0.01 l, l), the ball's radius 0.05 l, and the ball starts 3.5 steps (at v0)
@@ -65,11 +68,19 @@ def rod_inertia(rod, M, l):
 
 
 def load_suite(path=SUITE):
+    """The suite's perpendicular frictionless scenes. The oblique ones (a slide along the rod,
+    friction, a spinning ball, a drifting rod: issue 20) are not set up in these engines' scripts
+    yet; they are skipped, and the script says how many (Rapier runs them: engines/rapier2d)."""
     with open(path, newline="") as f:
         reader = csv.DictReader(f)
         if reader.fieldnames != SUITE_COLUMNS:
             raise SystemExit(f"error: suite header must be {','.join(SUITE_COLUMNS)}")
-        return [Scene(row) for row in reader]
+        rows = list(reader)
+    oblique = [r for r in rows if any(r[c].strip() for c in OBLIQUE_COLUMNS)]
+    if oblique:
+        print(f"note: {len(oblique)} oblique scenes skipped (not set up for this engine)",
+              file=sys.stderr)
+    return [Scene(r) for r in rows if r not in oblique]
 
 
 def steps(dt):

@@ -39,7 +39,23 @@ pub fn run(scene: &Scene, settings: Settings, model: PivotModel) -> Outcome {
     let e = real(scene.e);
     let inertia = rod_inertia(scene);
     let half_thickness = l * real(Geometry::HALF_THICKNESS_PER_L);
-    let radius = l * real(Geometry::BALL_RADIUS_PER_L);
+    // The oblique scenes state the ball's radius (l/20 in the suite, the same as the others').
+    let radius = match scene.oblique {
+        Some(o) => real(o.radius),
+        None => l * real(Geometry::BALL_RADIUS_PER_L),
+    };
+    // Oblique: the ball slides along the rod and spins, friction mu at the contact (both
+    // colliders mu, combined by their average), the rod drifts. Zero for the other scenes.
+    let zero = Ratio { num: 0, den: 1 };
+    let o = scene.oblique;
+    let [v0t, mu, spin, rod_v, rod_vt] = [
+        o.map_or(zero, |o| o.v0t),
+        o.map_or(zero, |o| o.mu),
+        o.map_or(zero, |o| o.spin),
+        o.map_or(zero, |o| o.rod_v),
+        o.map_or(zero, |o| o.rod_vt),
+    ]
+    .map(real);
 
     let mut world = PhysicsWorld {
         gravity: Vector::ZERO,
@@ -58,13 +74,16 @@ pub fn run(scene: &Scene, settings: Settings, model: PivotModel) -> Outcome {
         }
         _ => MassProperties::new(Vector::ZERO, big_m, inertia),
     };
-    let mut rod_body = RigidBodyBuilder::dynamic().can_sleep(false);
+    let mut rod_body = RigidBodyBuilder::dynamic()
+        .can_sleep(false)
+        .linvel(Vector::new(rod_v, rod_vt));
     if let (PivotModel::LockedTranslations, Some(_)) = (model, pivot) {
         rod_body = rod_body.lock_translations();
     }
     let rod_collider = ColliderBuilder::cuboid(half_thickness, l)
         .mass_properties(rod_mass_properties)
-        .friction(0.0)
+        .friction(mu)
+        .friction_combine_rule(CoefficientCombineRule::Average)
         .restitution(e)
         .restitution_combine_rule(CoefficientCombineRule::Average);
     let (rod, rod_collider) = world.insert(rod_body, rod_collider);
@@ -78,15 +97,26 @@ pub fn run(scene: &Scene, settings: Settings, model: PivotModel) -> Outcome {
         world.impulse_joints.insert(ground, rod, joint, true);
     }
 
-    // The ball: starts 3.5 steps before touching the rod's face, level with the impact point.
-    let gap = real(Geometry::APPROACH_STEPS) * v0 * dt;
+    // The ball: starts 3.5 steps (at the approach speed) before touching the rod's face, level
+    // with the impact point. An oblique ball also slides along the rod while it approaches, and
+    // Rapier's speculative contact may take its lever arm from any step of the approach (at
+    // dt = 1/1000 from the first), so an oblique ball starts half a step from the face: the
+    // impact point is then a to within half a step's slide, |v0t - Vt0| dt/2.
+    let approach_steps = if scene.oblique.is_some() {
+        0.5
+    } else {
+        real(Geometry::APPROACH_STEPS)
+    };
+    let gap = (v0 - rod_v) * approach_steps * dt;
     let ball_body = RigidBodyBuilder::dynamic()
         .can_sleep(false)
         .translation(Vector::new(-(half_thickness + radius) - gap, a))
-        .linvel(Vector::new(v0, 0.0));
+        .linvel(Vector::new(v0, v0t))
+        .angvel(spin);
     let ball_collider = ColliderBuilder::ball(radius)
         .mass_properties(MassProperties::new(Vector::ZERO, m, 0.5 * m * radius * radius))
-        .friction(0.0)
+        .friction(mu)
+        .friction_combine_rule(CoefficientCombineRule::Average)
         .restitution(e)
         .restitution_combine_rule(CoefficientCombineRule::Average);
     let (ball, ball_collider) = world.insert(ball_body, ball_collider);
@@ -114,16 +144,29 @@ pub fn run(scene: &Scene, settings: Settings, model: PivotModel) -> Outcome {
         centre_velocity = rod_state.rotation().inverse().transform_vector(centre_velocity);
     }
     let energy_after = kinetic_energy(ball_state) + kinetic_energy(rod_state);
-    Outcome {
-        cells: [
-            ball_state.linvel().x,
-            centre_velocity.x,
-            -rod_state.angvel(),
-            impulse,
-            energy_before,
-            energy_after,
+    let normal = [
+        ball_state.linvel().x,
+        centre_velocity.x,
+        -rod_state.angvel(),
+        impulse,
+        energy_before,
+        energy_after,
+    ]
+    .map(shortest);
+    // Along the rod (+y), read as V is: the ball's and a free rod's centre velocity in the world
+    // (both constant after the contact), a pivoted rod's centre in the rod's own frame; and the
+    // ball's spin (counterclockwise, as rodimpact's `spin`).
+    let tangential = match scene.oblique {
+        Some(_) => [
+            ball_state.linvel().y,
+            centre_velocity.y,
+            ball_state.angvel(),
         ]
         .map(shortest),
+        None => [String::new(), String::new(), String::new()],
+    };
+    Outcome {
+        cells: [normal.as_slice(), tangential.as_slice()].concat(),
     }
 }
 

@@ -66,9 +66,11 @@ pub enum PivotModel {
 }
 
 /// The engine's claims for one run, each printed as the shortest round-trip decimal of the
-/// engine's float: v, V, omega, J, energy_before, energy_after.
+/// engine's float: v, V, omega, J, energy_before, energy_after, and for an oblique scene the
+/// velocities along the rod and the ball's spin (claimed_vt, claimed_Vt, claimed_spin; empty
+/// otherwise).
 pub struct Outcome {
-    pub cells: [String; 6],
+    pub cells: Vec<String>,
 }
 
 mod single {
@@ -95,15 +97,27 @@ fn all_settings() -> Vec<Settings> {
     all
 }
 
+/// The columns of a log of the perpendicular scenes (the suite's first ten, then the claims).
+const HEADER: &str = "id,engine,version,float,dt,iters,class,m,M,l,a,v0,rod,e,pivot,\
+                      v,V,omega,J,energy_before,energy_after";
+/// The columns of a log of the oblique scenes: every suite column, the claims rodimpact's
+/// `batch` checks for an oblique scene (v, V, omega), then what it passes through for the
+/// comparison along the rod (claimed_vt, claimed_Vt, claimed_spin) and the engine's impulse
+/// and energies (engine_J, engine_energy_before, engine_energy_after).
+const OBLIQUE_HEADER: &str = "id,engine,version,float,dt,iters,class,m,M,l,a,v0,rod,e,pivot,\
+                              v0t,mu,radius,spin,rod-v,rod-vt,rod-omega,v,V,omega,\
+                              claimed_vt,claimed_Vt,claimed_spin,engine_J,engine_energy_before,engine_energy_after";
+
+/// Runs every scene at every setting and writes two logs: the perpendicular scenes
+/// (`rapier2d-VERSION-FLOAT.csv`) and the oblique ones (`...-oblique.csv`).
 fn write_runs(
     out: &Path,
     float: &str,
     scenes: &[suite::Scene],
     run: fn(&suite::Scene, Settings, PivotModel) -> Outcome,
 ) -> Result<usize, String> {
-    let mut text = String::from(
-        "id,engine,version,float,dt,iters,class,m,M,l,a,v0,rod,e,pivot,v,V,omega,J,energy_before,energy_after\n",
-    );
+    let mut perpendicular = format!("{HEADER}\n");
+    let mut oblique = format!("{OBLIQUE_HEADER}\n");
     let mut rows = 0;
     for (engine, model) in [
         ("rapier2d", PivotModel::RevoluteJoint),
@@ -114,23 +128,38 @@ fn write_runs(
                 continue;
             }
             for settings in all_settings() {
-                let outcome = run(scene, settings, model);
-                text.push_str(&format!(
-                    "{},{engine},{RAPIER_VERSION},{float},{},{},{},{}\n",
-                    scene.cells[0],
-                    settings.dt,
-                    settings.iters,
-                    scene.cells[1..].join(","),
-                    outcome.cells.join(","),
-                ));
+                let c = run(scene, settings, model).cells;
+                let head = format!(
+                    "{},{engine},{RAPIER_VERSION},{float},{},{}",
+                    scene.cells[0], settings.dt, settings.iters
+                );
+                if scene.oblique.is_some() {
+                    oblique.push_str(&format!(
+                        "{head},{},{},{},{},{},{}\n",
+                        scene.cells[1..].join(","),
+                        c[..3].join(","),
+                        c[6..9].join(","),
+                        c[3],
+                        c[4],
+                        c[5]
+                    ));
+                } else {
+                    perpendicular.push_str(&format!(
+                        "{head},{},{}\n",
+                        scene.cells[1..10].join(","),
+                        c[..6].join(",")
+                    ));
+                }
                 rows += 1;
             }
         }
     }
-    let path = out.join(format!("rapier2d-{RAPIER_VERSION}-{float}.csv"));
-    let mut file = fs::File::create(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-    file.write_all(text.as_bytes())
-        .map_err(|e| format!("{}: {e}", path.display()))?;
+    for (name, text) in [("", perpendicular), ("-oblique", oblique)] {
+        let path = out.join(format!("rapier2d-{RAPIER_VERSION}-{float}{name}.csv"));
+        let mut file = fs::File::create(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        file.write_all(text.as_bytes())
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+    }
     Ok(rows)
 }
 

@@ -53,10 +53,22 @@ pub enum Rod {
     Inertia(Ratio),
 }
 
+/// The oblique part of a scene (issue 20): the ball's slide along the rod and spin, friction,
+/// and the rod's drift before the impact (the suite's rods never turn before it).
+#[derive(Clone, Copy, Debug)]
+pub struct Oblique {
+    pub v0t: Ratio,
+    pub mu: Ratio,
+    pub radius: Ratio,
+    pub spin: Ratio,
+    pub rod_v: Ratio,
+    pub rod_vt: Ratio,
+}
+
 /// One scene of the suite: the cells as written plus the parsed numbers.
 #[derive(Clone, Debug)]
 pub struct Scene {
-    /// The ten cells `id,class,m,M,l,a,v0,rod,e,pivot`, verbatim.
+    /// The cells of [`HEADER`], verbatim.
     pub cells: Vec<String>,
     pub m: Ratio,
     pub big_m: Ratio,
@@ -67,10 +79,14 @@ pub struct Scene {
     pub e: Ratio,
     /// Signed pivot position on the rod, or `None` for a free rod.
     pub pivot: Option<Ratio>,
+    /// The oblique part, or `None` for a perpendicular frictionless impact.
+    pub oblique: Option<Oblique>,
 }
 
 /// The header the suite must have, in this order.
-pub const HEADER: &str = "id,class,m,M,l,a,v0,rod,e,pivot";
+pub const HEADER: &str =
+    "id,class,m,M,l,a,v0,rod,e,pivot,v0t,mu,radius,spin,rod-v,rod-vt,rod-omega";
+const COLUMNS: usize = 17;
 
 fn parse_rod(text: &str) -> Result<Rod, String> {
     match text {
@@ -104,9 +120,9 @@ pub fn parse_suite(text: &str) -> Result<Vec<Scene>, String> {
             continue;
         }
         let cells: Vec<String> = line.split(',').map(|c| c.trim().to_string()).collect();
-        if cells.len() != 10 {
+        if cells.len() != COLUMNS {
             return Err(format!(
-                "line {line_no}: expected 10 cells, got {}",
+                "line {line_no}: expected {COLUMNS} cells, got {}",
                 cells.len()
             ));
         }
@@ -125,6 +141,23 @@ pub fn parse_suite(text: &str) -> Result<Vec<Scene>, String> {
                 None
             } else {
                 Some(number(9, "pivot")?)
+            },
+            oblique: if cells[10..].iter().all(|c| c.is_empty()) {
+                None
+            } else {
+                if number(16, "rod-omega")?.num != 0 {
+                    return Err(format!(
+                        "line {line_no}: a rod turning before the impact is not set up"
+                    ));
+                }
+                Some(Oblique {
+                    v0t: number(10, "v0t")?,
+                    mu: number(11, "mu")?,
+                    radius: number(12, "radius")?,
+                    spin: number(13, "spin")?,
+                    rod_v: number(14, "rod-v")?,
+                    rod_vt: number(15, "rod-vt")?,
+                })
             },
             cells,
         };
