@@ -400,10 +400,13 @@ proptest::proptest! {
 
 /// Runs `rodimpact batch` on an oblique fixture (it checks v, V, omega, and appends the exact
 /// vt, Vt, spin_after, tangential_impulse and contact) and returns its rows.
-fn oblique_rows(fixture: &str) -> Vec<Row> {
+fn oblique_rows(fixture: &str, runs: usize) -> Vec<Row> {
     let path = data_file(&format!("engines/{fixture}"));
     let (_, stdout, stderr) = rodimpact(&["batch", path.as_str()]);
-    assert!(stderr.contains("laws held exactly on 189"), "{stderr}");
+    assert!(
+        stderr.contains(&format!("{runs} rows, laws held exactly on {runs}")),
+        "{stderr}"
+    );
     let mut lines = stdout.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     lines
@@ -439,8 +442,7 @@ fn number(cell: &str) -> f64 {
 ///   translations is right to 0.3 %.
 #[test]
 fn rapier_passes_the_slide_through_but_halves_coulomb_friction() {
-    let rows = oblique_rows("rapier2d-0.36.1-f64-oblique.csv");
-    assert_eq!(rows.len(), 189);
+    let rows = oblique_rows("rapier2d-0.36.1-f64-oblique.csv", 189);
     let fine = |r: &Row| r.get("iters") == "16" && r.get("dt") != "1/60";
     let free = |r: &Row| r.get("engine") == "rapier2d";
     let mut checked = [0; 4];
@@ -465,7 +467,9 @@ fn rapier_passes_the_slide_through_but_halves_coulomb_friction() {
         }
         if r.get("contact") == "slide" && class != "pivot-friction" {
             let coulomb = number(r.get("tangential_impulse"));
-            let rapier = mu * number(r.get("engine_J")) / (1.0 + e);
+            // The engine's normal impulse, from the ball's momentum across the rod.
+            let jn = m * (number(r.get("v0")) - number(r.get("v")));
+            let rapier = mu * jn / (1.0 + e);
             assert!(
                 (jt_engine - rapier).abs() < 2e-2 * rapier.abs(),
                 "{}: {jt_engine} against {rapier}",
@@ -509,4 +513,86 @@ fn rapier_passes_the_slide_through_but_halves_coulomb_friction() {
         let err = number(r.get("omega_rel_error"));
         assert!(err < 3e-3, "{}: locked translations {err}", r.get("id"));
     }
+}
+
+/// Chipmunk (pymunk 7.3.1, f64) on the oblique scenes: Coulomb's friction as it should be, the
+/// answer converging as dt shrinks:
+///
+/// - without friction the slide passes through untouched, and v, V, omega approach the
+///   perpendicular impact's at first order in dt (the ball slides along the rod by v0t dt in the
+///   step of the contact, which moves the impact point): below 1e-2 at dt = 1/1000, about 4.2
+///   times smaller than at 1/240;
+/// - a sliding contact gets mu J of its own normal impulse J (to 1 %; J from the ball's momentum
+///   across the rod, since its summed `total_impulse` includes the friction), so at dt = 1/1000 its
+///   tangential impulse is the exact one to 1 %; at the threshold mu* it sticks, as it should;
+/// - the pivot joint is right to 0.3 % at dt = 1/1000.
+#[test]
+fn chipmunk_applies_coulomb_friction_and_converges_with_dt() {
+    let rows = oblique_rows("pymunk-7.3.1-f64-oblique.csv", 57);
+    let at = |id: &str, dt: &str| {
+        rows.iter()
+            .find(|r| r.get("id") == id && r.get("dt") == dt)
+            .unwrap_or_else(|| panic!("{id} {dt}"))
+    };
+    let mut checked = [0; 3];
+    for r in &rows {
+        let (mu, m) = (number(r.get("mu")), number(r.get("m")));
+        let jt_engine = m * (number(r.get("v0t")) - number(r.get("claimed_vt")));
+        if r.get("class") == "oblique-frictionless" {
+            assert_eq!(
+                number(r.get("claimed_vt")),
+                number(r.get("v0t")),
+                "{}",
+                r.get("id")
+            );
+            assert_eq!(number(r.get("claimed_Vt")), 0.0);
+            assert_eq!(number(r.get("claimed_spin")), 0.0);
+            if r.get("dt") == "1/1000" {
+                let coarse = at(r.get("id"), "1/240");
+                for claim in ["v", "V", "omega"] {
+                    let column = format!("{claim}_rel_error");
+                    let (fine, coarse) = (number(r.get(&column)), number(coarse.get(&column)));
+                    assert!(fine < 1e-2, "{} {claim}: {fine}", r.get("id"));
+                    assert!(
+                        (coarse / fine - 4.17).abs() < 0.2,
+                        "{} {claim}: {coarse} / {fine}",
+                        r.get("id")
+                    );
+                }
+                checked[0] += 1;
+            }
+        }
+        if r.get("contact") == "slide" && r.get("class") != "pivot-friction" {
+            // mu times the engine's normal impulse, from the ball's momentum across the rod
+            // (its summed `total_impulse` includes the friction).
+            let coulomb = mu * m * (number(r.get("v0")) - number(r.get("v")));
+            assert!(
+                (jt_engine - coulomb).abs() < 1e-2 * coulomb,
+                "{}: {jt_engine} against {coulomb}",
+                r.get("id")
+            );
+            if r.get("dt") == "1/1000" {
+                let exact = number(r.get("tangential_impulse"));
+                assert!(
+                    (jt_engine - exact).abs() < 1e-2 * exact.abs(),
+                    "{}: {jt_engine} against {exact}",
+                    r.get("id")
+                );
+            }
+            checked[1] += 1;
+        }
+        if r.get("class") == "pivot-friction" && r.get("dt") == "1/1000" {
+            assert!(number(r.get("omega_rel_error")) < 3e-3, "{}", r.get("id"));
+            checked[2] += 1;
+        }
+    }
+    assert_eq!(checked, [4, 15, 2]);
+    let threshold = at("oblique-threshold-1", "1/1000");
+    assert_eq!(threshold.get("contact"), "stick");
+    let jt_engine = number(threshold.get("v0t")) - number(threshold.get("claimed_vt"));
+    let exact = number(threshold.get("tangential_impulse"));
+    assert!(
+        (jt_engine - exact).abs() < 2e-2 * exact,
+        "sticks at mu*: {jt_engine} against {exact}"
+    );
 }

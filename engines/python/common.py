@@ -18,6 +18,13 @@ from fractions import Fraction
 
 HEADER = ("id,engine,version,float,dt,iters,class,m,M,l,a,v0,rod,e,pivot,"
           "v,V,omega,J,energy_before,energy_after").split(",")
+# The log of the oblique scenes (the same as the Rapier harness's): every suite column, the
+# claims rodimpact's batch checks for an oblique scene (v, V, omega), then pass-through columns
+# for the comparison along the rod and the engine's impulse and energies.
+OBLIQUE_HEADER = ("id,engine,version,float,dt,iters,class,m,M,l,a,v0,rod,e,pivot,"
+                  "v0t,mu,radius,spin,rod-v,rod-vt,rod-omega,v,V,omega,"
+                  "claimed_vt,claimed_Vt,claimed_spin,engine_J,engine_energy_before,"
+                  "engine_energy_after").split(",")
 SUITE_COLUMNS = ("id,class,m,M,l,a,v0,rod,e,pivot,"
                  "v0t,mu,radius,spin,rod-v,rod-vt,rod-omega").split(",")
 OBLIQUE_COLUMNS = SUITE_COLUMNS[10:]
@@ -47,11 +54,23 @@ class Scene:
         self.pivot = float(Fraction(cells["pivot"])) if cells["pivot"].strip() else None
         self.I = float(rod_inertia(cells["rod"].strip(), q["M"], q["l"]))
         self.h = HALF_THICKNESS_PER_L * self.l
-        self.r = BALL_RADIUS_PER_L * self.l
+        self.oblique = any(cells[c].strip() for c in OBLIQUE_COLUMNS)
+        if self.oblique:
+            o = {c: float(Fraction(cells[c])) for c in OBLIQUE_COLUMNS}
+            if o["rod-omega"] != 0:
+                raise SystemExit(f"error: {cells['id']}: a rod turning before the impact is not set up")
+            self.v0t, self.mu, self.r, self.spin = o["v0t"], o["mu"], o["radius"], o["spin"]
+            self.rod_v, self.rod_vt = o["rod-v"], o["rod-vt"]
+        else:
+            self.v0t = self.mu = self.spin = self.rod_v = self.rod_vt = 0.0
+            self.r = BALL_RADIUS_PER_L * self.l
 
     def start_x(self, dt):
-        """The ball's starting x: 3.5 steps before its surface meets the rod's face."""
-        return -(self.h + self.r) - APPROACH_STEPS * self.v0 * dt
+        """The ball's starting x: 3.5 steps before its surface meets the rod's face; an oblique
+        ball half a step (at the approach speed v0 - rod-v), so that its slide along the rod
+        before the contact moves the impact point by at most |v0t - rod-vt| dt/2."""
+        steps = 0.5 if self.oblique else APPROACH_STEPS
+        return -(self.h + self.r) - steps * (self.v0 - self.rod_v) * dt
 
 
 def rod_inertia(rod, M, l):
@@ -67,20 +86,21 @@ def rod_inertia(rod, M, l):
     raise ValueError(f"rod '{rod}' is not uniform, dumbbell, rg=Q or I=Q")
 
 
-def load_suite(path=SUITE):
-    """The suite's perpendicular frictionless scenes. The oblique ones (a slide along the rod,
-    friction, a spinning ball, a drifting rod: issue 20) are not set up in these engines' scripts
-    yet; they are skipped, and the script says how many (Rapier runs them: engines/rapier2d)."""
+def load_suite(path=SUITE, oblique=None):
+    """The suite's perpendicular frictionless scenes (`oblique` False), or its oblique ones
+    (True: a slide along the rod, friction, a spinning ball, a drifting rod; issue 20). A script
+    that does not set the oblique scenes up leaves `oblique` out, and is told how many it skips."""
     with open(path, newline="") as f:
         reader = csv.DictReader(f)
         if reader.fieldnames != SUITE_COLUMNS:
             raise SystemExit(f"error: suite header must be {','.join(SUITE_COLUMNS)}")
-        rows = list(reader)
-    oblique = [r for r in rows if any(r[c].strip() for c in OBLIQUE_COLUMNS)]
+        scenes = [Scene(row) for row in reader]
     if oblique:
-        print(f"note: {len(oblique)} oblique scenes skipped (not set up for this engine)",
-              file=sys.stderr)
-    return [Scene(r) for r in rows if r not in oblique]
+        return [s for s in scenes if s.oblique]
+    skipped = sum(s.oblique for s in scenes)
+    if skipped and oblique is None:
+        print(f"note: {skipped} oblique scenes not run by this script", file=sys.stderr)
+    return [s for s in scenes if not s.oblique]
 
 
 def steps(dt):
@@ -114,10 +134,10 @@ def centre_velocity(scene, angle, vx, vy):
     return vx if scene.pivot is None else rotate_into(angle, vx, vy)
 
 
-def write(path, rows):
+def write(path, rows, header=HEADER):
     with open(path, "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
-        w.writerow(HEADER)
+        w.writerow(header)
         w.writerows(rows)
 
 
@@ -127,6 +147,23 @@ def row(scene, engine, version, float_name, dt_text, iters, outcome, single=Fals
     return [c["id"], engine, version, float_name, dt_text, str(iters), c["class"], c["m"], c["M"],
             c["l"], c["a"], c["v0"], c["rod"], c["e"], c["pivot"],
             *(shortest(x, single) for x in outcome)]
+
+
+def oblique_row(scene, engine, version, float_name, dt_text, iters, outcome, single=False):
+    """One row of an oblique log; `outcome` is (v, V, omega, vt, Vt, spin, J, energy_before,
+    energy_after)."""
+    c = scene.cells
+    return [c["id"], engine, version, float_name, dt_text, str(iters), c["class"],
+            *(c[k] for k in SUITE_COLUMNS[2:]),
+            *(shortest(x, single) for x in outcome)]
+
+
+def along_rod(scene, angle, vx, vy):
+    """The centre's velocity along the rod, read as V is (`centre_velocity`): in the world for a
+    free rod, in the rod's frame for a pivoted one."""
+    if scene.pivot is None:
+        return vy
+    return -math.sin(angle) * vx + math.cos(angle) * vy
 
 
 def out_dir(argv):
