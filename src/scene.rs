@@ -47,6 +47,35 @@ impl RodInertia {
         }
     }
 
+    /// [`RodInertia::moment`] over the rationals, the same value, computed as one fraction
+    /// (the products of the numerators over those of the denominators) reduced once on machine
+    /// words: num-rational reduces after every product with num-bigint's GCD, which cost more
+    /// than a whole batch row's solve.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::RodInertia;
+    /// use rodimpact::field::q;
+    /// let (big_m, l) = (q(93531, 184198), q(104159, 300644));
+    /// for rod in [RodInertia::Uniform, RodInertia::Dumbbell, RodInertia::Gyration(q(3, 7))] {
+    ///     assert_eq!(rod.exact_moment(&big_m, &l), rod.moment(&big_m, &l));
+    /// }
+    /// ```
+    pub fn exact_moment(&self, mass: &Q, l: &Q) -> Q {
+        let product = |x: &Q, y: &Q, divisor: u32| {
+            crate::field::int::reduce(
+                x.numer() * y.numer() * y.numer(),
+                x.denom() * y.denom() * y.denom() * divisor,
+            )
+        };
+        match self {
+            RodInertia::Uniform => product(mass, l, 3),
+            RodInertia::Dumbbell => product(mass, l, 1),
+            RodInertia::Gyration(r) => product(mass, r, 1),
+            RodInertia::Moment(i) => i.clone(),
+        }
+    }
+
     /// Parses the `--rod` forms `uniform`, `dumbbell`, `rg=Q`, `I=Q` (a radius may carry a
     /// length unit, a moment of inertia `kg*m^2`).
     ///
@@ -437,6 +466,10 @@ impl Scene {
     /// assert_eq!(s.approach(), q(1, 1)); // 3 - (1 + 2 * 1/2)
     /// ```
     pub fn approach(&self) -> Q {
+        if self.oblique.is_none() {
+            // The rod at rest: no arithmetic (this runs for every scene built).
+            return self.v0.clone();
+        }
         let rod = self.rod_before();
         &self.v0 - (rod.v + rod.omega * &self.a)
     }
@@ -463,7 +496,7 @@ impl Scene {
 
     /// Moment of inertia about the rod's centre.
     pub fn inertia(&self) -> Q {
-        self.rod.moment(&self.rod_mass, &self.half_length)
+        self.rod.exact_moment(&self.rod_mass, &self.half_length)
     }
 
     /// The same scene hit at another point `a` (validated).
@@ -953,6 +986,28 @@ fn check_on_rod(field: &str, x: &Q, l: &Q) -> Result<(), Error> {
 mod tests {
     use super::*;
     use crate::field::q;
+    use proptest::prelude::*;
+
+    /// A rational of up to ~150 bits either side (so that the products pass 256 bits and take
+    /// the big-integer reduction too), any sign for the numerator.
+    fn rational() -> impl Strategy<Value = Q> {
+        (any::<i64>(), any::<u64>(), 1u64.., 0u32..3).prop_map(|(n, big, d, scale)| {
+            let n = num_bigint::BigInt::from(n) * num_bigint::BigInt::from(big).pow(scale);
+            Q::new(n, num_bigint::BigInt::from(d))
+        })
+    }
+
+    proptest! {
+        /// The machine-word moment of inertia is the generic one, value and representation.
+        #[test]
+        fn exact_moment_is_the_moment(mass in rational(), l in rational(), r in rational()) {
+            for rod in [RodInertia::Uniform, RodInertia::Dumbbell, RodInertia::Gyration(r.clone()), RodInertia::Moment(r.clone())] {
+                let fast = rod.exact_moment(&mass, &l);
+                let slow = rod.moment(&mass, &l);
+                prop_assert_eq!((fast.numer(), fast.denom()), (slow.numer(), slow.denom()));
+            }
+        }
+    }
 
     fn input(pairs: &[(&str, &str)]) -> SceneInput {
         let mut s = SceneInput::default();

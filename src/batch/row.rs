@@ -257,15 +257,20 @@ fn exact_values(
     after: &Motion<Q>,
     wanted: impl Fn(usize) -> bool,
 ) -> [Option<Q>; 6] {
-    let params = scene.params::<Q>();
+    // The exact parameters (the rod's inertia among them) only when an energy is claimed:
+    // building them cost more than the whole solve.
+    let params = (wanted(4) || wanted(5)).then(|| scene.params::<Q>());
+    let energy = |motion: &Motion<Q>| params.as_ref().map(|p| kinetic_energy(p, motion));
     let m = scene.m();
     [
         Some(after.v.clone()),
         Some(after.rod_v.clone()),
         Some(after.omega.clone()),
         wanted(3).then(|| m * (scene.v0() - &after.v)),
-        wanted(4).then(|| kinetic_energy(&params, &Motion::before(scene.v0().clone()))),
-        wanted(5).then(|| kinetic_energy(&params, after)),
+        wanted(4)
+            .then(|| energy(&Motion::before(scene.v0().clone())))
+            .flatten(),
+        wanted(5).then(|| energy(after)).flatten(),
     ]
 }
 
@@ -326,14 +331,21 @@ fn float_values(
         },
         Err(e) => unreachable!("{e}: the batch's f64 route takes every scene"),
     };
-    let params = scene.params::<f64>();
+    // The parameters (with the rod's exact inertia, rounded) only when J or an energy is
+    // claimed.
+    let params = (wanted(3) || wanted(4) || wanted(5)).then(|| scene.params::<f64>());
+    let with = |f: &dyn Fn(&crate::scene::Params<f64>) -> f64| params.as_ref().map(f);
     let xs = [
         Some(m.v),
         Some(m.rod_v),
         Some(m.omega),
-        wanted(3).then_some(params.m * (params.v0 - m.v)),
-        wanted(4).then(|| kinetic_energy(&params, &Motion::before(params.v0))),
-        wanted(5).then(|| kinetic_energy(&params, &m)),
+        wanted(3).then(|| with(&|p| p.m * (p.v0 - m.v))).flatten(),
+        wanted(4)
+            .then(|| with(&|p| kinetic_energy(p, &Motion::before(p.v0))))
+            .flatten(),
+        wanted(5)
+            .then(|| with(&|p| kinetic_energy(p, &m)))
+            .flatten(),
     ];
     let exact = xs.map(|x| {
         x.filter(|_| compared)
