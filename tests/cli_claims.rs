@@ -51,17 +51,14 @@ fn paper_prints_every_decision_and_exits_0() {
     assert!(stdout.contains("T1. Where the rod spins fastest"));
 }
 
-#[test]
-fn prove_write_reproduces_the_committed_certificates() {
-    let dir = std::env::temp_dir().join(format!("rodimpact-proofs-{}", std::process::id()));
-    let (code, _, stderr) = rodimpact(&["prove", "--write", dir.to_str().unwrap()]);
-    assert_eq!(code, 0, "{stderr}");
-    let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("proofs");
+/// Every file of `committed` (not its subdirectories) was written into `dir` with the same
+/// text; returns how many.
+fn assert_written_as_committed(dir: &std::path::Path, committed: &std::path::Path) -> usize {
     let mut count = 0;
-    for entry in std::fs::read_dir(&committed).unwrap() {
+    for entry in std::fs::read_dir(committed).unwrap() {
         let entry = entry.unwrap();
         if entry.path().is_dir() {
-            continue; // the exports for independent checkers (proofs/smt2, proofs/sympy)
+            continue;
         }
         let name = entry.file_name();
         let written = std::fs::read_to_string(dir.join(&name)).expect("written");
@@ -72,6 +69,17 @@ fn prove_write_reproduces_the_committed_certificates() {
         );
         count += 1;
     }
+    count
+}
+
+#[test]
+fn prove_write_reproduces_the_committed_certificates() {
+    let dir = std::env::temp_dir().join(format!("rodimpact-proofs-{}", std::process::id()));
+    let (code, _, stderr) = rodimpact(&["prove", "--write", dir.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stderr}");
+    let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("proofs");
+    // The subdirectories are the exports for independent checkers (proofs/smt2, proofs/sympy).
+    let count = assert_written_as_committed(&dir, &committed);
     assert_eq!(
         count,
         registry().len() + 1,
@@ -304,17 +312,7 @@ fn prove_export_reproduces_the_committed_exports() {
         let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("proofs")
             .join(format);
-        let mut count = 0;
-        for entry in std::fs::read_dir(&committed).unwrap() {
-            let name = entry.unwrap().file_name();
-            let written = std::fs::read_to_string(dir.join(&name)).expect("written");
-            assert_eq!(
-                written,
-                std::fs::read_to_string(committed.join(&name)).unwrap(),
-                "{name:?}"
-            );
-            count += 1;
-        }
+        let count = assert_written_as_committed(&dir, &committed);
         assert_eq!(count, std::fs::read_dir(&dir).unwrap().count());
         std::fs::remove_dir_all(&dir).unwrap();
     }

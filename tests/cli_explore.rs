@@ -2,23 +2,14 @@
 //! rodimpact's exact answers for its reference scenes embedded (the page checks its own
 //! arithmetic against them when it opens; `.ci/browser/run` drives it in headless Chromium).
 
-use std::process::Command;
+mod common;
 
-fn rodimpact(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .args(args)
-        .output()
-        .unwrap()
-}
+use common::rodimpact;
 
 fn page() -> String {
-    let out = rodimpact(&["explore"]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
+    let (code, stdout, stderr) = rodimpact(&["explore"]);
+    assert_eq!(code, 0, "{stderr}");
+    stdout
 }
 
 #[test]
@@ -109,18 +100,17 @@ fn the_reference_answers_are_rodimpacts() {
 fn out_writes_the_page_whole_and_refuses_a_bad_path() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("explore.html");
-    let out = rodimpact(&["explore", "--out", file.to_str().unwrap()]);
-    assert!(out.status.success());
-    assert!(out.stdout.is_empty());
+    let (code, stdout, _) = rodimpact(&["explore", "--out", file.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert!(stdout.is_empty());
     assert_eq!(std::fs::read_to_string(&file).unwrap(), page());
     let missing = dir.path().join("none/explore.html");
-    let out = rodimpact(&["explore", "--out", missing.to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8(out.stderr).unwrap();
+    let (code, _, err) = rodimpact(&["explore", "--out", missing.to_str().unwrap()]);
+    assert_eq!(code, 2);
     assert!(
         err.starts_with("error: out:") && err.trim_end().lines().count() == 1,
         "{err}"
     );
-    let out = rodimpact(&["explore", "--bogus"]);
-    assert_eq!(out.status.code(), Some(2));
+    let (code, _, _) = rodimpact(&["explore", "--bogus"]);
+    assert_eq!(code, 2);
 }

@@ -3,23 +3,14 @@
 //! to the network. (The page is also loaded in headless Chromium by `.ci/browser/run`, which
 //! `cargo test` does not need.)
 
-use std::process::Command;
+mod common;
 
-fn rodimpact(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .args(args)
-        .output()
-        .unwrap()
-}
+use common::rodimpact;
 
 fn page_to_stdout() -> String {
-    let out = rodimpact(&["paper", "--format", "html"]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
+    let (code, stdout, stderr) = rodimpact(&["paper", "--format", "html"]);
+    assert_eq!(code, 0, "{stderr}");
+    stdout
 }
 
 #[test]
@@ -84,26 +75,26 @@ fn the_page_asks_nothing_of_the_network() {
 fn out_writes_the_same_page_and_refuses_a_bad_path() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("paper.html");
-    let out = rodimpact(&["paper", "--format", "html", "--out", file.to_str().unwrap()]);
-    assert!(out.status.success());
-    assert!(out.stdout.is_empty(), "the page goes to the file only");
+    let (code, stdout, _) =
+        rodimpact(&["paper", "--format", "html", "--out", file.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert!(stdout.is_empty(), "the page goes to the file only");
     assert_eq!(std::fs::read_to_string(&file).unwrap(), page_to_stdout());
     // A directory that does not exist: exit 2, one line naming the field, nothing written.
     let missing = dir.path().join("no/such/dir/paper.html");
-    let out = rodimpact(&[
+    let (code, _, err) = rodimpact(&[
         "paper",
         "--format",
         "html",
         "--out",
         missing.to_str().unwrap(),
     ]);
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(code, 2);
     assert!(err.starts_with("error: out:"), "{err}");
     assert_eq!(err.trim_end().lines().count(), 1, "{err}");
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
     // An unknown format: clap's message, exit 2.
-    let out = rodimpact(&["paper", "--format", "pdf"]);
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("possible values: text, html"));
+    let (code, _, err) = rodimpact(&["paper", "--format", "pdf"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("possible values: text, html"));
 }

@@ -2,36 +2,13 @@
 // by keyboard and by typing into the fields.
 // Usage: node explore.mjs PAGE.html SCREENSHOT_DIR SOLVE_JSON
 //   SOLVE_JSON: `rodimpact solve --m 1 --M 3 --a 1 --e 1/2 --json` (the page must agree).
-import puppeteer from "puppeteer-core";
 import { readFileSync } from "node:fs";
-import { pathToFileURL } from "node:url";
+import { inBrowser } from "./common.mjs";
 
 const [file, shots, solveJson] = process.argv.slice(2);
 const solved = JSON.parse(readFileSync(solveJson, "utf8"));
-const url = pathToFileURL(file).href;
-const failures = [];
-const check = (ok, what) => {
-  console.log(`${ok ? "ok  " : "FAIL"} explore (${name}): ${what}`);
-  if (!ok) failures.push(what);
-};
 
-// BROWSER: chromium (default) or firefox; its executable in BROWSER_PATH.
-const firefox = process.env.BROWSER === "firefox";
-const browser = await puppeteer.launch(
-  firefox
-    ? { browser: "firefox", executablePath: process.env.BROWSER_PATH, headless: true }
-    : { executablePath: process.env.BROWSER_PATH, headless: true, args: ["--no-sandbox", "--disable-gpu"] },
-);
-const name = firefox ? "firefox" : "chromium";
-try {
-  const page = await browser.newPage();
-  const problems = [];
-  page.on("console", (m) => { if (m.type() === "error" || m.type() === "warn") problems.push(`console ${m.type()}: ${m.text()}`); });
-  page.on("pageerror", (e) => problems.push(`script error: ${e}`));
-  page.on("requestfailed", (r) => problems.push(`request failed: ${r.url()}`));
-  page.on("request", (r) => { if (r.url() !== url && !r.url().startsWith("data:")) problems.push(`request beyond the page: ${r.url()}`); });
-  await page.setViewport({ width: 1200, height: 1000 });
-  await page.goto(url, { waitUntil: "load" });
+await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, url, check, name }) => {
   const text = (id) => page.$eval(id, (e) => e.textContent);
   const cell = (name) => page.$$eval("#values-body tr", (rows, name) => {
     const row = rows.find((r) => r.querySelector("th").textContent === name);
@@ -107,11 +84,4 @@ try {
   check(revealed.includes("Your guess a/l = 4/5") && revealed.includes("a* ="), `after Reveal: "${revealed.slice(0, 90)}…"`);
   await page.screenshot({ path: `${shots}/${name}-explore-pivoted-dumbbell.png`, fullPage: true });
 
-  for (const p of problems) check(false, p);
-} finally {
-  await browser.close();
-}
-if (failures.length) {
-  console.log(`${failures.length} browser checks failed`);
-  process.exit(1);
-}
+});

@@ -1,34 +1,10 @@
 // The report page of `rodimpact paper --format html` in headless Chromium.
 // Usage: node paper.mjs PAGE.html CLAIMS SCREENSHOT_DIR
-import puppeteer from "puppeteer-core";
-import { pathToFileURL } from "node:url";
+import { inBrowser } from "./common.mjs";
 
 const [file, claimCount, shots] = process.argv.slice(2);
-const url = pathToFileURL(file).href;
-const failures = [];
-const check = (ok, what) => {
-  console.log(`${ok ? "ok  " : "FAIL"} paper (${name}): ${what}`);
-  if (!ok) failures.push(what);
-};
 
-// BROWSER: chromium (default) or firefox; its executable in BROWSER_PATH.
-const firefox = process.env.BROWSER === "firefox";
-const browser = await puppeteer.launch(
-  firefox
-    ? { browser: "firefox", executablePath: process.env.BROWSER_PATH, headless: true }
-    : { executablePath: process.env.BROWSER_PATH, headless: true, args: ["--no-sandbox", "--disable-gpu"] },
-);
-const name = firefox ? "firefox" : "chromium";
-try {
-  const page = await browser.newPage();
-  const problems = [];
-  page.on("console", (m) => { if (m.type() === "error" || m.type() === "warn") problems.push(`console ${m.type()}: ${m.text()}`); });
-  page.on("pageerror", (e) => problems.push(`script error: ${e}`));
-  page.on("requestfailed", (r) => problems.push(`request failed: ${r.url()}`));
-  // data: URLs are the browser's own (Firefox's built-in MathML font), not the network.
-  page.on("request", (r) => { if (!r.url().startsWith(url.split("#")[0]) && !r.url().startsWith("data:")) problems.push(`request beyond the page: ${r.url()}`); });
-  await page.setViewport({ width: 1100, height: 1400 });
-  await page.goto(url, { waitUntil: "load" });
+await inBrowser("paper", file, { width: 1100, height: 1400 }, async ({ page, url, check, name }) => {
 
   const facts = await page.evaluate(() => {
     const details = [...document.querySelectorAll("details.claim")];
@@ -92,11 +68,4 @@ try {
   }
   check(await page.$$eval("details.claim", (ds) => ds.filter((d) => d.open).map((d) => d.id).join(",")) === "C15", "after printing, only C15 is open again");
 
-  for (const p of problems) check(false, p);
-} finally {
-  await browser.close();
-}
-if (failures.length) {
-  console.log(`${failures.length} browser checks failed`);
-  process.exit(1);
-}
+});

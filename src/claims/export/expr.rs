@@ -7,6 +7,7 @@
 //! `and`, `or`, `=>`, tightest first, and parentheses. Statements are written in the claim
 //! files, so a parse error is a programming error, reported with the text.
 
+use crate::claims::certificate::Relation;
 use std::collections::BTreeSet;
 use std::fmt;
 
@@ -31,28 +32,11 @@ pub enum Expr {
     Pow(Box<Expr>, u32),
 }
 
-/// A comparison operator.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Cmp {
-    /// `=`
-    Eq,
-    /// `!=`
-    Ne,
-    /// `<`
-    Lt,
-    /// `<=`
-    Le,
-    /// `>`
-    Gt,
-    /// `>=`
-    Ge,
-}
-
 /// A proposition about real expressions.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Prop {
     /// `x op y`.
-    Cmp(Cmp, Expr, Expr),
+    Relation(Relation, Expr, Expr),
     /// `not p`.
     Not(Box<Prop>),
     /// `p and q and ...`.
@@ -219,7 +203,7 @@ impl Parser {
             let Some(cmp) = comparison(op) else { break };
             self.at += 1;
             let right = self.sum()?;
-            links.push(Prop::Cmp(cmp, left, right.clone()));
+            links.push(Prop::Relation(cmp, left, right.clone()));
             left = right;
         }
         match links.len() {
@@ -304,14 +288,14 @@ impl Parser {
     }
 }
 
-fn comparison(op: &str) -> Option<Cmp> {
+fn comparison(op: &str) -> Option<Relation> {
     Some(match op {
-        "=" => Cmp::Eq,
-        "!=" => Cmp::Ne,
-        "<" => Cmp::Lt,
-        "<=" => Cmp::Le,
-        ">" => Cmp::Gt,
-        ">=" => Cmp::Ge,
+        "=" => Relation::Eq,
+        "!=" => Relation::Ne,
+        "<" => Relation::Lt,
+        "<=" => Relation::Le,
+        ">" => Relation::Gt,
+        ">=" => Relation::Ge,
         _ => return None,
     })
 }
@@ -377,7 +361,7 @@ impl Prop {
 
     fn collect_names(&self, out: &mut BTreeSet<String>) {
         match self {
-            Prop::Cmp(_, x, y) => {
+            Prop::Relation(_, x, y) => {
                 x.names(out);
                 y.names(out);
             }
@@ -401,7 +385,7 @@ impl Prop {
     /// ```
     pub fn is_equational(&self) -> bool {
         match self {
-            Prop::Cmp(op, _, _) => *op == Cmp::Eq,
+            Prop::Relation(op, _, _) => *op == Relation::Eq,
             Prop::And(ps) | Prop::Or(ps) => ps.iter().all(Prop::is_equational),
             Prop::Not(_) | Prop::Implies(..) => false,
         }
@@ -418,7 +402,7 @@ mod tests {
 
     #[test]
     fn precedence_and_associativity() {
-        let Prop::Cmp(Cmp::Eq, lhs, rhs) = parse("x = a - b - c*d^2/e").unwrap() else {
+        let Prop::Relation(Relation::Eq, lhs, rhs) = parse("x = a - b - c*d^2/e").unwrap() else {
             panic!("a comparison")
         };
         assert_eq!(lhs, name("x"));
@@ -439,7 +423,7 @@ mod tests {
         let Prop::Implies(hyp, concl) = p else {
             panic!("an implication")
         };
-        assert!(matches!(*hyp, Prop::Cmp(Cmp::Gt, _, _)));
+        assert!(matches!(*hyp, Prop::Relation(Relation::Gt, _, _)));
         let Prop::Or(terms) = *concl else {
             panic!("a disjunction")
         };
@@ -454,7 +438,7 @@ mod tests {
         ));
         assert!(matches!(
             parse("(x + 1)*2 > y").unwrap(),
-            Prop::Cmp(Cmp::Gt, Expr::Mul(..), _)
+            Prop::Relation(Relation::Gt, Expr::Mul(..), _)
         ));
     }
 

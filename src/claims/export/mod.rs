@@ -13,7 +13,7 @@ mod smt2;
 mod statement;
 mod sympy;
 
-pub use expr::{Cmp, Expr, ParseError, Prop, parse};
+pub use expr::{Expr, ParseError, Prop, parse};
 pub use physics::{Hypothesis, hypotheses, unknowns};
 pub use statement::{
     AT_A, Balance, Check, Expect, Export, Friction, Impact, Law, Oblique, Rod, Scene, Statement,

@@ -5,11 +5,12 @@
 //! frictional energy of X30), and a last line
 //! `; expect: ...` with the answers meant, in order.
 
-use super::expr::{Cmp, Expr, Prop, parse};
+use super::expr::{Expr, Prop, parse};
 use super::physics::{hypotheses, unknowns};
 use super::statement::{Expect, Statement};
 use super::{Exported, header};
 use crate::claims::Entry;
+use crate::claims::certificate::Relation;
 use std::collections::BTreeSet;
 
 fn expr(e: &Expr) -> String {
@@ -34,15 +35,15 @@ fn expr(e: &Expr) -> String {
 
 fn prop(p: &Prop) -> String {
     match p {
-        Prop::Cmp(op, x, y) => {
+        Prop::Relation(op, x, y) => {
             let (x, y) = (expr(x), expr(y));
             match op {
-                Cmp::Eq => format!("(= {x} {y})"),
-                Cmp::Ne => format!("(not (= {x} {y}))"),
-                Cmp::Lt => format!("(< {x} {y})"),
-                Cmp::Le => format!("(<= {x} {y})"),
-                Cmp::Gt => format!("(> {x} {y})"),
-                Cmp::Ge => format!("(>= {x} {y})"),
+                Relation::Eq => format!("(= {x} {y})"),
+                Relation::Ne => format!("(not (= {x} {y}))"),
+                Relation::Lt => format!("(< {x} {y})"),
+                Relation::Le => format!("(<= {x} {y})"),
+                Relation::Gt => format!("(> {x} {y})"),
+                Relation::Ge => format!("(>= {x} {y})"),
             }
         }
         Prop::Not(q) => format!("(not {})", prop(q)),

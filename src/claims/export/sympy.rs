@@ -5,11 +5,12 @@
 //! Only identities and checks at given values go to SymPy; an inequality over a domain is
 //! z3's, and the script says so (see [`supported`]).
 
-use super::expr::{Cmp, Expr, Prop, parse};
+use super::expr::{Expr, Prop, parse};
 use super::physics::{hypotheses, unknowns};
 use super::statement::{Expect, Statement};
 use super::{Exported, header};
 use crate::claims::Entry;
+use crate::claims::certificate::Relation;
 use std::collections::BTreeSet;
 
 fn expr(e: &Expr) -> String {
@@ -27,14 +28,14 @@ fn expr(e: &Expr) -> String {
 
 fn prop(p: &Prop) -> String {
     match p {
-        Prop::Cmp(op, x, y) => {
+        Prop::Relation(op, x, y) => {
             let f = match op {
-                Cmp::Eq => "EQ",
-                Cmp::Ne => "NE",
-                Cmp::Lt => "LT",
-                Cmp::Le => "LE",
-                Cmp::Gt => "GT",
-                Cmp::Ge => "GE",
+                Relation::Eq => "EQ",
+                Relation::Ne => "NE",
+                Relation::Lt => "LT",
+                Relation::Le => "LE",
+                Relation::Gt => "GT",
+                Relation::Ge => "GE",
             };
             format!("{f}(at({}), at({}))", expr(x), expr(y))
         }
@@ -70,13 +71,19 @@ fn classify(p: &Prop, unknown: &BTreeSet<String>) -> Use {
         return Use::Filter(prop(p));
     }
     match p {
-        Prop::Cmp(Cmp::Eq, Expr::Name(n), e) => Use::Define(n.clone(), expr(e)),
-        Prop::Cmp(Cmp::Eq, Expr::Pow(b, 2), e) if matches!(**b, Expr::Name(_)) => {
+        Prop::Relation(Relation::Eq, Expr::Name(n), e) => Use::Define(n.clone(), expr(e)),
+        Prop::Relation(Relation::Eq, Expr::Pow(b, 2), e) if matches!(**b, Expr::Name(_)) => {
             let Expr::Name(n) = &**b else { unreachable!() };
             Use::Define(n.clone(), format!("sqrt({})", expr(e)))
         }
-        Prop::Cmp(Cmp::Eq, ..) => Use::Unusable,
-        Prop::And(ps) if ps.iter().any(|q| matches!(q, Prop::Cmp(Cmp::Eq, ..))) => Use::Unusable,
+        Prop::Relation(Relation::Eq, ..) => Use::Unusable,
+        Prop::And(ps)
+            if ps
+                .iter()
+                .any(|q| matches!(q, Prop::Relation(Relation::Eq, ..))) =>
+        {
+            Use::Unusable
+        }
         _ => Use::Domain,
     }
 }
@@ -251,7 +258,7 @@ pub(super) fn write(entry: &Entry, statement: &Statement) -> Exported {
     for h in &hyps {
         let p = parsed(&h.text);
         match (&p, classify(&p, &unknown)) {
-            (Prop::Cmp(Cmp::Eq, x, y), Use::Filter(_)) => {
+            (Prop::Relation(Relation::Eq, x, y), Use::Filter(_)) => {
                 balance.push(format!("    {} - ({}),  # {}", expr(x), expr(y), h.label));
             }
             (_, Use::Filter(f)) => filters.push(f),
