@@ -383,6 +383,29 @@ mod tests {
         );
     }
 
+    proptest::proptest! {
+        /// Law: any text (the LaTeX subset's characters, weighted towards its troublemakers)
+        /// gives one `<math>` element, with no raw `<` or `&` from the input.
+        #[test]
+        fn any_input_gives_one_math_element(latex in r"[\\{}^_a-z0-9 (),.*/<>&|+=-]{0,40}") {
+            let out = math(&latex, false);
+            proptest::prop_assert!(out.starts_with("<math>") && out.ends_with("</math>"));
+            proptest::prop_assert_eq!(out.matches("<math").count(), 1);
+            // Every `&` starts an entity, every `<` a tag: nothing of the input is raw markup.
+            for (i, _) in out.match_indices('&') {
+                let rest = &out[i..];
+                proptest::prop_assert!(
+                    ["&amp;", "&lt;", "&gt;", "&quot;", "&#39;"].iter().any(|e| rest.starts_with(e)),
+                    "{}", out
+                );
+            }
+            for (i, _) in out.match_indices('<') {
+                let next = out[i + 1..].chars().next();
+                proptest::prop_assert!(next.is_some_and(|c| c.is_ascii_lowercase() || c == '/'), "{}", out);
+            }
+        }
+    }
+
     /// An unknown command is shown, never silently dropped; unbalanced input does not panic.
     #[test]
     fn unknown_and_unbalanced_input() {
