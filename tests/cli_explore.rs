@@ -90,6 +90,35 @@ fn the_reference_answers_are_rodimpacts() {
         .find(|r| r["input"]["pivot"] == "1/4")
         .unwrap();
     assert_eq!(pivot["pivot_impulse"], "-11/7");
+    // Struck exactly at a* (X19's scene: M = m, elastic): v = V = m v0/(M + m) = 1/2 and
+    // omega a* = v0, so omega = 1/a* = sqrt(6)/2, and no energy is lost.
+    let at = |a: &str| {
+        reference
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["input"]["a"] == a)
+            .unwrap()
+    };
+    let x19 = at("a*");
+    assert_eq!(
+        [&x19["v"], &x19["V"], &x19["omega"], &x19["energy_lost"]],
+        ["1/2", "1/2", "sqrt(6)/2", "0"]
+    );
+    // On a pivot at p = -l (uniform rod, M = m, e = 1/3) struck at p + a*: I_p = I + M p^2 =
+    // 4/3, a* = sqrt(I_p/m) = 2 sqrt(3)/3; J = (1 + e)/(1 + a*^2/I_p) = 2/3, v = 1 - J = 1/3,
+    // omega = J a*/I_p = sqrt(3)/3, V = -omega p = sqrt(3)/3, and the pivot's impulse
+    // M V - J = -2/3 + sqrt(3)/3: a number of Q(sqrt 3), as rodimpact spells it.
+    let pivoted = at("p+a*");
+    assert_eq!(
+        [
+            &pivoted["v"],
+            &pivoted["V"],
+            &pivoted["omega"],
+            &pivoted["pivot_impulse"]
+        ],
+        ["1/3", "sqrt(3)/3", "sqrt(3)/3", "-2/3 + sqrt(3)/3"]
+    );
     assert_eq!(
         reference.as_array().unwrap().len(),
         rodimpact::report::explore::REFERENCE_SCENES.len()

@@ -51,14 +51,22 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   // A bad entry: named, marked invalid, no script error.
   await type("#ratio", "-2");
   check((await text("#ratio-error")).includes("M/m: must be > 0") && (await page.$eval("#ratio", (e) => e.getAttribute("aria-invalid"))) === "true", "M/m = -2 is refused with its reason");
+  // a* typed where it is beyond the end (M = 3m): refused with the reason, not clamped.
+  await type("#ratio", "3");
+  await type("#a", "a*");
+  check((await text("#a-error")).includes("a* = 2√3/3 ≈ 1.155 lies beyond the end of the rod"), `a = a* at M = 3m is refused: "${await text("#a-error")}"`);
   await type("#ratio", "1");
   await type("#e", "1");
 
-  // X19: struck at a*, elastic, the rod meets the puck again half a turn later, t = π a*/v0.
+  // X19: struck at a* exactly, elastic: v = V = m v0/(M + m) = 1/2, omega = v0/a* = √6/2, and
+  // the rod meets the puck again half a turn later, t = π a*/v0.
   await page.click("#hit-a-star");
+  check((await page.$eval("#a", (e) => e.value)) === "a*", `"Hit at a*" puts a* itself in the a field: ${await page.$eval("#a", (e) => e.value)}`);
+  const atStar = [await cell("v"), await cell("V"), await cell("ω"), await cell("ω/ωmax")];
+  check(JSON.stringify(atStar) === JSON.stringify(["1/2", "1/2", "√6/2", "1"]), `at a*: v, V, ω, ω/ω_max = ${atStar.join(", ")} (1/2, 1/2, √6/2, 1)`);
   const second = await text("#second");
   const t = Number((/t ≈ ([\d.]+)/.exec(second) || [])[1]);
-  check(Math.abs(t - Math.PI * Math.sqrt(2 / 3)) < 2e-3 && second.includes("X19"), `second impact at t ≈ ${t} = π a*/v0 = ${(Math.PI * Math.sqrt(2 / 3)).toFixed(3)}`);
+  check(Math.abs(t - Math.PI * Math.sqrt(2 / 3)) < 2e-3 && second.includes("X19") && second.includes("v = V = 1/2 v0"), `second impact at t ≈ ${t} = π a*/v0 = ${(Math.PI * Math.sqrt(2 / 3)).toFixed(3)}: "${second.slice(0, 90)}…"`);
   await page.$eval("#time", (e, t) => { e.value = t; e.dispatchEvent(new Event("input")); }, String(t + 0.01));
   await page.evaluate(() => document.getElementById("motion").scrollIntoView());
   await page.screenshot({ path: `${shots}/${name}-explore-second-impact.png` });
@@ -77,11 +85,16 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   await page.click("#predict");
   check(await page.$eval("body", (b) => b.classList.contains("answer-hidden")), "predict first hides the answer");
   check(!(await text("#summary")).includes("a* ="), "the summary keeps a* back");
+  check((await cell("a*")) === "hidden" && (await cell("ωmax")) === "hidden", "the table withholds a* and ω_max (from a screen reader too)");
+  check(!(await page.$eval("#curve", (svg) => svg.querySelector("path.curve"))), "the |ω| curve, whose peak is the answer, is not drawn");
   await page.focus("#guess");
   for (let i = 0; i < 20; i++) await page.keyboard.press("ArrowLeft");
   await page.click("#reveal");
   const revealed = await text("#summary");
-  check(revealed.includes("Your guess a/l = 4/5") && revealed.includes("a* ="), `after Reveal: "${revealed.slice(0, 90)}…"`);
+  check(revealed.includes("Your guess a/l = 4/5") && revealed.includes("a* = √2 l"), `after Reveal: "${revealed.slice(0, 90)}…"`);
+  // a* from the pivot p = −1: I_p = M l^2 + M l^2 = 2 M l^2, a* = sqrt(I_p/m) = √2 l; struck at p + a*.
+  await page.click("#hit-a-star");
+  check((await page.$eval("#a", (e) => e.value)) === "p+a*" && (await cell("ω/ωmax")) === "1", `pivoted: "Hit at a*" gives p+a*, ω/ω_max = ${await cell("ω/ωmax")}`);
   await page.screenshot({ path: `${shots}/${name}-explore-pivoted-dumbbell.png`, fullPage: true });
 
 });

@@ -141,7 +141,7 @@ pub fn t1(opts: &TableOptions) -> Result<Table, Error> {
 }
 
 /// `scene` hit at `a` (possibly irrational), solved exactly in Q(sqrt d).
-fn solve_at(scene: &Scene, a: QSqrt) -> Outcome<QSqrt> {
+pub(super) fn solve_at(scene: &Scene, a: QSqrt) -> Outcome<QSqrt> {
     let params = Params {
         a,
         ..scene.params::<QSqrt>()

@@ -1,6 +1,6 @@
 "use strict";
-// Exact arithmetic for the page: rationals on BigInt, square roots of rationals as surds
-// c*sqrt(r) with r square-free, and their spelling as rodimpact spells them (field::notation):
+// Exact arithmetic for the page: rationals on BigInt, and numbers x + y*sqrt(r) with r
+// square-free (a* and the values at a*), and their spelling as rodimpact spells them (field::notation):
 // `sqrt(6)/3`, `2*sqrt(6)/5`, `5*sqrt(5)` in ASCII, `√6/3` in Unicode.
 
 const Exact = (() => {
@@ -41,6 +41,8 @@ const Exact = (() => {
     /** The value to `digits` significant digits, rounded half away from zero. */
     decimal(digits = 6) { return decimalOf(this.n, this.d, digits); }
   }
+
+  const ZERO = new Q(0n);
 
   // n/d (d > 0) to `digits` significant digits, as a plain decimal string.
   function decimalOf(n, d, digits) {
@@ -95,52 +97,95 @@ const Exact = (() => {
     return [s, r];
   }
 
-  /** c * sqrt(r): r a square-free positive integer (1 for a rational), c rational. */
-  class Surd {
-    constructor(c, r) {
-      this.c = c;
-      this.r = r;
+  /**
+   * x + y*sqrt(r): x, y rational, r a square-free integer > 1 (r = 1 and y = 0 for a rational).
+   * The page's one number type for answers: the optimum a* = sqrt(A) of a rational A, and every
+   * value of a scene struck at a* (x^2 = A is rational again), lives in Q(sqrt r). Operations
+   * take a Quad or a Q; two different radicands never meet (an error if they would).
+   */
+  class Quad {
+    constructor(x, y = ZERO, r = 1n) {
+      if (y.isZero() || r === 1n) {
+        this.x = r === 1n ? x.add(y) : x;
+        this.y = ZERO;
+        this.r = 1n;
+      } else {
+        this.x = x;
+        this.y = y;
+        this.r = r;
+      }
     }
-    /** The square root of a rational x >= 0: sqrt(n/d) = sqrt(n d)/d. */
+    /** A Q (or a Quad, returned as it is) as a Quad. */
+    static from(v) { return v instanceof Quad ? v : new Quad(v); }
+    /** The square root of a rational x >= 0: sqrt(n/d) = sqrt(n d)/d, square factors out. */
     static sqrt(x) {
       if (x.sign() < 0) throw new RangeError("square root of a negative number");
       const [s, r] = squareOut(x.n * x.d);
-      return new Surd(new Q(s, x.d), r);
+      return r === 1n ? new Quad(new Q(s, x.d)) : new Quad(ZERO, new Q(s, x.d), r);
     }
-    static rational(q) { return new Surd(q, 1n); }
-    isRational() { return this.r === 1n || this.c.isZero(); }
-    scale(q) { return new Surd(this.c.mul(q), this.r); }
-    toNumber() { return this.c.toNumber() * Math.sqrt(Number(this.r)); }
-    /** Compare with a rational exactly. */
-    cmpQ(q) {
-      // c sqrt(r) vs q: compare signs, then squares.
-      const a = this.c.sign();
-      const b = q.sign();
-      if (a !== b) return a > b ? 1 : -1;
-      const lhs = this.c.mul(this.c).mul(Q.of(this.r));
-      const c = lhs.cmp(q.mul(q));
-      return a >= 0 ? c : -c;
+    /** The radicand shared with `o`. */
+    field(o) {
+      if (this.r === 1n || this.r === o.r) return o.r;
+      if (o.r === 1n) return this.r;
+      throw new RangeError(`sqrt(${this.r}) and sqrt(${o.r}) in one expression`);
     }
-    /** Spelled as rodimpact spells it: `ascii` (parses back) or Unicode. */
+    add(v) { const o = Quad.from(v); return new Quad(this.x.add(o.x), this.y.add(o.y), this.field(o)); }
+    sub(v) { return this.add(Quad.from(v).neg()); }
+    neg() { return new Quad(this.x.neg(), this.y.neg(), this.r); }
+    mul(v) {
+      const o = Quad.from(v);
+      const r = this.field(o);
+      const x = this.x.mul(o.x).add(this.y.mul(o.y).mul(new Q(r)));
+      return new Quad(x, this.x.mul(o.y).add(this.y.mul(o.x)), r);
+    }
+    div(v) {
+      // (x + y sqrt r)^-1 = (x - y sqrt r)/(x^2 - y^2 r); the denominator is 0 only for 0.
+      const o = Quad.from(v);
+      const r = this.field(o);
+      const norm = o.x.mul(o.x).sub(o.y.mul(o.y).mul(new Q(r)));
+      if (norm.isZero()) throw new RangeError("division by zero");
+      return this.mul(new Quad(o.x.div(norm), o.y.neg().div(norm), r));
+    }
+    isZero() { return this.x.isZero() && this.y.isZero(); }
+    isRational() { return this.y.isZero(); }
+    /** The rational value (a programming error when there is a root). */
+    rational() {
+      if (!this.isRational()) throw new RangeError(`${this} is not rational`);
+      return this.x;
+    }
+    /** -1, 0 or 1, exactly: when x and y sqrt r differ in sign, the larger square wins. */
+    sign() {
+      const a = this.x.sign();
+      const b = this.y.sign();
+      if (b === 0 || a === b) return a || b;
+      if (a === 0) return b;
+      return this.x.mul(this.x).cmp(this.y.mul(this.y).mul(new Q(this.r))) > 0 ? a : b;
+    }
+    cmp(v) { return this.sub(v).sign(); }
+    abs() { return this.sign() < 0 ? this.neg() : this; }
+    toNumber() { return this.x.toNumber() + this.y.toNumber() * Math.sqrt(Number(this.r)); }
+    /** Spelled as rodimpact spells it (field::notation::surd): ASCII, which parses back. */
+    toString() { return this.spell(true); }
+    /** Spelled for people: `√6/3`, `−1 + 5√6/12`, true minus signs. */
+    pretty() { return this.spell(false); }
     spell(ascii) {
-      if (this.isRational()) {
-        const q = this.r === 1n ? this.c : Q.of(0);
-        return ascii ? q.toString() : q.pretty();
-      }
-      const y = this.c;
+      const minus = ascii ? "-" : "−";
+      const rational = ascii ? this.x.toString() : this.x.pretty();
+      if (this.isRational()) return rational;
+      const y = this.y;
       const num = abs(y.n);
-      let term;
-      if (ascii) term = num === 1n ? `sqrt(${this.r})` : `${num}*sqrt(${this.r})`;
-      else term = `${num === 1n ? "" : num}√${this.r}`;
+      const term = ascii ? (num === 1n ? `sqrt(${this.r})` : `${num}*sqrt(${this.r})`) : `${num === 1n ? "" : num}√${this.r}`;
       const part = y.d === 1n ? term : `${term}/${y.d}`;
-      return (y.sign() < 0 ? (ascii ? "-" : "−") : "") + part;
+      if (this.x.isZero()) return (y.sign() < 0 ? minus : "") + part;
+      return `${rational} ${y.sign() < 0 ? minus : "+"} ${part}`;
     }
-    /** The value to `digits` significant digits (from an exact integer square root). */
+    /** The value to `digits` significant digits (sqrt r from an exact integer square root). */
     decimal(digits = 6) {
-      if (this.isRational()) return this.c.decimal(digits);
-      const scale = 10n ** 30n;
-      const root = isqrt(this.r * scale * scale); // floor(sqrt(r) 10^30)
-      return decimalOf(this.c.n * root, this.c.d * scale, digits);
+      if (this.isRational()) return this.x.decimal(digits);
+      const scale = 10n ** 40n;
+      const root = isqrt(this.r * scale * scale); // floor(sqrt(r) 10^40)
+      const { x, y } = this;
+      return decimalOf(x.n * y.d * scale + y.n * x.d * root, x.d * y.d * scale, digits);
     }
   }
 
@@ -172,5 +217,5 @@ const Exact = (() => {
     return num.div(den);
   }
 
-  return { Q, Surd, parse, decimalOf };
+  return { Q, Quad, parse, decimalOf };
 })();

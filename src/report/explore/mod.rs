@@ -5,12 +5,20 @@
 //! impact that follows a hit beyond the stop point (X19), with energy bars; and a predict-first
 //! mode.
 //!
+//! The impact point may be a* itself (the a field takes `a*`, `-a*`, `p+a*`, `p-a*`): the page's
+//! numbers are `x + y*sqrt(r)`, so a scene struck at a* is exact too (X19's v = V and
+//! omega a* = v0, not their decimals).
+//!
 //! The page carries rodimpact's own exact answers for a set of reference scenes
-//! ([`REFERENCE_SCENES`]), and checks its arithmetic against them each time it opens.
+//! ([`REFERENCE_SCENES`], those at a* solved in Q(sqrt d)), and checks its arithmetic against
+//! them each time it opens.
 
 use super::Solution;
+use super::paper_tables::solve_at;
 use crate::Error;
-use crate::scene::SceneInput;
+use crate::field::{QSqrt, q};
+use crate::optimum::a_star_squared;
+use crate::scene::{SceneInput, Support};
 use serde_json::{Value, json};
 
 const TEMPLATE: &str = include_str!("page.html");
@@ -21,7 +29,9 @@ const UI: &str = include_str!("ui.js");
 
 /// The scenes (M/m, a/l, e, rod, pivot p/l; m = l = v0 = 1) whose exact answers the page
 /// carries to check its own arithmetic: free and pivoted, every rod kind, elastic to sticking,
-/// a* inside and beyond the end, on either side of a pivot.
+/// a* inside and beyond the end, on either side of a pivot; and struck exactly at a* (the impact
+/// point as the page's a field takes it: `a*`, `-a*`, or `p+a*`, `p-a*` on a pivot), where the
+/// answers are irrational (a pivot's impulse `x + y*sqrt(d)`).
 pub const REFERENCE_SCENES: &[(&str, &str, &str, &str, Option<&str>)] = &[
     ("1", "1/2", "1", "uniform", None),
     ("3/2", "1/2", "1/2", "uniform", None),
@@ -34,7 +44,21 @@ pub const REFERENCE_SCENES: &[(&str, &str, &str, &str, Option<&str>)] = &[
     ("1", "-1/2", "1", "uniform", Some("-1")),
     ("3/2", "1/2", "1/2", "uniform", Some("1")),
     ("5", "0", "1/2", "dumbbell", Some("1/2")),
+    ("1", "a*", "1", "uniform", None),
+    ("3/2", "-a*", "1/2", "rg=1/2", None),
+    ("1", "p+a*", "1/3", "uniform", Some("-1")),
+    ("2", "p-a*", "0", "rg=1/3", Some("1/2")),
 ];
+
+/// Where a reference scene is struck: a rational `a` (`None`), or a* on the side `+1` or `-1`
+/// (`Some(side)`), from the centre or, on a pivot, from the pivot.
+fn star_side(a: &str) -> Option<i64> {
+    match a.trim_start_matches('p') {
+        "a*" | "+a*" => Some(1),
+        "-a*" => Some(-1),
+        _ => None,
+    }
+}
 
 /// rodimpact's exact answers for [`REFERENCE_SCENES`], as the page reads them: per scene its
 /// `input` and the exact strings of `v`, `V`, `omega`, `energy_lost`, `a_star`, `omega_max`
@@ -54,16 +78,20 @@ pub fn reference_answers() -> Result<Vec<Value>, Error> {
     REFERENCE_SCENES
         .iter()
         .map(|&(ratio, a, e, rod, pivot)| {
+            let side = star_side(a);
+            // Struck at a*: the scene as if struck at the end of that side (the same optimum).
+            let rational_a = side.map_or(a, |s| if s > 0 { "1" } else { "-1" });
             let input = SceneInput {
                 m: Some("1".into()),
                 rod_mass: Some(ratio.into()),
-                a: Some(a.into()),
+                a: Some(rational_a.into()),
                 e: Some(e.into()),
                 rod: Some(rod.into()),
                 pivot: pivot.map(Into::into),
                 ..Default::default()
             };
-            let json = Solution::of(&input.build()?).to_json(6);
+            let scene = input.build()?;
+            let json = Solution::of(&scene).to_json(6);
             let exact = |path: &[&str]| {
                 path.iter()
                     .fold(&json, |v, key| &v[*key])
@@ -81,6 +109,23 @@ pub fn reference_answers() -> Result<Vec<Value>, Error> {
             });
             if pivot.is_some() {
                 answer["pivot_impulse"] = json!(exact(&["pivot_impulse", "exact"]));
+            }
+            if let Some(side) = side {
+                // The lever arm is a* = sqrt(a*^2) exactly: solved in Q(sqrt d).
+                let arm =
+                    QSqrt::sqrt_of(&a_star_squared(&scene.params())) * &QSqrt::rational(q(side, 1));
+                let pivot = match scene.support() {
+                    Support::Free => q(0, 1),
+                    Support::Pivot(p) => p.clone(),
+                };
+                let outcome = solve_at(&scene, arm + &QSqrt::rational(pivot));
+                answer["v"] = json!(outcome.after.v.to_string());
+                answer["V"] = json!(outcome.after.rod_v.to_string());
+                answer["omega"] = json!(outcome.after.omega.to_string());
+                answer["energy_lost"] = json!(outcome.energy.lost.to_string());
+                if let Some(impulse) = &outcome.pivot_impulse {
+                    answer["pivot_impulse"] = json!(impulse.to_string());
+                }
             }
             Ok(answer)
         })

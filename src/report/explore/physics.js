@@ -11,7 +11,7 @@
 // largest over the arm at x = sqrt(A) = a*, where omega_max = (1 + e) v0/(2 a*).
 
 const Physics = (() => {
-  const { Q, Surd } = Exact;
+  const { Q, Quad } = Exact;
   const one = Q.of(1);
   const two = Q.of(2);
   const half = Q.of(1, 2);
@@ -24,51 +24,59 @@ const Physics = (() => {
   }
 
   /**
-   * The exact answer for a scene { M, a, e, k, pivot } (Q values; pivot null for a free rod).
-   * Returns every quantity the page shows, exact.
+   * A = a*^2: (M + m) I/(m M) for a free rod, I_p/m = I + M p^2 on a pivot at p (Q values; the
+   * optimum lever arm is sqrt(A), from the centre or from the pivot).
+   */
+  function aStarSquared(M, k, p) {
+    const I = k.mul(M);
+    return p === null ? I.mul(M.add(one)).div(M) : I.add(M.mul(p).mul(p));
+  }
+
+  /**
+   * The exact answer for a scene { M, e, k, pivot } (Q values; pivot null for a free rod) struck
+   * at a (a Q, or a Quad such as a*). Returns every quantity the page shows: the velocities,
+   * impulses and energies as Quads (rational unless a is irrational), a* as a Quad, and the
+   * optimum's rationals.
    */
   function solve(scene) {
-    const { M, a, e, k } = scene;
+    const { M, e, k } = scene;
+    const a = Quad.from(scene.a);
     const p = scene.pivot;
     const I = k.mul(M);
     const pivoted = p !== null;
     const Ieff = pivoted ? I.add(M.mul(p).mul(p)) : I; // about the pivot, or the centre
     const x = pivoted ? a.sub(p) : a;
     // 1/m + (1/M for a free rod) + x^2/I_eff
-    let k_n = one.add(x.mul(x).div(Ieff));
+    let k_n = x.mul(x).div(Ieff).add(one);
     if (!pivoted) k_n = k_n.add(one.div(M));
-    const J = one.add(e).div(k_n);
+    const J = Quad.from(one.add(e)).div(k_n);
     const omega = J.mul(x).div(Ieff);
-    const v = one.sub(J);
+    const v = Quad.from(one).sub(J);
     const V = pivoted ? omega.mul(p).neg() : J.div(M); // the centre's velocity
-    const pivotImpulse = pivoted ? M.mul(V).sub(J) : null;
-    const K0 = half;
+    const pivotImpulse = pivoted ? V.mul(M).sub(J) : null;
+    const K0 = Quad.from(half);
     const projectile = v.mul(v).mul(half);
-    const translation = M.mul(V).mul(V).mul(half);
-    const rotation = I.mul(omega).mul(omega).mul(half); // about the centre
+    const translation = V.mul(V).mul(M).mul(half);
+    const rotation = omega.mul(omega).mul(I).mul(half); // about the centre
     const lost = K0.sub(projectile).sub(translation).sub(rotation);
     // The optimum over the arm on the struck side.
-    const A = pivoted ? Ieff : I.mul(M.add(one)).div(M);
+    const A = aStarSquared(M, k, p);
     const side = x.sign() < 0 ? -1 : 1;
     const arm = pivoted ? (side > 0 ? one.sub(p) : one.add(p)) : one;
-    const aStar = Surd.sqrt(A);
+    const aStar = Quad.sqrt(A);
     const inside = A.cmp(arm.mul(arm)) <= 0;
     const omegaAt = (lever) => one.add(e).mul(lever).div(A.add(lever.mul(lever)));
     const omegaEnd = omegaAt(arm); // magnitude at the end of the arm
     // omega_max = (1 + e)/(2 sqrt(A)) = (1 + e) sqrt(A)/(2 A), or the end's when a* is beyond it.
-    const omegaMax = inside ? aStar.scale(one.add(e).div(two.mul(A))) : Surd.rational(omegaEnd);
-    // Where a* is along the rod: a = a* (free) or a = p + side a* (pivot).
+    const omegaMax = inside ? aStar.mul(one.add(e).div(two.mul(A))) : Quad.from(omegaEnd);
     return {
       pivoted, I, Ieff, x, J, v, V, omega, pivotImpulse, K0, projectile, translation, rotation, lost,
       A, aStar, arm, side, inside, omegaEnd, omegaMax,
+      // Struck exactly at a* (x^2 = A: the lever arm is a*).
+      atAStar: x.mul(x).cmp(A) === 0,
       // The threshold mass ratio below which a* lies on the rod (free rod): M/m < 1/k - 1.
       threshold: pivoted ? null : one.div(k).sub(one),
     };
-  }
-
-  /** |omega(x)|/omega_max as a float, for drawing the curve (x the lever arm). */
-  function shape(A, x, omegaMaxNumber, e) {
-    return ((1 + e) * Math.abs(x)) / (A + x * x) / omegaMaxNumber;
   }
 
   /**
@@ -124,5 +132,5 @@ const Physics = (() => {
     return { at, second };
   }
 
-  return { inertiaFactor, solve, shape, motion };
+  return { inertiaFactor, aStarSquared, solve, motion };
 })();

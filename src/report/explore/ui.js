@@ -4,7 +4,7 @@
 // against rodimpact's answers embedded in the page.
 
 (() => {
-  const { Q, Surd, parse } = Exact;
+  const { Q, Quad, parse } = Exact;
   const $ = (id) => document.getElementById(id);
   const SVG = "http://www.w3.org/2000/svg";
   const reduceMotion = window.matchMedia("(prefers-reduced-motion: reduce)").matches;
@@ -18,14 +18,30 @@
     pivot: { check: (q) => (q.abs().cmp(Q.of(1)) <= 0 ? null : "must lie on the rod, −1 ≤ p/l ≤ 1"), name: "p/l" },
   };
 
-  /** The field's exact value, or null with its error shown. */
-  function read(id) {
+  /**
+   * The impact point typed in the a field: a fraction or decimal, or the scene's fastest-spin
+   * point, exactly: `a*` or `-a*` (from the centre), and on a pivot `p+a*` or `p-a*` (a* is then
+   * measured from the pivot; `a*` alone means `p+a*`). Returns a Q or a Quad.
+   */
+  function parseImpact(text, M, k, p) {
+    const star = /^\s*(p\s*)?([+\-−]?)\s*a\s*\*\s*$/i.exec(text);
+    if (!star) return parse(text);
+    if (star[1] && p === null) throw new Error("'p' only on a pivot");
+    const root = Quad.sqrt(Physics.aStarSquared(M, k, p));
+    const signed = star[2] && star[2] !== "+" ? root.neg() : root;
+    const at = p === null ? signed : signed.add(p);
+    if (at.abs().cmp(Q.of(1)) > 0) throw new Error(`${text.trim()} = ${at.pretty()} ≈ ${at.decimal(4)} lies beyond the end of the rod`);
+    return at;
+  }
+
+  /** The field's exact value (read with `parser`), or null with its error shown. */
+  function read(id, parser = parse) {
     const input = $(id);
     const error = $(`${id}-error`);
     let value = null;
     let message = "";
     try {
-      value = parse(input.value);
+      value = parser(input.value);
       message = fields[id].check(value) || "";
       if (message) value = null;
     } catch (e) {
@@ -43,14 +59,17 @@
   /** The scene of the controls, or null when a field is invalid. */
   function scene() {
     const M = read("ratio");
-    const a = read("a");
     const e = read("e");
-    const k = kind();
-    const rg = k === "gyration" ? read("rg") : Q.of(1, 2);
+    const kindName = kind();
+    const rg = kindName === "gyration" ? read("rg") : Q.of(1, 2);
     const pivoted = $("pivoted").checked;
     const p = pivoted ? read("pivot") : Q.of(0);
-    if (!M || !a || !e || !rg || !p) return null;
-    return { M, a, e, k: Physics.inertiaFactor(k, rg), kind: k, rg, pivot: pivoted ? p : null };
+    if (!M || !e || !rg || !p) return null;
+    const k = Physics.inertiaFactor(kindName, rg);
+    const pivot = pivoted ? p : null;
+    const a = read("a", (text) => parseImpact(text, M, k, pivot));
+    if (!a) return null;
+    return { M, a, e, k, kind: kindName, rg, pivot };
   }
 
   // ---- sliders and text fields, kept in step -------------------------------------------
@@ -116,15 +135,13 @@
     $("summary").focus();
   });
 
+  // a* exactly (the field then reads `a*`, irrational or not), on the side already struck; the
+  // end of that side when a* lies beyond it.
   $("hit-a-star").addEventListener("click", () => {
     if (!current) return;
     const { out, scene: s } = current;
-    // a* is irrational in general: hit at its decimal to 4 digits (exact for a rational a*).
-    const place = s.pivot ? out.aStar.toNumber() * out.side + s.pivot.toNumber() : out.aStar.toNumber();
-    const exact = out.aStar.isRational() ? (s.pivot ? s.pivot.add(out.aStar.c.mul(Q.of(out.side))) : out.aStar.c) : null;
-    const value = exact && exact.abs().cmp(Q.of(1)) <= 0 ? exact.toString() : tidy(Math.max(-1, Math.min(1, place)), 4);
-    $("a").value = value;
-    $("a-slider").value = parse(value).toNumber();
+    const sign = out.side > 0 ? "" : "-";
+    $("a").value = !out.inside ? `${sign}1` : s.pivot ? `p${sign || "+"}a*` : `${sign}a*`;
     update();
   });
 
@@ -132,8 +149,12 @@
   let current = null;
 
   const unicode = (q) => q.pretty();
-  const row = (name, exact, decimal, meaning, answerOnly = false) =>
-    `<tr${answerOnly ? ' class="answer-only"' : ""}><th scope="row">${name}</th><td class="exact">${exact}</td><td class="decimal">${decimal}</td><td>${meaning}</td></tr>`;
+  // A row of the table; an answer row says only "hidden" while the student has not guessed
+  // (to a screen reader too).
+  const row = (name, exact, decimal, meaning, answerOnly = false) => {
+    const withheld = answerOnly && hidden();
+    return `<tr${answerOnly ? ' class="answer-only"' : ""}><th scope="row">${name}</th><td class="exact">${withheld ? "hidden" : exact}</td><td class="decimal">${withheld ? "" : decimal}</td><td>${meaning}</td></tr>`;
+  };
 
   function thresholdText(s, out) {
     if (s.pivot) return "";
@@ -150,14 +171,16 @@
     }
     const out = Physics.solve(s);
     current = { scene: s, out };
+    $("a-slider").value = s.a.toNumber();
+    $("hit-a-star").hidden = hidden();
     $("guess").min = s.pivot ? "-1" : "0";
     for (const [slider, value, label] of [["ratio-slider", s.M, "M/m"], ["a-slider", s.a, "a/l"], ["e-slider", s.e, "e"]]) {
       $(slider).setAttribute("aria-valuetext", `${label} = ${unicode(value)}`);
     }
     const v0l = "<i>v</i><sub>0</sub>/<i>l</i>";
     const ratioToMax = out.inside
-      ? out.aStar.scale(out.omega.abs().mul(Q.of(2)).div(Q.of(1).add(s.e)))
-      : Surd.rational(out.omega.abs().div(out.omegaEnd));
+      ? out.aStar.mul(out.omega.abs()).mul(Q.of(2).div(Q.of(1).add(s.e)))
+      : out.omega.abs().div(out.omegaEnd);
     const from = s.pivot ? "from the pivot" : "from the centre";
     let rows = "";
     rows += row("<i>v</i>", unicode(out.v), out.v.decimal(), "the puck after (× <i>v</i><sub>0</sub>; negative: it bounces back)");
@@ -169,25 +192,25 @@
       const lost = out.lost.div(out.K0);
       rows += row("Δ<i>K</i>/<i>K</i><sub>0</sub>", unicode(lost), lost.decimal(), "fraction of the kinetic energy lost");
     }
-    rows += row("<i>a</i>*", `${out.aStar.spell(false)} <i>l</i>`, out.aStar.decimal(), `the fastest-spin point, ${from}${out.inside ? "" : " (beyond the end)"}`, true);
-    rows += row("<i>ω</i><sub>max</sub>", out.omegaMax.spell(false), out.omegaMax.decimal(), `fastest spin over the rod (× ${v0l}), ${out.inside ? "at a*" : "at the end"}`, true);
-    rows += row("<i>ω</i>/<i>ω</i><sub>max</sub>", ratioToMax.spell(false), ratioToMax.decimal(), "this hit against the best one", true);
+    rows += row("<i>a</i>*", `${out.aStar.pretty()} <i>l</i>`, out.aStar.decimal(), `the fastest-spin point, ${from}${out.inside ? "" : " (beyond the end)"}`, true);
+    rows += row("<i>ω</i><sub>max</sub>", out.omegaMax.pretty(), out.omegaMax.decimal(), `fastest spin over the rod (× ${v0l}), ${out.inside ? "at a*" : "at the end"}`, true);
+    rows += row("<i>ω</i>/<i>ω</i><sub>max</sub>", ratioToMax.pretty(), ratioToMax.decimal(), "this hit against the best one", true);
     $("values-body").innerHTML = rows;
 
-    const aStar = `a* = ${out.aStar.spell(false)} l ≈ ${out.aStar.decimal(4)} l`;
+    const aStar = `a* = ${out.aStar.pretty()} l ≈ ${out.aStar.decimal(4)} l`;
     let summary;
     if (hidden()) {
       summary = `M/m = ${unicode(s.M)}, a/l = ${unicode(s.a)}, e = ${unicode(s.e)}: ω = ${unicode(out.omega)} v0/l ≈ ${out.omega.decimal(4)}. Where is the fastest spin? Make your guess, then reveal.`;
     } else if (out.inside) {
-      summary = `${aStar} ${from} lies on the rod: hitting there spins it fastest, ω_max = ${out.omegaMax.spell(false)} v0/l ≈ ${out.omegaMax.decimal(4)} v0/l, faster than at the end (${unicode(out.omegaEnd)} v0/l).`;
+      summary = `${aStar} ${from} lies on the rod: hitting there spins it fastest, ω_max = ${out.omegaMax.pretty()} v0/l ≈ ${out.omegaMax.decimal(4)} v0/l, faster than at the end (${unicode(out.omegaEnd)} v0/l).`;
     } else {
-      summary = `${aStar} ${from} lies beyond the end: the end is the best place after all, ω_max = ω(end) = ${out.omegaMax.spell(false)} v0/l.`;
+      summary = `${aStar} ${from} lies beyond the end: the end is the best place after all, ω_max = ω(end) = ${out.omegaMax.pretty()} v0/l.`;
     }
     if (!s.pivot && !hidden()) summary += ` (${thresholdText(s, out)}.)`;
     if (guess && !hidden()) {
       const lever = s.pivot ? guess.sub(s.pivot) : guess;
       const atGuess = Q.of(1).add(s.e).mul(lever.abs()).div(out.A.add(lever.mul(lever)));
-      const share = out.inside ? out.aStar.scale(atGuess.mul(Q.of(2)).div(Q.of(1).add(s.e))) : Surd.rational(atGuess.div(out.omegaEnd));
+      const share = out.inside ? out.aStar.mul(atGuess.mul(Q.of(2)).div(Q.of(1).add(s.e))) : Quad.from(atGuess.div(out.omegaEnd));
       summary += ` Your guess a/l = ${unicode(guess)} gives ${share.decimal(3).replace("−", "-")} of ω_max (${(share.toNumber() * 100).toFixed(1)} %).`;
     }
     $("summary").textContent = summary;
@@ -202,10 +225,10 @@
       second = "The puck and the rod do not meet again (within 12 l/v0).";
     } else {
       second = `Second impact: the rod comes round and meets the puck again at t ≈ ${motion.second.toFixed(3)} l/v0`;
-      // a* is irrational in general, so "at a*" means within the 4-digit decimal of the button.
-      const nearAStar = !s.pivot && s.e.cmp(Q.of(1)) === 0 && out.inside && Math.abs(s.a.toNumber() - out.aStar.toNumber()) <= 5e-4;
-      second += nearAStar
-        ? `, as X19 says: struck at a* (here a* to 4 digits) the puck rests relative to the rod's centre, and half a turn later the other arm hits it, at t = π a*/v0 = ${(Math.PI * out.aStar.toNumber()).toFixed(3)} l/v0 exactly.`
+      // X19: a free rod struck elastically at a* exactly.
+      const x19 = !s.pivot && s.e.cmp(Q.of(1)) === 0 && out.atAStar;
+      second += x19
+        ? `, as X19 says: struck at a*, the puck moves on with v = V = ${unicode(out.v)} v0, at rest relative to the rod's centre, and ω a* = ${out.omega.mul(out.x).cmp(Q.of(1)) === 0 ? "" : `${unicode(out.omega.mul(out.x))} `}v0; half a turn later the other arm hits it, at t = π a*/v0 = π·${out.aStar.pretty()} l/v0 ≈ ${(Math.PI * out.aStar.toNumber()).toFixed(3)} l/v0.`
         : ".";
     }
     $("second").textContent = second;
@@ -262,22 +285,29 @@
       }
       return d;
     };
-    svg.append(el("path", { d: path(xs[0], Math.min(1, xs[1])), class: "curve" }));
-    if (xs[1] > 1) svg.append(el("path", { d: path(1, xs[1]), class: "curve beyond" }));
+    // While the student predicts, the curve (whose peak is the answer) is not drawn.
+    if (hidden()) {
+      svg.append(el("text", { x: X((xs[0] + xs[1]) / 2), y: Y(ys[1] / 2), class: "note", "text-anchor": "middle" }, "the curve appears when you reveal the answer"));
+    } else {
+      svg.append(el("path", { d: path(xs[0], Math.min(1, xs[1])), class: "curve" }));
+      if (xs[1] > 1) svg.append(el("path", { d: path(1, xs[1]), class: "curve beyond" }));
+    }
     // The rod's end(s), and the pivot.
     svg.append(el("line", { x1: X(1), x2: X(1), y1: Y(ys[1]), y2: Y(0), class: "end" }));
     svg.append(el("text", { x: X(1) - 4, y: Y(ys[1]) + 14, class: "note", "text-anchor": "end" }, "end of the rod"));
-    if (s.pivot) svg.append(el("text", { x: X(p), y: Y(0) - 6, class: "note", "text-anchor": "middle" }, "pivot"));
+    if (s.pivot) svg.append(el("text", { x: X(p) + (p < -0.8 ? 4 : p > 0.8 ? -4 : 0), y: Y(0) - 6, class: "note", "text-anchor": p < -0.8 ? "start" : p > 0.8 ? "end" : "middle" }, "pivot"));
     if (!hidden()) {
       const omax = out.omegaMax.toNumber();
       svg.append(el("line", { x1: X(xs[0]), x2: X(xs[1]), y1: Y(omax), y2: Y(omax), class: "max" }));
-      svg.append(el("text", { x: X(xs[0]) + 6, y: Y(omax) - 5, class: "note max-label" }, `ω_max = ${out.omegaMax.spell(false)} ≈ ${out.omegaMax.decimal(4)}`));
+      svg.append(el("text", { x: X(xs[0]) + 6, y: Y(omax) - 5, class: "note max-label" }, `ω_max = ${out.omegaMax.pretty()} ≈ ${out.omegaMax.decimal(4)}`));
       for (const side of s.pivot ? [-1, 1] : [1]) {
         const at = p + side * aStar;
         if (at < xs[0] - 1e-9 || at > xs[1] + 1e-9) continue;
         svg.append(el("line", { x1: X(at), x2: X(at), y1: Y(0), y2: Y(omegaAt(at)), class: "astar" }));
         svg.append(el("circle", { cx: X(at), cy: Y(omegaAt(at)), r: 5, class: "astar-dot" }));
-        svg.append(el("text", { x: X(at), y: Y(0) - 20, class: "note astar-label", "text-anchor": at > xs[1] - 0.15 ? "end" : "middle" }, `a* = ${out.aStar.spell(false)}`));
+        // On a pivot a* is measured from the pivot: the mark is at p ± a*.
+        const name = s.pivot ? `p ${side > 0 ? "+" : "−"} a*` : `a* = ${out.aStar.pretty()}`;
+        svg.append(el("text", { x: X(at), y: Y(0) - 20, class: "note astar-label", "text-anchor": at > xs[1] - 0.15 ? "end" : "middle" }, name));
       }
     }
     const a = s.a.toNumber();
@@ -285,11 +315,12 @@
     if ($("predict").checked) {
       const g = Number($("guess").value);
       svg.append(el("line", { x1: X(g), x2: X(g), y1: Y(0), y2: Y(ys[1]), class: "guess" }));
-      svg.append(el("text", { x: X(g) + 4, y: Y(ys[1]) + 28, class: "note guess-label" }, "my guess"));
+      const nearRight = g > xs[1] - 0.2 * (xs[1] - xs[0]);
+      svg.append(el("text", { x: X(g) + (nearRight ? -4 : 4), y: Y(ys[1]) + 30, class: "note guess-label", "text-anchor": nearRight ? "end" : "start" }, "my guess"));
     }
     const caption = hidden()
       ? `|ω| against the impact point; the dot is the chosen point, ω = ${unicode(out.omega)} v0/l.`
-      : `|ω| against the impact point: the dot is the chosen point (ω = ${unicode(out.omega)} v0/l); a* = ${out.aStar.spell(false)} l ≈ ${out.aStar.decimal(4)} l ${out.inside ? "is on the rod" : "is beyond the end (dashed)"}; ω_max = ${out.omegaMax.spell(false)} v0/l.`;
+      : `|ω| against the impact point: the dot is the chosen point (ω = ${unicode(out.omega)} v0/l); a* = ${out.aStar.pretty()} l ≈ ${out.aStar.decimal(4)} l ${out.inside ? "is on the rod" : "is beyond the end (dashed)"}; ω_max = ${out.omegaMax.pretty()} v0/l.`;
     $("curve-caption").textContent = caption;
   }
 
@@ -304,15 +335,18 @@
     const xs = [-2, 2];
     const top = Math.max(2, arm * 1.25);
     const { X, Y } = axes(svg, [58, 18, 440, 220], xs, [0, top], "mass ratio M/m (log scale)", s.pivot ? "a*/l from the pivot" : "a*/l", [-2, -1, 0, 1, 2], [0, 0.5, 1, 1.5, 2, ...(top > 2.4 ? [2.5, 3] : [])].filter((t) => t <= top), (t) => tidy(10 ** t, 2));
-    // The curve up to the top of the frame (a* grows without bound with M/m).
-    let d = "";
-    for (let i = 0; i <= 400; i++) {
-      const lx = -2 + (4 * i) / 400;
-      const y = star(10 ** lx);
-      d += `${i ? "L" : "M"}${X(lx).toFixed(1)},${Y(Math.min(top, y)).toFixed(1)}`;
-      if (y > top) break;
+    // The curve up to the top of the frame (a* grows without bound with M/m); not drawn while
+    // the student predicts (it shows a* for every M/m).
+    if (!hidden()) {
+      let d = "";
+      for (let i = 0; i <= 400; i++) {
+        const lx = -2 + (4 * i) / 400;
+        const y = star(10 ** lx);
+        d += `${i ? "L" : "M"}${X(lx).toFixed(1)},${Y(Math.min(top, y)).toFixed(1)}`;
+        if (y > top) break;
+      }
+      svg.append(el("path", { d, class: "curve" }));
     }
-    svg.append(el("path", { d, class: "curve" }));
     svg.append(el("line", { x1: X(-2), x2: X(2), y1: Y(arm), y2: Y(arm), class: "end" }));
     svg.append(el("text", { x: X(-2) + 6, y: Y(arm) - 5, class: "note" }, s.pivot ? "end of the arm" : "end of the rod, a = l"));
     if (!s.pivot && out.threshold.sign() > 0 && !hidden()) {
@@ -415,7 +449,7 @@
     let html = "<h3>Kinetic energy, as a share of <i>K</i><sub>0</sub></h3>";
     const label = [];
     for (const [name, value, cls] of parts) {
-      const share = value.div(K0);
+      const share = Quad.from(value).div(K0);
       // The exact share when it is short; its decimal (the exact one in the tooltip) otherwise.
       const exact = share.pretty();
       const shown = exact.length <= 9 ? exact : `≈ ${share.decimal(4)}`;
@@ -481,15 +515,17 @@
       const rod = r.input.rod;
       const rg = rod.startsWith("rg=") ? parse(rod.slice(3)) : Q.of(1, 2);
       const k = Physics.inertiaFactor(rod.startsWith("rg=") ? "gyration" : rod, rg);
-      const s = { M: parse(r.input.M), a: parse(r.input.a), e: parse(r.input.e), k, pivot: r.input.pivot === null ? null : parse(r.input.pivot) };
+      const M = parse(r.input.M);
+      const pivot = r.input.pivot === null ? null : parse(r.input.pivot);
+      const s = { M, a: parseImpact(r.input.a, M, k, pivot), e: parse(r.input.e), k, pivot };
       const out = Physics.solve(s);
       const mine = {
         v: out.v.toString(),
         V: out.V.toString(),
         omega: out.omega.toString(),
         energy_lost: out.lost.toString(),
-        a_star: out.aStar.spell(true),
-        omega_max: out.omegaMax.spell(true),
+        a_star: out.aStar.toString(),
+        omega_max: out.omegaMax.toString(),
       };
       if (s.pivot) mine.pivot_impulse = out.pivotImpulse.toString();
       for (const [key, value] of Object.entries(mine)) {
