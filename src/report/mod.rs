@@ -12,6 +12,7 @@ pub mod explore;
 mod formula;
 pub mod markup;
 pub mod mathml;
+pub mod page;
 mod paper_html;
 mod paper_tables;
 mod plot;

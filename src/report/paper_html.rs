@@ -5,6 +5,7 @@
 
 use super::formula::{key_latex, meaning, radical_latex};
 use super::mathml::{self, escape};
+use super::page::{Page, document, inline_svg};
 use super::proofs::{
     METHOD, TITLE, groups, refutes_intuition_as_paper, summary_line, verdict_label, verdict_mark,
 };
@@ -107,12 +108,12 @@ pub fn paper_html(
          checkers by <code>rodimpact prove --export smt2|sympy DIR</code>.</p></footer>",
         env!("CARGO_PKG_VERSION")
     );
-    format!(
-        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
-         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
-         <title>{}</title>\n<style>\n{STYLE}</style>\n</head>\n<body>\n{body}<script>\n{SCRIPT}</script>\n</body>\n</html>\n",
-        escape(TITLE)
-    )
+    document(&Page {
+        title: TITLE,
+        style: STYLE,
+        body: &body,
+        script: SCRIPT,
+    })
 }
 
 /// The anchor of a group's section: its title in lower case, words joined by `-`.
@@ -256,18 +257,6 @@ fn lower(level: HeadingLevel) -> HeadingLevel {
         HeadingLevel::H3 => HeadingLevel::H5,
         _ => HeadingLevel::H6,
     }
-}
-
-/// An SVG document placed in the page: its XML declaration (if any) removed, labelled for
-/// screen readers with `label` (`role="img"`).
-fn inline_svg(svg: &str, label: &str) -> String {
-    let start = svg.find("<svg").unwrap_or(0);
-    let svg = &svg[start..];
-    svg.replacen(
-        "<svg ",
-        &format!("<svg role=\"img\" aria-label=\"{}\" ", escape(label)),
-        1,
-    )
 }
 
 #[cfg(test)]

@@ -14,6 +14,7 @@
 //! them each time it opens.
 
 use super::Solution;
+use super::page::{Page, document, json_script};
 use super::paper_tables::solve_at;
 use crate::Error;
 use crate::field::{QSqrt, q};
@@ -21,7 +22,8 @@ use crate::optimum::a_star_squared;
 use crate::scene::{SceneInput, Support};
 use serde_json::{Value, json};
 
-const TEMPLATE: &str = include_str!("page.html");
+/// The page's body, with `{{VERSION}}` and `{{REFERENCE}}` (the reference answers) to fill.
+const BODY: &str = include_str!("page.html");
 const STYLE: &str = include_str!("page.css");
 const EXACT: &str = include_str!("exact.js");
 const PHYSICS: &str = include_str!("physics.js");
@@ -132,7 +134,8 @@ pub fn reference_answers() -> Result<Vec<Value>, Error> {
         .collect()
 }
 
-/// The page, complete: the template with its style, scripts and the reference answers.
+/// The page, complete: its body with the reference answers, its style and scripts, in the
+/// shared shell ([`document`]).
 ///
 /// # Errors
 /// As [`reference_answers`].
@@ -146,14 +149,14 @@ pub fn reference_answers() -> Result<Vec<Value>, Error> {
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn explore_html() -> Result<String, Error> {
-    // Inside <script>, "</" would end the element: JSON allows "<\/".
-    let reference = serde_json::to_string(&reference_answers()?)
-        .expect("JSON of strings")
-        .replace("</", "<\\/");
-    let script = format!("{EXACT}\n{PHYSICS}\n{UI}");
-    Ok(TEMPLATE
+    let reference = serde_json::to_string(&reference_answers()?).expect("JSON of strings");
+    let body = BODY
         .replace("{{VERSION}}", env!("CARGO_PKG_VERSION"))
-        .replace("{{STYLE}}", STYLE)
-        .replace("{{REFERENCE}}", &reference)
-        .replace("{{SCRIPT}}", &script))
+        .replace("{{REFERENCE}}", &json_script("reference", &reference));
+    Ok(document(&Page {
+        title: "Where should you hit the rod? An exact explorer",
+        style: STYLE,
+        body: &body,
+        script: &format!("{EXACT}\n{PHYSICS}\n{UI}"),
+    }))
 }

@@ -1,0 +1,116 @@
+//! The shell every rodimpact web page shares (`paper --format html`, `explore`): one complete
+//! HTML5 document that needs nothing beyond itself. Style, scripts, data and figures all go
+//! inline and nothing is fetched (no font, stylesheet, script or image from the network), so
+//! the file opens from disk, offline, and prints.
+//!
+//! A page builds its body with [`escape`] for any text, [`inline_svg`] for a figure and
+//! [`json_script`] for data its script reads; [`document`] wraps the body with the title, the
+//! style (after [`BASE_STYLE`], the print rules every page shares) and the script.
+
+pub use super::mathml::escape;
+
+/// The rules every page starts from: in print, no controls (buttons, sliders, anything marked
+/// `no-print`) and links as plain text. A page's own style comes after and may add to them.
+pub const BASE_STYLE: &str = "@media print {\n  button, input[type=range], .no-print { display: none !important; }\n  a { color: inherit; text-decoration: none; }\n}\n";
+
+/// The parts of a page; [`document`] puts them together.
+#[derive(Debug, Clone, Copy)]
+pub struct Page<'a> {
+    /// The document's title, plain text (escaped by [`document`]).
+    pub title: &'a str,
+    /// The page's CSS, inlined after [`BASE_STYLE`]; it must not contain `</style`.
+    pub style: &'a str,
+    /// The inside of `<body>`, HTML, complete: every text in it already escaped.
+    pub body: &'a str,
+    /// JavaScript run at the end of the body (empty: no script); it must not contain `</script`.
+    pub script: &'a str,
+}
+
+/// The whole page: doctype, `<head>` (charset, viewport, the generator's version, the escaped
+/// title, the inline style) and `<body>` with the script last.
+///
+/// # Panics
+/// **Panics if the style contains `</style` or the script `</script`** (they would end their
+/// element early; a programming error: every style and script is the program's own).
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::page::{Page, document};
+/// let html = document(&Page {
+///     title: "a < b",
+///     style: "p { margin: 0; }\n",
+///     body: "<p>Hello</p>\n",
+///     script: "",
+/// });
+/// assert!(html.starts_with("<!DOCTYPE html>\n<html lang=\"en\">"));
+/// assert!(html.contains("<title>a &lt; b</title>"));
+/// assert!(html.contains("@media print") && html.contains("p { margin: 0; }"));
+/// assert!(html.contains("<body>\n<p>Hello</p>\n</body>") && !html.contains("<script"));
+/// ```
+pub fn document(page: &Page<'_>) -> String {
+    assert!(
+        !page.style.contains("</style"),
+        "a style that ends its element"
+    );
+    assert!(
+        !page.script.contains("</script"),
+        "a script that ends its element"
+    );
+    let script = if page.script.is_empty() {
+        String::new()
+    } else {
+        format!("<script>\n{}</script>\n", page.script)
+    };
+    format!(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
+         <meta name=\"generator\" content=\"rodimpact {}\">\n<title>{}</title>\n\
+         <style>\n{BASE_STYLE}{}</style>\n</head>\n<body>\n{}{script}</body>\n</html>\n",
+        env!("CARGO_PKG_VERSION"),
+        escape(page.title),
+        page.style,
+        page.body,
+    )
+}
+
+/// An SVG document (rodimpact's own plots) as an element of the page: any XML declaration
+/// before `<svg` dropped, and `role="img"` with `label` (plain text, escaped) as its accessible
+/// name.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::page::inline_svg;
+/// let svg = "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"4\"/>";
+/// assert_eq!(
+///     inline_svg(svg, "omega & a"),
+///     "<svg role=\"img\" aria-label=\"omega &amp; a\" xmlns=\"http://www.w3.org/2000/svg\" width=\"4\"/>"
+/// );
+/// ```
+pub fn inline_svg(svg: &str, label: &str) -> String {
+    let start = svg.find("<svg").unwrap_or(0);
+    svg[start..].replacen(
+        "<svg ",
+        &format!("<svg role=\"img\" aria-label=\"{}\" ", escape(label)),
+        1,
+    )
+}
+
+/// Data for the page's script: `json` in a `<script type="application/json">` element with
+/// this `id` (the script reads it with `JSON.parse(document.getElementById(id).textContent)`).
+/// Every `</` is written `<\/`, which JSON reads as `</` and which cannot end the element.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::page::json_script;
+/// assert_eq!(
+///     json_script("data", r#"{"note":"</script>"}"#),
+///     "<script type=\"application/json\" id=\"data\">{\"note\":\"<\\/script>\"}</script>\n"
+/// );
+/// ```
+pub fn json_script(id: &str, json: &str) -> String {
+    format!(
+        "<script type=\"application/json\" id=\"{}\">{}</script>\n",
+        escape(id),
+        json.replace("</", "<\\/")
+    )
+}
