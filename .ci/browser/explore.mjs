@@ -67,7 +67,10 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   const second = await text("#second");
   const t = Number((/t ≈ ([\d.]+)/.exec(second) || [])[1]);
   check(Math.abs(t - Math.PI * Math.sqrt(2 / 3)) < 2e-3 && second.includes("X19") && second.includes("v = V = 1/2 v0"), `second impact at t ≈ ${t} = π a*/v0 = ${(Math.PI * Math.sqrt(2 / 3)).toFixed(3)}: "${second.slice(0, 90)}…"`);
-  await page.$eval("#time", (e, t) => { e.value = t; e.dispatchEvent(new Event("input")); }, String(t + 0.01));
+  // Time stops at the second impact (the end of the slider), not later with the puck inside the rod.
+  const end = Number(await page.$eval("#time", (e) => e.max));
+  check(end >= t && end < t + 0.011, `the time slider ends at the second impact (${end})`);
+  await page.$eval("#time", (e) => { e.value = e.max; e.dispatchEvent(new Event("input")); });
   await page.evaluate(() => document.getElementById("motion").scrollIntoView());
   await page.screenshot({ path: `${shots}/${name}-explore-second-impact.png` });
   // Play runs the animation forward.

@@ -217,7 +217,11 @@
     $("hidden-note").hidden = !hidden();
     document.body.classList.toggle("answer-hidden", hidden());
     motion = Physics.motion(s, out);
-    const end = motion.second !== null ? Math.min(motion.second + 1, 12) : 6;
+    // The motion of one impact ends at the second: time stops there (on the slider's first step
+    // at or after it), instead of drawing the puck through the rod.
+    const min = Number($("time").min);
+    const step = Number($("time").step);
+    const end = motion.second !== null ? min + Math.ceil((motion.second - min) / step) * step : 6;
     $("time").max = end.toFixed(2);
     if (Number($("time").value) > end) $("time").value = end;
     let second;
@@ -427,9 +431,10 @@
     // Labels.
     ctx.fillStyle = "#222";
     ctx.font = "15px sans-serif";
-    ctx.fillText(t < 0 ? "before the impact" : motion.second !== null && t >= motion.second ? "second impact" : "after the impact", 12, 22);
+    const atSecond = motion.second !== null && t >= motion.second;
+    ctx.fillText(t < 0 ? "before the impact" : atSecond ? "second impact: the motion of one impact ends here" : "after the impact", 12, 22);
     ctx.fillText(s.pivot ? "view: the table" : "view: moving with the centre of mass", 12, H - 12);
-    if (motion.second !== null && t >= motion.second) {
+    if (atSecond) {
       ctx.strokeStyle = "#d55e00";
       ctx.lineWidth = 3;
       ctx.beginPath();
