@@ -15,6 +15,23 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
     return row ? row.querySelector("td.exact").textContent : null;
   }, name);
 
+  // The page's numbers x + y√r (Exact.Quad), against hand-worked values: products and
+  // quotients through the conjugate, signs decided exactly where x and y√r nearly cancel.
+  const quad = await page.evaluate(() => {
+    const { Q, Quad } = Exact;
+    const r2 = Quad.sqrt(Q.of(2));
+    const mixed = (x, y) => Quad.from(Q.of(...x)).add(r2.mul(Q.of(...y)));
+    return [
+      Quad.sqrt(Q.of(2, 3)).pretty(),
+      mixed([3, 1], [-2, 1]).mul(mixed([3, 1], [2, 1])).pretty(), // (3 − 2√2)(3 + 2√2) = 1
+      Quad.from(Q.of(1)).div(mixed([1, 1], [1, 1])).toString(), // 1/(1 + √2) = −1 + √2
+      mixed([-1, 1], [1, 2]).pretty() + " " + mixed([-1, 1], [1, 2]).decimal(),
+      // 99/70 > √2 > 140/99, 1393/985 < √2 < 665857/470832 (convergents of √2, either side).
+      [[99, 70], [140, 99], [1393, 985], [665857, 470832]].map(([n, d]) => mixed([n, d], [-1, 1]).sign()).join(" "),
+    ];
+  });
+  check(JSON.stringify(quad) === JSON.stringify(["√6/3", "1", "-1 + sqrt(2)", "−1 + √2/2 −0.292893", "1 -1 -1 1"]), `x + y√r arithmetic: ${quad.join(" | ")}`);
+
   // The default scene, M = m: a* = sqrt(2/3) l = √6/3 l ≈ 0.8165 l, on the rod.
   check((await text("#self-check")).startsWith("Self-check: on opening, the page recomputed"), "the page's arithmetic agrees with rodimpact's embedded answers");
   const summary = await text("#summary");
