@@ -72,6 +72,12 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   await type("#ratio", "3");
   await type("#a", "a*");
   check((await text("#a-error")).includes("a* = 2√3/3 ≈ 1.155 lies beyond the end of the rod"), `a = a* at M = 3m is refused: "${await text("#a-error")}"`);
+  await type("#a", "1");
+  // A number past the page's limit (30 digits) is refused; one at it is solved.
+  await type("#ratio", "1".repeat(31));
+  check((await text("#ratio-error")) === "M/m: more than 30 digits", `31 digits refused: "${await text("#ratio-error")}"`);
+  await type("#ratio", `${"9".repeat(30)}e60`);
+  check((await text("#summary")).includes("beyond the end"), `M/m = 10^90: a* far beyond the end: "${(await text("#summary")).slice(0, 60)}…"`);
   await type("#ratio", "1");
   await type("#e", "1");
 
@@ -90,6 +96,7 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   await page.$eval("#time", (e) => { e.value = e.max; e.dispatchEvent(new Event("input")); });
   await page.evaluate(() => document.getElementById("motion").scrollIntoView());
   await page.screenshot({ path: `${shots}/${name}-explore-second-impact.png` });
+  check((await page.$eval("#time", (e) => e.getAttribute("aria-valuetext"))).endsWith("the second impact"), "the time slider tells a screen reader the phase");
   // Play runs the animation forward.
   await page.$eval("#time", (e) => { e.value = e.min; e.dispatchEvent(new Event("input")); });
   await page.click("#play");
@@ -97,6 +104,20 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   const running = await page.$eval("#time", (e) => Number(e.value));
   check(running > -1.5, `Play moves time forward (t = ${running.toFixed(2)})`);
   await page.click("#play");
+  // With reduced motion asked for, Play steps (0.5 l/v0 every 0.6 s) instead of animating.
+  // (Emulating the setting needs the DevTools protocol: Chromium only.)
+  if (name === "chromium") {
+    await page.emulateMediaFeatures([{ name: "prefers-reduced-motion", value: "reduce" }]);
+    await page.$eval("#time", (e) => { e.value = e.min; e.dispatchEvent(new Event("input")); });
+    await page.click("#play");
+    await page.waitForFunction(() => Number(document.getElementById("time").value) > -1.5);
+    const stepped = await page.$eval("#time", (e) => Number(e.value));
+    await page.click("#play");
+    // Whole steps of 0.5 from t = −1.5 (a smooth animation lands anywhere).
+    const steps = (stepped + 1.5) / 0.5;
+    check(steps >= 1 && Math.abs(steps - Math.round(steps)) < 1e-9, `reduced motion: Play moves in steps of 0.5 (t = ${stepped})`);
+    await page.emulateMediaFeatures([{ name: "prefers-reduced-motion", value: "no-preference" }]);
+  }
 
   // Pivoted dumbbell, predict-first mode: the answer is hidden until revealed.
   await page.click("input[name=kind][value=dumbbell]");
@@ -106,6 +127,8 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   check(await page.$eval("body", (b) => b.classList.contains("answer-hidden")), "predict first hides the answer");
   check(!(await text("#summary")).includes("a* ="), "the summary keeps a* back");
   check((await cell("a*")) === "hidden" && (await cell("ωmax")) === "hidden", "the table withholds a* and ω_max (from a screen reader too)");
+  const meanings = await page.$$eval("#values-body tr.answer-only", (rows) => rows.map((r) => r.lastElementChild.textContent).join(" | "));
+  check(!/at a\*|at the end|beyond/.test(meanings), `nor says where the best point is: "${meanings}"`);
   check(!(await page.$eval("#curve", (svg) => svg.querySelector("path.curve"))), "the |ω| curve, whose peak is the answer, is not drawn");
   await page.focus("#guess");
   for (let i = 0; i < 20; i++) await page.keyboard.press("ArrowLeft");

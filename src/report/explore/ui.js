@@ -7,7 +7,8 @@
   const { Q, Quad, parse } = Exact;
   const $ = (id) => document.getElementById(id);
   const SVG = "http://www.w3.org/2000/svg";
-  const reduceMotion = window.matchMedia("(prefers-reduced-motion: reduce)").matches;
+  // Asked for less motion (read at each frame: the setting may change while the page is open).
+  const reducedMotion = window.matchMedia("(prefers-reduced-motion: reduce)");
 
   // ---- reading the controls ------------------------------------------------------------
   const fields = {
@@ -192,8 +193,8 @@
       const lost = out.lost.div(out.K0);
       rows += row("Δ<i>K</i>/<i>K</i><sub>0</sub>", unicode(lost), lost.decimal(), "fraction of the kinetic energy lost");
     }
-    rows += row("<i>a</i>*", `${out.aStar.pretty()} <i>l</i>`, out.aStar.decimal(), `the fastest-spin point, ${from}${out.inside ? "" : " (beyond the end)"}`, true);
-    rows += row("<i>ω</i><sub>max</sub>", out.omegaMax.pretty(), out.omegaMax.decimal(), `fastest spin over the rod (× ${v0l}), ${out.inside ? "at a*" : "at the end"}`, true);
+    rows += row("<i>a</i>*", `${out.aStar.pretty()} <i>l</i>`, out.aStar.decimal(), `the fastest-spin point, ${from}${out.inside || hidden() ? "" : " (beyond the end)"}`, true);
+    rows += row("<i>ω</i><sub>max</sub>", out.omegaMax.pretty(), out.omegaMax.decimal(), `fastest spin over the rod (× ${v0l})${hidden() ? "" : out.inside ? ", at a*" : ", at the end"}`, true);
     rows += row("<i>ω</i>/<i>ω</i><sub>max</sub>", ratioToMax.pretty(), ratioToMax.decimal(), "this hit against the best one", true);
     $("values-body").innerHTML = rows;
 
@@ -291,7 +292,7 @@
     };
     // While the student predicts, the curve (whose peak is the answer) is not drawn.
     if (hidden()) {
-      svg.append(el("text", { x: X((xs[0] + xs[1]) / 2), y: Y(ys[1] / 2), class: "note", "text-anchor": "middle" }, "the curve appears when you reveal the answer"));
+      svg.append(el("text", { x: X((xs[0] + xs[1]) / 2), y: Y(ys[1] * 0.12), class: "note", "text-anchor": "middle" }, "the curve appears when you reveal the answer"));
     } else {
       svg.append(el("path", { d: path(xs[0], Math.min(1, xs[1])), class: "curve" }));
       if (xs[1] > 1) svg.append(el("path", { d: path(1, xs[1]), class: "curve beyond" }));
@@ -380,6 +381,8 @@
     const { scene: s, out } = current;
     const t = Number($("time").value);
     $("time-value").value = t.toFixed(2).replace("-", "−");
+    const phase = t < 0 ? "before the impact" : motion.second !== null && t >= motion.second ? "the second impact" : "after the impact";
+    $("time").setAttribute("aria-valuetext", `t = ${$("time-value").value} l/v0, ${phase}`);
     const state = motion.at(t);
     const W = canvas.width;
     const H = canvas.height;
@@ -476,7 +479,7 @@
   function tick(now) {
     if (!playing) return;
     const time = $("time");
-    const dt = reduceMotion ? 0.5 : ((now - (last ?? now)) / 1000) * 0.8;
+    const dt = reducedMotion.matches ? 0.5 : ((now - (last ?? now)) / 1000) * 0.8;
     last = now;
     const next = Number(time.value) + dt;
     if (next >= Number(time.max)) {
@@ -487,7 +490,7 @@
     }
     drawStage();
     if (playing) {
-      if (reduceMotion) setTimeout(() => requestAnimationFrame(tick), 600);
+      if (reducedMotion.matches) setTimeout(() => requestAnimationFrame(tick), 600);
       else requestAnimationFrame(tick);
     }
   }
