@@ -79,6 +79,9 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   await type("#ratio", `${"9".repeat(30)}e60`);
   check((await text("#summary")).includes("beyond the end"), `M/m = 10^90: a* far beyond the end: "${(await text("#summary")).slice(0, 60)}…"`);
   await type("#ratio", "1");
+  // e = 0: the puck sticks, and the pair turns as one body (no second impact to look for).
+  await type("#e", "0");
+  check((await text("#second")).startsWith("At e = 0 the puck sticks to the rod: they turn together at ω = 3/5 v0/l"), `e = 0 at a = l: "${(await text("#second")).slice(0, 80)}…"`);
   await type("#e", "1");
 
   // X19: struck at a* exactly, elastic: v = V = m v0/(M + m) = 1/2, omega = v0/a* = √6/2, and

@@ -81,8 +81,11 @@ const Physics = (() => {
 
   /**
    * The motion after the impact, in floats for the animation: positions at time t (t < 0: the
-   * approach), and the time of the second impact, if the projectile meets the rod again within
-   * `horizon` (l/v0 units), found by scanning and bisection.
+   * approach), whether the puck is stuck to the rod, and the time of the second impact, if the
+   * projectile meets the rod again within `horizon` (l/v0 units), found by scanning and
+   * bisection. At e = 0 the puck sticks (the paper's sticking collision): puck and rod turn as
+   * one body at omega, about the pivot or about their common centre of mass, which moves on at
+   * m v0/(M + m); otherwise each moves freely (the puck straight on at v).
    */
   function motion(scene, out, horizon = 12) {
     const a = scene.a.toNumber();
@@ -90,13 +93,22 @@ const Physics = (() => {
     const v = out.v.toNumber();
     const V = out.V.toNumber();
     const w = out.omega.toNumber();
+    const stuck = scene.e.isZero();
+    const M = scene.M.toNumber();
+    // The point about which a stuck pair turns: the pivot, or their centre of mass (moving).
+    const hub = out.pivoted ? [0, p] : [0, a / (1 + M)];
+    const hubSpeed = out.pivoted ? 0 : 1 / (1 + M);
+    // (0, y) turned counter-clockwise by phi.
+    const turned = (y, phi) => [-y * Math.sin(phi), y * Math.cos(phi)];
     const at = (t) => {
       if (t <= 0) return { ball: [t, a], centre: [0, 0], phi: 0 };
       const phi = -w * t; // counter-clockwise angle of the rod
-      const centre = out.pivoted
-        ? [p * Math.sin(phi), p - p * Math.cos(phi)] // the centre turns about the pivot (0, p)
-        : [V * t, 0];
-      return { ball: [v * t, a], centre, phi };
+      if (stuck || out.pivoted) {
+        const [hx, hy] = [hub[0] + hubSpeed * t, hub[1]];
+        const rim = (y) => { const [x, z] = turned(y - hub[1], phi); return [hx + x, hy + z]; };
+        return { ball: stuck ? rim(a) : [v * t, a], centre: rim(0), phi };
+      }
+      return { ball: [v * t, a], centre: [V * t, 0], phi };
     };
     // Signed distance of the ball from the rod's line, and where along the rod it is.
     const relative = (t) => {
@@ -109,6 +121,7 @@ const Physics = (() => {
     };
     const touches = (r) => Math.abs(r.along) <= 1;
     let second = null;
+    if (stuck) return { at, second, stuck };
     const dt = 1e-3;
     let before = relative(dt);
     for (let t = 2 * dt; t <= horizon; t += dt) {
@@ -129,7 +142,7 @@ const Physics = (() => {
       }
       before = now;
     }
-    return { at, second };
+    return { at, second, stuck };
   }
 
   return { inertiaFactor, aStarSquared, solve, motion };

@@ -227,7 +227,9 @@
     if (Number($("time").value) > end) $("time").value = end;
     let second;
     if (motion.second === null) {
-      second = "The puck and the rod do not meet again (within 12 l/v0).";
+      second = motion.stuck
+        ? `At e = 0 the puck sticks to the rod: they turn together at ω = ${unicode(out.omega)} v0/l about ${s.pivot ? "the pivot" : "their common centre of mass, which moves on at m v0/(M + m)"}.`
+        : "The puck and the rod do not meet again (within 12 l/v0).";
     } else {
       second = `Second impact: the rod comes round and meets the puck again at t ≈ ${motion.second.toFixed(3)} l/v0`;
       // X19: a free rod struck elastically at a* exactly.
@@ -429,7 +431,9 @@
     const [bx, by] = state.ball;
     ctx.fillStyle = "#0072b2";
     ctx.beginPath();
-    ctx.arc(px(bx) - 9, py(by), 9, 0, 2 * Math.PI);
+    // The puck's edge at its point of contact: it turns with the rod when stuck to it.
+    const facing = motion.stuck ? state.phi : 0;
+    ctx.arc(px(bx) - 9 * Math.cos(facing), py(by) + 9 * Math.sin(facing), 9, 0, 2 * Math.PI);
     ctx.fill();
     // Labels.
     ctx.fillStyle = "#222";
@@ -454,7 +458,7 @@
       ? [["puck", K0, "puck"], ["rod, moving", Q.of(0), "move"], ["rod, turning", Q.of(0), "turn"]]
       : [["puck", out.projectile, "puck"], ["rod, moving", out.translation, "move"], ["rod, turning", out.rotation, "turn"]];
     if (t >= 0 && s.e.cmp(Q.of(1)) < 0) parts.push(["lost in the impact", out.lost, "lost"]);
-    let html = "<h3>Kinetic energy, as a share of <i>K</i><sub>0</sub></h3>";
+    let html = `<h3>Kinetic energy${t < 0 ? "" : " just after the impact"}, as a share of <i>K</i><sub>0</sub></h3>`;
     const label = [];
     for (const [name, value, cls] of parts) {
       const share = Quad.from(value).div(K0);
