@@ -114,3 +114,35 @@ pub fn json_script(id: &str, json: &str) -> String {
         json.replace("</", "<\\/")
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const EMPTY: Page<'static> = Page {
+        title: "",
+        style: "",
+        body: "",
+        script: "",
+    };
+
+    /// A style or script holding its own end tag would close its element early and spill the
+    /// rest into the page as text or markup; the shell refuses it.
+    #[test]
+    #[should_panic(expected = "a script that ends its element")]
+    fn a_script_that_would_end_its_element_is_refused() {
+        document(&Page {
+            script: "let s = '</script>';",
+            ..EMPTY
+        });
+    }
+
+    #[test]
+    #[should_panic(expected = "a style that ends its element")]
+    fn a_style_that_would_end_its_element_is_refused() {
+        document(&Page {
+            style: "</style><p>",
+            ..EMPTY
+        });
+    }
+}
