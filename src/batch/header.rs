@@ -2,6 +2,7 @@
 //! appended to the output) and the cells of a data row, read into a scene and claimed values.
 
 use super::compare::{Agreement, Claimed};
+use super::word_row::{Role, WORD_SCENE, WordPlan};
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::scene::{Scene, SceneInput};
@@ -92,6 +93,8 @@ pub struct Batch {
     pub(super) claims: Vec<usize>,
     /// The input column named `id`, if any: it names the rows of the summary.
     pub(super) id_column: Option<usize>,
+    /// Where the word row finds its cells, when the header allows it (see [`WordPlan`]).
+    pub(super) word_plan: Option<WordPlan>,
     header: String,
 }
 
@@ -164,12 +167,16 @@ impl Batch {
                 )));
             }
         }
+        let word_plan = (arithmetic == Arithmetic::Exact)
+            .then(|| word_plan(&columns))
+            .flatten();
         Ok(Batch {
             arithmetic,
             agreement: Agreement::Exact,
             columns,
             claims,
             id_column,
+            word_plan,
             header: header.to_string(),
         })
     }
@@ -361,6 +368,25 @@ impl Batch {
         }
         Ok((input.build().map_err(at)?, claimed))
     }
+}
+
+/// The word row's plan for a header whose scene columns are among m, M, l, a, v0, e and whose
+/// claims among v, V, omega (any other column passes through); `None` otherwise.
+fn word_plan(columns: &[Column]) -> Option<WordPlan> {
+    let roles = columns
+        .iter()
+        .map(|column| match *column {
+            Column::Scene(k) => WORD_SCENE.iter().position(|&w| w == k).map(Role::Scene),
+            Column::Claim(k) => (k < STATE).then_some(Role::Claim(k)),
+            Column::Passed => Some(Role::Passed),
+        })
+        .collect::<Option<Vec<Role>>>()?;
+    let claimed: [bool; STATE] = std::array::from_fn(|k| roles.contains(&Role::Claim(k)));
+    Some(WordPlan {
+        roles,
+        claimed,
+        audits: claimed.iter().all(|c| *c),
+    })
 }
 
 #[cfg(test)]

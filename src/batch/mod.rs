@@ -28,6 +28,7 @@ mod row;
 mod stream;
 mod summary;
 mod ulps;
+mod word_row;
 
 pub use audit::{Audit, Finding, LAW_TOLERANCE, STATE_TOLERANCE, audit};
 pub use compare::{Agreement, FLOAT_TOLERANCE, MAX_ULPS, OutputCheck};

@@ -4,6 +4,7 @@
 use super::audit::{Finding, audit};
 use super::compare::{Agreement, Claimed, OutputCheck, compare};
 use super::header::{Arithmetic, Batch, STATE};
+use super::word_row::word_row;
 use crate::error::Error;
 use crate::field::Q;
 use crate::mechanics::{Motion, kinetic_energy};
@@ -58,6 +59,11 @@ impl Batch {
     /// ```
     pub fn row(&self, number: usize, line: &str) -> Result<SolvedRow, Error> {
         let line = line.trim_end_matches(['\n', '\r']);
+        if let Some(row) =
+            (self.word_plan.as_ref()).and_then(|plan| word_row(plan, &self.agreement, number, line))
+        {
+            return Ok(row);
+        }
         let (scene, claimed) = self.cells(number, line)?;
         let mut out = String::with_capacity(2 * line.len() + 64);
         out.push_str(line);

@@ -4,6 +4,7 @@
 //! - `words`: binary GCDs on `u64` and `u128`, and a 256-bit unsigned integer (`U256`) that
 //!   reduces, compares and prints fractions of up to 256-bit parts on machine words;
 //! - `wide`: a checked 512-bit signed integer (`Wide`);
+//! - `ring`: fixed-width integers that wrap (`Ring<N>`), for values proven in range in advance;
 //! - `malachite` (cargo feature `malachite`): malachite's `Integer` as the unbounded width;
 //! - the `Int` kit: the checked operations of the fraction-free route
 //!   ([`crate::solve::fraction_free`]), written once for `i128`, `Wide` and big integers;
@@ -12,6 +13,7 @@
 use crate::field::Q;
 use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive, Zero};
+pub(crate) use ring::Ring;
 pub(crate) use wide::Wide;
 pub(crate) use words::{U256, gcd};
 
@@ -38,6 +40,7 @@ macro_rules! unbounded_arithmetic {
 
 #[cfg(feature = "malachite")]
 mod malachite;
+mod ring;
 mod wide;
 mod words;
 

@@ -212,6 +212,45 @@ impl U256 {
         Q::new_raw(BigInt::from_biguint(sign, n), d.into())
     }
 
+    /// `n/d` in lowest terms (`d > 0`), on words: one binary GCD and two exact divisions.
+    pub(crate) fn reduced(n: U256, d: U256) -> (U256, U256) {
+        let g = U256::gcd(n, d);
+        if g == U256::ONE {
+            return (n, d);
+        }
+        match u64::try_from(g.lo) {
+            Ok(small) if g.hi == 0 => (n.div_rem_word(small).0, d.div_rem_word(small).0),
+            _ => {
+                let g = g.to_big();
+                let word = |x: BigUint| U256::from_big(&x).expect("a quotient is not larger");
+                (word(n.to_big() / &g), word(d.to_big() / g))
+            }
+        }
+    }
+
+    /// `(self / g, self mod g)` for a nonzero word `g`: long division limb by limb, from the
+    /// highest nonzero limb.
+    pub(crate) fn div_rem_word(self, g: u64) -> (U256, u64) {
+        let mut limbs = [
+            (self.hi >> 64) as u64,
+            self.hi as u64,
+            (self.lo >> 64) as u64,
+            self.lo as u64,
+        ];
+        let g = u128::from(g);
+        let mut rem = 0u128;
+        for limb in limbs.iter_mut().skip_while(|x| **x == 0) {
+            let cur = rem << 64 | u128::from(*limb);
+            *limb = (cur / g) as u64;
+            rem = cur % g;
+        }
+        let quotient = U256 {
+            hi: u128::from(limbs[0]) << 64 | u128::from(limbs[1]),
+            lo: u128::from(limbs[2]) << 64 | u128::from(limbs[3]),
+        };
+        (quotient, rem as u64)
+    }
+
     /// `n/d` in lowest terms (`d > 0`).
     fn reduce(n: U256, d: U256) -> (BigUint, BigUint) {
         let g = U256::gcd(n, d);
@@ -261,37 +300,28 @@ impl U256 {
         out
     }
 
-    /// Appends the decimal digits.
+    /// Appends the decimal digits: itoa's digit-pair printer on the value below 2^128, or on
+    /// its base-10^19 digits above.
     pub(crate) fn write_decimal(self, out: &mut String) {
-        use std::fmt::Write;
         const CHUNK: u64 = 10_000_000_000_000_000_000; // 10^19
+        let mut buffer = itoa::Buffer::new();
         if self.hi == 0 {
-            write!(out, "{}", self.lo).expect("writing to a String cannot fail");
+            out.push_str(buffer.format(self.lo));
             return;
         }
-        // Base-10^19 digits by long division of the four 64-bit limbs (at most five chunks).
-        let mut limbs = [
-            (self.hi >> 64) as u64,
-            self.hi as u64,
-            (self.lo >> 64) as u64,
-            self.lo as u64,
-        ];
-        let mut chunks = Vec::with_capacity(5);
-        while limbs.iter().any(|&x| x != 0) {
-            let mut rem = 0u128;
-            for limb in &mut limbs {
-                let cur = rem << 64 | u128::from(*limb);
-                *limb = (cur / u128::from(CHUNK)) as u64;
-                rem = cur % u128::from(CHUNK);
-            }
-            chunks.push(rem as u64);
+        // Low base-10^19 digits until the rest fits 128 bits (at most three: 2^256 < 10^78).
+        let (mut head, mut chunks, mut count) = (self, [0u64; 3], 0);
+        while head.hi != 0 {
+            let (quotient, rem) = head.div_rem_word(CHUNK);
+            chunks[count] = rem;
+            count += 1;
+            head = quotient;
         }
-        let mut chunks = chunks.iter().rev();
-        if let Some(first) = chunks.next() {
-            write!(out, "{first}").expect("writing to a String cannot fail");
-        }
-        for chunk in chunks {
-            write!(out, "{chunk:019}").expect("writing to a String cannot fail");
+        out.push_str(buffer.format(head.lo));
+        for &chunk in chunks[..count].iter().rev() {
+            let digits = buffer.format(chunk);
+            out.extend(std::iter::repeat_n('0', 19 - digits.len()));
+            out.push_str(digits);
         }
     }
 

@@ -1,0 +1,109 @@
+//! The word-level exact row is a shortcut, never a second opinion: on every row it takes, its
+//! line is the general row's, byte for byte. The general row is reached without a test hook:
+//! a `rod` column (here always `uniform`, the default) is one the word row does not read, so
+//! the same rows with that column go the general way; the cell is then cut out of the line.
+
+use proptest::prelude::*;
+use rodimpact::batch::{Arithmetic, Batch, SolvedRow};
+
+/// The rows of `header`/`lines` solved twice: as given (the word row where it applies) and
+/// with a trailing `rod` column of `uniform` (the general row), that cell removed again.
+fn both_ways(header: &str, lines: &[String]) -> Vec<(SolvedRow, SolvedRow)> {
+    let words = Batch::new(header, Arithmetic::Exact).unwrap();
+    let general = Batch::new(&format!("{header},rod"), Arithmetic::Exact).unwrap();
+    lines
+        .iter()
+        .enumerate()
+        .map(|(k, line)| {
+            let fast = words.row(k + 1, line).unwrap();
+            let mut slow = general.row(k + 1, &format!("{line},uniform")).unwrap();
+            slow.line = slow.line.replacen(",uniform,", ",", 1);
+            (fast, slow)
+        })
+        .collect()
+}
+
+fn reference(name: &str) -> (String, Vec<String>) {
+    let text = std::fs::read_to_string(format!("tests/data/{name}")).unwrap();
+    let mut lines = text.lines().map(str::to_string);
+    let header = lines.next().unwrap();
+    (header, lines.collect())
+}
+
+/// Both reference batches, with and without their exact claims: every row the same line, the
+/// same checks, laws and diagnosis.
+#[test]
+fn the_reference_batches_give_the_general_rows_lines() {
+    for name in ["bench-1e6.csv", "bench-textbook.csv"] {
+        let (header, lines) = reference(name);
+        let inputs_only: Vec<String> = lines
+            .iter()
+            .map(|l| l.split(',').take(5).collect::<Vec<_>>().join(","))
+            .collect();
+        let short = header.split(',').take(5).collect::<Vec<_>>().join(",");
+        for (h, rows) in [(&header, &lines), (&short, &inputs_only)] {
+            for (fast, slow) in both_ways(h, rows) {
+                assert_eq!(fast, slow, "{name}");
+            }
+        }
+    }
+}
+
+/// A cell as a user might write it: unreduced, signed with `+`, spaced, or a decimal (which
+/// the word row leaves to the general one).
+fn written(n: i64, d: u64, style: u8) -> String {
+    match style % 4 {
+        0 => format!("{n}/{d}"),
+        1 if n >= 0 => format!("+{}/{}", 2 * n, 2 * d),
+        2 => format!(" {n}/{d} "),
+        _ if d == 1 => format!("{n}.0"),
+        _ => format!("{}/{}", 3 * n, 3 * d),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    /// Random scenes (any e, a anywhere on the rod, inputs up to 2^40), written in several
+    /// ways, with exact, unreduced, wrong or missing claims: the same line both ways.
+    #[test]
+    fn random_rows_give_the_general_rows_lines(
+        m in 1u64..1 << 40, md in 1u64..1 << 40,
+        big in 1u64..1 << 40, big_d in 1u64..1 << 40,
+        l in 1u64..1 << 20, a_frac in -1000i64..=1000,
+        v0 in 1u64..1 << 30, v0d in 1u64..1 << 30,
+        e in 0u64..=7, style in any::<u8>(), claim_style in 0u8..4,
+    ) {
+        let a = format!("{}/{}", a_frac * l as i64, 1000);
+        let scene = [
+            written(m as i64, md, style),
+            written(big as i64, big_d, style / 4),
+            written(l as i64, 1, style / 16),
+            a,
+            written(v0 as i64, v0d, style / 64),
+            format!("{e}/7"),
+        ]
+        .join(",");
+        // The exact answer, from the general row, as the claims (in several forms).
+        let general = Batch::new("m,M,l,a,v0,e,rod", Arithmetic::Exact).unwrap();
+        let solved = general.row(1, &format!("{scene},uniform")).unwrap();
+        let values: Vec<&str> = solved.line.trim_end().split(',').skip(7).take(3).collect();
+        let claims: Vec<String> = values
+            .iter()
+            .map(|v| match claim_style {
+                0 => v.to_string(),
+                1 => format!("{v}0").replacen('/', "0/", 1), // unreduced: times 10/10
+                2 => "1/3".to_string(),
+                _ => String::new(),
+            })
+            .collect();
+        let rows = both_ways("m,M,l,a,v0,e,v,V,omega", &[format!("{scene},{}", claims.join(","))]);
+        for (fast, slow) in rows {
+            prop_assert_eq!(fast, slow);
+        }
+        let rows = both_ways("m,M,l,a,v0,e", &[scene]);
+        for (fast, slow) in rows {
+            prop_assert_eq!(fast, slow);
+        }
+    }
+}
