@@ -7,6 +7,7 @@ use super::summary::Summary;
 use crate::error::{Error, ErrorKind};
 use rayon::prelude::*;
 use std::io::{BufRead, Read, Write};
+use std::ops::Range;
 
 /// The largest number of data rows accepted.
 pub const MAX_ROWS: usize = 100_000_000;
@@ -57,13 +58,14 @@ pub fn run(
     let (mut current, mut stop) = reader.next_chunk();
     while !current.is_empty() {
         let mut rows = Vec::new();
-        let (mut written, mut next) = (Ok(()), (Vec::new(), None));
+        let (mut written, mut next) = (Ok(()), (Chunk::default(), None));
         let reading = stop.is_none();
         rayon::in_place_scope(|scope| {
             scope.spawn(|_| {
                 rows = current
+                    .rows
                     .par_iter()
-                    .map(|(n, line)| batch.row(*n, line))
+                    .map(|(n, place)| batch.row(*n, &current.text[place.clone()]))
                     .collect();
             });
             written = write_rows(out, &solved, &mut summary);
@@ -111,6 +113,20 @@ fn write_rows(
     Ok(())
 }
 
+/// Rows read together: their lines one after another in one string (one allocation for the
+/// chunk, not one per row), and each row's number and place in it.
+#[derive(Default)]
+struct Chunk {
+    text: String,
+    rows: Vec<(usize, Range<usize>)>,
+}
+
+impl Chunk {
+    fn is_empty(&self) -> bool {
+        self.rows.is_empty()
+    }
+}
+
 /// Reads data rows [`CHUNK`] at a time, enforcing [`MAX_LINE`] and [`MAX_ROWS`].
 struct ChunkReader<R> {
     input: R,
@@ -123,25 +139,29 @@ struct ChunkReader<R> {
 impl<R: BufRead> ChunkReader<R> {
     /// Up to [`CHUNK`] non-blank rows with their numbers (empty at the end of the input), and
     /// the error that stopped reading after them, if any.
-    fn next_chunk(&mut self) -> (Vec<(usize, String)>, Option<Error>) {
-        let mut lines = Vec::with_capacity(CHUNK);
-        while lines.len() < CHUNK {
-            match self.next_line() {
-                Ok(Some(line)) => lines.push(line),
+    fn next_chunk(&mut self) -> (Chunk, Option<Error>) {
+        let mut chunk = Chunk {
+            text: String::with_capacity(CHUNK * 80),
+            rows: Vec::with_capacity(CHUNK),
+        };
+        while chunk.rows.len() < CHUNK {
+            match self.next_line(&mut chunk.text) {
+                Ok(Some(row)) => chunk.rows.push(row),
                 Ok(None) => break,
-                Err(e) => return (lines, Some(e)),
+                Err(e) => return (chunk, Some(e)),
             }
         }
-        (lines, None)
+        (chunk, None)
     }
 
-    /// The next non-blank row with its number, or `None` at the end of the input.
-    fn next_line(&mut self) -> Result<Option<(usize, String)>, Error> {
+    /// Appends the next non-blank row to `text`: its number and place, or `None` at the end
+    /// of the input.
+    fn next_line(&mut self, text: &mut String) -> Result<Option<(usize, Range<usize>)>, Error> {
         loop {
-            let mut line = String::new();
+            let start = text.len();
             let n = (&mut self.input)
                 .take(MAX_LINE as u64 + 1)
-                .read_line(&mut line)
+                .read_line(text)
                 .map_err(|why| Error::io(format!("row {}", self.number + 1), "cannot read", why))?;
             if n == 0 {
                 return Ok(None);
@@ -160,8 +180,10 @@ impl<R: BufRead> ChunkReader<R> {
                     ErrorKind::Invalid(format!("more than {MAX_ROWS} rows (limit per batch)")),
                 ));
             }
-            if !line.trim().is_empty() {
-                return Ok(Some((self.number, line)));
+            if text[start..].trim().is_empty() {
+                text.truncate(start);
+            } else {
+                return Ok(Some((self.number, start..text.len())));
             }
         }
     }

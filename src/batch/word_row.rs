@@ -18,7 +18,7 @@ use super::compare::{Agreement, OutputCheck};
 use super::header::STATE;
 use super::row::{Diagnosis, SolvedRow};
 use crate::field::Q;
-use crate::field::int::{Ring, U256};
+use crate::field::int::{Ring, U256, gcd_u64};
 use num_traits::Zero;
 
 /// The scene columns the word row reads, in this order (an index into the header's scene
@@ -93,11 +93,12 @@ impl Part {
 fn digits(bytes: &[u8]) -> Option<(u64, usize)> {
     let mut n = 0u64;
     let mut used = 0;
-    for &b in bytes.iter().take(19) {
-        if !b.is_ascii_digit() {
+    while used < bytes.len() && used < 19 {
+        let digit = bytes[used].wrapping_sub(b'0');
+        if digit > 9 {
             break;
         }
-        n = n * 10 + u64::from(b - b'0');
+        n = n * 10 + u64::from(digit);
         used += 1;
     }
     (1..=18).contains(&used).then_some((n, used))
@@ -165,7 +166,6 @@ struct Words<const N: usize> {
 impl<const N: usize> Words<N> {
     fn of(x: &Inputs) -> Words<N> {
         let w = |negative: bool, n: u64| Ring::signed(negative, n);
-        let (ln, ld) = (w(false, x.l.n), w(false, x.l.d));
         Words {
             mn: w(false, x.m.n),
             md: w(false, x.m.d),
@@ -175,8 +175,9 @@ impl<const N: usize> Words<N> {
             ad: w(false, x.a.d),
             en: w(false, x.e.n),
             ed: w(false, x.e.d),
-            gn: ln.mul(ln),
-            gd: w(false, 3).mul(ld).mul(ld),
+            // Below 2^122: the parts are below 2^60.
+            gn: Ring::from_u128(u128::from(x.l.n) * u128::from(x.l.n)),
+            gd: Ring::from_u128(3 * u128::from(x.l.d) * u128::from(x.l.d)),
         }
     }
 }
@@ -261,17 +262,15 @@ fn angular<const L: usize>(x: &Inputs, raw: &Raw<4>) -> bool {
 }
 
 /// Kinetic energy (e = 1), `w nv^2 + Mn md gd nV^2 + Mn md gn nw^2 = w den^2` with
-/// `w = mn Md gd`, in L limbs.
+/// `w = mn Md gd`, written `w (den - nv)(den + nv) = Mn md (gd nV^2 + gn nw^2)` (two squares
+/// fewer), in L limbs.
 fn energy<const L: usize>(x: &Inputs, raw: &Raw<4>) -> bool {
     let (s, r) = (Words::<L>::of(x), raw.resize::<L>());
     let weight = s.mn.mul(s.big_d).mul(s.gd);
-    let big_n_md = s.big_n.mul(s.md);
-    let square = |x: Ring<L>| x.mul(x);
-    weight
-        .mul(square(r.nv))
-        .add(big_n_md.mul(s.gd).mul(square(r.n_big_v)))
-        .add(big_n_md.mul(s.gn).mul(square(r.nw)))
-        == weight.mul(square(r.den))
+    let kinetic =
+        s.gd.mul(r.n_big_v.mul(r.n_big_v))
+            .add(s.gn.mul(r.nw.mul(r.nw)));
+    weight.mul(r.den.sub(r.nv)).mul(r.den.add(r.nv)) == s.big_n.mul(s.md).mul(kinetic)
 }
 
 /// Upper bounds on the bit lengths of the values of the solve (the outputs before reduction,
@@ -321,14 +320,95 @@ impl Bounds {
 /// and `den` (> 0).
 type Solved = ([(bool, U256); 3], U256);
 
+/// Word factors multiplied together into as few words as they fit (ones left out).
+struct Chunks {
+    words: [u64; 12],
+    len: usize,
+}
+
+impl Chunks {
+    fn of(factors: &[u64]) -> Chunks {
+        let mut chunks = Chunks {
+            words: [1; 12],
+            len: 1,
+        };
+        for &f in factors.iter().filter(|f| **f > 1) {
+            match chunks.words[chunks.len - 1].checked_mul(f) {
+                Some(product) => chunks.words[chunks.len - 1] = product,
+                None => {
+                    chunks.words[chunks.len] = f;
+                    chunks.len += 1;
+                }
+            }
+        }
+        chunks
+    }
+}
+
+/// The largest divisor of `d` made of primes that divide the product of `words` (at most 12
+/// words), if it fits a word: for each word-sized chunk c of the product, gcd(c, rest) is
+/// divided out of the rest of `d` until it is 1.
+fn smooth_part(d: U256, words: &[u64]) -> Option<u64> {
+    let chunks = Chunks::of(words);
+    let (mut rest, mut part) = (d, 1u64);
+    for &c in &chunks.words[..chunks.len] {
+        loop {
+            let common = gcd_u64(c, rest.rem_word(c));
+            if common == 1 {
+                break;
+            }
+            part = part.checked_mul(common)?;
+            rest = rest.div_rem_word(common).0;
+        }
+    }
+    Some(part)
+}
+
 /// The three outputs v, V, omega of a solved row, reduced: (sign, numerator, denominator).
+///
+/// Each output is `vn n/(vd den)` with gcd(n, den) = gcd(F, den) for a product F of input
+/// words (`nV = ne A`, `nw = ne mn Md an 3 ld^2 ad`, and `nv = den - ne B`, so gcd(nv, den) =
+/// gcd(ne B, den), B = Mn md ln^2 ad^2). Every prime of a GCD to cancel therefore divides one of
+/// the words vn, vd, ne, mn, md, Mn, Md, ln, ld, an, ad, 3, so the GCD of each output with the
+/// denominator is its GCD with the part of the denominator made of those primes (`smooth_part`):
+/// one pass over the words for the three outputs, then a word GCD each, instead of three binary
+/// GCDs of ~140-bit numbers. When that part exceeds a word, each output takes the binary GCD.
 fn reduce_outputs(x: &Inputs, (numerators, den): Solved) -> [(bool, U256, U256); 3] {
-    let (vn, vd) = (u128::from(x.v0.n), u128::from(x.v0.d));
-    let d = den.checked_mul(vd).expect("within the solve's bound");
+    let (vn, vd) = (x.v0.n, x.v0.d);
+    let d = den
+        .checked_mul(u128::from(vd))
+        .expect("within the solve's bound");
+    let words = [
+        vn,
+        vd,
+        x.e.n + x.e.d,
+        x.m.n,
+        x.m.d,
+        x.big_m.n,
+        x.big_m.d,
+        x.l.n,
+        x.l.d,
+        x.a.n,
+        x.a.d,
+        3,
+    ];
+    let smooth = smooth_part(d, &words);
     numerators.map(|(negative, n)| {
-        let n = n.checked_mul(vn).expect("within the solve's bound");
-        let (n, d) = U256::reduced(n, d);
-        (negative && n != U256::ZERO, n, d)
+        let n = n
+            .checked_mul(u128::from(vn))
+            .expect("within the solve's bound");
+        if n == U256::ZERO {
+            return (false, U256::ZERO, U256::ONE);
+        }
+        let (n, d) = match smooth {
+            Some(1) => (n, d),
+            Some(part) => match gcd_u64(part, n.rem_word(part)) {
+                1 => (n, d),
+                g => (n.div_rem_word(g).0, d.div_rem_word(g).0),
+            },
+            None => U256::reduced(n, d),
+        };
+        (negative, n, d)
     })
 }
 
@@ -370,18 +450,23 @@ pub(super) fn word_row(
     }
     let mut parts = [None; 6];
     let mut claims: [&[u8]; STATE] = [&[]; STATE];
-    let mut count = 0;
-    // `str::split` on a char finds the commas with memchr, not byte by byte.
-    for cell in line.split(',') {
-        match plan.roles.get(count)? {
-            Role::Scene(k) => parts[*k] = Some(Part::parse(cell.as_bytes())?),
-            Role::Claim(k) => claims[*k] = cell.as_bytes(),
+    let bytes = line.as_bytes();
+    let (last, mut start) = (plan.roles.len() - 1, 0);
+    for (k, role) in plan.roles.iter().enumerate() {
+        // A plain scan for the comma: the cells are short, and memchr's set-up per cell cost
+        // more than the scan.
+        let end = match bytes[start..].iter().position(|&b| b == b',') {
+            Some(offset) if k < last => start + offset,
+            None if k == last => bytes.len(),
+            _ => return None, // too few or too many cells
+        };
+        let cell = &bytes[start..end];
+        match *role {
+            Role::Scene(slot) => parts[slot] = Some(Part::parse(cell)?),
+            Role::Claim(claim) => claims[claim] = cell,
             Role::Passed => {}
         }
-        count += 1;
-    }
-    if count != plan.roles.len() {
-        return None;
+        start = end + 1;
     }
     let inputs = Inputs::check(parts)?;
     let outputs = reduce_outputs(&inputs, solve(&inputs)?);
@@ -469,6 +554,41 @@ mod tests {
             p("123456789012345678").map(|x| x.n),
             Some(123456789012345678)
         );
+    }
+
+    /// The laws are checks, not formalities: one unit off in a raw value fails them (the row
+    /// then goes to the general path instead of printing a wrong answer).
+    #[test]
+    fn a_value_one_unit_off_fails_its_laws() {
+        let part = |n, d| Part {
+            negative: false,
+            n,
+            d,
+        };
+        let x = Inputs {
+            m: part(3, 7),
+            big_m: part(5, 2),
+            l: part(9, 4),
+            a: Part {
+                negative: true,
+                ..part(4, 3)
+            },
+            v0: part(11, 5),
+            e: Part::ONE,
+        };
+        let raw = raw_in::<4>(&x).unwrap();
+        assert!(linear::<4>(&x, &raw) && angular::<4>(&x, &raw) && energy::<8>(&x, &raw));
+        let one = Ring::<4>::signed(false, 1);
+        let off_v = Raw {
+            nv: raw.nv.add(one),
+            ..raw
+        };
+        assert!(!linear::<4>(&x, &off_v) && !energy::<8>(&x, &off_v));
+        let off_w = Raw {
+            nw: raw.nw.sub(one),
+            ..raw
+        };
+        assert!(!angular::<4>(&x, &off_w) && !energy::<8>(&x, &off_w));
     }
 
     #[test]

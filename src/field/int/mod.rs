@@ -15,7 +15,7 @@ use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive, Zero};
 pub(crate) use ring::Ring;
 pub(crate) use wide::Wide;
-pub(crate) use words::{U256, gcd};
+pub(crate) use words::{U256, gcd, gcd_u64};
 
 /// The [`Int`] operations of an integer type that never overflows (every result `Some`),
 /// written once for num-bigint's `BigInt` and, with the feature, malachite's `Integer`

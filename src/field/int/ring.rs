@@ -19,6 +19,14 @@ impl<const N: usize> Ring<N> {
         if negative { x.neg() } else { x }
     }
 
+    /// A non-negative value below 2^127 (N >= 2).
+    pub(crate) fn from_u128(x: u128) -> Self {
+        let mut limbs = [0; N];
+        limbs[0] = x as u64;
+        limbs[1] = (x >> 64) as u64;
+        Ring(limbs)
+    }
+
     /// Whether the value, read as a signed integer, is below zero.
     pub(crate) fn is_negative(&self) -> bool {
         self.0[N - 1] >> 63 == 1
@@ -137,6 +145,7 @@ mod tests {
             prop_assert_eq!(to_big(x.mul(y).resize::<6>()), &ba * &bb);
             prop_assert_eq!(to_big(x.resize::<2>()), ba.clone());
             let s = Ring::<3>::signed(neg, m);
+            prop_assert_eq!(to_big(Ring::<3>::from_u128(a.unsigned_abs())), BigInt::from(a.unsigned_abs()));
             prop_assert_eq!(to_big(s), if neg { -BigInt::from(m) } else { BigInt::from(m) });
             let (negative, hi, lo) = x.mul(y).sign_magnitude();
             let magnitude: BigInt = (BigInt::from(hi) << 128) + BigInt::from(lo);

@@ -35,7 +35,7 @@ pub(crate) fn gcd(mut a: u128, mut b: u128) -> u128 {
 }
 
 /// Stein's binary GCD on `u64` (`gcd_u64(0, d) = d`).
-fn gcd_u64(a: u64, b: u64) -> u64 {
+pub(crate) fn gcd_u64(a: u64, b: u64) -> u64 {
     if a == 0 {
         return b;
     }
@@ -226,6 +226,19 @@ impl U256 {
                 (word(n.to_big() / &g), word(d.to_big() / g))
             }
         }
+    }
+
+    /// `self mod w` for a nonzero word `w`, from the highest nonzero limb.
+    pub(crate) fn rem_word(self, w: u64) -> u64 {
+        let w = u128::from(w);
+        let limbs = [
+            (self.hi >> 64) as u64,
+            self.hi as u64,
+            (self.lo >> 64) as u64,
+            self.lo as u64,
+        ];
+        let rem = |acc: u128, limb: &u64| (acc << 64 | u128::from(*limb)) % w;
+        limbs.iter().skip_while(|x| **x == 0).fold(0, rem) as u64
     }
 
     /// `(self / g, self mod g)` for a nonzero word `g`: long division limb by limb, from the
@@ -423,6 +436,36 @@ mod tests {
             );
         }
         assert_eq!(U256::from_big(&(BigUint::from(1u8) << 256u32)), None);
+    }
+
+    proptest::proptest! {
+        /// Division by a word, its remainder, and the reduction of a fraction on words, against
+        /// num-bigint, across all four limbs.
+        #[test]
+        fn word_division_and_reduction_match_big_integers(
+            limbs in proptest::array::uniform4(proptest::prelude::any::<u64>()),
+            w in 1u64..,
+            k in 0usize..4,
+            factor in 1u64..1 << 20,
+        ) {
+            let mut limbs = limbs;
+            limbs[..k].fill(0); // fewer limbs in use
+            let x = U256 {
+                hi: u128::from(limbs[0]) << 64 | u128::from(limbs[1]),
+                lo: u128::from(limbs[2]) << 64 | u128::from(limbs[3]),
+            };
+            let big = x.to_big();
+            let (q, r) = x.div_rem_word(w);
+            proptest::prop_assert_eq!(q.to_big(), &big / w);
+            proptest::prop_assert_eq!(BigUint::from(r), &big % w);
+            proptest::prop_assert_eq!(BigUint::from(x.rem_word(w)), &big % w);
+            // A fraction with a common factor, reduced, equals num-rational's.
+            let n = U256 { hi: 0, lo: u128::from(w) * u128::from(factor) };
+            let d = U256 { hi: 0, lo: u128::from(limbs[3] | 1) * u128::from(factor) };
+            let (rn, rd) = U256::reduced(n, d);
+            let want = num_rational::Ratio::new(n.to_big(), d.to_big());
+            proptest::prop_assert_eq!((rn.to_big(), rd.to_big()), (want.numer().clone(), want.denom().clone()));
+        }
     }
 
     #[test]
