@@ -14,7 +14,7 @@ pub const MAX_ROWS: usize = 100_000_000;
 /// The longest line accepted, in bytes.
 pub const MAX_LINE: usize = 1 << 20;
 /// Rows read, solved in parallel and written per step.
-pub const CHUNK: usize = 8192;
+pub const CHUNK: usize = 2048;
 
 /// Streams the data rows of `input` (after the header) to `out`, [`CHUNK`] rows at a time, each
 /// chunk solved in parallel on the current rayon pool and written in input order. Reading the
