@@ -23,6 +23,15 @@ fn formula_json(args: &[&str]) -> serde_json::Value {
     serde_json::from_slice(&out.stdout).unwrap()
 }
 
+/// `rodimpact formula ARGS` as it ran (any exit code).
+fn run(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .arg("formula")
+        .args(args)
+        .output()
+        .unwrap()
+}
+
 fn value(text: &str) -> Radical {
     parse("test", text).unwrap_or_else(|e| panic!("{text}: {e}"))
 }
@@ -114,13 +123,6 @@ fn restitution_sticking_and_pivot() {
 
 #[test]
 fn every_format_renders_and_bad_input_is_refused() {
-    let run = |args: &[&str]| {
-        Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-            .arg("formula")
-            .args(args)
-            .output()
-            .unwrap()
-    };
     let text = String::from_utf8(run(&[]).stdout).unwrap();
     assert!(
         text.contains("omega = 6*a*m*v0/(M*l^2 + 3*a^2*m + l^2*m)"),
@@ -137,7 +139,7 @@ fn every_format_renders_and_bad_input_is_refused() {
         ),
         (
             &["--M", "2*q"][..],
-            "error: M: unknown symbol 'q' at character 3 (symbols: m M l L a d v0 e p I r, function sqrt)\n",
+            "error: M: unknown symbol 'q' at character 3 (symbols: m M l L a d v0 e p I r, oblique v0t mu rd w V0 Vt0 omega0, function sqrt)\n",
         ),
     ] {
         let out = run(args);
@@ -159,4 +161,110 @@ fn readme_example_is_current() {
     let readme =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
     assert!(readme.contains(&format!("$ rodimpact formula --M 2*m --e e\n{text}```")));
+}
+
+/// An oblique frictional scene in symbols, against the impulse balance worked by hand: the
+/// tangential impulse acts along the rod through its centre, so omega is the frictionless one;
+/// sticking takes Jt = u_t/k_t with u_t = v0t and k_t = 1/m + 1/M, sliding takes Jt = mu J; the
+/// threshold is mu* = u_t/(J k_t) with J = (1 + e) v0/(1/m + 1/M + a^2/I), I = M l^2/3.
+#[test]
+fn oblique_friction_in_symbols() {
+    let j = formula_json(&["--v0t", "v0t", "--mu", "mu", "--e", "e"]);
+    let paper = formula_json(&["--e", "e"]);
+    for key in ["v", "V", "omega", "impulse", "a_star_squared"] {
+        assert_eq!(j[key], paper[key], "{key} changed by v0t and mu");
+    }
+    let k_n = "(1/m + 1/M + 3*a^2/(M*l^2))";
+    let big_j = format!("((1+e)*v0/{k_n})");
+    assert_formula(&j, "mu_star", &format!("v0t/({big_j}*(1/m + 1/M))"));
+    let stick = &j["cases"]["stick"];
+    assert_formula(stick, "tangential_impulse", "v0t/(1/m + 1/M)");
+    assert_formula(stick, "vt", "v0t - v0t/(1/m + 1/M)/m");
+    assert_formula(stick, "Vt", "v0t/(1/m + 1/M)/M");
+    // Lost: (1 - e^2) v0^2/(2 k_n) to restitution, u_t^2/(2 k_t) to friction.
+    assert_formula(
+        stick,
+        "energy_lost",
+        &format!("(1 - e^2)*v0^2/(2*{k_n}) + v0t^2/(2*(1/m + 1/M))"),
+    );
+    let slide = &j["cases"]["slide"];
+    assert_formula(slide, "tangential_impulse", &format!("mu*{big_j}"));
+    assert_formula(slide, "vt", &format!("v0t - mu*{big_j}/m"));
+    assert_formula(slide, "Vt", &format!("mu*{big_j}/M"));
+    assert_formula(
+        slide,
+        "energy_lost",
+        &format!("(1 - e^2)*v0^2/(2*{k_n}) + mu*{big_j}*(v0t - mu*{big_j}*(1/m + 1/M)/2)"),
+    );
+    assert_eq!(stick["condition"], "mu >= mu_star");
+    assert_eq!(slide["condition"], "mu < mu_star");
+    let defaults = j["defaults"].as_array().unwrap();
+    assert!(
+        defaults.iter().any(|d| d
+            .as_str()
+            .unwrap()
+            .starts_with("the slip before the impact, u_t = v0t, taken > 0")),
+        "{j}"
+    );
+}
+
+/// A spinning solid disc (I = m rd^2/2) struck on the paper's scene, by hand: the rim slips
+/// with u_t = w rd, k_t = 1/m + rd^2/(m rd^2/2) + 1/M = 3/m + 1/M; sticking takes
+/// Jt = w rd/k_t, and the spin drops by 2 Jt/(m rd) to w (M + m)/(3M + m).
+#[test]
+fn spinning_disc_in_symbols() {
+    let j = formula_json(&["--radius", "rd", "--spin", "w", "--mu", "mu"]);
+    let stick = &j["cases"]["stick"];
+    assert_formula(stick, "spin", "w*(M + m)/(3*M + m)");
+    assert_formula(stick, "tangential_impulse", "w*rd/(3/m + 1/M)");
+    assert_formula(stick, "vt", "-w*rd/(3/m + 1/M)/m");
+    assert_formula(stick, "energy_lost", "(w*rd)^2/(2*(3/m + 1/M))");
+    assert_formula(&j, "omega", "2*m*a*v0/(M*l^2/3*(1+m/M) + m*a^2)");
+}
+
+/// Numbers decide the contact: equal masses, a centre hit at v0 = 1 with v0t = 1 and
+/// mu = 1/4 slides (mu* = 1/2), as `solve` says; with mu = 1 it sticks.
+#[test]
+fn numbers_decide_the_contact_as_solve_does() {
+    let scene = [
+        "--m", "1", "--M", "1", "--a", "0", "--v0", "1", "--v0t", "1",
+    ];
+    let slide = formula_json(&[&scene[..], &["--mu", "1/4"]].concat());
+    assert_eq!(slide["contact"], "slide");
+    assert!(slide["cases"].is_null());
+    let solved = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .arg("solve")
+        .args(scene)
+        .args(["--mu", "1/4", "--json"])
+        .output()
+        .unwrap();
+    let solved: serde_json::Value = serde_json::from_slice(&solved.stdout).unwrap();
+    for key in ["v", "V", "omega", "vt", "Vt", "tangential_impulse"] {
+        assert_eq!(slide[key]["text"], solved[key]["exact"], "{key}");
+    }
+    assert_formula(&slide, "mu_star", "1/2");
+    let stick = formula_json(&[&scene[..], &["--mu", "1"]].concat());
+    assert_eq!(stick["contact"], "stick");
+    assert_formula(&stick, "tangential_impulse", "1/2");
+}
+
+/// The oblique symbols belong in the oblique flags; a claim of `check` refuses them.
+#[test]
+fn oblique_symbols_stay_in_their_flags() {
+    let out = run(&["--M", "2*mu"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8(out.stderr).unwrap(),
+        "error: M: mu may appear only in the oblique flags (--v0t, --mu, --radius, --spin, --rod-v, --rod-vt, --rod-omega)\n"
+    );
+    let out = run(&["--spin", "w"]);
+    assert_eq!(
+        String::from_utf8(out.stderr).unwrap(),
+        "error: spin: a point projectile has no spin: give the disc's --radius too\n"
+    );
+    let out = run(&["--mu", "-1/2"]);
+    assert_eq!(
+        String::from_utf8(out.stderr).unwrap(),
+        "error: mu: friction coefficient must be >= 0, got -1/2\n"
+    );
 }

@@ -1,6 +1,6 @@
 //! `rodimpact formula`: the exact answer as formulas in the scene's free symbols.
 
-use super::{Failure, SceneFlags, print_out};
+use super::{Failure, ObliqueFlags, SceneFlags, print_out};
 use clap::Args;
 use rodimpact::report::{formula_json, formula_latex, formula_markdown, formula_text};
 use rodimpact::textbook::formula::formulas;
@@ -10,6 +10,8 @@ use rodimpact::{Error, ErrorKind};
 pub(crate) struct FormulaArgs {
     #[command(flatten)]
     pub(crate) scene: SceneFlags,
+    #[command(flatten)]
+    pub(crate) oblique: ObliqueFlags,
     /// Output format: text, latex, markdown or json.
     #[arg(long, value_name = "FORMAT", default_value = "text")]
     pub(crate) format: String,
@@ -27,7 +29,7 @@ pub(crate) fn run_formula(args: &FormulaArgs) -> Result<(), Failure> {
         )
         .into());
     }
-    let f = formulas(&args.scene.input())?;
+    let f = formulas(&args.oblique.input(&args.scene))?;
     let text = match format {
         "latex" => formula_latex(&f),
         "markdown" => formula_markdown(&f),

@@ -3,7 +3,7 @@
 
 use crate::field::{Poly, Q, RatFn};
 use crate::textbook::expr::Radical;
-use crate::textbook::formula::Formulas;
+use crate::textbook::formula::{AnswerFormula, Formulas};
 use num_traits::{One, Signed};
 use serde_json::{Map, Value, json};
 
@@ -20,6 +20,13 @@ pub(super) fn meaning(key: &str) -> &'static str {
             "a*^2, the impact point of fastest spin (squared; from the pivot on a pivoted rod)"
         }
         "omega_max" => "largest omega over the impact points",
+        "vt" => "projectile's velocity along the rod after the impact",
+        "Vt" => "velocity of the rod's centre along the rod after the impact",
+        "spin" => "disc's spin after the impact (counterclockwise seen from above)",
+        "tangential_impulse" => "impulse of the projectile on the rod along the rod, Jt",
+        "mu_star" => {
+            "friction coefficient that just stops the slip, mu* = |u_t|/(J k_t): the contact sticks when mu >= mu*"
+        }
         _ => "",
     }
 }
@@ -54,12 +61,25 @@ pub fn formula_text(f: &Formulas) -> String {
     for line in preamble(f) {
         out.push_str(&format!("{line}\n"));
     }
-    for x in &f.formulas {
-        out.push_str(&format!("\n{} = {}\n", x.key, x.value));
-        out.push_str(&format!("    {}\n", meaning(x.key)));
-        if let Some(c) = &x.condition {
-            out.push_str(&format!("    {c}\n"));
+    let entries = |out: &mut String, list: &[AnswerFormula], indent: &str| {
+        for x in list {
+            out.push_str(&format!("\n{indent}{} = {}\n", x.key, x.value));
+            out.push_str(&format!("{indent}    {}\n", meaning(x.key)));
+            if let Some(c) = &x.condition {
+                out.push_str(&format!("{indent}    {c}\n"));
+            }
         }
+    };
+    entries(&mut out, &f.formulas, "");
+    if let Some(contact) = f.contact {
+        out.push_str(&format!("\ncontact: {contact}\n"));
+    }
+    for case in &f.cases {
+        out.push_str(&format!(
+            "\nif it {}s ({}):\n",
+            case.contact, case.condition
+        ));
+        entries(&mut out, &case.formulas, "  ");
     }
     out
 }
@@ -78,18 +98,31 @@ pub fn formula_markdown(f: &Formulas) -> String {
     for line in preamble(f) {
         out.push_str(&format!("{line}  \n"));
     }
-    out.push_str("\n| quantity | formula | meaning |\n|---|---|---|\n");
-    for x in &f.formulas {
-        let mut what = meaning(x.key).to_string();
-        if let Some(c) = &x.condition {
-            what.push_str(&format!("; {c}"));
+    let table = |out: &mut String, list: &[AnswerFormula]| {
+        out.push_str("\n| quantity | formula | meaning |\n|---|---|---|\n");
+        for x in list {
+            let mut what = meaning(x.key).to_string();
+            if let Some(c) = &x.condition {
+                what.push_str(&format!("; {c}"));
+            }
+            out.push_str(&format!(
+                "| `{}` | ${}$ | {} |\n",
+                x.key,
+                radical_latex(&x.value),
+                what.replace('|', "\\|")
+            ));
         }
+    };
+    table(&mut out, &f.formulas);
+    if let Some(contact) = f.contact {
+        out.push_str(&format!("\nThe contact: **{contact}**.\n"));
+    }
+    for case in &f.cases {
         out.push_str(&format!(
-            "| `{}` | ${}$ | {} |\n",
-            x.key,
-            radical_latex(&x.value),
-            what.replace('|', "\\|")
+            "\nIf it {}s ({}):\n",
+            case.contact, case.condition
         ));
+        table(&mut out, &case.formulas);
     }
     out
 }
@@ -108,18 +141,30 @@ pub fn formula_latex(f: &Formulas) -> String {
     for line in preamble(f) {
         out.push_str(&format!("% {line}\n"));
     }
-    out.push_str("\\begin{align*}\n");
-    let rows: Vec<String> = f
-        .formulas
-        .iter()
-        .map(|x| format!("  {} &= {}", key_latex(x.key), radical_latex(&x.value)))
-        .collect();
-    out.push_str(&rows.join(" \\\\\n"));
-    out.push_str("\n\\end{align*}\n");
-    for x in &f.formulas {
-        if let Some(c) = &x.condition {
-            out.push_str(&format!("% {}: {c}\n", x.key));
+    let align = |out: &mut String, list: &[AnswerFormula]| {
+        out.push_str("\\begin{align*}\n");
+        let rows: Vec<String> = list
+            .iter()
+            .map(|x| format!("  {} &= {}", key_latex(x.key), radical_latex(&x.value)))
+            .collect();
+        out.push_str(&rows.join(" \\\\\n"));
+        out.push_str("\n\\end{align*}\n");
+        for x in list {
+            if let Some(c) = &x.condition {
+                out.push_str(&format!("% {}: {c}\n", x.key));
+            }
         }
+    };
+    align(&mut out, &f.formulas);
+    if let Some(contact) = f.contact {
+        out.push_str(&format!("% contact: {contact}\n"));
+    }
+    for case in &f.cases {
+        out.push_str(&format!(
+            "% if it {}s ({}):\n",
+            case.contact, case.condition
+        ));
+        align(&mut out, &case.formulas);
     }
     out
 }
@@ -138,14 +183,30 @@ pub fn formula_json(f: &Formulas) -> Value {
     let mut map = Map::new();
     map.insert("free_symbols".into(), json!(f.free));
     map.insert("defaults".into(), json!(f.defaults));
-    for x in &f.formulas {
-        let mut entry = Map::new();
-        entry.insert("text".into(), json!(x.value.to_string()));
-        entry.insert("latex".into(), json!(radical_latex(&x.value)));
-        if let Some(c) = &x.condition {
-            entry.insert("condition".into(), json!(c));
+    let entries = |map: &mut Map<String, Value>, list: &[AnswerFormula]| {
+        for x in list {
+            let mut entry = Map::new();
+            entry.insert("text".into(), json!(x.value.to_string()));
+            entry.insert("latex".into(), json!(radical_latex(&x.value)));
+            if let Some(c) = &x.condition {
+                entry.insert("condition".into(), json!(c));
+            }
+            map.insert(x.key.into(), Value::Object(entry));
         }
-        map.insert(x.key.into(), Value::Object(entry));
+    };
+    entries(&mut map, &f.formulas);
+    if let Some(contact) = f.contact {
+        map.insert("contact".into(), json!(contact));
+    }
+    if !f.cases.is_empty() {
+        let mut cases = Map::new();
+        for case in &f.cases {
+            let mut entry = Map::new();
+            entry.insert("condition".into(), json!(case.condition));
+            entries(&mut entry, &case.formulas);
+            cases.insert(case.contact.into(), Value::Object(entry));
+        }
+        map.insert("cases".into(), Value::Object(cases));
     }
     Value::Object(map)
 }
@@ -160,6 +221,11 @@ pub(super) fn key_latex(key: &str) -> &'static str {
         "pivot_impulse" => "J_p",
         "a_star_squared" => "a^{*2}",
         "omega_max" => "\\omega_{\\max}",
+        "vt" => "v_t",
+        "Vt" => "V_t",
+        "spin" => "\\omega_{\\mathrm{disc}}",
+        "tangential_impulse" => "J_t",
+        "mu_star" => "\\mu^{*}",
         _ => "?",
     }
 }
@@ -168,6 +234,12 @@ fn symbol_latex(name: &str) -> String {
     match name {
         "v0" => "v_0".into(),
         "r" => "r_G".into(),
+        "v0t" => "v_{0t}".into(),
+        "mu" => "\\mu".into(),
+        "rd" => "r_d".into(),
+        "V0" => "V_0".into(),
+        "Vt0" => "V_{t0}".into(),
+        "omega0" => "\\omega_0".into(),
         other => other.into(),
     }
 }

@@ -123,6 +123,11 @@ impl Budget {
 /// The symbols an expression may use.
 pub const SYMBOLS: [&str; 11] = ["m", "M", "l", "L", "a", "d", "v0", "e", "p", "I", "r"];
 
+/// The symbols of an oblique scene, read in `formula`'s oblique flags: `v0t` (the projectile's
+/// velocity along the rod), `mu` (friction), `rd` and `w` (the disc's radius and spin), `V0`,
+/// `Vt0`, `omega0` (the rod's motion before the impact).
+pub const OBLIQUE_SYMBOLS: [&str; 7] = ["v0t", "mu", "rd", "w", "V0", "Vt0", "omega0"];
+
 /// An exact value `coeff * sqrt(radicand)`; rational when `radicand` is 1.
 ///
 /// # Examples
@@ -483,14 +488,14 @@ impl Parser<'_> {
             let arg = self.atom()?;
             return self.checked(sqrt(arg));
         }
-        if SYMBOLS.contains(&name.as_str()) {
+        if SYMBOLS.contains(&name.as_str()) || OBLIQUE_SYMBOLS.contains(&name.as_str()) {
             Ok(Radical::rational(RatFn::symbol(&name)))
         } else {
             self.pos = start;
             Err(invalid(
                 self.field,
                 format!(
-                    "unknown symbol '{}' at character {} (symbols: m M l L a d v0 e p I r, function sqrt)",
+                    "unknown symbol '{}' at character {} (symbols: m M l L a d v0 e p I r, oblique v0t mu rd w V0 Vt0 omega0, function sqrt)",
                     crate::echo::echo(&name),
                     start + 1
                 ),

@@ -8,15 +8,18 @@
 //! lever arm), largest at `a*^2 = J/m` (free rod: `I (M + m)/(m M)`) with the value
 //! `(1 + e) v0/(2 a*)`, when a* lies on the rod; at the end otherwise.
 
+use super::expr::OBLIQUE_SYMBOLS;
 use super::expr::{Budget, Radical};
-use super::symbolic::{GivenScene, SymbolicScene};
+use super::symbolic::{GivenScene, SymbolicScene, oblique_params};
 use crate::error::Error;
 use crate::field::poly::Monomial;
 use crate::field::{Field, Poly, RatFn, TrySqrt};
 use crate::optimum::a_star_squared;
-use crate::scene::{Params, SceneInput, Support};
-use crate::solve::linear::solve;
+use crate::scene::{ObliqueParams, Params, SceneInput, Support};
+use crate::solve::linear::{self, solve};
+use crate::solve::oblique::{self, Contact, ObliqueOutcome, normal_params};
 use num_traits::{One, Signed, Zero};
+use std::cmp::Ordering;
 
 /// One formula of the answer.
 #[derive(Debug, Clone, PartialEq)]
@@ -33,11 +36,32 @@ pub struct AnswerFormula {
 /// The formulas of one scene, with its free symbols and the defaults applied.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Formulas {
-    /// The free symbols, in the order m, M, l, a, v0, e, p, I, r.
+    /// The free symbols, in the order m, M, l, a, v0, e, p, I, r, then the oblique ones.
     pub free: Vec<String>,
-    /// The defaults applied to quantities not given (`e = 1 (elastic)`, `uniform rod ...`).
+    /// The defaults applied to quantities not given (`e = 1 (elastic)`, `uniform rod ...`), and
+    /// any assumption a case split rests on.
     pub defaults: Vec<String>,
-    /// The formulas, in the order of the keys above (those that apply to the scene only).
+    /// The formulas, in the order of the keys above (those that apply to the scene only); for
+    /// an oblique scene also `vt`, `Vt`, `spin`, `tangential_impulse` and `mu_star` when the
+    /// contact is decided, or `mu_star` alone when it is split into [`Formulas::cases`].
+    pub formulas: Vec<AnswerFormula>,
+    /// How a frictional contact ends when the scene decides it: `stick` or `slide`.
+    pub contact: Option<&'static str>,
+    /// A frictional contact the symbols leave open: its answer when it sticks and when it
+    /// slides (empty otherwise).
+    pub cases: Vec<ContactCase>,
+}
+
+/// The answer in one way a frictional contact can end.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactCase {
+    /// `stick` or `slide`.
+    pub contact: &'static str,
+    /// When this case is the answer: `mu >= mu_star` (the slip stops) or `mu < mu_star` (it
+    /// slides throughout, Jt = mu J); `mu = 1/4 >= mu_star` for a given number.
+    pub condition: String,
+    /// The formulas of the case: `vt`, `Vt`, `spin` (a disc), `tangential_impulse`,
+    /// `energy_lost`.
     pub formulas: Vec<AnswerFormula>,
 }
 
@@ -61,13 +85,11 @@ pub fn formulas(input: &SceneInput) -> Result<Formulas, Error> {
     let mut budget = Budget::run();
     let given = GivenScene::read(input, &mut budget)?;
     let scene = SymbolicScene::build(&given)?;
+    if let Some(o) = oblique_params(&scene, input, &mut budget)? {
+        return Ok(oblique_formulas(&scene, &o));
+    }
     let p = &scene.params;
     let out = solve(p).expect("the impulse equations of a valid scene are nonsingular");
-    let rational = |key, x: RatFn| AnswerFormula {
-        key,
-        value: Radical::rational(x),
-        condition: None,
-    };
     let mut list = vec![
         rational("v", out.after.v.clone()),
         rational("V", out.after.rod_v.clone()),
@@ -87,7 +109,158 @@ pub fn formulas(input: &SceneInput) -> Result<Formulas, Error> {
         free: scene.free.iter().map(|s| s.name().to_string()).collect(),
         defaults: scene.defaults.clone(),
         formulas: list,
+        contact: None,
+        cases: Vec::new(),
     })
+}
+
+fn rational(key: &'static str, x: RatFn) -> AnswerFormula {
+    AnswerFormula {
+        key,
+        value: Radical::rational(x),
+        condition: None,
+    }
+}
+
+/// The formulas of an oblique scene: the normal problem's v, V, omega, impulse (and the
+/// pivot's impulse across the rod) for every contact; a* and omega_max when the rod is at rest
+/// (they are the paper's: the slide along the rod and friction never change them, X27-X31);
+/// then the tangential answers, decided, or split into stick and slide with the threshold
+/// `mu_star = |u_t|/(J k_t)`, the friction that just stops the slip.
+fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas {
+    let p = &scene.params;
+    let normal = linear::solve(&normal_params(p, o))
+        .expect("the impulse equations of a valid scene are nonsingular")
+        .after;
+    let with = |given: Option<Contact>| oblique::complete(p, o, normal.clone(), given);
+    let stick = with(Some(Contact::Stick)).expect("a valid scene's masses are positive");
+    let mut list = vec![
+        rational("v", stick.after.v.clone()),
+        rational("V", stick.after.rod.v.clone()),
+        rational("omega", stick.after.rod.omega.clone()),
+        rational("impulse", stick.impulse.clone()),
+    ];
+    if let Some((across, _)) = &stick.pivot_impulse {
+        list.push(rational("pivot_impulse", across.clone()));
+    }
+    if o.rod_before.v.is_zero() && o.rod_before.vt.is_zero() && o.rod_before.omega.is_zero() {
+        let squared = a_star_squared(p);
+        list.push(rational("a_star_squared", squared.clone()));
+        list.push(omega_max(p, &stick.after.rod.omega, &squared));
+    }
+    let mut defaults = scene.defaults.clone();
+    let tangential = |out: &ObliqueOutcome<RatFn>, friction: bool| {
+        let mut part = vec![
+            rational("vt", out.after.vt.clone()),
+            rational("Vt", out.after.rod.vt.clone()),
+        ];
+        if let Some(spin) = &out.after.spin {
+            part.push(rational("spin", spin.clone()));
+        }
+        if friction {
+            part.push(rational(
+                "tangential_impulse",
+                out.tangential_impulse.clone(),
+            ));
+        }
+        if friction || !p.e.is_one() {
+            part.push(rational("energy_lost", out.energy.lost.clone()));
+        }
+        part
+    };
+    let (mut contact, mut cases) = (None, Vec::new());
+    if o.mu.is_zero() {
+        list.extend(tangential(&stick, false));
+    } else {
+        // mu* = |u_t|/(J k_t) = |stick impulse|/J, with the slip's sign (assumed > 0 when the
+        // symbols leave it open: the other sign mirrors every tangential formula).
+        let forward = match stick.stick_impulse.sign() {
+            Some(sign) => sign != Ordering::Less,
+            None => {
+                defaults.push(format!(
+                    "the slip before the impact, u_t = {}, taken > 0 (for u_t < 0 every tangential answer changes sign)",
+                    stick.stick_impulse.clone() * &slip_mobility(p, o)
+                ));
+                true
+            }
+        };
+        let speed = if forward {
+            stick.stick_impulse.clone()
+        } else {
+            -stick.stick_impulse.clone()
+        };
+        list.push(rational("mu_star", speed / &stick.impulse));
+        let no_slip = stick.stick_impulse.is_zero();
+        match if no_slip {
+            Ok(stick.clone())
+        } else {
+            with(None)
+        } {
+            Ok(decided) => {
+                // No slip before the impact: nothing to stop, the contact holds (Jt = 0).
+                contact = Some(decided.contact.map_or("stick", Contact::as_str));
+                list.extend(tangential(&decided, true));
+            }
+            Err(_) => {
+                let slide = with(Some(Contact::Slide { forward }))
+                    .expect("a valid scene's masses are positive");
+                let mu = match o.mu.as_constant() {
+                    Some(c) => format!("mu = {c}"),
+                    None => "mu".to_string(),
+                };
+                cases = vec![
+                    ContactCase {
+                        contact: "stick",
+                        condition: format!("{mu} >= mu_star"),
+                        formulas: tangential(&stick, true),
+                    },
+                    ContactCase {
+                        contact: "slide",
+                        condition: format!("{mu} < mu_star"),
+                        formulas: tangential(&slide, true),
+                    },
+                ];
+            }
+        }
+    }
+    let mut free: Vec<String> = scene.free.iter().map(|s| s.name().to_string()).collect();
+    let used: Vec<&RatFn> = [
+        &o.v0t,
+        &o.mu,
+        &o.rod_before.v,
+        &o.rod_before.vt,
+        &o.rod_before.omega,
+    ]
+    .into_iter()
+    .chain(o.disc.iter().flat_map(|d| [&d.radius, &d.spin]))
+    .collect();
+    for name in OBLIQUE_SYMBOLS {
+        if used
+            .iter()
+            .any(|f| f.symbols().iter().any(|s| s.name() == name))
+        {
+            free.push(name.to_string());
+        }
+    }
+    Formulas {
+        free,
+        defaults,
+        formulas: list,
+        contact,
+        cases,
+    }
+}
+
+/// k_t, the slip's mobility: `1/m + 2/m` for a disc (r^2/I_disc), `+ 1/M` on a free rod.
+fn slip_mobility(p: &Params<RatFn>, o: &ObliqueParams<RatFn>) -> RatFn {
+    let mut k = RatFn::one() / p.m.clone();
+    if o.disc.is_some() {
+        k = k + &(RatFn::from_i64(2) / p.m.clone());
+    }
+    if p.support == Support::Free {
+        k = k + &(RatFn::one() / p.rod_mass.clone());
+    }
+    k
 }
 
 /// omega_max: `(1 + e) v0/(2 a*)` where a* lies on the rod, with the condition; omega at the

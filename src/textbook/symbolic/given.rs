@@ -118,7 +118,7 @@ impl GivenScene {
 
 /// A field's value, and whether it was a formula; `L` and `d` are expanded to `2*l` and
 /// `l - a`.
-fn value_of(
+pub(super) fn value_of(
     field: &str,
     text: &str,
     dimension: Dimension,

@@ -12,14 +12,18 @@
 //! A scene whose formulas leave no valid sample scene (`--a 2*l`, `--M -m`) is refused,
 //! naming the field, before any claim is decided.
 //!
+//! The oblique flags (`formula` only) are read by [`oblique_params`] over the built scene.
+//!
 //! [`GivenScene`] reads the flags once (numbers and formulas), [`SymbolicScene`] builds the scene
 //! in its free symbols and checks its domain (`scene.rs`), and `identity.rs` decides a formula
 //! against the exact value or finds a counterexample scene.
 
 mod given;
 mod identity;
+mod oblique;
 mod scene;
 
 pub use given::GivenScene;
 pub(crate) use identity::identity;
+pub use oblique::{has_oblique, oblique_params};
 pub use scene::SymbolicScene;

@@ -3,10 +3,11 @@
 //! sample scenes, which also serve to refute claimed formulas.
 
 use super::given::{GivenScene, RodGiven};
+use super::oblique::mentions_oblique;
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, RatFn, Sym};
 use crate::scene::{Params, RodInertia, Support, gyration_moment};
-use crate::textbook::expr::{Budget, Radical, size, size_of};
+use crate::textbook::expr::{Budget, OBLIQUE_SYMBOLS, Radical, size, size_of};
 use num_traits::{One, Signed};
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -116,6 +117,14 @@ impl SymbolicScene {
         let has_pivot = pivot.is_some();
         put("p", pivot);
         for (key, v) in &defs {
+            if let Some(name) = mentions_oblique(v) {
+                return Err(Error::new(
+                    *key,
+                    ErrorKind::Invalid(format!(
+                        "{name} may appear only in the oblique flags (--v0t, --mu, --radius, --spin, --rod-v, --rod-vt, --rod-omega)"
+                    )),
+                ));
+            }
             if let Some(s) = v.symbols().iter().find(|s| ["I", "r"].contains(&s.name())) {
                 return Err(Error::new(
                     *key,
@@ -250,6 +259,28 @@ impl SymbolicScene {
     /// assert_eq!(i.to_string(), "1/3*M*l^2");
     /// ```
     pub fn resolve(
+        &self,
+        field: &str,
+        claim: &Radical,
+        budget: &mut Budget,
+    ) -> Result<Radical, Error> {
+        if let Some(name) = OBLIQUE_SYMBOLS.iter().find(|n| claim.mentions(sym(n))) {
+            return Err(Error::new(
+                field,
+                ErrorKind::Invalid(format!(
+                    "{name} is a symbol of an oblique scene: check an oblique scene with numbers, or see its formulas with `rodimpact formula`"
+                )),
+            ));
+        }
+        self.substitute(field, claim, budget)
+    }
+
+    /// `formula` in the scene's free symbols: every scene symbol it uses replaced by what it
+    /// stands for (an oblique symbol stays itself); work charged to `budget`.
+    ///
+    /// # Errors
+    /// As [`SymbolicScene::resolve`], except for the oblique symbols.
+    pub(super) fn substitute(
         &self,
         field: &str,
         claim: &Radical,

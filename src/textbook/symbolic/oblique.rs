@@ -1,0 +1,138 @@
+//! The oblique and frictional part of a symbolic scene (`formula --v0t ... --mu ...`): each
+//! flag given is a number (with a unit) or a formula in the scene's symbols and the oblique ones
+//! ([`OBLIQUE_SYMBOLS`]); a flag not given takes `solve`'s default (no slide along the rod, no
+//! friction, a point projectile, the rod at rest).
+
+use super::SymbolicScene;
+use super::given::value_of;
+use crate::error::{Error, ErrorKind};
+use crate::field::RatFn;
+use crate::scene::{Disc, ObliqueParams, RodMotion, SceneInput, Support, dimension_of};
+use crate::textbook::expr::{Budget, OBLIQUE_SYMBOLS, Radical};
+use num_traits::{Signed, Zero};
+
+/// The oblique flags of `input` as `(field, text)`, in the order they are read.
+fn flags(input: &SceneInput) -> [(&'static str, &Option<String>); 7] {
+    [
+        ("v0t", &input.v0t),
+        ("mu", &input.mu),
+        ("radius", &input.radius),
+        ("spin", &input.spin),
+        ("rod-v", &input.rod_v),
+        ("rod-vt", &input.rod_vt),
+        ("rod-omega", &input.rod_omega),
+    ]
+}
+
+/// Whether `input` gives any oblique flag.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::SceneInput, textbook::symbolic::has_oblique};
+/// assert!(has_oblique(&SceneInput { mu: Some("mu".into()), ..Default::default() }));
+/// assert!(!has_oblique(&SceneInput::default()));
+/// ```
+pub fn has_oblique(input: &SceneInput) -> bool {
+    flags(input).iter().any(|(_, t)| t.is_some())
+}
+
+/// The oblique part of `input` over `scene`'s symbols, or `None` when no oblique flag is
+/// given. A flag's formula may use the scene's symbols (replaced by what they stand for in the
+/// scene, `--v0t v0` with `--v0 2*m` is `2*m`) and the oblique symbols.
+///
+/// # Errors
+/// A flag that does not parse, `--spin` without `--radius`, a negative `mu` or a radius that
+/// is not positive (as numbers), a pivoted rod whose centre is given a motion of its own, or a
+/// symbol that does not belong in the scene (`p` without a pivot).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::SceneInput, textbook::{expr::Budget, symbolic::{GivenScene, SymbolicScene, oblique_params}}};
+/// let input = SceneInput { rod_mass: Some("m".into()), v0t: Some("v0".into()), mu: Some("mu".into()), ..Default::default() };
+/// let mut budget = Budget::run();
+/// let scene = SymbolicScene::build(&GivenScene::read(&input, &mut budget)?)?;
+/// let o = oblique_params(&scene, &input, &mut budget)?.unwrap();
+/// assert_eq!((o.v0t.to_string(), o.mu.to_string()), ("v0".to_string(), "mu".to_string()));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn oblique_params(
+    scene: &SymbolicScene,
+    input: &SceneInput,
+    budget: &mut Budget,
+) -> Result<Option<ObliqueParams<RatFn>>, Error> {
+    if !has_oblique(input) {
+        return Ok(None);
+    }
+    let mut values = [None, None, None, None, None, None, None];
+    for ((field, text), slot) in flags(input).into_iter().zip(&mut values) {
+        let Some(text) = text else { continue };
+        let (value, _) = value_of(field, text, dimension_of(field), budget)?;
+        let value = scene
+            .substitute(field, &Radical::rational(value), budget)?
+            .coeff;
+        *slot = Some(value);
+    }
+    let [v0t, mu, radius, spin, rod_v, rod_vt, rod_omega] = values;
+    let or_zero = |x: Option<RatFn>| x.unwrap_or_else(RatFn::zero);
+    if let Some(c) = mu.as_ref().and_then(RatFn::as_constant)
+        && c.is_negative()
+    {
+        return Err(Error::out_of_range(
+            "mu",
+            format!("friction coefficient must be >= 0, got {c}"),
+        ));
+    }
+    if let Some(c) = radius.as_ref().and_then(RatFn::as_constant)
+        && !c.is_positive()
+    {
+        return Err(Error::out_of_range(
+            "radius",
+            format!("must be > 0, got {c}"),
+        ));
+    }
+    let disc = match (radius, spin) {
+        (Some(radius), spin) => Some(Disc {
+            radius,
+            spin: or_zero(spin),
+        }),
+        (None, Some(_)) => {
+            return Err(Error::new(
+                "spin",
+                ErrorKind::Conflict(
+                    "a point projectile has no spin: give the disc's --radius too".into(),
+                ),
+            ));
+        }
+        (None, None) => None,
+    };
+    if let Support::Pivot(_) = scene.params.support {
+        for (field, x) in [("rod-v", &rod_v), ("rod-vt", &rod_vt)] {
+            if x.as_ref().is_some_and(|x| !x.is_zero()) {
+                return Err(Error::new(
+                    field,
+                    ErrorKind::Conflict(
+                        "a pivoted rod's centre moves only by turning about the pivot; give --rod-omega only".into(),
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(Some(ObliqueParams {
+        v0t: or_zero(v0t),
+        mu: or_zero(mu),
+        disc,
+        rod_before: RodMotion {
+            v: or_zero(rod_v),
+            vt: or_zero(rod_vt),
+            omega: or_zero(rod_omega),
+        },
+    }))
+}
+
+/// Whether `f` mentions an oblique symbol (they belong in the oblique flags only).
+pub(super) fn mentions_oblique(f: &RatFn) -> Option<&'static str> {
+    OBLIQUE_SYMBOLS
+        .iter()
+        .copied()
+        .find(|name| f.symbols().iter().any(|s| s.name() == *name))
+}
