@@ -31,7 +31,7 @@ enum Command {
     Prove(commands::claims::ProveArgs),
     /// The main job: verify every claim of the paper and print the report.
     Paper(commands::claims::PaperArgs),
-    /// Exact tables of the paper's results (T1-T5) in Markdown, LaTeX or CSV.
+    /// Exact tables of the paper's results (T1-T5) and of an oblique impact with friction (T6) in Markdown, LaTeX or CSV.
     Table(commands::table::TableArgs),
     /// Figures as SVG (and their data as CSV): omega against a, a* against M/m, Figure 1,
     /// velocities before/after, quantities and energy along the rod.

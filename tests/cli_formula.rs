@@ -161,7 +161,9 @@ fn readme_example_is_current() {
     let readme =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
     assert!(readme.contains(&format!("$ rodimpact formula --M 2*m --e e\n{text}```")));
-    let oblique = ["formula", "--M", "m", "--a", "l", "--v0t", "v0t", "--mu", "mu"];
+    let oblique = [
+        "formula", "--M", "m", "--a", "l", "--v0t", "v0t", "--mu", "mu",
+    ];
     let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
         .args(oblique)
         .output()

@@ -124,3 +124,57 @@ fn several_tables_make_one_rectangular_csv() {
         "0.25000000000000000"
     );
 }
+
+/// T6 against the impulse balance worked by hand for M = 3m struck at the end (I = M l^2/3 =
+/// m l^2, so a^2/I = 1/m), e = 1/2, v0t = v0/2: k_n = 1 + 1/3 + 1 = 7/3, J = (3/2)/(7/3) = 9/14;
+/// k_t = 1 + 1/3 = 4/3, so sticking takes Jt = (1/2)/(4/3) = 3/8 and mu* = (3/8)/(9/14) = 7/12.
+/// At mu = 1/10 it slides: Jt = 9/140, vt = 1/2 - 9/140 = 61/140, Vt = 3/140, and friction
+/// takes mu J (u_t - mu J k_t/2) = 36/1225; omega = a J/I = 9/14 in every row.
+#[test]
+fn t6_against_the_impulse_balance_by_hand() {
+    let out = rodimpact(&[
+        "table", "--only", "T6", "--ratio", "3", "--e", "1/2", "--v0t", "1/2", "--format", "csv",
+    ]);
+    let (code, text, _) = out;
+    assert_eq!(code, 0);
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let cell = |mu: &str, name: &str| {
+        let r = rows
+            .iter()
+            .find(|r| r[0] == mu)
+            .unwrap_or_else(|| panic!("{text}"));
+        r[column(name)]
+    };
+    let names = [
+        "contact",
+        "Jt/(m*v0)",
+        "vt/v0",
+        "Vt/v0",
+        "omega*l/v0",
+        "friction_loss/(m*v0^2)",
+    ];
+    assert_eq!(
+        names.map(|n| cell("1/10", n)),
+        ["slide", "9/140", "61/140", "3/140", "9/14", "36/1225"]
+    );
+    assert_eq!(
+        [cell("7/12", "contact"), cell("7/12", "Jt/(m*v0)")],
+        ["stick", "3/8"]
+    );
+    assert_eq!(cell("1/2", "contact"), "slide");
+    assert_eq!(cell("0", "contact"), "none (frictionless)");
+    let omega = column("omega*l/v0");
+    assert!(
+        rows.iter().all(|r| r[omega] == "9/14"),
+        "omega changes with mu: {text}"
+    );
+    // T6 is not one of the paper's tables: the default is T1-T5.
+    let (_, all, _) = rodimpact(&["table"]);
+    assert!(all.contains("### T5.") && !all.contains("### T6."));
+}

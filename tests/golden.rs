@@ -9,7 +9,7 @@ use rodimpact::claims::{Paper, decide_all};
 use rodimpact::field::q;
 use rodimpact::report::{
     Format, TableOptions, all_tables, claim_markdown, claims_markdown, index_markdown,
-    plot_figure1, plot_omega, plot_optimum, render_document, velocity_figure,
+    plot_figure1, plot_omega, plot_optimum, render_document, tables, velocity_figure,
 };
 use rodimpact::scene::{RodInertia, Scene};
 use std::collections::BTreeSet;
@@ -139,6 +139,20 @@ fn tables_match_the_committed_ones_in_every_format() {
         .filter_map(|f| {
             let name = format!("tables.{}", f.extension());
             compare(&golden(&name), &render_document(&tables, f))
+        })
+        .collect();
+    assert_all(problems);
+}
+
+/// T6, the oblique table (not one of the paper's: `table --only T6`), in every format.
+#[test]
+fn the_oblique_table_matches_the_committed_one() {
+    let t6 = tables(&["T6"], &TableOptions::default()).expect("T6");
+    let problems = [Format::Markdown, Format::Latex, Format::Csv]
+        .into_iter()
+        .filter_map(|f| {
+            let name = format!("table-t6.{}", f.extension());
+            compare(&golden(&name), &render_document(&t6, f))
         })
         .collect();
     assert_all(problems);

@@ -1,4 +1,4 @@
-//! `rodimpact table`: the exact tables T1-T5.
+//! `rodimpact table`: the exact tables T1-T5 of the paper, and T6 beyond it.
 
 use super::{Failure, parse_ratios, print_out};
 use clap::Args;
@@ -28,12 +28,16 @@ pub(crate) struct TableArgs {
     /// A pivot at p (in units of l) for T1.
     #[arg(long, value_name = "Q", allow_hyphen_values = true)]
     pub(crate) pivot: Option<String>,
+    /// The projectile's velocity along the rod for T6, in units of v0 [default: 1].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) v0t: Option<String>,
     /// Output format: md, latex or csv. CSV: one table is one file (a header line, exact
     /// strings and `_decimal` columns); several tables make one file with a leading `table`
-    /// column (T1-T5) and the union of their columns, empty where a table has none.
+    /// column (T1-T6) and the union of their columns, empty where a table has none.
     #[arg(long, value_name = "FORMAT", default_value = "md")]
     pub(crate) format: String,
-    /// Only these tables (T1-T5), comma separated [default: all].
+    /// Only these tables, comma separated: T1-T5 (the paper's) and T6 (an oblique impact with
+    /// friction, the contact as mu grows past its threshold) [default: T1-T5].
     #[arg(long, value_name = "T1,T2,...")]
     pub(crate) only: Option<String>,
     /// Write to FILE (atomically) instead of standard output.
@@ -57,6 +61,9 @@ fn table_options(args: &TableArgs) -> Result<TableOptions, Error> {
     }
     if let Some(p) = &args.pivot {
         opts.pivot = Some(parse_field("pivot", p)?);
+    }
+    if let Some(v0t) = &args.v0t {
+        opts.v0t = parse_field("v0t", v0t)?;
     }
     Ok(opts)
 }

@@ -15,7 +15,7 @@
 //!
 //! The math is a small subset of LaTeX: letters, digits, operators, `^` and `_` (with one
 //! character or a braced group), `\sqrt{..}`, `\mathrm{..}`, `\lvert ..\rvert`, `\,` and the
-//! commands `\omega`, `\Delta`, `\pi`, `\approx`, `\le`, `\ge`, `\ne`, `\cdot`, `\times`,
+//! commands `\omega`, `\mu`, `\Delta`, `\pi`, `\approx`, `\le`, `\ge`, `\ne`, `\cdot`, `\times`,
 //! `\infty`, `\to`, `\max`, `\min`.
 
 /// `text` with its `$…$` math spelled in Unicode and the dollars removed.
@@ -263,6 +263,7 @@ fn latex_text(text: &str) -> String {
 fn command(name: &str) -> Option<&'static str> {
     Some(match name {
         "omega" => "ω",
+        "mu" => "μ",
         "Delta" => "Δ",
         "pi" => "π",
         "approx" => "≈",

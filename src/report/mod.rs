@@ -33,7 +33,9 @@ pub use claims_doc::claims_markdown;
 pub use explain::{ExplainFormat, explain};
 pub use formula::{formula_json, formula_latex, formula_markdown, formula_text};
 pub use paper_html::paper_html;
-pub use paper_tables::{TABLE_IDS, TableOptions, all_tables, t1, t2, t3, t4, t5, tables};
+pub use paper_tables::{
+    ALL_TABLE_IDS, TABLE_IDS, TableOptions, all_tables, t1, t2, t3, t4, t5, t6, tables,
+};
 pub use plot::{
     Figure, PlotData, PlotValue, energy_figure, mass_ratio_family, omega_figure, optimum_figure,
     plot_figure1, plot_omega, plot_optimum, plot_stability, quantities_figure, velocity_figure,

@@ -11,7 +11,8 @@ use crate::optimum::{Placement, optimum};
 use crate::scene::{Params, RodInertia, Scene};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
-use num_traits::{One, Zero};
+use crate::solve::oblique;
+use num_traits::{One, Signed, Zero};
 
 /// The choices a user can make for the tables.
 #[derive(Debug, Clone, PartialEq)]
@@ -26,6 +27,8 @@ pub struct TableOptions {
     pub e: Q,
     /// A pivot position in units of l for T1 (T5 always shows the centre and an end).
     pub pivot: Option<Q>,
+    /// The projectile's velocity along the rod, in units of v0, for T6 (the oblique table).
+    pub v0t: Q,
 }
 
 impl Default for TableOptions {
@@ -50,6 +53,7 @@ impl Default for TableOptions {
             rod: RodInertia::Uniform,
             e: Q::one(),
             pivot: None,
+            v0t: Q::one(),
         }
     }
 }
@@ -322,14 +326,104 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
     })
 }
 
+/// T6: an oblique impact with friction at the end of the rod, as mu grows past the exact
+/// threshold mu* at which the contact stops sliding (the rod of T2 and T3: `ratio`, `rod`, `e`;
+/// the projectile also moving along the rod with `v0t`).
+///
+/// # Errors
+/// A scene the options make invalid (`v0t` is any number).
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::{t6, Cell, TableOptions};
+/// use rodimpact::field::q;
+/// let t = t6(&TableOptions::default()).unwrap();
+/// // M = m, end hit, e = 1, v0t = v0: mu* = 5/4, where the contact starts to stick.
+/// let threshold = t.rows.iter().find(|r| r[1] == Cell::Text("stick".into())).unwrap();
+/// assert_eq!(threshold[0], Cell::Rational(q(5, 4)));
+/// ```
+pub fn t6(opts: &TableOptions) -> Result<Table, Error> {
+    let base = unit_scene(&opts.ratio, &opts.rod, &opts.e, None)?;
+    let scene = |mu: &Q| {
+        let mut b = Scene::builder(Q::one(), opts.ratio.clone())
+            .rod(base.rod().clone())
+            .e(opts.e.clone())
+            .v0t(opts.v0t.clone());
+        if !mu.is_zero() {
+            b = b.mu(mu.clone());
+        }
+        b.build()
+    };
+    let solved = |s: &Scene| {
+        let o = s.oblique().cloned().unwrap_or_default();
+        oblique::solve(&s.params::<Q>(), &o.params(), None)
+            .expect("Q decides stick or slide, and every mass is positive")
+    };
+    // mu* = |u_t|/(J k_t): the stick impulse over the normal impulse.
+    let frictionless = solved(&scene(&Q::zero())?);
+    let threshold = if frictionless.impulse.is_zero() {
+        Q::zero()
+    } else {
+        frictionless.stick_impulse.abs() / &frictionless.impulse
+    };
+    let mut mus: Vec<Q> = [(0, 1), (1, 10), (1, 4), (1, 2), (1, 1), (2, 1)]
+        .iter()
+        .map(|&(n, d)| q(n, d))
+        .chain([threshold.clone()])
+        .collect();
+    mus.sort();
+    mus.dedup();
+    let mut rows = Vec::new();
+    for mu in &mus {
+        let out = solved(&scene(mu)?);
+        let contact = match out.contact {
+            None => "none (frictionless)",
+            Some(c) => c.as_str(),
+        };
+        rows.push(vec![
+            Cell::Rational(mu.clone()),
+            Cell::Text(contact.into()),
+            Cell::Rational(out.tangential_impulse.clone()),
+            Cell::Rational(out.after.vt.clone()),
+            Cell::Rational(out.after.rod.vt.clone()),
+            Cell::Rational(out.after.rod.omega.clone()),
+            Cell::Rational(out.lost_friction.clone()),
+        ]);
+    }
+    Ok(Table {
+        id: "T6",
+        title: "Oblique impact with friction at the end of the rod".into(),
+        note: format!(
+            "The projectile strikes the end ($a = l$) moving at $v_0$ across the rod and $v_{{0t}} = {}$ along it; $m = 1$, $M/m = {}$. Friction $\\mu$ at the contact: the tangential impulse $J_t$ along the rod stops the slip when $\\mu$ is at least $\\mu^* = {}$ (stick), else it is $\\mu\\,J$ (slide). Impulses in units of $m v_0$, energies of $m v_0^2$, $\\omega$ of $v_0/l$: $\\omega$ is the frictionless value in every row, since $J_t$ acts through the centre. {}",
+            times(&opts.v0t, "v_0"),
+            opts.ratio,
+            threshold,
+            setting(opts, true)
+        ),
+        columns: vec![
+            Column::exact("$\\mu$", "mu"),
+            Column::exact("contact", "contact"),
+            Column::with_decimals("$J_t/(m v_0)$", "Jt/(m*v0)"),
+            Column::exact("$v_t/v_0$", "vt/v0"),
+            Column::exact("$V_t/v_0$", "Vt/v0"),
+            Column::exact("$\\omega l/v_0$", "omega*l/v0"),
+            Column::with_decimals("lost to friction $/(m v_0^2)$", "friction_loss/(m*v0^2)"),
+        ],
+        rows,
+    })
+}
+
 /// A function that builds one table from the options.
 type TableBuilder = fn(&TableOptions) -> Result<Table, Error>;
 
-/// The ids of the paper's tables, in the order they are printed.
+/// The ids of the paper's tables, in the order they are printed (`table` and `paper`).
 pub const TABLE_IDS: [&str; 5] = ["T1", "T2", "T3", "T4", "T5"];
 
+/// Every table `table --only` builds: the paper's and T6, the oblique impact beyond the paper.
+pub const ALL_TABLE_IDS: [&str; 6] = ["T1", "T2", "T3", "T4", "T5", "T6"];
+
 /// The tables whose ids `wanted` names (any order, `t2` or `T2`), built alone and printed in
-/// the order of [`TABLE_IDS`]: a table not asked for is never computed.
+/// the order of [`ALL_TABLE_IDS`]: a table not asked for is never computed.
 ///
 /// # Errors
 /// `only: unknown table 'X'` for an id that is not one of [`TABLE_IDS`]; a scene the options
@@ -341,24 +435,24 @@ pub const TABLE_IDS: [&str; 5] = ["T1", "T2", "T3", "T4", "T5"];
 /// let t = tables(&["t5", "T2"], &TableOptions::default()).unwrap();
 /// assert_eq!(t.iter().map(|t| t.id).collect::<Vec<_>>(), ["T2", "T5"]);
 /// assert_eq!(tables(&["T9"], &TableOptions::default()).unwrap_err().to_string(),
-///            "only: unknown table 'T9'; the tables are T1-T5");
+///            "only: unknown table 'T9'; the tables are T1-T6");
 /// ```
 pub fn tables(wanted: &[&str], opts: &TableOptions) -> Result<Vec<Table>, Error> {
     let wanted: Vec<String> = wanted
         .iter()
         .map(|w| w.trim().to_ascii_uppercase())
         .collect();
-    if let Some(bad) = wanted.iter().find(|w| !TABLE_IDS.contains(&w.as_str())) {
+    if let Some(bad) = wanted.iter().find(|w| !ALL_TABLE_IDS.contains(&w.as_str())) {
         return Err(Error::new(
             "only",
             ErrorKind::Invalid(format!(
-                "unknown table '{}'; the tables are T1-T5",
+                "unknown table '{}'; the tables are T1-T6",
                 crate::echo::echo(bad)
             )),
         ));
     }
-    let builders: [TableBuilder; 5] = [t1, t2, t3, |_| t4(), t5];
-    TABLE_IDS
+    let builders: [TableBuilder; 6] = [t1, t2, t3, |_| t4(), t5, t6];
+    ALL_TABLE_IDS
         .iter()
         .zip(builders)
         .filter(|(id, _)| wanted.iter().any(|w| w == *id))
@@ -366,7 +460,7 @@ pub fn tables(wanted: &[&str], opts: &TableOptions) -> Result<Vec<Table>, Error>
         .collect()
 }
 
-/// Every table, T1 to T5.
+/// The paper's tables, T1 to T5 (T6 only on request).
 ///
 /// # Examples
 /// ```
