@@ -178,3 +178,12 @@ fn t6_against_the_impulse_balance_by_hand() {
     let (_, all, _) = rodimpact(&["table"]);
     assert!(all.contains("### T5.") && !all.contains("### T6."));
 }
+
+/// The README shows T6 as `table --only T6` prints it.
+#[test]
+fn readme_shows_t6_as_printed() {
+    let (_, t6, _) = rodimpact(&["table", "--only", "T6"]);
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    assert!(readme.contains(&format!("$ rodimpact table --only T6\n{t6}```")));
+}
