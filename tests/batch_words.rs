@@ -1,5 +1,5 @@
-//! The word-level exact row is a shortcut, never a second opinion: on every row it takes, its
-//! line is the general row's, byte for byte. The general row is reached without a test hook:
+//! The word-level rows (exact, and f64 without claims) are shortcuts, never a second opinion:
+//! on every row they take, the line is the general row's, byte for byte. The general row is reached without a test hook:
 //! a `rod` column (here always `uniform`, the default) is one the word row does not read, so
 //! the same rows with that column go the general way; the cell is then cut out of the line.
 
@@ -9,8 +9,17 @@ use rodimpact::batch::{Arithmetic, Batch, SolvedRow};
 /// The rows of `header`/`lines` solved twice: as given (the word row where it applies) and
 /// with a trailing `rod` column of `uniform` (the general row), that cell removed again.
 fn both_ways(header: &str, lines: &[String]) -> Vec<(SolvedRow, SolvedRow)> {
-    let words = Batch::new(header, Arithmetic::Exact).unwrap();
-    let general = Batch::new(&format!("{header},rod"), Arithmetic::Exact).unwrap();
+    in_arithmetic(Arithmetic::Exact, header, lines)
+}
+
+/// [`both_ways`] in `arithmetic`.
+fn in_arithmetic(
+    arithmetic: Arithmetic,
+    header: &str,
+    lines: &[String],
+) -> Vec<(SolvedRow, SolvedRow)> {
+    let words = Batch::new(header, arithmetic).unwrap();
+    let general = Batch::new(&format!("{header},rod"), arithmetic).unwrap();
     lines
         .iter()
         .enumerate()
@@ -42,8 +51,10 @@ fn the_reference_batches_give_the_general_rows_lines() {
             .collect();
         let short = header.split(',').take(5).collect::<Vec<_>>().join(",");
         for (h, rows) in [(&header, &lines), (&short, &inputs_only)] {
-            for (fast, slow) in both_ways(h, rows) {
-                assert_eq!(fast, slow, "{name}");
+            for arithmetic in [Arithmetic::Exact, Arithmetic::F64] {
+                for (fast, slow) in in_arithmetic(arithmetic, h, rows) {
+                    assert_eq!(fast, slow, "{name} {arithmetic:?}");
+                }
             }
         }
     }
@@ -72,8 +83,11 @@ proptest! {
         big in 1u64..1 << 40, big_d in 1u64..1 << 40,
         l in 1u64..1 << 20, a_frac in -1000i64..=1000,
         v0 in 1u64..1 << 30, v0d in 1u64..1 << 30,
-        e in 0u64..=7, style in any::<u8>(), claim_style in 0u8..4,
+        e in 0u64..=7, style in any::<u8>(), claim_style in 0u8..4, small in any::<bool>(),
     ) {
+        // Half the scenes below 2^23 a part, where the f64 row takes them too.
+        let fit = |x: u64| if small { x % (1 << 23) + 1 } else { x };
+        let (m, md, big, big_d, v0, v0d) = (fit(m), fit(md), fit(big), fit(big_d), fit(v0), fit(v0d));
         let a = format!("{}/{}", a_frac * l as i64, 1000);
         let scene = [
             written(m as i64, md, style),
@@ -101,8 +115,13 @@ proptest! {
         for (fast, slow) in rows {
             prop_assert_eq!(fast, slow);
         }
-        let rows = both_ways("m,M,l,a,v0,e", &[scene]);
+        let rows = both_ways("m,M,l,a,v0,e", std::slice::from_ref(&scene));
         for (fast, slow) in rows {
+            prop_assert_eq!(fast, slow);
+        }
+        // The f64 row rounds every input (and the inertia) from its parts as the general row
+        // rounds the exact scene.
+        for (fast, slow) in in_arithmetic(Arithmetic::F64, "m,M,l,a,v0,e", &[scene]) {
             prop_assert_eq!(fast, slow);
         }
     }

@@ -167,9 +167,7 @@ impl Batch {
                 )));
             }
         }
-        let word_plan = (arithmetic == Arithmetic::Exact)
-            .then(|| word_plan(&columns))
-            .flatten();
+        let word_plan = word_plan(&columns);
         Ok(Batch {
             arithmetic,
             agreement: Agreement::Exact,

@@ -23,6 +23,7 @@
 
 mod audit;
 mod compare;
+mod float_row;
 mod header;
 mod row;
 mod stream;

@@ -3,6 +3,7 @@
 
 use super::audit::{Finding, audit};
 use super::compare::{Agreement, Claimed, OutputCheck, compare};
+use super::float_row::float_word_row;
 use super::header::{Arithmetic, Batch, STATE};
 use super::word_row::word_row;
 use crate::error::Error;
@@ -59,8 +60,13 @@ impl Batch {
     /// ```
     pub fn row(&self, number: usize, line: &str) -> Result<SolvedRow, Error> {
         let line = line.trim_end_matches(['\n', '\r']);
-        if let Some(row) =
-            (self.word_plan.as_ref()).and_then(|plan| word_row(plan, &self.agreement, number, line))
+        if let Some(row) = self
+            .word_plan
+            .as_ref()
+            .and_then(|plan| match self.arithmetic {
+                Arithmetic::Exact => word_row(plan, &self.agreement, number, line),
+                Arithmetic::F64 => float_word_row(plan, number, line),
+            })
         {
             return Ok(row);
         }
@@ -355,16 +361,25 @@ fn float_values(
     ];
     let exact = xs.map(|x| {
         x.filter(|_| compared)
-            .map(|x| Q::from_float(x).unwrap_or_else(Q::zero))
+            .map(|x| crate::field::exact_float(x).unwrap_or_else(Q::zero))
     });
     let text = |x: f64| {
-        if x == 0.0 {
-            "0.0".to_string()
-        } else {
-            format!("{x:?}")
-        }
+        let mut out = String::new();
+        write_float(&mut out, x);
+        out
     };
     (exact, xs.map(|x| x.map(text)))
+}
+
+/// Appends `x` as its shortest round-trip text (`0.6`, `1.2e-7`), a zero as `0.0` whatever its
+/// sign (`-0.0` only says which way the float rounded).
+pub(super) fn write_float(out: &mut String, x: f64) {
+    use std::fmt::Write;
+    if x == 0.0 {
+        out.push_str("0.0");
+    } else {
+        write!(out, "{x:?}").expect("writing to a String cannot fail");
+    }
 }
 
 #[cfg(test)]

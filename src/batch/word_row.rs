@@ -49,10 +49,10 @@ pub(super) struct WordPlan {
 
 /// A number as written in a cell: sign, numerator and denominator (not reduced).
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Part {
-    negative: bool,
-    n: u64,
-    d: u64,
+pub(super) struct Part {
+    pub(super) negative: bool,
+    pub(super) n: u64,
+    pub(super) d: u64,
 }
 
 impl Part {
@@ -110,13 +110,13 @@ fn bits(x: u64) -> u32 {
 }
 
 /// The inputs of one row, checked: m, M, l, a, v0, e.
-struct Inputs {
-    m: Part,
-    big_m: Part,
-    l: Part,
-    a: Part,
-    v0: Part,
-    e: Part,
+pub(super) struct Inputs {
+    pub(super) m: Part,
+    pub(super) big_m: Part,
+    pub(super) l: Part,
+    pub(super) a: Part,
+    pub(super) v0: Part,
+    pub(super) e: Part,
 }
 
 impl Inputs {
@@ -437,17 +437,12 @@ fn solve(x: &Inputs) -> Option<Solved> {
     ))
 }
 
-/// The word row of `line` (without its line ending), or `None` when the general row must take
-/// it. See the module documentation.
-pub(super) fn word_row(
+/// The inputs of `line` on words, checked, and its claim cells (v, V, omega; empty where not
+/// claimed); `None` when the general row must read it.
+pub(super) fn read_cells<'a>(
     plan: &WordPlan,
-    agreement: &Agreement,
-    number: usize,
-    line: &str,
-) -> Option<SolvedRow> {
-    if !matches!(agreement, Agreement::Exact | Agreement::Relative(_)) {
-        return None;
-    }
+    line: &'a str,
+) -> Option<(Inputs, [&'a [u8]; STATE])> {
     let mut parts = [None; 6];
     let mut claims: [&[u8]; STATE] = [&[]; STATE];
     let bytes = line.as_bytes();
@@ -468,7 +463,21 @@ pub(super) fn word_row(
         }
         start = end + 1;
     }
-    let inputs = Inputs::check(parts)?;
+    Some((Inputs::check(parts)?, claims))
+}
+
+/// The word row of `line` (without its line ending), or `None` when the general row must take
+/// it. See the module documentation.
+pub(super) fn word_row(
+    plan: &WordPlan,
+    agreement: &Agreement,
+    number: usize,
+    line: &str,
+) -> Option<SolvedRow> {
+    if !matches!(agreement, Agreement::Exact | Agreement::Relative(_)) {
+        return None;
+    }
+    let (inputs, claims) = read_cells(plan, line)?;
     let outputs = reduce_outputs(&inputs, solve(&inputs)?);
     // Room for the six numbers (at most 78 digits each) and the check cells: no regrowth.
     let mut out = String::with_capacity(line.len() + 560);

@@ -7,6 +7,53 @@ use super::{Field, Q};
 use num_traits::ToPrimitive;
 use std::cmp::Ordering;
 
+/// The exact value of a finite `x` as a reduced [`Q`] (a dyadic rational: an odd numerator
+/// over a power of two, or an integer), built from its bits without a GCD; `None` for NaN and
+/// the infinities. The same value as num-rational's `Ratio::from_float`, which reduces with a
+/// big-integer GCD.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{exact_float, q};
+/// assert_eq!(exact_float(0.75), Some(q(3, 4)));
+/// assert_eq!(exact_float(-6.0), Some(q(-6, 1)));
+/// assert_eq!(exact_float(f64::NAN), None);
+/// ```
+pub fn exact_float(x: f64) -> Option<Q> {
+    use num_bigint::{BigInt, BigUint};
+    if !x.is_finite() {
+        return None;
+    }
+    if x == 0.0 {
+        return Some(Q::from_integer(BigInt::from(0)));
+    }
+    let bits = x.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i64;
+    let fraction = bits & ((1 << 52) - 1);
+    // x = mantissa * 2^exponent, the mantissa an integer of at most 53 bits.
+    let (mantissa, exponent) = if biased == 0 {
+        (fraction, -1074)
+    } else {
+        (fraction | 1 << 52, biased - 1075)
+    };
+    let zeros = mantissa.trailing_zeros();
+    let (odd, exponent) = (mantissa >> zeros, exponent + i64::from(zeros));
+    let magnitude = BigUint::from(odd);
+    let sign = if x < 0.0 {
+        num_bigint::Sign::Minus
+    } else {
+        num_bigint::Sign::Plus
+    };
+    Some(if exponent >= 0 {
+        Q::from_integer(BigInt::from_biguint(sign, magnitude << exponent as u64))
+    } else {
+        Q::new_raw(
+            BigInt::from_biguint(sign, magnitude),
+            BigInt::from(BigUint::from(1u8) << (-exponent) as u64),
+        )
+    })
+}
+
 macro_rules! float_field {
     ($t:ty, $name:literal, $to:ident) => {
         impl Field for $t {
@@ -65,6 +112,33 @@ mod tests {
             .chain([1e12, 1e-12])
             .collect();
         laws::check_field(&samples, close_f32);
+    }
+
+    #[test]
+    fn exact_float_is_num_rationals_value() {
+        for x in [
+            0.1,
+            -0.59999996,
+            1e300,
+            -1.5e-310,
+            f64::from_bits(1),
+            f64::MAX,
+            -0.0,
+            3.0,
+            1.0 / 3.0,
+        ] {
+            assert_eq!(exact_float(x), Q::from_float(x), "{x:e}");
+        }
+    }
+
+    proptest::proptest! {
+        /// Every finite f64 (random bit patterns: subnormals, integers, huge): the same value
+        /// as num-rational's reduced one.
+        #[test]
+        fn exact_float_of_any_bits(bits in proptest::prelude::any::<u64>()) {
+            let x = f64::from_bits(bits);
+            proptest::prop_assert_eq!(exact_float(x), Q::from_float(x));
+        }
     }
 
     #[test]

@@ -31,6 +31,7 @@ pub mod quadratic;
 pub mod ratfunc;
 mod rational;
 
+pub use float::exact_float;
 pub use interval::Interval;
 pub use poly::{Poly, Sym};
 pub use quadratic::QSqrt;

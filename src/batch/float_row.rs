@@ -1,0 +1,125 @@
+//! The f64 row on words (`batch --backend f64` without claims): the cells read as the exact
+//! word row reads them ([`read_cells`]), each input rounded to the nearest f64 straight from its
+//! integer parts, the rod's inertia M l^2/3 rounded from its exact integer parts, and the
+//! paper's closed form evaluated by the same function as the general row
+//! ([`closed_form`]). No `BigRational` scene, and no exact values of the results: without
+//! claims nothing compares them.
+//!
+//! A row it does not take (a claim, a part of 2^24 or more, anything the word row leaves) goes
+//! to the general row, whose line it gives byte for byte: every input is the same correctly
+//! rounded f64 either way (`tests/batch_words.rs`).
+
+use super::row::{SolvedRow, write_float};
+use super::word_row::{Inputs, Part, WordPlan, read_cells};
+use crate::scene::{Params, Support};
+use crate::solve::closed_form::closed_form;
+
+/// The nearest f64 to `n/d` (ties to even), for `0 < n, d < 2^74`: the integer quotient taken
+/// to 54 or 55 bits, then rounded with the remainder as the sticky bit.
+///
+/// # Panics
+/// If `d` is zero or an operand is 2^74 or more (the callers bound their parts below 2^24).
+fn nearest(n: u128, d: u128) -> f64 {
+    assert!(
+        d != 0 && n < 1 << 74 && d < 1 << 74,
+        "operands out of range"
+    );
+    if n == 0 {
+        return 0.0;
+    }
+    let (bits_n, bits_d) = (128 - n.leading_zeros(), 128 - d.leading_zeros());
+    // Scale so that the quotient lies in [2^53, 2^55): 54 + bits_d <= 128 keeps n << k in range.
+    let k = 54 + bits_d as i32 - bits_n as i32;
+    let (num, den) = if k >= 0 { (n << k, d) } else { (n, d << -k) };
+    let (q, r) = (num / den, num % den);
+    let extra = (128 - q.leading_zeros()) - 53; // 1 or 2 bits below the mantissa
+    let mantissa = q >> extra;
+    let below = q & ((1 << extra) - 1);
+    let half = 1 << (extra - 1);
+    let up = below > half || (below == half && (r != 0 || mantissa & 1 == 1));
+    let mantissa = mantissa + u128::from(up); // 2^53 at most: still exact in f64
+    // An exact power-of-two scaling (the result is far from the overflow and subnormal range).
+    mantissa as f64 * 2f64.powi(extra as i32 - k)
+}
+
+/// A part as the nearest f64, if it is below 2^24.
+fn part(x: Part) -> Option<f64> {
+    const LIMIT: u64 = 1 << 24;
+    (x.n < LIMIT && x.d < LIMIT).then(|| {
+        let value = nearest(x.n.into(), x.d.into());
+        if x.negative { -value } else { value }
+    })
+}
+
+/// The scene's f64 parameters, each the nearest f64 to the exact value, as
+/// [`Scene::params`](crate::scene::Scene::params) gives them; `None` when a part is 2^24 or
+/// more.
+fn float_params(x: &Inputs) -> Option<Params<f64>> {
+    let [m, big_m, l, a, v0, e] = [x.m, x.big_m, x.l, x.a, x.v0, x.e].map(part);
+    let (m, rod_mass, half_length, a, v0, e) = (m?, big_m?, l?, a?, v0?, e?);
+    // Every part below 2^24, so I = M l^2/3 = Mn ln^2/(3 Md ld^2) has parts below 2^72 and 2^74.
+    let square = |w: u64| u128::from(w) * u128::from(w);
+    let inertia = nearest(
+        u128::from(x.big_m.n) * square(x.l.n),
+        3 * u128::from(x.big_m.d) * square(x.l.d),
+    );
+    Some(Params {
+        m,
+        rod_mass,
+        half_length,
+        inertia,
+        a,
+        v0,
+        e,
+        support: Support::Free,
+    })
+}
+
+/// The f64 row of `line` (without its line ending), or `None` when the general row must take
+/// it (see the module documentation).
+pub(super) fn float_word_row(plan: &WordPlan, number: usize, line: &str) -> Option<SolvedRow> {
+    if plan.claimed.iter().any(|c| *c) {
+        return None;
+    }
+    let (inputs, _) = read_cells(plan, line)?;
+    let after = closed_form(&float_params(&inputs)?)?;
+    let mut out = String::with_capacity(line.len() + 80);
+    out.push_str(line);
+    for x in [after.v, after.rod_v, after.omega] {
+        out.push(',');
+        write_float(&mut out, x);
+    }
+    out.push('\n');
+    Some(SolvedRow {
+        number,
+        line: out,
+        laws_held: None,
+        checks: Vec::new(),
+        diagnosis: None,
+        label: None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::Q;
+    use num_traits::ToPrimitive;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The nearest f64 from integer parts is num-rational's correctly rounded value, at
+        /// every size the row admits and beyond (ties included: n/d = odd/2^k).
+        #[test]
+        fn nearest_matches_the_correctly_rounded_ratio(n in 1u128..1 << 74, d in 1u128..1 << 74, k in 0u32..60) {
+            let want = Q::new(n.into(), d.into()).to_f64().unwrap();
+            prop_assert_eq!(nearest(n, d), want);
+            // 55 bits whose last two are 10: exactly halfway, to the even neighbour (down for
+            // ...00 10, up for ...01 10).
+            for tie in [(1u128 << 54) | 2, (1u128 << 54) | 6] {
+                let want = Q::new(tie.into(), (1u128 << k).into()).to_f64().unwrap();
+                prop_assert_eq!(nearest(tie, 1 << k), want);
+            }
+        }
+    }
+}
