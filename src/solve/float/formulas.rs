@@ -71,7 +71,9 @@ impl FloatFormula {
                     omega: nan,
                 }
             }),
-            FloatFormula::Sq => scaled(p).unwrap_or_else(|| stable(carried(p), false)),
+            FloatFormula::Sq => plain(p)
+                .or_else(|| scaled(p))
+                .unwrap_or_else(|| stable(carried(p), false)),
             FloatFormula::Scomp => stable(carried(p), true),
         })
     }
@@ -121,7 +123,71 @@ fn carried<T: Real>(p: &Params<T>) -> [Ext<T>; 6] {
     [p.m, p.rod_mass, p.inertia, p.a, p.v0, p.e].map(Ext::new)
 }
 
-/// The fast path of "sq": one exact power-of-two rescaling up front (masses
+/// The operations of "sq" on plain floats, every intermediate kept (the fast paths check them).
+struct Operations<T> {
+    groups: Groups<T>,
+    /// q - e.
+    n: T,
+    /// (1 + e)/d v0.
+    gain: T,
+    v: T,
+    rod_v: T,
+    omega: T,
+}
+
+impl<T: Real> Operations<T> {
+    /// The operations of [`stable`] in this order, on the inputs (m, M, I, a, v0, e).
+    fn of(m: T, rod_mass: T, inertia: T, a: T, v0: T, e: T) -> Operations<T> {
+        let groups = Groups::of(&m, &rod_mass, &inertia, &a);
+        let n = groups.q - e;
+        let gain = (T::one() + e) / groups.d * v0;
+        Operations {
+            v: n / groups.d * v0,
+            rod_v: gain * groups.r,
+            omega: gain * groups.ma_over_i,
+            groups,
+            n,
+            gain,
+        }
+    }
+}
+
+/// The widest binary exponent (as [`Real::frexp`] gives it) of the inputs for which every value
+/// of "sq" is a normal number of `T` or an exact zero: (MAX_EXP - PRECISION - 11)/8, 120 for
+/// f64 and 11 for f32.
+///
+/// With every input within 2^-(K+1) <= |x| < 2^K (a and e may also be 0): r = m/M and q = r +
+/// m a^2/I lie above 2^(-2K-2), so q - e is 0 or at least one unit in the last place there,
+/// 2^(-2K-1-PRECISION); d = 1 + q lies in [1, 2^(4K+6)); so v = (q - e)/d v0 is 0 or above
+/// 2^(-7K-PRECISION-8), and every product and quotient (omega = (1 + e)/d v0 m a/I is the
+/// largest) stays below 2^(5K+8). For K = 120 that is 2^-901 to 2^608, inside f64's normal
+/// range 2^-1022 to 2^1024; for K = 11 (f32), 2^-109 to 2^63, inside 2^-126 to 2^128.
+fn safe_exponent<T: Real>() -> i32 {
+    (T::MAX_EXP - T::PRECISION as i32 - 11) / 8
+}
+
+/// The plain path of "sq": inputs within [`safe_exponent`] need no rescaling, since every value
+/// is then normal (or an exact zero) and a power-of-two rescaling would change no rounding; so
+/// the operations run on the inputs as they are, bit-identical to [`scaled`] and [`stable`].
+/// `None` for inputs outside the range (the caller rescales).
+fn plain<T: Real>(p: &Params<T>) -> Option<Motion<T>> {
+    let k = safe_exponent::<T>();
+    let within = |x: T| x.binade().is_some_and(|e| e.abs() <= k);
+    let positive = [p.m, p.rod_mass, p.inertia, p.v0]
+        .into_iter()
+        .all(|x| x > T::zero() && within(x));
+    let zero_or_within = [p.a, p.e].into_iter().all(|x| x.is_zero() || within(x));
+    (positive && zero_or_within).then(|| {
+        let o = Operations::of(p.m, p.rod_mass, p.inertia, p.a, p.v0, p.e);
+        Motion {
+            v: o.v,
+            rod_v: o.rod_v,
+            omega: o.omega,
+        }
+    })
+}
+
+/// The rescaling path of "sq": one exact power-of-two rescaling up front (masses
 /// so that M is in [1/2, 1), lengths so that I/M is near 1), then the same operations as
 /// [`stable`] in plain floats. While every intermediate is a normal number, each operation
 /// rounds exactly like its [`Ext`] twin, so the result is bit-identical; otherwise `None` and
@@ -137,18 +203,15 @@ fn scaled<T: Real>(p: &Params<T>) -> Option<Motion<T>> {
     let inertia_scale = T::pow2(2 * half - mass_exponent);
     let (m, rod_mass) = (p.m * mass_scale, p.rod_mass * mass_scale);
     let (inertia, a) = (p.inertia * inertia_scale, p.a * length_scale);
-    let one = T::one();
+    let o = Operations::of(m, rod_mass, inertia, a, p.v0, p.e);
     let Groups {
         r,
         ma_over_i,
         s: arm,
         q,
         d,
-    } = Groups::of(&m, &rod_mass, &inertia, &a);
-    let n = q - p.e;
-    let gain = (one + p.e) / d * p.v0;
-    let (v, rod_v, omega) = (n / d * p.v0, gain * r, gain * ma_over_i);
-    let omega_out = omega * length_scale;
+    } = o.groups;
+    let omega_out = o.omega * length_scale;
     let inputs = [
         mass_scale,
         length_scale,
@@ -158,15 +221,15 @@ fn scaled<T: Real>(p: &Params<T>) -> Option<Motion<T>> {
         inertia,
         p.v0,
     ];
-    let normal = [r, q, d, gain, rod_v];
-    let zero_with_a = [a, m * a, ma_over_i, arm, omega, omega_out];
+    let normal = [r, q, d, o.gain, o.rod_v];
+    let zero_with_a = [a, m * a, ma_over_i, arm, o.omega, omega_out];
     let fine = inputs.into_iter().chain(normal).all(ok)
         && (zero_with_a.into_iter().all(ok) || (p.a.is_zero() && omega_out.is_zero()))
-        && (ok(v) || n.is_zero())
-        && ok_or_zero(n);
+        && (ok(o.v) || o.n.is_zero())
+        && ok_or_zero(o.n);
     fine.then_some(Motion {
-        v,
-        rod_v,
+        v: o.v,
+        rod_v: o.rod_v,
         omega: omega_out,
     })
 }
@@ -315,6 +378,47 @@ mod tests {
         assert_ne!(two_steps * f32::pow2(126), p.inertia * f32::pow2(89));
         let fast = scaled(&p).expect("every scaled input is normal");
         assert_eq!(fast, stable(carried(&p), false));
+    }
+
+    proptest::proptest! {
+        /// Inputs anywhere in the plain path's range (random exponents up to its edge, random
+        /// mantissas, a and e sometimes 0): the plain path answers, and bit for bit as the
+        /// exponent-carried path does; in f32 too.
+        #[test]
+        fn the_plain_path_is_bit_identical_in_its_range(
+            exps in proptest::array::uniform6(-120i32..=120),
+            mants in proptest::array::uniform6(0.5f64..1.0),
+            zero_a in proptest::prelude::any::<bool>(),
+            zero_e in proptest::prelude::any::<bool>(),
+        ) {
+            let x = |k: usize| mants[k] * f64::pow2(exps[k]);
+            let p = Params {
+                m: x(0),
+                rod_mass: x(1),
+                half_length: 1.0,
+                inertia: x(2),
+                a: if zero_a { 0.0 } else { -x(3) },
+                v0: x(4),
+                e: if zero_e { 0.0 } else { x(5) },
+                support: Support::Free,
+            };
+            let fast = plain(&p).expect("inputs within the range");
+            proptest::prop_assert_eq!(fast, stable(carried(&p), false));
+            let small = |k: usize| (mants[k] * f64::pow2(exps[k] % 12)) as f32;
+            let p32 = Params {
+                m: small(0),
+                rod_mass: small(1),
+                half_length: 1.0f32,
+                inertia: small(2),
+                a: if zero_a { 0.0 } else { small(3) },
+                v0: small(4),
+                e: if zero_e { 0.0 } else { small(5) },
+                support: Support::Free,
+            };
+            if let Some(fast) = plain(&p32) {
+                proptest::prop_assert_eq!(fast, stable(carried(&p32), false));
+            }
+        }
     }
 
     #[test]

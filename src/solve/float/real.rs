@@ -19,12 +19,28 @@ pub trait Real: Field + Copy + PartialOrd {
     /// Significand bits including the hidden bit: 53 or 24; the unit roundoff is 2^-PRECISION.
     const PRECISION: u32;
 
+    /// One more than the largest binary exponent of a finite number: 1024 or 128 (the largest
+    /// finite number is just below 2^MAX_EXP; the smallest normal is 2^(3 - MAX_EXP)).
+    const MAX_EXP: i32;
+
     /// `(f, k)` with `self = f 2^k` and `0.5 <= |f| < 1`; zero, infinities and NaN give
     /// `(self, 0)`. Exact, subnormals included.
     fn frexp(self) -> (Self, i32);
 
     /// `self 2^k`, correctly rounded (a single rounding, also into the subnormal range).
     fn ldexp(self, k: i32) -> Self;
+
+    /// The exponent k of a normal number, `self = f 2^k` with `0.5 <= |f| < 1` (as
+    /// [`Real::frexp`] gives it), read off its bits; `None` for zero, a subnormal, an infinity
+    /// or NaN.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::solve::float::Real;
+    /// assert_eq!(Real::binade(12.0f64), Some(4));
+    /// assert_eq!(Real::binade(f64::MIN_POSITIVE / 2.0), None);
+    /// ```
+    fn binade(self) -> Option<i32>;
 
     /// `2^k`, exact, for `k` in the normal exponent range; outside it as [`Real::ldexp`] rounds
     /// (a subnormal, 0 or infinity).
@@ -77,6 +93,7 @@ macro_rules! real {
     ($t:ty, $bits:ty, $precision:literal, $bias:literal) => {
         impl Real for $t {
             const PRECISION: u32 = $precision;
+            const MAX_EXP: i32 = <$t>::MAX_EXP;
 
             fn frexp(self) -> (Self, i32) {
                 const MANT: u32 = $precision - 1;
@@ -94,6 +111,13 @@ macro_rules! real {
                 let cleared = bits & !(EXP_MASK << MANT);
                 let f = <$t>::from_bits(cleared | ((($bias - 1) as $bits) << MANT));
                 (f, biased - ($bias - 1))
+            }
+
+            fn binade(self) -> Option<i32> {
+                const MANT: u32 = $precision - 1;
+                const EXP_MASK: $bits = (1 << (<$bits>::BITS - 1 - MANT)) - 1;
+                let biased = ((self.to_bits() >> MANT) & EXP_MASK) as i32;
+                (biased != 0 && biased != EXP_MASK as i32).then_some(biased - ($bias - 1))
             }
 
             fn ldexp(self, k: i32) -> Self {
@@ -171,6 +195,24 @@ mod tests {
         assert_eq!(x.ldexp(-126), f32::MIN_POSITIVE * x);
         let y = 1.0f64 + f64::EPSILON;
         assert_eq!(y.ldexp(-1022), f64::MIN_POSITIVE * y);
+    }
+
+    #[test]
+    fn binade_is_frexps_exponent_for_normals_only() {
+        for x in [1.0f64, -0.75, 3e300, f64::MIN_POSITIVE, f64::MAX, 1e-300] {
+            assert_eq!(x.binade(), Some(x.frexp().1), "{x:e}");
+        }
+        for x in [
+            0.0f64,
+            -0.0,
+            f64::MIN_POSITIVE / 2.0,
+            f64::INFINITY,
+            f64::NAN,
+        ] {
+            assert_eq!(x.binade(), None, "{x:e}");
+        }
+        assert_eq!(3.0f32.binade(), Some(2));
+        assert_eq!(f32::from_bits(1).binade(), None);
     }
 
     #[test]
