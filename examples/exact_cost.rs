@@ -33,7 +33,7 @@ fn main() {
     let big = if cfg!(feature = "malachite") {
         "malachite-nz"
     } else {
-        "num-bigint"
+        "dashu-int"
     };
     println!("(big-integer fallback on {big})");
     growth(if quick { 10_000 } else { 100_000 });

@@ -24,7 +24,7 @@
 //!
 //! The integers are first tried in checked `i128` (energy in 256 bits, its terms are
 //! non-negative), then in a checked 512-bit integer (`wide`), and only then in big integers
-//! ([`BigInt`](num_bigint::BigInt), or malachite's `Integer` with the cargo feature
+//! (dashu's `IBig`, or malachite's `Integer` with the cargo feature
 //! `malachite`): the first overflow restarts the scene in the next width
 //! ([`crate::field::int`]). A pivoted rod takes the same route with its own fixed-axis formulas
 //! (see `pivoted`). The GCDs of the final reductions run on machine words up to 256 bits.
@@ -53,7 +53,7 @@ pub enum Width {
     Fixed,
     /// Fraction-free in a checked 512-bit integer (`i128` overflowed).
     Wide,
-    /// Fraction-free in big integers, num-bigint's `BigInt` or, with the feature `malachite`,
+    /// Fraction-free in big integers, dashu's `IBig` or, with the feature `malachite`,
     /// malachite's `Integer` (the fixed width overflowed, or was not tried).
     Big,
 }
@@ -125,7 +125,7 @@ fn input_bits(scene: &Scene) -> u64 {
 }
 
 /// [`solve`] without the fixed-width attempt: fraction-free in big integers (the fallback on
-/// its own, for tests and benchmarks): num-bigint's [`BigInt`](num_bigint::BigInt), or malachite's `Integer` with
+/// its own, for tests and benchmarks): dashu's `IBig` (MIT/Apache-2.0), or malachite's `Integer` with
 /// the cargo feature `malachite` (LGPL-3.0; subquadratic GCD). The result is the same.
 ///
 /// # Examples

@@ -5,7 +5,8 @@
 //!   reduces, compares and prints fractions of up to 256-bit parts on machine words;
 //! - `wide`: a checked 512-bit signed integer (`Wide`);
 //! - `ring`: fixed-width integers that wrap (`Ring<N>`), for values proven in range in advance;
-//! - `malachite` (cargo feature `malachite`): malachite's `Integer` as the unbounded width;
+//! - `dashu`: dashu's `IBig` as the unbounded width (the default);
+//! - `malachite` (cargo feature `malachite`): malachite's `Integer` instead;
 //! - the `Int` kit: the checked operations of the fraction-free route
 //!   ([`crate::solve::fraction_free`]), written once for `i128`, `Wide` and big integers;
 //! - [`reduce`] and `write_ratio`: a fraction reduced, or written, on machine words when it fits.
@@ -18,8 +19,8 @@ pub(crate) use wide::Wide;
 pub(crate) use words::{U256, gcd, gcd_u64};
 
 /// The [`Int`] operations of an integer type that never overflows (every result `Some`),
-/// written once for num-bigint's `BigInt` and, with the feature, malachite's `Integer`
-/// (defined before the modules, which see it by textual scope).
+/// written once for dashu's `IBig` and, with the feature, malachite's `Integer` (defined before
+/// the modules, which see it by textual scope).
 macro_rules! unbounded_arithmetic {
     () => {
         fn add(&self, o: &Self) -> Option<Self> {
@@ -38,17 +39,19 @@ macro_rules! unbounded_arithmetic {
     };
 }
 
+#[cfg(not(feature = "malachite"))]
+mod dashu;
 #[cfg(feature = "malachite")]
 mod malachite;
 mod ring;
 mod wide;
 mod words;
 
-/// The big-integer type of the fraction-free fallback: num-bigint's [`BigInt`] by default,
-/// malachite's `Integer` with the feature `malachite` (subquadratic GCD and multiplication).
-/// Results are returned as [`Q`] either way, identical.
+/// The big-integer type of the fraction-free fallback: dashu's `IBig` by default (Karatsuba
+/// and Toom multiplication, Lehmer GCD), malachite's `Integer` with the feature `malachite`
+/// (subquadratic GCD too). Results are returned as [`Q`] either way, identical.
 #[cfg(not(feature = "malachite"))]
-pub(crate) type Big = BigInt;
+pub(crate) type Big = dashu_int::IBig;
 /// The big-integer type of the fraction-free fallback: malachite's `Integer` (feature
 /// `malachite`; subquadratic GCD and multiplication) instead of num-bigint's [`BigInt`].
 /// Results are returned as [`Q`] either way, identical.
@@ -73,9 +76,18 @@ pub(crate) type Big = malachite_nz::integer::Integer;
 pub fn reduce(n: BigInt, d: BigInt) -> Q {
     assert!(!d.is_zero(), "denominator == 0");
     if d.is_negative() {
-        BigInt::ratio(-n, -d)
+        word_ratio(-n, -d)
     } else {
-        BigInt::ratio(n, d)
+        word_ratio(n, d)
+    }
+}
+
+/// `n/d` reduced, `d > 0`: up to 256 bits the GCD runs on two machine words, far faster than
+/// num-bigint's binary GCD on heap digits; beyond, `Q::new` reduces.
+fn word_ratio(n: BigInt, d: BigInt) -> Q {
+    match (U256::from_big(n.magnitude()), U256::from_big(d.magnitude())) {
+        (Some(a), Some(b)) => U256::ratio(n.is_negative(), a, b),
+        _ => Q::new(n, d),
     }
 }
 
@@ -111,24 +123,6 @@ pub(crate) trait Int: Sized + Clone + PartialEq {
     fn squares_balance(lhs: [(&Self, &Self); 3], rhs: (&Self, &Self)) -> Option<bool>;
     /// `n/d` reduced, `d > 0`.
     fn ratio(n: Self, d: Self) -> Q;
-}
-
-impl Int for BigInt {
-    fn lift(x: &BigInt) -> Option<Self> {
-        Some(x.clone())
-    }
-    fn small(x: u8) -> Self {
-        BigInt::from(x)
-    }
-    unbounded_arithmetic!();
-    fn ratio(n: Self, d: Self) -> Q {
-        // Up to 256 bits (every 10^6-sized scene) the GCD runs on two machine words, far faster
-        // than num-bigint's binary GCD on heap digits; beyond, `Q::new` reduces.
-        match (U256::from_big(n.magnitude()), U256::from_big(d.magnitude())) {
-            (Some(a), Some(b)) => U256::ratio(n.is_negative(), a, b),
-            _ => Q::new(n, d),
-        }
-    }
 }
 
 impl Int for i128 {
@@ -176,16 +170,16 @@ mod tests {
     use super::*;
 
     #[test]
-    fn energy_balance_is_decided_alike_in_both_widths() {
+    fn energy_balance_is_decided_alike_in_the_fixed_and_the_unbounded_width() {
         // 2*3^2 + 1*4^2 + 0*7^2 = 34 = 34*1^2; off by one it is not.
         for (c, want) in [(34i128, true), (35, false)] {
             let (two, three, one, four, zero, seven) = (2i128, 3, 1, 4, 0, 7);
             let fixed =
                 i128::squares_balance([(&two, &three), (&one, &four), (&zero, &seven)], (&c, &one));
-            let big = |x: i128| BigInt::from(x);
+            let big = |x: i128| Big::lift(&BigInt::from(x)).unwrap();
             let (b2, b3, b1, b4, b0, b7, bc) =
                 (big(2), big(3), big(1), big(4), big(0), big(7), big(c));
-            let wide = BigInt::squares_balance([(&b2, &b3), (&b1, &b4), (&b0, &b7)], (&bc, &b1));
+            let wide = Big::squares_balance([(&b2, &b3), (&b1, &b4), (&b0, &b7)], (&bc, &b1));
             assert_eq!((fixed, wide), (Some(want), Some(want)));
         }
         let max = i128::MAX;
