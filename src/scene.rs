@@ -262,6 +262,44 @@ impl<F: Field> ObliqueParams<F> {
             },
         }
     }
+
+    /// The slip before the impact, u_t: the velocity along the rod of the projectile's
+    /// contact point (a disc's rim adds spin times radius) minus the struck point's.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::{Disc, Oblique, RodMotion, Support};
+    /// use rodimpact::field::{q, Q};
+    /// let o = Oblique {
+    ///     v0t: q(1, 1),
+    ///     disc: Some(Disc { radius: q(1, 10), spin: q(3, 1) }),
+    ///     rod_before: RodMotion { v: q(0, 1), vt: q(1, 2), omega: q(0, 1) },
+    ///     ..Default::default()
+    /// };
+    /// assert_eq!(o.params::<Q>().slip(&Support::Free), q(4, 5)); // 1 + 3/10 - 1/2
+    /// ```
+    pub fn slip(&self, support: &Support<F>) -> F {
+        let rim = |d: &Disc<F>| d.spin.clone() * &d.radius;
+        self.v0t.clone() + &self.disc.as_ref().map_or_else(F::zero, rim)
+            - &self.rod_moving(support).vt
+    }
+}
+
+/// The refusal of a scene whose projectile does not approach the struck point; `is` says what
+/// the approach speed is (`is -1, not > 0`).
+///
+/// # Examples
+/// ```
+/// use rodimpact::scene::no_approach;
+/// assert!(no_approach("is 0, not > 0").to_string().starts_with("v0: no approach at the contact point"));
+/// ```
+pub fn no_approach(is: &str) -> Error {
+    Error::out_of_range(
+        "v0",
+        format!(
+            "no approach at the contact point: the projectile's normal velocity minus the struck point's, v0 - (V0 + omega0 a), {is}"
+        ),
+    )
 }
 
 /// `I = M r^2`: the moment of inertia about the centre of a rod of mass `mass` with radius of
@@ -680,12 +718,7 @@ impl SceneBuilder {
         };
         let approach = scene.approach();
         if !approach.is_positive() {
-            return Err(Error::out_of_range(
-                "v0",
-                format!(
-                    "no approach at the contact point: the projectile's normal velocity minus the struck point's, v0 - (V0 + omega0 a), is {approach}, not > 0"
-                ),
-            ));
+            return Err(no_approach(&format!("is {approach}, not > 0")));
         }
         Ok(scene)
     }

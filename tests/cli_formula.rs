@@ -205,6 +205,18 @@ fn oblique_friction_in_symbols() {
         "energy_lost",
         &format!("(1 - e^2)*v0^2/(2*{k_n}) + mu*{big_j}*(v0t - mu*{big_j}*(1/m + 1/M)/2)"),
     );
+    // The two parts of the loss: restitution once (the normal problem's), friction per case.
+    assert_formula(
+        &j,
+        "energy_lost_restitution",
+        &format!("(1 - e^2)*v0^2/(2*{k_n})"),
+    );
+    assert_formula(stick, "energy_lost_friction", "v0t^2/(2*(1/m + 1/M))");
+    assert_formula(
+        slide,
+        "energy_lost_friction",
+        &format!("mu*{big_j}*(v0t - mu*{big_j}*(1/m + 1/M)/2)"),
+    );
     assert_eq!(stick["condition"], "mu >= mu_star");
     assert_eq!(slide["condition"], "mu < mu_star");
     let defaults = j["defaults"].as_array().unwrap();
@@ -229,6 +241,134 @@ fn spinning_disc_in_symbols() {
     assert_formula(stick, "vt", "-w*rd/(3/m + 1/M)/m");
     assert_formula(stick, "energy_lost", "(w*rd)^2/(2*(3/m + 1/M))");
     assert_formula(&j, "omega", "2*m*a*v0/(M*l^2/3*(1+m/M) + m*a^2)");
+}
+
+/// X27 for every projectile: omega (and v, V, J) of the paper's scene, whatever the slide along
+/// the rod, the friction and the disc's spin; a disc's spin is the only new answer besides the
+/// tangential ones.
+#[test]
+fn omega_is_the_papers_whatever_the_slide_and_the_friction() {
+    let paper = formula_json(&["--e", "e"]);
+    for oblique in [
+        &["--v0t", "v0t", "--mu", "mu"][..],
+        &["--v0t", "v0t", "--mu", "1/3"],
+        &["--radius", "rd", "--spin", "w", "--v0t", "v0t", "--mu", "mu"],
+    ] {
+        let j = formula_json(&[&["--e", "e"][..], oblique].concat());
+        for key in ["v", "V", "omega", "impulse", "a_star_squared", "omega_max"] {
+            assert_eq!(j[key], paper[key], "{key} changed by {oblique:?}");
+        }
+        for case in ["stick", "slide"] {
+            for key in ["v", "V", "omega", "impulse"] {
+                assert!(j["cases"][case].get(key).is_none(), "{key} split by {case}");
+            }
+        }
+    }
+}
+
+/// A slip the symbols make negative (`--v0t -v0`) is taken < 0, not > 0: mu* = v0/(J k_t) is
+/// positive and a sliding contact pushes the rod backwards, Jt = -mu J (J = (1 + e) v0/k_n, here
+/// e = 1); sticking takes Jt = u_t/k_t = -v0/k_t as for either sign.
+#[test]
+fn a_negative_slip_is_taken_negative() {
+    let j = formula_json(&["--v0t", "-v0", "--mu", "mu"]);
+    let k_n = "(1/m + 1/M + 3*a^2/(M*l^2))";
+    let big_j = format!("(2*v0/{k_n})");
+    assert_formula(&j, "mu_star", &format!("v0/({big_j}*(1/m + 1/M))"));
+    assert_formula(
+        &j["cases"]["slide"],
+        "tangential_impulse",
+        &format!("-mu*{big_j}"),
+    );
+    assert_formula(
+        &j["cases"]["stick"],
+        "tangential_impulse",
+        "-v0/(1/m + 1/M)",
+    );
+    let defaults = j["defaults"].to_string();
+    assert!(
+        defaults.contains("the slip before the impact, u_t = -v0, taken < 0"),
+        "{defaults}"
+    );
+}
+
+/// A rod moving before the impact: its approach at the contact, u_n = v0 - V0 (a centre hit),
+/// is said to be taken > 0 when it is a formula, and a rod that never meets the projectile is
+/// refused as `solve` refuses it, in numbers and in symbols.
+#[test]
+fn the_approach_of_a_moving_rod() {
+    let j = formula_json(&["--a", "0", "--rod-v", "V0"]);
+    assert_formula(&j, "impulse", "2*(v0 - V0)/(1/m + 1/M)");
+    let defaults = j["defaults"].to_string();
+    assert!(
+        defaults.contains("the approach at the contact point, u_n = -V0 + v0, taken > 0"),
+        "{defaults}"
+    );
+    let numbers = ["--m", "1", "--M", "1", "--v0", "1", "--rod-v", "2"];
+    let out = run(&numbers);
+    assert_eq!(out.status.code(), Some(2));
+    let message = "error: v0: no approach at the contact point: the projectile's normal velocity minus the struck point's, v0 - (V0 + omega0 a), is -1, not > 0\n";
+    assert_eq!(String::from_utf8(out.stderr).unwrap(), message);
+    let solved = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .arg("solve")
+        .args(numbers)
+        .output()
+        .unwrap();
+    assert_eq!(String::from_utf8(solved.stderr).unwrap(), message);
+    let out = run(&["--rod-v", "2*v0"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8(out.stderr).unwrap(),
+        "error: v0: no approach at the contact point: the projectile's normal velocity minus the struck point's, v0 - (V0 + omega0 a), = -v0, is > 0 in no sample scene of the free symbols\n"
+    );
+}
+
+/// Every quantity of a numeric oblique scene as `solve` gives it, and as worked by hand: m = 1,
+/// M = 2, l = 1 (I = 2/3), a = 1/2, v0 = 3, e = 1/2; a disc r = 1/10 spinning at 4 with
+/// v0t = 1; the rod moving with V0 = 1/2, Vt0 = 1/4, omega0 = 1. u_n = 3 - (1/2 + 1/2) = 2,
+/// k_n = 1 + 1/2 + (1/4)/(2/3) = 15/8, J = (3/2) 2/(15/8) = 8/5; restitution loses
+/// (3/4) 4/(2 15/8) = 4/5. u_t = 1 + 4/10 - 1/4 = 23/20, k_t = 3/m + 1/M = 7/2,
+/// mu* = (23/20)/((8/5)(7/2)) = 23/112 > mu = 1/5: it slides, Jt = 8/25, vt = 17/25,
+/// Vt = 1/4 + 4/25 = 41/100, spin = 4 - 2 (8/25)/(1/10) = -12/5, friction loses
+/// (8/25)(23/20 - (8/25)(7/4)) = 118/625; v = 3 - 8/5, V = 1/2 + 4/5, omega = 1 + (1/2)(8/5)/(2/3).
+#[test]
+fn a_numeric_oblique_scene_as_solve_and_by_hand() {
+    let scene = [
+        "--m", "1", "--M", "2", "--l", "1", "--a", "1/2", "--v0", "3", "--e", "1/2", "--v0t", "1",
+        "--mu", "1/5", "--radius", "1/10", "--spin", "4", "--rod-v", "1/2", "--rod-vt", "1/4",
+        "--rod-omega", "1",
+    ];
+    let f = formula_json(&scene);
+    let solved = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .arg("solve")
+        .args(scene)
+        .arg("--json")
+        .output()
+        .unwrap();
+    let solved: serde_json::Value = serde_json::from_slice(&solved.stdout).unwrap();
+    for (key, by_hand) in [
+        ("v", "7/5"),
+        ("V", "13/10"),
+        ("omega", "11/5"),
+        ("impulse", "8/5"),
+        ("mu_star", "23/112"),
+        ("vt", "17/25"),
+        ("Vt", "41/100"),
+        ("spin", "-12/5"),
+        ("tangential_impulse", "8/25"),
+    ] {
+        assert_eq!(f[key]["text"], by_hand, "{key}");
+        assert_eq!(solved[key]["exact"], by_hand, "{key}");
+    }
+    for (key, solve_key, by_hand) in [
+        ("energy_lost", "lost", "618/625"),
+        ("energy_lost_restitution", "lost_restitution", "4/5"),
+        ("energy_lost_friction", "lost_friction", "118/625"),
+    ] {
+        assert_eq!(f[key]["text"], by_hand, "{key}");
+        assert_eq!(solved["energy"][solve_key]["exact"], by_hand, "{key}");
+    }
+    assert_eq!((&f["contact"], &solved["contact"]), (&"slide".into(), &"slide".into()));
 }
 
 /// Numbers decide the contact: equal masses, a centre hit at v0 = 1 with v0t = 1 and

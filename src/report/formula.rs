@@ -24,6 +24,12 @@ pub(super) fn meaning(key: &str) -> &'static str {
         "Vt" => "velocity of the rod's centre along the rod after the impact",
         "spin" => "disc's spin after the impact (counterclockwise seen from above)",
         "tangential_impulse" => "impulse of the projectile on the rod along the rod, Jt",
+        "energy_lost_restitution" => {
+            "the part lost to restitution, (1 - e^2) u_n^2/(2 k_n), however the contact ends"
+        }
+        "energy_lost_friction" => {
+            "the part lost to friction: u_t^2/(2 k_t) sticking, mu J (|u_t| - mu J k_t/2) sliding"
+        }
         "mu_star" => {
             "friction coefficient that just stops the slip, mu* = |u_t|/(J k_t): the contact sticks when mu >= mu*"
         }
@@ -226,6 +232,8 @@ pub(super) fn key_latex(key: &str) -> &'static str {
         "spin" => "\\omega_{\\mathrm{disc}}",
         "tangential_impulse" => "J_t",
         "mu_star" => "\\mu^{*}",
+        "energy_lost_restitution" => "\\Delta E_{e}",
+        "energy_lost_friction" => "\\Delta E_{\\mu}",
         _ => "?",
     }
 }

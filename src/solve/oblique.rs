@@ -19,7 +19,7 @@
 use super::{Energy, linear};
 use crate::field::Field;
 use crate::mechanics::Motion;
-use crate::scene::{Disc, ObliqueParams, Params, RodMotion, Support};
+use crate::scene::{ObliqueParams, Params, RodMotion, Support};
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -242,8 +242,7 @@ pub fn complete<F: Field>(
     };
     let rod_term = if free { inv(&p.rod_mass)? } else { F::zero() };
     let k_t = inv_m.clone() + &disc_term + &rod_term;
-    let rim = |d: &Disc<F>| d.spin.clone() * &d.radius;
-    let slip = o.v0t.clone() + &o.disc.as_ref().map_or_else(F::zero, rim) - &rod0.vt;
+    let slip = o.slip(&p.support);
     let stick_impulse = slip.clone() / &k_t;
     let contact = if o.mu.is_zero() {
         None

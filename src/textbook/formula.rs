@@ -25,7 +25,8 @@ use std::cmp::Ordering;
 #[derive(Debug, Clone, PartialEq)]
 pub struct AnswerFormula {
     /// The JSON key: `v`, `V`, `omega`, `impulse`, `energy_lost`, `pivot_impulse`,
-    /// `a_star_squared`, `omega_max`.
+    /// `a_star_squared`, `omega_max`; in an oblique scene also `vt`, `Vt`, `spin`,
+    /// `tangential_impulse`, `mu_star`, `energy_lost_restitution` and `energy_lost_friction`.
     pub key: &'static str,
     /// The value, `coeff * sqrt(radicand)` (radicand 1 for a rational function).
     pub value: Radical,
@@ -43,7 +44,9 @@ pub struct Formulas {
     pub defaults: Vec<String>,
     /// The formulas, in the order of the keys above (those that apply to the scene only); for
     /// an oblique scene also `vt`, `Vt`, `spin`, `tangential_impulse` and `mu_star` when the
-    /// contact is decided, or `mu_star` alone when it is split into [`Formulas::cases`].
+    /// contact is decided, or `mu_star` alone when it is split into [`Formulas::cases`]; with
+    /// friction and e != 1, the loss to restitution `energy_lost_restitution` (the same in
+    /// either case).
     pub formulas: Vec<AnswerFormula>,
     /// How a frictional contact ends when the scene decides it: `stick` or `slide`.
     pub contact: Option<&'static str>,
@@ -61,7 +64,8 @@ pub struct ContactCase {
     /// slides throughout, Jt = mu J); `mu = 1/4 >= mu_star` for a given number.
     pub condition: String,
     /// The formulas of the case: `vt`, `Vt`, `spin` (a disc), `tangential_impulse`,
-    /// `energy_lost`.
+    /// `energy_lost`, and its part lost to friction `energy_lost_friction` when e != 1 (with
+    /// e = 1 friction takes all of it).
     pub formulas: Vec<AnswerFormula>,
 }
 
@@ -149,7 +153,23 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
         list.push(omega_max(p, &stick.after.rod.omega, &squared));
     }
     let mut defaults = scene.defaults.clone();
-    let tangential = |out: &ObliqueOutcome<RatFn>, friction: bool| {
+    let approach = normal_params(p, o).v0;
+    if approach != p.v0 && approach.as_constant().is_none() {
+        defaults.push(format!(
+            "the approach at the contact point, u_n = {approach}, taken > 0 (no impact otherwise)"
+        ));
+    }
+    let friction = !o.mu.is_zero();
+    // The loss has two parts when both act: restitution (the normal problem's, the same
+    // however the contact ends) and friction.
+    let parts = friction && !p.e.is_one();
+    if parts {
+        list.push(rational(
+            "energy_lost_restitution",
+            stick.lost_restitution.clone(),
+        ));
+    }
+    let tangential = |out: &ObliqueOutcome<RatFn>| {
         let mut part = vec![
             rational("vt", out.after.vt.clone()),
             rational("Vt", out.after.rod.vt.clone()),
@@ -166,22 +186,29 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
         if friction || !p.e.is_one() {
             part.push(rational("energy_lost", out.energy.lost.clone()));
         }
+        if parts {
+            part.push(rational("energy_lost_friction", out.lost_friction.clone()));
+        }
         part
     };
     let (mut contact, mut cases) = (None, Vec::new());
-    if o.mu.is_zero() {
-        list.extend(tangential(&stick, false));
+    if !friction {
+        list.extend(tangential(&stick));
     } else {
-        // mu* = |u_t|/(J k_t) = |stick impulse|/J, with the slip's sign (assumed > 0 when the
-        // symbols leave it open: the other sign mirrors every tangential formula).
-        let forward = match stick.stick_impulse.sign() {
+        // mu* = |u_t|/(J k_t) = |stick impulse|/J. A slip of open sign is taken with the sign
+        // it has in some valid sample scene (> 0 when it has both): the other sign mirrors
+        // mu* and the sliding answers; the sticking ones hold for either.
+        let slip = o.slip(&p.support);
+        let forward = match slip.sign() {
             Some(sign) => sign != Ordering::Less,
             None => {
+                let forward = scene.sign_somewhere(&slip, Ordering::Greater)
+                    || !scene.sign_somewhere(&slip, Ordering::Less);
+                let (taken, other) = if forward { (">", "<") } else { ("<", ">") };
                 defaults.push(format!(
-                    "the slip before the impact, u_t = {}, taken > 0 (for u_t < 0 every tangential answer changes sign)",
-                    stick.stick_impulse.clone() * &slip_mobility(p, o)
+                    "the slip before the impact, u_t = {slip}, taken {taken} 0 (for u_t {other} 0: mu_star is minus the formula below, and the slide formulas hold with -mu for mu)"
                 ));
-                true
+                forward
             }
         };
         let speed = if forward {
@@ -190,16 +217,16 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
             -stick.stick_impulse.clone()
         };
         list.push(rational("mu_star", speed / &stick.impulse));
-        let no_slip = stick.stick_impulse.is_zero();
-        match if no_slip {
+        let decided = if slip.is_zero() {
+            // No slip before the impact: nothing to stop, the contact holds (Jt = 0).
             Ok(stick.clone())
         } else {
             with(None)
-        } {
+        };
+        match decided {
             Ok(decided) => {
-                // No slip before the impact: nothing to stop, the contact holds (Jt = 0).
                 contact = Some(decided.contact.map_or("stick", Contact::as_str));
-                list.extend(tangential(&decided, true));
+                list.extend(tangential(&decided));
             }
             Err(_) => {
                 let slide = with(Some(Contact::Slide { forward }))
@@ -212,12 +239,12 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
                     ContactCase {
                         contact: "stick",
                         condition: format!("{mu} >= mu_star"),
-                        formulas: tangential(&stick, true),
+                        formulas: tangential(&stick),
                     },
                     ContactCase {
                         contact: "slide",
                         condition: format!("{mu} < mu_star"),
-                        formulas: tangential(&slide, true),
+                        formulas: tangential(&slide),
                     },
                 ];
             }
@@ -249,18 +276,6 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
         contact,
         cases,
     }
-}
-
-/// k_t, the slip's mobility: `1/m + 2/m` for a disc (r^2/I_disc), `+ 1/M` on a free rod.
-fn slip_mobility(p: &Params<RatFn>, o: &ObliqueParams<RatFn>) -> RatFn {
-    let mut k = RatFn::one() / p.m.clone();
-    if o.disc.is_some() {
-        k = k + &(RatFn::from_i64(2) / p.m.clone());
-    }
-    if p.support == Support::Free {
-        k = k + &(RatFn::one() / p.rod_mass.clone());
-    }
-    k
 }
 
 /// omega_max: `(1 + e) v0/(2 a*)` where a* lies on the rod, with the condition; omega at the

@@ -7,9 +7,13 @@ use super::SymbolicScene;
 use super::given::value_of;
 use crate::error::{Error, ErrorKind};
 use crate::field::RatFn;
-use crate::scene::{Disc, ObliqueParams, RodMotion, SceneInput, Support, dimension_of};
+use crate::scene::{
+    Disc, ObliqueParams, RodMotion, SceneInput, Support, dimension_of, no_approach,
+};
+use crate::solve::oblique::normal_params;
 use crate::textbook::expr::{Budget, OBLIQUE_SYMBOLS, Radical};
 use num_traits::{Signed, Zero};
+use std::cmp::Ordering;
 
 /// Whether `input` gives any oblique flag.
 ///
@@ -29,8 +33,9 @@ pub fn has_oblique(input: &SceneInput) -> bool {
 ///
 /// # Errors
 /// A flag that does not parse, `--spin` without `--radius`, a negative `mu` or a radius that
-/// is not positive (as numbers), a pivoted rod whose centre is given a motion of its own, or a
-/// symbol that does not belong in the scene (`p` without a pivot).
+/// is not positive (as numbers), a pivoted rod whose centre is given a motion of its own, a rod
+/// moving away from the projectile (no approach at the contact, as a number or in every sample
+/// scene), or a symbol that does not belong in the scene (`p` without a pivot).
 ///
 /// # Examples
 /// ```
@@ -104,7 +109,7 @@ pub fn oblique_params(
             }
         }
     }
-    Ok(Some(ObliqueParams {
+    let o = ObliqueParams {
         v0t: or_zero(v0t),
         mu: or_zero(mu),
         disc,
@@ -113,7 +118,18 @@ pub fn oblique_params(
             vt: or_zero(rod_vt),
             omega: or_zero(rod_omega),
         },
-    }))
+    };
+    let approach = normal_params(&scene.params, &o).v0;
+    match approach.as_constant() {
+        Some(c) if !c.is_positive() => return Err(no_approach(&format!("is {c}, not > 0"))),
+        None if !scene.sign_somewhere(&approach, Ordering::Greater) => {
+            return Err(no_approach(&format!(
+                "= {approach}, is > 0 in no sample scene of the free symbols"
+            )));
+        }
+        _ => {}
+    }
+    Ok(Some(o))
 }
 
 /// Whether `f` mentions an oblique symbol (they belong in the oblique flags only).

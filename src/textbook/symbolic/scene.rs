@@ -8,7 +8,8 @@ use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, RatFn, Sym};
 use crate::scene::{Params, RodInertia, Support, gyration_moment};
 use crate::textbook::expr::{Budget, OBLIQUE_SYMBOLS, Radical, size, size_of};
-use num_traits::{One, Signed};
+use num_traits::{One, Signed, Zero};
+use std::cmp::Ordering;
 use std::collections::{BTreeMap, BTreeSet};
 
 fn sym(name: &str) -> Sym {
@@ -321,11 +322,12 @@ impl SymbolicScene {
             .ok_or_else(|| Error::new(field, ErrorKind::DivisionByZero))
     }
 
-    /// The grid of sample points of the free symbols (at most `limit`), valid or not.
-    fn grid(&self, limit: usize) -> impl Iterator<Item = BTreeMap<Sym, Q>> + '_ {
-        let lists: Vec<(Sym, Vec<Q>)> = self
-            .free
+    /// The grid of sample points of the free symbols and the `extra` ones, which vary fastest
+    /// (at most `limit` points), valid or not.
+    fn grid(&self, extra: &[Sym], limit: usize) -> impl Iterator<Item = BTreeMap<Sym, Q>> + '_ {
+        let lists: Vec<(Sym, Vec<Q>)> = extra
             .iter()
+            .chain(&self.free)
             .map(|s| (*s, candidates(s.name())))
             .collect();
         (0..limit).map_while(move |k| {
@@ -341,9 +343,46 @@ impl SymbolicScene {
 
     /// Deterministic sample points that make a valid scene (at most `limit` tried).
     pub(super) fn samples(&self, limit: usize) -> impl Iterator<Item = BTreeMap<Sym, Q>> + '_ {
-        self.grid(limit).filter(|point| {
+        self.samples_with(&[], limit)
+    }
+
+    /// [`SymbolicScene::samples`] with the `extra` symbols (the oblique ones) sampled too.
+    fn samples_with(
+        &self,
+        extra: &[Sym],
+        limit: usize,
+    ) -> impl Iterator<Item = BTreeMap<Sym, Q>> + '_ {
+        self.grid(extra, limit).filter(|point| {
             self.constraints_at(point)
                 .is_some_and(|ok| ok.iter().all(|&b| b))
+        })
+    }
+
+    /// Whether `f`, in the free symbols and the oblique ones, has the sign `sign` in some valid
+    /// sample scene (the oblique symbols from their own sample lists: `mu` and `rd` not
+    /// negative): a sign assumed for `f` is then not a contradiction.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::RatFn, scene::SceneInput, textbook::{expr::Budget, symbolic::{GivenScene, SymbolicScene}}};
+    /// use std::cmp::Ordering;
+    /// let scene = SymbolicScene::build(&GivenScene::read(&SceneInput::default(), &mut Budget::run())?)?;
+    /// let minus_v0 = -RatFn::symbol("v0");
+    /// assert!(scene.sign_somewhere(&minus_v0, Ordering::Less));
+    /// assert!(!scene.sign_somewhere(&minus_v0, Ordering::Greater)); // v0 > 0
+    /// let v0t = RatFn::symbol("v0t");
+    /// assert!(scene.sign_somewhere(&v0t, Ordering::Greater) && scene.sign_somewhere(&v0t, Ordering::Less));
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn sign_somewhere(&self, f: &RatFn, sign: Ordering) -> bool {
+        let extra: Vec<Sym> = OBLIQUE_SYMBOLS
+            .iter()
+            .map(|n| sym(n))
+            .filter(|s| f.symbols().contains(s))
+            .collect();
+        self.samples_with(&extra, SAMPLES).any(|point| {
+            f.eval::<Q>(&|s| point.get(&s).cloned())
+                .is_some_and(|x| x.cmp(&Q::zero()) == sign)
         })
     }
 
@@ -381,7 +420,7 @@ impl SymbolicScene {
     /// every point (or the scene, when each holds somewhere but never all together).
     fn check_domain(&self) -> Result<(), Error> {
         let mut ever = [false; 8];
-        for point in self.grid(SAMPLES) {
+        for point in self.grid(&[], SAMPLES) {
             let Some(ok) = self.constraints_at(&point) else {
                 continue;
             };
@@ -457,6 +496,8 @@ fn candidates(name: &str) -> Vec<Q> {
         "e" => &[(1, 2), (1, 1), (0, 1), (1, 3)],
         "I" => &[(1, 3), (1, 7), (1, 2), (1, 10)],
         "r" => &[(1, 2), (1, 3), (1, 1), (1, 4)],
+        "mu" => &[(1, 4), (1, 2), (0, 1), (1, 1)],
+        "rd" => &[(1, 4), (1, 2), (1, 1), (1, 10)],
         _ => &[(-1, 2), (0, 1), (1, 4), (-1, 1)],
     };
     list.iter()
