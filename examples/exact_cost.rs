@@ -8,6 +8,11 @@
 //!
 //! Pass `--quick` to stop the growth curve at 10,000 bits; add `--features malachite` to run the
 //! big-integer fallback on malachite-nz.
+//!
+//! `--bits B --reps R` does only this: solves the same 10 random scenes of B bits R times on the
+//! fast path and prints the time per scene. Under callgrind (valgrind), the instructions of
+//! `--reps 2` minus those of `--reps 1`, over 10, are the instructions per scene, start-up and
+//! scene generation cancelled.
 
 use rodimpact::field::Q;
 use rodimpact::samples::{read_batch, sized_scene};
@@ -19,7 +24,21 @@ use std::hint::black_box;
 use std::time::Instant;
 
 fn main() {
-    let quick = std::env::args().any(|a| a == "--quick");
+    let args: Vec<String> = std::env::args().collect();
+    let value = |flag: &str| {
+        let at = args.iter().position(|a| a == flag)?;
+        let text = args
+            .get(at + 1)
+            .unwrap_or_else(|| panic!("{flag} needs a value"));
+        Some(
+            text.parse::<u64>()
+                .unwrap_or_else(|e| panic!("{flag}: {e}")),
+        )
+    };
+    if let Some(bits) = value("--bits") {
+        return repeat(bits, value("--reps").unwrap_or(1));
+    }
+    let quick = args.iter().any(|a| a == "--quick");
     println!("== per scene, side by side (medians over 1000-scene chunks) ==");
     println!(
         "batch     | f64 ns | BigRational us | fast us | BigRational/f64 | fast/f64 | BigRational/fast"
@@ -100,6 +119,18 @@ fn side_by_side(label: &str, scenes: &[Scene]) {
         median(xf),
         median(bx)
     );
+}
+
+/// `--bits B --reps R`: the fast path on 10 random scenes of `bits` bits, `reps` times.
+fn repeat(bits: u64, reps: u64) {
+    let mut rng = SplitMix64::new(20240611);
+    let scenes: Vec<Scene> = (0..10).map(|_| sized_scene(&mut rng, bits)).collect();
+    let t = per_scene(reps as usize, scenes.len(), || {
+        for s in &scenes {
+            black_box(fraction_free::solve(black_box(s)));
+        }
+    });
+    println!("{bits} bits: {:.1} us per scene", t * 1e6);
 }
 
 fn growth(max_bits: u64) {
