@@ -9,7 +9,7 @@
 //! All of it uses integer arithmetic only; the decimal exponent comes from bit lengths, so
 //! `1e-9000` costs about as much as `1`.
 
-use super::int::write_ratio;
+use super::int::{U256, write_ratio};
 use super::{Q, TrySqrt};
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -47,24 +47,33 @@ pub fn pow10(k: i64) -> Q {
 /// `floor(log10(n / d))` for positive `n`, `d`: an estimate from bit lengths, then exact
 /// comparisons with powers of ten (at most a few).
 fn floor_log10(n: &BigInt, d: &BigInt) -> i64 {
-    const LOG10_2: f64 = std::f64::consts::LOG10_2;
-    let bits_diff = n.bits() as f64 - d.bits() as f64;
-    let mut e = (bits_diff * LOG10_2).floor() as i64;
+    let estimate = log10_estimate(n.bits(), d.bits());
     // Compare n/d with 10^e exactly.
-    let cmp = |e: i64| {
-        if e >= 0 {
+    settle_log10(estimate, |e| {
+        Some(if e >= 0 {
             n.cmp(&(d * ten_to(e.unsigned_abs())))
         } else {
             (n * ten_to(e.unsigned_abs())).cmp(d)
-        }
-    };
+        })
+    })
+    .expect("big integers compare at every exponent")
+}
+
+/// An estimate of `floor(log10(n / d))` from the bit lengths of `n` and `d`, off by at most one.
+fn log10_estimate(bits_n: u64, bits_d: u64) -> i64 {
+    ((bits_n as f64 - bits_d as f64) * std::f64::consts::LOG10_2).floor() as i64
+}
+
+/// The exponent e with `10^e <= x < 10^(e+1)`, from a nearby estimate, where `compare(e)`
+/// orders x against 10^e (`None`: it cannot tell, and neither can this).
+fn settle_log10(mut e: i64, mut compare: impl FnMut(i64) -> Option<Ordering>) -> Option<i64> {
     loop {
-        if cmp(e) == Ordering::Less {
+        if compare(e)? == Ordering::Less {
             e -= 1;
-        } else if cmp(e + 1) != Ordering::Less {
+        } else if compare(e + 1)? != Ordering::Less {
             e += 1;
         } else {
-            return e;
+            return Some(e);
         }
     }
 }
@@ -124,17 +133,24 @@ fn round_quotient(
         return (quot, true);
     }
     let half = || (&rem * 2u8).cmp(den);
-    let away_from_zero = match rounding {
+    let away = rounds_away(rounding, negative, quot.is_odd(), half);
+    (if away { quot + 1u8 } else { quot }, false)
+}
+
+/// Whether a quotient that left a remainder rounds away from zero (up in magnitude), for a
+/// value of sign `negative` whose truncated quotient is `odd`; `half` orders the remainder
+/// against half the divisor.
+fn rounds_away(rounding: Rounding, negative: bool, odd: bool, half: impl Fn() -> Ordering) -> bool {
+    match rounding {
         Rounding::Floor => negative,
         Rounding::Ceiling => !negative,
         Rounding::HalfEven => match half() {
-            Ordering::Equal => quot.is_odd(),
+            Ordering::Equal => odd,
             other => other == Ordering::Greater,
         },
         Rounding::HalfAwayFromZero => half() != Ordering::Less,
         Rounding::HalfTowardZero => half() == Ordering::Greater,
-    };
-    (if away_from_zero { quot + 1u8 } else { quot }, false)
+    }
 }
 
 /// `x` rounded to a multiple of `10^place` in the direction `rounding`.
@@ -195,14 +211,15 @@ pub fn decimal(value: &Q, digits: usize) -> String {
 /// assert_eq!(decimal_rounded(&q(1, 2), 3, Rounding::Ceiling), "0.500");
 /// ```
 pub fn decimal_rounded(value: &Q, digits: usize, rounding: Rounding) -> String {
-    Significant::of(value, digits, rounding).to_string()
+    Significant::of(value, digits, rounding).text()
 }
 
 /// A value rounded to a number of significant digits: `±m × 10^(exp - digits + 1)` with
 /// `10^(digits-1) <= m < 10^digits` (or zero).
 struct Significant {
     negative: bool,
-    m: BigInt,
+    /// The decimal digits of m (`"0"` for zero).
+    m: String,
     exp: i64,
     digits: usize,
     /// The rounding lost nothing: the printed text is the exact value.
@@ -213,15 +230,21 @@ impl Significant {
     fn of(value: &Q, digits: usize, rounding: Rounding) -> Significant {
         let digits = digits.max(1);
         if value.is_zero() {
-            let (m, exp, exact) = (BigInt::zero(), 0, true);
             return Significant {
                 negative: false,
-                m,
-                exp,
+                m: "0".to_string(),
+                exp: 0,
                 digits,
-                exact,
+                exact: true,
             };
         }
+        Significant::on_words(value, digits, rounding)
+            .unwrap_or_else(|| Significant::on_big(value, digits, rounding))
+    }
+
+    /// [`Significant::of`] in big integers, for a nonzero value.
+    fn on_big(value: &Q, digits: usize, rounding: Rounding) -> Significant {
+        let negative = value.is_negative();
         let n = value.numer().abs();
         let d = value.denom();
         let mut exp = floor_log10(&n, d);
@@ -231,7 +254,6 @@ impl Significant {
         } else {
             (n, d * ten_to(shift.unsigned_abs()))
         };
-        let negative = value.is_negative();
         let (mut m, exact) = round_quotient(&num, &den, negative, rounding);
         if m == ten_to(digits as u64) {
             // 9.995 -> 10.0: the rounding carried into a new digit.
@@ -240,40 +262,98 @@ impl Significant {
         }
         Significant {
             negative,
-            m,
+            m: m.to_string(),
             exp,
             digits,
             exact,
         }
     }
-}
 
-impl fmt::Display for Significant {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.m.is_zero() {
-            return f.write_str("0");
+    /// [`Significant::of`] on machine words, for a nonzero value whose parts fit 256 bits
+    /// and at most 18 digits; `None` when a product on the way would pass 2^256 (the big
+    /// integers then round it, to the same result).
+    fn on_words(value: &Q, digits: usize, rounding: Rounding) -> Option<Significant> {
+        if digits > 18 {
+            return None;
         }
-        let (s, exp) = (self.m.to_string(), self.exp);
-        let sign = if self.negative { "-" } else { "" };
+        let n = U256::from_big(value.numer().magnitude())?;
+        let d = U256::from_big(value.denom().magnitude())?;
+        let ten = |k: i64| U256::pow10(u32::try_from(k.unsigned_abs()).ok()?);
+        // n/d against 10^e, and n/d scaled by 10^k, as a fraction of words.
+        let scaled = |k: i64| -> Option<(U256, U256)> {
+            if k >= 0 {
+                Some((n.checked_mul_wide(ten(k)?)?, d))
+            } else {
+                Some((n, d.checked_mul_wide(ten(k)?)?))
+            }
+        };
+        let estimate = log10_estimate(n.bits().into(), d.bits().into());
+        let mut exp = settle_log10(estimate, |e| {
+            let (num, den) = scaled(-e)?;
+            Some(num.cmp(&den))
+        })?;
+        let (num, den) = scaled(digits as i64 - 1 - exp)?;
+        // Below 10^digits <= 10^18 < 2^63.
+        let (quot, rem) = num.div_small(den);
+        let negative = value.is_negative();
+        let exact = rem == U256::ZERO;
+        // 2 rem against den, as rem against den - rem (2 rem may pass 2^256).
+        let half = || rem.cmp(&den.minus(rem));
+        let away = !exact && rounds_away(rounding, negative, quot % 2 == 1, half);
+        let mut m = quot + u64::from(away);
+        if m == 10u64.pow(digits as u32) {
+            // 9.995 -> 10.0: the rounding carried into a new digit.
+            m /= 10;
+            exp += 1;
+        }
+        Some(Significant {
+            negative,
+            m: itoa::Buffer::new().format(m).to_string(),
+            exp,
+            digits,
+            exact,
+        })
+    }
+
+    /// The value as [`decimal`] prints it.
+    fn text(&self) -> String {
+        let mut out = String::with_capacity(self.m.len() + 8);
+        self.write(&mut out);
+        out
+    }
+
+    /// Appends the value as [`decimal`] prints it.
+    fn write(&self, out: &mut String) {
+        let (s, exp) = (self.m.as_str(), self.exp);
+        if s == "0" {
+            out.push('0');
+            return;
+        }
+        if self.negative {
+            out.push('-');
+        }
         if (-7..self.digits as i64).contains(&exp) {
             if exp >= 0 {
                 let (int, frac) = s.split_at(exp as usize + 1);
-                if frac.is_empty() {
-                    write!(f, "{sign}{int}")
-                } else {
-                    write!(f, "{sign}{int}.{frac}")
+                out.push_str(int);
+                if !frac.is_empty() {
+                    out.push('.');
+                    out.push_str(frac);
                 }
             } else {
-                let zeros = "0".repeat((-exp - 1) as usize);
-                write!(f, "{sign}0.{zeros}{s}")
+                out.push_str("0.");
+                out.extend(std::iter::repeat_n('0', (-exp - 1) as usize));
+                out.push_str(s);
             }
         } else {
             let (lead, rest) = s.split_at(1);
-            if rest.is_empty() {
-                write!(f, "{sign}{lead}e{exp}")
-            } else {
-                write!(f, "{sign}{lead}.{rest}e{exp}")
+            out.push_str(lead);
+            if !rest.is_empty() {
+                out.push('.');
+                out.push_str(rest);
             }
+            out.push('e');
+            out.push_str(itoa::Buffer::new().format(exp));
         }
     }
 }
@@ -431,7 +511,7 @@ pub fn compact(x: &Q) -> String {
     (1..=15)
         .map(|digits| Significant::of(x, digits, Rounding::HalfEven))
         .find(|rounded| rounded.exact)
-        .map_or_else(|| format!("≈ {}", decimal(x, 6)), |exact| exact.to_string())
+        .map_or_else(|| format!("≈ {}", decimal(x, 6)), |exact| exact.text())
 }
 
 #[cfg(test)]
@@ -439,6 +519,59 @@ mod tests {
     use super::*;
     use crate::field::q;
     use proptest::prelude::*;
+
+    proptest! {
+        /// Rounding on machine words gives the big integers' digits, exponent and exactness,
+        /// in every direction, where it answers (parts up to 256 bits, values from about
+        /// 10^-77 to 10^77, 1 to 18 digits).
+        #[test]
+        fn significant_digits_on_words_are_the_big_integers(
+            n in prop::collection::vec(any::<u32>(), 1..9),
+            d in prop::collection::vec(any::<u32>(), 1..9),
+            negative: bool, digits in 1usize..=18, direction in 0usize..5,
+        ) {
+            use num_bigint::{BigInt, BigUint};
+            let (n, d) = (BigUint::new(n), BigUint::new(d));
+            prop_assume!(n.bits() > 0 && d.bits() > 0);
+            let n = BigInt::from(n);
+            let x = Q::new(if negative { -n } else { n }, d.into());
+            let rounding = [
+                Rounding::HalfEven,
+                Rounding::HalfAwayFromZero,
+                Rounding::HalfTowardZero,
+                Rounding::Floor,
+                Rounding::Ceiling,
+            ][direction];
+            let big = Significant::on_big(&x, digits, rounding);
+            if let Some(words) = Significant::on_words(&x, digits, rounding) {
+                prop_assert_eq!(
+                    (words.text(), words.exact, words.m, words.exp),
+                    (big.text(), big.exact, big.m, big.exp)
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn significant_digits_on_words_at_ties_and_carries() {
+        // Exact ties in each direction, a carry into a new digit, and an exact value.
+        for (x, digits, rounding, want) in [
+            (q(25, 1000), 1, Rounding::HalfEven, "0.02"),
+            (q(35, 1000), 1, Rounding::HalfEven, "0.04"),
+            (q(-25, 1000), 1, Rounding::HalfAwayFromZero, "-0.03"),
+            (q(25, 1000), 1, Rounding::HalfTowardZero, "0.02"),
+            (q(9995, 1000), 3, Rounding::HalfEven, "10.0"),
+            (q(-1, 3), 2, Rounding::Floor, "-0.34"),
+            (q(1, 8), 3, Rounding::Ceiling, "0.125"),
+        ] {
+            let words = Significant::on_words(&x, digits, rounding).unwrap();
+            assert_eq!(words.text(), want, "{x} {digits} {rounding:?}");
+            assert_eq!(
+                words.text(),
+                Significant::on_big(&x, digits, rounding).text()
+            );
+        }
+    }
 
     fn big(s: &str) -> BigInt {
         s.parse().expect("test literal")

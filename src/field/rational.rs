@@ -1,5 +1,6 @@
 //! [`Field`] for exact rationals ([`Q`] = `BigRational`).
 
+use super::int::U256;
 use super::{Field, Q, TrySqrt};
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::cmp::Ordering;
@@ -22,8 +23,19 @@ impl Field for Q {
         })
     }
 
+    /// Correctly rounded: on machine words when both parts fit (see `U256::nearest_f64`),
+    /// else by num-rational (also correctly rounded, on heap digits).
     fn nearest_f64(&self) -> f64 {
-        self.to_f64().unwrap_or(f64::NAN)
+        let words = || {
+            let n = U256::from_big(self.numer().magnitude())?;
+            let d = U256::from_big(self.denom().magnitude())?;
+            if n == U256::ZERO {
+                return Some(0.0);
+            }
+            let x = U256::nearest_f64(n, d)?;
+            Some(if self.is_negative() { -x } else { x })
+        };
+        words().unwrap_or_else(|| self.to_f64().unwrap_or(f64::NAN))
     }
 }
 
@@ -58,6 +70,23 @@ mod tests {
         assert_eq!(q(2, 3).try_sqrt(), None);
         assert_eq!(q(-4, 9).try_sqrt(), None);
         assert_eq!(q(0, 1).try_sqrt(), Some(q(0, 1)));
+    }
+
+    proptest::proptest! {
+        /// The nearest f64, on words or on heap digits, is num-rational's correctly rounded
+        /// value (both signs, parts of 1 to 300 bits: across the 256-bit word limit).
+        #[test]
+        fn nearest_f64_is_correctly_rounded(
+            n in proptest::collection::vec(proptest::prelude::any::<u32>(), 0..10),
+            d in proptest::collection::vec(proptest::prelude::any::<u32>(), 1..10),
+            negative: bool,
+        ) {
+            use num_bigint::{BigInt, BigUint};
+            let d = BigUint::new(d) + 1u8;
+            let n = BigInt::from(BigUint::new(n));
+            let x = Q::new(if negative { -n } else { n }, d.into());
+            proptest::prop_assert_eq!(x.nearest_f64().to_bits(), x.to_f64().unwrap().to_bits());
+        }
     }
 
     #[test]

@@ -3,6 +3,7 @@
 //!
 //! - `words`: binary GCDs on `u64` and `u128`, and a 256-bit unsigned integer (`U256`) that
 //!   reduces, compares and prints fractions of up to 256-bit parts on machine words;
+//! - `quotient`: small quotients of 256-bit integers and the nearest f64 to a fraction of them;
 //! - `wide`: a checked 512-bit signed integer (`Wide`);
 //! - `ring`: fixed-width integers that wrap (`Ring<N>`), for values proven in range in advance;
 //! - `dashu`: dashu's `IBig` as the unbounded width (the default);
@@ -43,6 +44,7 @@ macro_rules! unbounded_arithmetic {
 mod dashu;
 #[cfg(feature = "malachite")]
 mod malachite;
+mod quotient;
 mod ring;
 mod wide;
 mod words;

@@ -106,7 +106,7 @@ impl U256 {
         }
     }
 
-    fn shr(self, k: u32) -> U256 {
+    pub(crate) fn shr(self, k: u32) -> U256 {
         match k {
             0 => self,
             1..128 => U256 {
@@ -120,7 +120,7 @@ impl U256 {
         }
     }
 
-    fn shl(self, k: u32) -> U256 {
+    pub(crate) fn shl(self, k: u32) -> U256 {
         match k {
             0 => self,
             1..128 => U256 {
@@ -135,7 +135,7 @@ impl U256 {
     }
 
     /// `self - o` for `self >= o`.
-    fn minus(self, o: U256) -> U256 {
+    pub(crate) fn minus(self, o: U256) -> U256 {
         let (lo, borrow) = self.lo.overflowing_sub(o.lo);
         U256 {
             hi: self.hi - o.hi - u128::from(borrow),
@@ -156,6 +156,21 @@ impl U256 {
         }
         if b == U256::ZERO {
             return a;
+        }
+        // One Euclid step when one is much shorter (a small relative error over its
+        // denominator): the binary GCD would spend a subtraction per bit of the difference.
+        let (short, long) = (a.min(b), a.max(b));
+        if (16..=62).contains(&(long.bits() - short.bits())) {
+            (a, b) = (short, long.div_small(short).1);
+            if b == U256::ZERO {
+                return a;
+            }
+            if a.hi == 0 && b.hi == 0 {
+                return U256 {
+                    hi: 0,
+                    lo: gcd(a.lo, b.lo),
+                };
+            }
         }
         let shift = a.trailing_zeros().min(b.trailing_zeros());
         a = a.shr(a.trailing_zeros());
@@ -424,6 +439,17 @@ mod tests {
                 "42781701118546417863969985673251741000000",
             ),
             ("1180591620717411303424", "3541774862152233910272"),
+            // Sizes 16 to 62 bits apart: one Euclid step first (a relative error over its
+            // denominator), including a remainder of zero.
+            (
+                "123456789012345678901000000",
+                "42781701118546417863969985673251741000000",
+            ),
+            ("7", "42781701118546417863969985673251741000000"),
+            (
+                "42781701118546417863969985673251741",
+                "42781701118546417863969985673251741000000000000000000",
+            ),
         ];
         for (a, b) in cases {
             let (x, y) = (big(a), big(b));
