@@ -122,6 +122,11 @@ impl WordRatio {
         })
     }
 
+    /// Sign, numerator and denominator as written (not reduced; the denominator nonzero).
+    pub(crate) fn parts(&self) -> (bool, U256, U256) {
+        (self.negative, self.numer, self.denom)
+    }
+
     /// The value, reduced (one GCD on machine words).
     pub(crate) fn value(&self) -> Q {
         U256::ratio(self.negative, self.numer, self.denom)

@@ -1,10 +1,11 @@
-//! The word-level rows (exact, and f64 without claims) are shortcuts, never a second opinion:
+//! The word-level rows (exact, and f64 with or without claims) are shortcuts, never a second opinion:
 //! on every row they take, the line is the general row's, byte for byte. The general row is reached without a test hook:
 //! a `rod` column (here always `uniform`, the default) is one the word row does not read, so
 //! the same rows with that column go the general way; the cell is then cut out of the line.
 
 use proptest::prelude::*;
-use rodimpact::batch::{Arithmetic, Batch, SolvedRow};
+use rodimpact::batch::{Agreement, Arithmetic, Batch, SolvedRow};
+use rodimpact::field::Q;
 
 /// The rows of `header`/`lines` solved twice: as given (the word row where it applies) and
 /// with a trailing `rod` column of `uniform` (the general row), that cell removed again.
@@ -18,8 +19,21 @@ fn in_arithmetic(
     header: &str,
     lines: &[String],
 ) -> Vec<(SolvedRow, SolvedRow)> {
-    let words = Batch::new(header, arithmetic).unwrap();
-    let general = Batch::new(&format!("{header},rod"), arithmetic).unwrap();
+    agreeing(arithmetic, Agreement::Exact, header, lines)
+}
+
+/// [`in_arithmetic`] with claims agreeing by `agreement`.
+fn agreeing(
+    arithmetic: Arithmetic,
+    agreement: Agreement,
+    header: &str,
+    lines: &[String],
+) -> Vec<(SolvedRow, SolvedRow)> {
+    let batch = |header: &str| {
+        let b = Batch::new(header, arithmetic).unwrap();
+        b.with_agreement(agreement.clone()).unwrap()
+    };
+    let (words, general) = (batch(header), batch(&format!("{header},rod")));
     lines
         .iter()
         .enumerate()
@@ -83,7 +97,7 @@ proptest! {
         big in 1u64..1 << 40, big_d in 1u64..1 << 40,
         l in 1u64..1 << 20, a_frac in -1000i64..=1000,
         v0 in 1u64..1 << 30, v0d in 1u64..1 << 30,
-        e in 0u64..=7, style in any::<u8>(), claim_style in 0u8..4, small in any::<bool>(),
+        e in 0u64..=7, style in any::<u8>(), claim_style in 0u8..6, small in any::<bool>(),
     ) {
         // Half the scenes below 2^23 a part, where the f64 row takes them too.
         let fit = |x: u64| if small { x % (1 << 23) + 1 } else { x };
@@ -108,7 +122,9 @@ proptest! {
                 0 => v.to_string(),
                 1 => format!("{v}0").replacen('/', "0/", 1), // unreduced: times 10/10
                 2 => "1/3".to_string(),
-                _ => String::new(),
+                3 => String::new(),
+                4 => "0".to_string(),
+                _ => v.strip_prefix('-').map_or_else(|| format!("-{v}"), str::to_string),
             })
             .collect();
         let rows = both_ways("m,M,l,a,v0,e,v,V,omega", &[format!("{scene},{}", claims.join(","))]);
@@ -120,7 +136,15 @@ proptest! {
             prop_assert_eq!(fast, slow);
         }
         // The f64 row rounds every input (and the inertia) from its parts as the general row
-        // rounds the exact scene.
+        // rounds the exact scene, and measures each claim's relative error the same way.
+        let claimed = [format!("{scene},{}", claims.join(","))];
+        let header = "m,M,l,a,v0,e,v,V,omega";
+        let tight = Agreement::Relative(Q::new(1.into(), 10u64.pow(16).into()));
+        for agreement in [Agreement::Exact, tight] {
+            for (fast, slow) in agreeing(Arithmetic::F64, agreement, header, &claimed) {
+                prop_assert_eq!(fast, slow);
+            }
+        }
         for (fast, slow) in in_arithmetic(Arithmetic::F64, "m,M,l,a,v0,e", &[scene]) {
             prop_assert_eq!(fast, slow);
         }

@@ -7,6 +7,7 @@ use super::header::{Arithmetic, CLAIMS};
 use super::ulps::{FloatFormat, ulp_distance};
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
+use crate::field::int::U256;
 use crate::number::WordRatio;
 use crate::units::{Dimension, parse_si};
 use num_traits::{Signed, Zero};
@@ -146,6 +147,19 @@ pub struct OutputCheck {
 }
 
 impl OutputCheck {
+    /// Appends the check's cells: `,<ok>,<rel_error>`, and `,<ulps>` when `ulps_column`.
+    pub(super) fn write_cells(&self, out: &mut String, ulps_column: bool) {
+        out.push_str(if self.ok { ",true," } else { ",false," });
+        out.push_str(&self.rel_error_text());
+        if ulps_column {
+            out.push(',');
+            match self.ulps {
+                Some(u) => out.push_str(&u.to_string()),
+                None => out.push_str("nan"),
+            }
+        }
+    }
+
     /// The text of the `<name>_rel_error` cell: three significant digits, `inf`, or `nan` for a
     /// claim that was not a finite number.
     ///
@@ -204,6 +218,48 @@ impl Claimed {
     }
 }
 
+/// The relative error `|c - x| / |x|` of a claim `c` read on machine words against a finite
+/// f64 `x`, as [`compare`] gives it for `x`'s exact value (reduced; `Some(None)`: infinite, a
+/// nonzero claim of a zero value), on machine words. With `|x| = odd 2^k`, over one
+/// denominator: `|cn 2^-k - s odd cd| / (odd cd)` for k < 0, `|cn - s odd 2^k cd| / (odd 2^k cd)`
+/// for k >= 0 (s the sign that makes it a difference of the signed values). `None` when a
+/// value passes 2^256, or `x` is not finite: the general comparison then decides.
+pub(super) fn float_rel_error(claim: &WordRatio, x: f64) -> Option<Option<Q>> {
+    let (claim_negative, cn, cd) = claim.parts();
+    if !x.is_finite() {
+        return None;
+    }
+    let Some((negative, odd, exponent)) = crate::field::float_parts(x) else {
+        // x = 0: only a zero claim agrees.
+        return Some((cn == U256::ZERO).then(Q::zero));
+    };
+    let shifted = |v: U256, k: i64| match u32::try_from(k) {
+        _ if v == U256::ZERO => Some(v),
+        Ok(k) if v.bits() + k <= 256 => Some(v.shl(k)),
+        _ => None,
+    };
+    let odd = U256 {
+        hi: 0,
+        lo: odd.into(),
+    };
+    // Both sides times cd (and 2^-k for k < 0); the second is also the denominator.
+    let (claimed, value) = if exponent < 0 {
+        (shifted(cn, -exponent)?, odd.checked_mul_wide(cd)?)
+    } else {
+        (cn, shifted(odd, exponent)?.checked_mul_wide(cd)?)
+    };
+    let difference = if claim_negative == negative {
+        claimed.max(value).minus(claimed.min(value))
+    } else {
+        claimed.checked_add(value)?
+    };
+    Some(Some(if difference == U256::ZERO {
+        Q::zero()
+    } else {
+        U256::ratio(false, difference, value)
+    }))
+}
+
 pub(super) fn compare(
     output: usize,
     claim: &Claimed,
@@ -250,20 +306,36 @@ pub(super) fn compare(
             value.numer().abs() * claimed.denom(),
         ))
     };
-    let ok = match (agreement, arithmetic) {
-        (Agreement::Exact, Arithmetic::Exact) => rel_error.as_ref().is_some_and(Q::is_zero),
-        (Agreement::Exact, Arithmetic::F64) => rel_error
-            .as_ref()
-            .is_some_and(|r| crate::field::Field::nearest_f64(r) <= FLOAT_TOLERANCE),
-        (Agreement::Relative(tolerance), _) => rel_error.as_ref().is_some_and(|r| r <= tolerance),
-        (Agreement::Ulps(n, _), _) => ulps.is_some_and(|u| u <= *n),
-    };
-    OutputCheck {
-        output,
-        ok,
-        rel_error,
-        ulps,
-        not_finite: false,
+    OutputCheck::finite(output, rel_error, ulps, agreement, arithmetic)
+}
+
+impl OutputCheck {
+    /// The check of a finite claim whose relative error is `rel_error` (`None`: infinite) and
+    /// ulp distance `ulps` (under [`Agreement::Ulps`]): whether it agrees under `agreement`.
+    pub(super) fn finite(
+        output: usize,
+        rel_error: Option<Q>,
+        ulps: Option<u64>,
+        agreement: &Agreement,
+        arithmetic: Arithmetic,
+    ) -> OutputCheck {
+        let ok = match (agreement, arithmetic) {
+            (Agreement::Exact, Arithmetic::Exact) => rel_error.as_ref().is_some_and(Q::is_zero),
+            (Agreement::Exact, Arithmetic::F64) => rel_error
+                .as_ref()
+                .is_some_and(|r| crate::field::Field::nearest_f64(r) <= FLOAT_TOLERANCE),
+            (Agreement::Relative(tolerance), _) => {
+                rel_error.as_ref().is_some_and(|r| r <= tolerance)
+            }
+            (Agreement::Ulps(n, _), _) => ulps.is_some_and(|u| u <= *n),
+        };
+        OutputCheck {
+            output,
+            ok,
+            rel_error,
+            ulps,
+            not_finite: false,
+        }
     }
 }
 
@@ -287,6 +359,35 @@ mod tests {
         let row = b.row(3, &format!("1,3,0,-1/2,{long},0")).unwrap();
         let oks: Vec<bool> = row.checks.iter().map(|v| v.ok).collect();
         assert_eq!(oks, [true, true, true]);
+    }
+
+    proptest::proptest! {
+        /// A claim on words against any f64 (every exponent, subnormals, zeros, both signs):
+        /// where the word comparison answers, its relative error is the general one.
+        #[test]
+        fn float_errors_on_words_are_the_general_ones(
+            n in proptest::prelude::any::<u128>(), d in 1u128.., shift in 0u32..128,
+            negative: bool, bits: u64, near: bool,
+        ) {
+            // Half the floats near the claim (a relative error of about 2^-53), half anywhere.
+            let text = format!("{}{}/{}", if negative { "-" } else { "" }, n >> shift, d);
+            let word = WordRatio::parse(&text).unwrap();
+            let claimed = Claimed::Word(word);
+            let x = if near {
+                crate::field::Field::nearest_f64(&word.value())
+            } else {
+                f64::from_bits(bits)
+            };
+            proptest::prop_assume!(x.is_finite());
+            let value = crate::field::exact_float(x).unwrap();
+            let general = compare(0, &claimed, &value, &Agreement::Exact, Arithmetic::F64);
+            if let Some(rel_error) = float_rel_error(&word, x) {
+                proptest::prop_assert_eq!(rel_error, general.rel_error);
+            } else {
+                // Only far from the claim can a product pass 2^256.
+                proptest::prop_assert!(!near);
+            }
+        }
     }
 
     #[test]

@@ -1,45 +1,32 @@
-//! The f64 row on words (`batch --backend f64` without claims): the cells read as the exact
-//! word row reads them ([`read_cells`]), each input rounded to the nearest f64 straight from its
-//! integer parts, the rod's inertia M l^2/3 rounded from its exact integer parts, and the
-//! paper's closed form evaluated by the same function as the general row
-//! ([`closed_form`]). No `BigRational` scene, and no exact values of the results: without
-//! claims nothing compares them.
+//! The f64 row on words (`batch --backend f64`): the cells read as the exact word row reads
+//! them ([`read_cells`]), each input rounded to the nearest f64 straight from its integer parts,
+//! the rod's inertia M l^2/3 rounded from its exact integer parts, and the paper's closed form
+//! evaluated by the same function as the general row ([`closed_form`]). No `BigRational` scene,
+//! and no exact values of the results: a claimed v, V or omega written `p/q` is compared with
+//! the float on machine words ([`float_rel_error`]), its relative error reduced once.
 //!
-//! A row it does not take (a claim, a part of 2^24 or more, anything the word row leaves) goes
-//! to the general row, whose line it gives byte for byte: every input is the same correctly
-//! rounded f64 either way (`tests/batch_words.rs`).
+//! A row it does not take (a claim in another form, a part of 2^24 or more, a product past
+//! 2^256, anything the word row leaves) goes to the general row, whose line it gives byte for
+//! byte: every input is the same correctly rounded f64 either way, and every relative error the
+//! same reduced fraction (`tests/batch_words.rs`).
 
+use super::compare::{Agreement, OutputCheck, float_rel_error};
+use super::header::{Arithmetic, STATE};
 use super::row::{SolvedRow, write_float};
 use super::word_row::{Inputs, Part, WordPlan, read_cells};
+use crate::field::int::U256;
+use crate::number::WordRatio;
 use crate::scene::{Params, Support};
 use crate::solve::closed_form::closed_form;
 
-/// The nearest f64 to `n/d` (ties to even), for `0 < n, d < 2^74`: the integer quotient taken
-/// to 54 or 55 bits, then rounded with the remainder as the sticky bit.
-///
-/// # Panics
-/// If `d` is zero or an operand is 2^74 or more (the callers bound their parts below 2^24).
+/// The nearest f64 to `n/d` (ties to even), for `0 < d` and `n, d < 2^74` (the callers bound
+/// their parts below 2^24).
 fn nearest(n: u128, d: u128) -> f64 {
-    assert!(
-        d != 0 && n < 1 << 74 && d < 1 << 74,
-        "operands out of range"
-    );
+    let word = |x: u128| U256 { hi: 0, lo: x };
     if n == 0 {
         return 0.0;
     }
-    let (bits_n, bits_d) = (128 - n.leading_zeros(), 128 - d.leading_zeros());
-    // Scale so that the quotient lies in [2^53, 2^55): 54 + bits_d <= 128 keeps n << k in range.
-    let k = 54 + bits_d as i32 - bits_n as i32;
-    let (num, den) = if k >= 0 { (n << k, d) } else { (n, d << -k) };
-    let (q, r) = (num / den, num % den);
-    let extra = (128 - q.leading_zeros()) - 53; // 1 or 2 bits below the mantissa
-    let mantissa = q >> extra;
-    let below = q & ((1 << extra) - 1);
-    let half = 1 << (extra - 1);
-    let up = below > half || (below == half && (r != 0 || mantissa & 1 == 1));
-    let mantissa = mantissa + u128::from(up); // 2^53 at most: still exact in f64
-    // An exact power-of-two scaling (the result is far from the overflow and subnormal range).
-    mantissa as f64 * 2f64.powi(extra as i32 - k)
+    U256::nearest_f64(word(n), word(d)).expect("operands below 2^74")
 }
 
 /// A part as the nearest f64, if it is below 2^24.
@@ -77,24 +64,43 @@ fn float_params(x: &Inputs) -> Option<Params<f64>> {
 
 /// The f64 row of `line` (without its line ending), or `None` when the general row must take
 /// it (see the module documentation).
-pub(super) fn float_word_row(plan: &WordPlan, number: usize, line: &str) -> Option<SolvedRow> {
-    if plan.claimed.iter().any(|c| *c) {
+pub(super) fn float_word_row(
+    plan: &WordPlan,
+    agreement: &Agreement,
+    number: usize,
+    line: &str,
+) -> Option<SolvedRow> {
+    if matches!(agreement, Agreement::Ulps(..)) {
         return None;
     }
-    let (inputs, _) = read_cells(plan, line)?;
+    let (inputs, claims) = read_cells(plan, line)?;
     let after = closed_form(&float_params(&inputs)?)?;
-    let mut out = String::with_capacity(line.len() + 80);
+    let values = [after.v, after.rod_v, after.omega];
+    let mut out = String::with_capacity(line.len() + 140);
     out.push_str(line);
-    for x in [after.v, after.rod_v, after.omega] {
+    for x in values {
         out.push(',');
         write_float(&mut out, x);
+    }
+    let mut checks = Vec::new();
+    for k in (0..STATE).filter(|&k| plan.claimed[k]) {
+        let cell = claims[k].trim_ascii();
+        if cell.is_empty() {
+            out.push_str(",,");
+            continue;
+        }
+        let claim = WordRatio::parse(std::str::from_utf8(cell).ok()?)?;
+        let rel_error = float_rel_error(&claim, values[k])?;
+        let check = OutputCheck::finite(k, rel_error, None, agreement, Arithmetic::F64);
+        check.write_cells(&mut out, false);
+        checks.push(check);
     }
     out.push('\n');
     Some(SolvedRow {
         number,
         line: out,
         laws_held: None,
-        checks: Vec::new(),
+        checks,
         diagnosis: None,
         label: None,
     })

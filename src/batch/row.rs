@@ -65,7 +65,7 @@ impl Batch {
             .as_ref()
             .and_then(|plan| match self.arithmetic {
                 Arithmetic::Exact => word_row(plan, &self.agreement, number, line),
-                Arithmetic::F64 => float_word_row(plan, number, line),
+                Arithmetic::F64 => float_word_row(plan, &self.agreement, number, line),
             })
         {
             return Ok(row);
@@ -154,15 +154,7 @@ impl Batch {
                 continue;
             };
             let check = compare(k, claim, value, &self.agreement, self.arithmetic);
-            out.push_str(if check.ok { ",true," } else { ",false," });
-            out.push_str(&check.rel_error_text());
-            if ulps_column {
-                out.push(',');
-                match check.ulps {
-                    Some(u) => out.push_str(&u.to_string()),
-                    None => out.push_str("nan"),
-                }
-            }
+            check.write_cells(out, ulps_column);
             checks.push(check);
         }
         checks

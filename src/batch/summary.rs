@@ -6,6 +6,7 @@ use super::header::CLAIMS;
 use super::row::{Diagnosis, SolvedRow};
 use crate::field::Q;
 use num_traits::Zero;
+use std::cmp::Ordering;
 use std::collections::BTreeMap;
 
 /// Counts, the largest relative error and a bounded histogram for the median, per claimed
@@ -49,6 +50,10 @@ pub struct OutputStats {
     wrong: usize,
     /// `None` before the first claim; `Some(None)` once an infinite error was seen.
     max: Option<Option<Q>>,
+    /// The nearest f64 to the largest finite error (0 before one is seen): rounding to
+    /// nearest is monotone, so a claim whose error rounds below it is not larger, one that
+    /// rounds above it is, and only a tie takes the exact comparison.
+    max_nearest: f64,
     /// Relative errors rounded to 2 significant digits (f64 bits, ordered as the values).
     histogram: BTreeMap<u64, usize>,
     /// The first [`WRONG_ROWS_SHOWN`] rows with a wrong claim.
@@ -97,20 +102,25 @@ impl Summary {
             if !v.ok && s.wrong_rows.len() < WRONG_ROWS_SHOWN {
                 s.wrong_rows.push(row.number);
             }
-            let bigger = match (&s.max, &v.rel_error) {
-                (None, _) | (Some(Some(_)), None) => true,
-                (Some(Some(old)), Some(new)) => new > old,
-                (Some(None), _) => false,
+            let nearest = v.rel_error.as_ref().map(crate::field::Field::nearest_f64);
+            let bigger = match (&s.max, &v.rel_error, nearest) {
+                (None, _, _) | (Some(Some(_)), None, _) => true,
+                (Some(Some(old)), Some(new), Some(near)) => match near.total_cmp(&s.max_nearest) {
+                    Ordering::Equal => new > old,
+                    other => other == Ordering::Greater,
+                },
+                _ => false,
             };
             if bigger {
                 s.max = Some(v.rel_error.clone());
+                s.max_nearest = nearest.unwrap_or(f64::INFINITY);
             }
-            let rounded = match &v.rel_error {
-                Some(r) if r.is_zero() => 0.0,
-                Some(r) => format!("{:.1e}", crate::field::Field::nearest_f64(r))
+            let rounded = match (&v.rel_error, nearest) {
+                (Some(r), _) if r.is_zero() => 0.0,
+                (Some(_), Some(near)) => format!("{near:.1e}")
                     .parse::<f64>()
                     .unwrap_or(f64::INFINITY),
-                None => f64::INFINITY,
+                _ => f64::INFINITY,
             };
             *s.histogram.entry(rounded.to_bits()).or_default() += 1;
         }

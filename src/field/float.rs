@@ -21,25 +21,12 @@ use std::cmp::Ordering;
 /// ```
 pub fn exact_float(x: f64) -> Option<Q> {
     use num_bigint::{BigInt, BigUint};
-    if !x.is_finite() {
-        return None;
-    }
     if x == 0.0 {
         return Some(Q::from_integer(BigInt::from(0)));
     }
-    let bits = x.to_bits();
-    let biased = ((bits >> 52) & 0x7ff) as i64;
-    let fraction = bits & ((1 << 52) - 1);
-    // x = mantissa * 2^exponent, the mantissa an integer of at most 53 bits.
-    let (mantissa, exponent) = if biased == 0 {
-        (fraction, -1074)
-    } else {
-        (fraction | 1 << 52, biased - 1075)
-    };
-    let zeros = mantissa.trailing_zeros();
-    let (odd, exponent) = (mantissa >> zeros, exponent + i64::from(zeros));
+    let (negative, odd, exponent) = float_parts(x)?;
     let magnitude = BigUint::from(odd);
-    let sign = if x < 0.0 {
+    let sign = if negative {
         num_bigint::Sign::Minus
     } else {
         num_bigint::Sign::Plus
@@ -52,6 +39,25 @@ pub fn exact_float(x: f64) -> Option<Q> {
             BigInt::from(BigUint::from(1u8) << (-exponent) as u64),
         )
     })
+}
+
+/// A finite nonzero `x` as `(negative, odd, exponent)` with `|x| = odd * 2^exponent`, `odd` an
+/// odd integer of at most 53 bits; `None` for zero, NaN and the infinities.
+pub(crate) fn float_parts(x: f64) -> Option<(bool, u64, i64)> {
+    if !x.is_finite() || x == 0.0 {
+        return None;
+    }
+    let bits = x.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i64;
+    let fraction = bits & ((1 << 52) - 1);
+    // x = mantissa * 2^exponent, the mantissa an integer of at most 53 bits.
+    let (mantissa, exponent) = if biased == 0 {
+        (fraction, -1074)
+    } else {
+        (fraction | 1 << 52, biased - 1075)
+    };
+    let zeros = mantissa.trailing_zeros();
+    Some((x < 0.0, mantissa >> zeros, exponent + i64::from(zeros)))
 }
 
 macro_rules! float_field {

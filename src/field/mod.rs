@@ -32,6 +32,7 @@ pub mod ratfunc;
 mod rational;
 
 pub use float::exact_float;
+pub(crate) use float::float_parts;
 pub use interval::Interval;
 pub use poly::{Poly, Sym};
 pub use quadratic::QSqrt;
