@@ -76,7 +76,7 @@ fn growth(c: &mut Criterion) {
     group.warm_up_time(Duration::from_millis(300));
     group.measurement_time(Duration::from_secs(2));
     let mut rng = SplitMix64::new(20240611);
-    for bits in [10u64, 100, 1000, 10_000] {
+    for bits in [10u64, 32, 100, 1000, 10_000] {
         let count = (20_000 / bits).clamp(2, 100) as usize;
         let batch: Vec<_> = (0..count).map(|_| sized_scene(&mut rng, bits)).collect();
         group.throughput(Throughput::Elements(count as u64));

@@ -1,14 +1,17 @@
 //! The fast exact path against the reference path: bit-identical v, V, omega on every row of
-//! both reference batches and on random scenes, in each arithmetic (i128, 512 bits, big integers).
+//! both reference batches and on random scenes, in each arithmetic (i128, 512 bits, big integers:
+//! dashu's, or malachite's with the feature, from small inputs to thousands of bits).
 
 mod common;
 
 use common::{any_scene, reference_rows};
 use proptest::prelude::*;
 use rodimpact::field::Q;
+use rodimpact::samples::sized_scene;
 use rodimpact::scene::{RodInertia, Scene};
 use rodimpact::solve::fraction_free;
 use rodimpact::solve::linear::solve;
+use rodimpact::stability::SplitMix64;
 
 /// Fast and fraction-free-big results equal the generic solver's; the laws hold.
 fn assert_same_as_reference(s: &Scene, context: &str) -> fraction_free::FractionFree {
@@ -51,6 +54,30 @@ fn the_textbook_batch_is_reproduced_bit_for_bit() {
 fn wide(bits: u32) -> impl Strategy<Value = Q> {
     let max = (1u64 << bits) - 1;
     (1..=max, 1..=max).prop_map(|(n, d)| Q::new(n.into(), d.into()))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+    /// Law: from the 512-bit width to far beyond it (random scenes of 32 to 2,000 bits a part,
+    /// e random, sometimes pivoted), the fast path and the big-integer fallback on its own give
+    /// the generic solver's exact values over num-rational.
+    #[test]
+    fn big_integers_equal_generic_at_thousands_of_bits(
+        seed in any::<u64>(), bits in 32u64..=2000, e in 0i64..=4, pivot in any::<bool>(),
+    ) {
+        let s = sized_scene(&mut SplitMix64::new(seed), bits);
+        let mut builder = Scene::builder(s.m().clone(), s.rod_mass().clone())
+            .half_length(s.half_length().clone())
+            .a(s.a().clone())
+            .v0(s.v0().clone())
+            .e(Q::new(e.into(), 4.into()));
+        if pivot {
+            builder = builder.pivot(-s.half_length() / Q::from_integer(3.into()));
+        }
+        let s = builder.build().unwrap();
+        assert_same_as_reference(&s, &format!("{bits} bits, seed {seed}"));
+    }
 }
 
 proptest! {
