@@ -252,7 +252,9 @@ fn omega_is_the_papers_whatever_the_slide_and_the_friction() {
     for oblique in [
         &["--v0t", "v0t", "--mu", "mu"][..],
         &["--v0t", "v0t", "--mu", "1/3"],
-        &["--radius", "rd", "--spin", "w", "--v0t", "v0t", "--mu", "mu"],
+        &[
+            "--radius", "rd", "--spin", "w", "--v0t", "v0t", "--mu", "mu",
+        ],
     ] {
         let j = formula_json(&[&["--e", "e"][..], oblique].concat());
         for key in ["v", "V", "omega", "impulse", "a_star_squared", "omega_max"] {
@@ -334,9 +336,32 @@ fn the_approach_of_a_moving_rod() {
 #[test]
 fn a_numeric_oblique_scene_as_solve_and_by_hand() {
     let scene = [
-        "--m", "1", "--M", "2", "--l", "1", "--a", "1/2", "--v0", "3", "--e", "1/2", "--v0t", "1",
-        "--mu", "1/5", "--radius", "1/10", "--spin", "4", "--rod-v", "1/2", "--rod-vt", "1/4",
-        "--rod-omega", "1",
+        "--m",
+        "1",
+        "--M",
+        "2",
+        "--l",
+        "1",
+        "--a",
+        "1/2",
+        "--v0",
+        "3",
+        "--e",
+        "1/2",
+        "--v0t",
+        "1",
+        "--mu",
+        "1/5",
+        "--radius",
+        "1/10",
+        "--spin",
+        "4",
+        "--rod-v",
+        "1/2",
+        "--rod-vt",
+        "1/4",
+        "--rod-omega",
+        "1",
     ];
     let f = formula_json(&scene);
     let solved = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
@@ -368,7 +393,10 @@ fn a_numeric_oblique_scene_as_solve_and_by_hand() {
         assert_eq!(f[key]["text"], by_hand, "{key}");
         assert_eq!(solved["energy"][solve_key]["exact"], by_hand, "{key}");
     }
-    assert_eq!((&f["contact"], &solved["contact"]), (&"slide".into(), &"slide".into()));
+    assert_eq!(
+        (&f["contact"], &solved["contact"]),
+        (&"slide".into(), &"slide".into())
+    );
 }
 
 /// Numbers decide the contact: equal masses, a centre hit at v0 = 1 with v0t = 1 and
