@@ -808,6 +808,42 @@ pub struct SceneInput {
 }
 
 impl SceneInput {
+    /// The oblique inputs by name, in the order they are read: `v0t`, `mu`, `radius`, `spin`,
+    /// `rod-v`, `rod-vt`, `rod-omega`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::SceneInput;
+    /// let input = SceneInput { mu: Some("1/4".into()), ..Default::default() };
+    /// let given: Vec<_> = input.oblique_inputs().into_iter().filter(|(_, t)| t.is_some()).map(|(k, _)| k).collect();
+    /// assert_eq!(given, ["mu"]);
+    /// ```
+    pub fn oblique_inputs(&self) -> [(&'static str, &Option<String>); 7] {
+        [
+            ("v0t", &self.v0t),
+            ("mu", &self.mu),
+            ("radius", &self.radius),
+            ("spin", &self.spin),
+            ("rod-v", &self.rod_v),
+            ("rod-vt", &self.rod_vt),
+            ("rod-omega", &self.rod_omega),
+        ]
+    }
+
+    /// The first oblique input given, if any (the scene is then oblique or frictional).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::SceneInput;
+    /// assert_eq!(SceneInput { spin: Some("3".into()), ..Default::default() }.first_oblique(), Some("spin"));
+    /// assert_eq!(SceneInput::default().first_oblique(), None);
+    /// ```
+    pub fn first_oblique(&self) -> Option<&'static str> {
+        self.oblique_inputs()
+            .into_iter()
+            .find_map(|(key, text)| text.is_some().then_some(key))
+    }
+
     /// The slot of the input named `key` (the command-line flag without dashes: `m`, `M`, `l`,
     /// `length`, `a`, `from-end`, `v0`, `rod`, `e`, `pivot`, `v0t`, `mu`, `radius`, `spin`,
     /// `rod-v`, `rod-vt`, `rod-omega`), or `None` for an unknown key.

@@ -307,19 +307,62 @@ fn check_claims_on_oblique_quantities() {
     }
 }
 
-/// The oblique problem collection (written in the textbook style, not published: see its
-/// header) checks through the TOML path: units, a disc, a pivot, a sliding rod. Its answers come
-/// from an independent two-dimensional impulse balance, rounded to three figures.
+/// The published problem's scene: the printed 1.3 x 10^3 m/s at 60 degrees to the rod, split.
+const HALLIDAY: &[&str] = &[
+    "--m",
+    "3 g",
+    "--M",
+    "4 kg",
+    "--length",
+    "0.5 m",
+    "--from-end",
+    "0",
+    "--pivot",
+    "0",
+    "--v0",
+    "1125.833 m/s",
+    "--v0t",
+    "650 m/s",
+    "--mu",
+    "1",
+    "--inelastic",
+];
+
+/// The oblique problem collection checks through the TOML path: units, a disc, a pivot, a
+/// sliding rod. Its four problems written in the textbook style (not published: see the file's
+/// header) have answers from an independent two-dimensional impulse balance, rounded to three
+/// figures. The two published ones (Halliday's bullet at 60 degrees to a rod on a central axis,
+/// run forward from the printed speed) are checked against angular momentum about the axis, by
+/// hand: m v0 r = (M L^2/12 + m r^2) omega with r = L/2 (the axis takes the impulse along the
+/// rod). Book: m = 3/1000, v0 = 1125833/1000, L = 1/2: omega = (3377499/4000000)/(16036/192000)
+/// = 10132497/1002250. Variant: m = 31/10000, v0 = 1248809/1000, L = 21/50: omega =
+/// 38713079/3226510. Lodging stops the slip: mu* = m v0t/J with J = v0/(1/m + r^2/I) =
+/// 1302925/2251666 for the book, below the files' mu = 1.
 #[test]
 fn oblique_problem_collection_agrees() {
     let (code, out, err) = rodimpact(&["check", "examples/oblique.toml"]);
     assert_eq!(code, 0, "{out}{err}");
     assert!(
-        out.ends_with("4 problems; 20 of 20 claims agree\n"),
+        out.ends_with("6 problems; 22 of 22 claims agree\n"),
         "{out}"
     );
     assert!(
         out.contains("2010/167 ≈ 12.0359"),
         "the disc's spin after: {out}"
     );
+    for omega in ["10132497/1002250 ≈ 10.1098", "38713079/3226510 ≈ 11.9984"] {
+        assert!(
+            out.contains(omega),
+            "the published problems' omega {omega}: {out}"
+        );
+    }
+    let j = solve_json(HALLIDAY);
+    assert_eq!(exact(&j, "omega"), "10132497/1002250");
+    assert_eq!(
+        exact(&j, "vt"),
+        "0",
+        "the bullet lodges: its slip along the rod stops"
+    );
+    assert_eq!(j["contact"], "stick");
+    assert_eq!(exact(&j, "mu_star"), "1302925/2251666");
 }

@@ -131,31 +131,28 @@ fn assert_all(problems: Vec<String>) {
     );
 }
 
+/// The problems of `tables` rendered in every format against `{stem}.md`, `.tex`, `.csv`.
+fn tables_against(tables: &[rodimpact::report::Table], stem: &str) -> Vec<String> {
+    [Format::Markdown, Format::Latex, Format::Csv]
+        .into_iter()
+        .filter_map(|f| {
+            let name = format!("{stem}.{}", f.extension());
+            compare(&golden(&name), &render_document(tables, f))
+        })
+        .collect()
+}
+
 #[test]
 fn tables_match_the_committed_ones_in_every_format() {
     let tables = all_tables(&TableOptions::default()).expect("default tables");
-    let problems = [Format::Markdown, Format::Latex, Format::Csv]
-        .into_iter()
-        .filter_map(|f| {
-            let name = format!("tables.{}", f.extension());
-            compare(&golden(&name), &render_document(&tables, f))
-        })
-        .collect();
-    assert_all(problems);
+    assert_all(tables_against(&tables, "tables"));
 }
 
 /// T6, the oblique table (not one of the paper's: `table --only T6`), in every format.
 #[test]
 fn the_oblique_table_matches_the_committed_one() {
     let t6 = tables(&["T6"], &TableOptions::default()).expect("T6");
-    let problems = [Format::Markdown, Format::Latex, Format::Csv]
-        .into_iter()
-        .filter_map(|f| {
-            let name = format!("table-t6.{}", f.extension());
-            compare(&golden(&name), &render_document(&t6, f))
-        })
-        .collect();
-    assert_all(problems);
+    assert_all(tables_against(&t6, "table-t6"));
 }
 
 #[test]

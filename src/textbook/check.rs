@@ -69,7 +69,7 @@ pub fn check_scene_within(
     }
     let given = GivenScene::read(input, budget)?;
     if given.has_formula() || claims.iter().any(ClaimedAnswer::is_symbolic) {
-        if let Some(field) = oblique_field(input) {
+        if let Some(field) = input.first_oblique() {
             return Err(Error::new(
                 field,
                 ErrorKind::Invalid(
@@ -135,22 +135,6 @@ fn check_numeric(
 }
 
 /// A missing mass in a scene of numbers only: numeric claims need a numeric scene.
-/// The first oblique input given (`v0t`, `mu`, `radius`, `spin`, `rod-v`, `rod-vt`,
-/// `rod-omega`), if any.
-fn oblique_field(input: &SceneInput) -> Option<&'static str> {
-    [
-        ("v0t", &input.v0t),
-        ("mu", &input.mu),
-        ("radius", &input.radius),
-        ("spin", &input.spin),
-        ("rod-v", &input.rod_v),
-        ("rod-vt", &input.rod_vt),
-        ("rod-omega", &input.rod_omega),
-    ]
-    .into_iter()
-    .find_map(|(key, text)| text.is_some().then_some(key))
-}
-
 fn numeric_scene_needed(e: Error, claims: &[ClaimedAnswer]) -> Error {
     if e.kind != ErrorKind::Missing {
         return e;

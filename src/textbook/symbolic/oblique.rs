@@ -16,19 +16,6 @@ use crate::textbook::expr::{Budget, OBLIQUE_SYMBOLS, Radical};
 use num_traits::{Signed, Zero};
 use std::cmp::Ordering;
 
-/// The oblique flags of `input` as `(field, text)`, in the order they are read.
-fn flags(input: &SceneInput) -> [(&'static str, &Option<String>); 7] {
-    [
-        ("v0t", &input.v0t),
-        ("mu", &input.mu),
-        ("radius", &input.radius),
-        ("spin", &input.spin),
-        ("rod-v", &input.rod_v),
-        ("rod-vt", &input.rod_vt),
-        ("rod-omega", &input.rod_omega),
-    ]
-}
-
 /// Whether `input` gives any oblique flag.
 ///
 /// # Examples
@@ -38,7 +25,7 @@ fn flags(input: &SceneInput) -> [(&'static str, &Option<String>); 7] {
 /// assert!(!has_oblique(&SceneInput::default()));
 /// ```
 pub fn has_oblique(input: &SceneInput) -> bool {
-    flags(input).iter().any(|(_, t)| t.is_some())
+    input.first_oblique().is_some()
 }
 
 /// The oblique part of `input` over `scene`'s symbols, or `None` when no oblique flag is
@@ -70,7 +57,7 @@ pub fn oblique_params(
         return Ok(None);
     }
     let mut values = [None, None, None, None, None, None, None];
-    for ((field, text), slot) in flags(input).into_iter().zip(&mut values) {
+    for ((field, text), slot) in input.oblique_inputs().into_iter().zip(&mut values) {
         let Some(text) = text else { continue };
         let (value, _) = value_of(field, text, dimension_of(field), budget)?;
         let value = scene
