@@ -285,6 +285,20 @@ impl<F: Field> ObliqueParams<F> {
     }
 }
 
+/// The refusal of `--spin` without `--radius`.
+///
+/// # Examples
+/// ```
+/// assert_eq!(rodimpact::scene::spin_without_disc().to_string(),
+///            "spin: a point projectile has no spin: give the disc's --radius too");
+/// ```
+pub fn spin_without_disc() -> Error {
+    Error::new(
+        "spin",
+        ErrorKind::Conflict("a point projectile has no spin: give the disc's --radius too".into()),
+    )
+}
+
 /// The refusal of a scene whose projectile does not approach the struck point; `is` says what
 /// the approach speed is (`is -1, not > 0`).
 ///
@@ -963,12 +977,7 @@ impl SceneInput {
             optional("spin", &self.spin)?,
         ) {
             (Some(radius), spin) => builder = builder.disc(radius, spin.unwrap_or_default()),
-            (None, Some(_)) => {
-                return Err(conflict(
-                    "spin",
-                    "a point projectile has no spin: give the disc's --radius too",
-                ));
-            }
+            (None, Some(_)) => return Err(spin_without_disc()),
             (None, None) => {}
         }
         let rod = [

@@ -130,26 +130,36 @@ fn several_tables_make_one_rectangular_csv() {
 /// k_t = 1 + 1/3 = 4/3, so sticking takes Jt = (1/2)/(4/3) = 3/8 and mu* = (3/8)/(9/14) = 7/12.
 /// At mu = 1/10 it slides: Jt = 9/140, vt = 1/2 - 9/140 = 61/140, Vt = 3/140, and friction
 /// takes mu J (u_t - mu J k_t/2) = 36/1225; omega = a J/I = 9/14 in every row.
-#[test]
-fn t6_against_the_impulse_balance_by_hand() {
-    let out = rodimpact(&[
-        "table", "--only", "T6", "--ratio", "3", "--e", "1/2", "--v0t", "1/2", "--format", "csv",
-    ]);
-    let (code, text, _) = out;
-    assert_eq!(code, 0);
+/// `table --only T6 ARGS --format csv` as its rows, each a map from column name to cell, and
+/// the whole text (for messages).
+fn t6_csv(args: &[&str]) -> (Vec<std::collections::BTreeMap<String, String>>, String) {
+    let (code, text, stderr) =
+        rodimpact(&[&["table", "--only", "T6", "--format", "csv"], args].concat());
+    assert_eq!(code, 0, "{stderr}");
     let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
-    let rows: Vec<Vec<&str>> = text
+    let rows = text
         .lines()
         .skip(1)
-        .map(|l| l.split(',').collect())
+        .map(|l| {
+            header
+                .iter()
+                .zip(l.split(','))
+                .map(|(h, c)| (h.to_string(), c.to_string()))
+                .collect()
+        })
         .collect();
-    let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    (rows, text)
+}
+
+#[test]
+fn t6_against_the_impulse_balance_by_hand() {
+    let (rows, text) = t6_csv(&["--ratio", "3", "--e", "1/2", "--v0t", "1/2"]);
     let cell = |mu: &str, name: &str| {
         let r = rows
             .iter()
-            .find(|r| r[0] == mu)
+            .find(|r| r["mu"] == mu)
             .unwrap_or_else(|| panic!("{text}"));
-        r[column(name)]
+        r[name].clone()
     };
     let names = [
         "contact",
@@ -168,15 +178,117 @@ fn t6_against_the_impulse_balance_by_hand() {
         ["stick", "3/8"]
     );
     assert_eq!(cell("1/2", "contact"), "slide");
-    assert_eq!(cell("0", "contact"), "none (frictionless)");
-    let omega = column("omega*l/v0");
+    assert_eq!(cell("0", "contact"), "frictionless");
     assert!(
-        rows.iter().all(|r| r[omega] == "9/14"),
+        rows.iter().all(|r| r["omega*l/v0"] == "9/14"),
         "omega changes with mu: {text}"
     );
     // T6 is not one of the paper's tables: the default is T1-T5.
     let (_, all, _) = rodimpact(&["table"]);
     assert!(all.contains("### T5.") && !all.contains("### T6."));
+}
+
+/// T6 with a spinning disc struck off the end, by hand: M = m, l = 1 (I = 1/3), a = 1/2,
+/// e = 1/2; a disc r = 1/10 spinning at 5 with v0t = 1/2. k_n = 1 + 1 + (1/4)/(1/3) = 11/4,
+/// J = (3/2)/(11/4) = 6/11, omega = a J/I = 9/11; the rim slips at u_t = 1/2 + 5/10 = 1,
+/// k_t = 1/m + r^2/(m r^2/2) + 1/M = 4, mu* = 1/((6/11) 4) = 11/24. At mu = 1/4 it slides:
+/// Jt = 3/22, vt = 1/2 - 3/22 = 4/11, Vt = 3/22, spin = 5 - 2 (3/22)/(1/10) = 25/11, friction
+/// takes (3/22)(1 - (3/22) 4/2) = 12/121. From mu* on it sticks: Jt = u_t/k_t = 1/4,
+/// vt = Vt = 1/4, the disc stops turning (5 - 2 (1/4) 10 = 0), friction takes 1/(2 4) = 1/8.
+#[test]
+fn t6_with_a_spinning_disc_off_the_end_by_hand() {
+    let (rows, text) = t6_csv(&[
+        "--a", "1/2", "--e", "1/2", "--v0t", "1/2", "--radius", "1/10", "--spin", "5",
+    ]);
+    let mus: Vec<&str> = rows.iter().map(|r| r["mu"].as_str()).collect();
+    assert_eq!(
+        mus,
+        ["0", "1/10", "1/4", "11/24", "1/2", "1", "2"],
+        "{text}"
+    );
+    let names = [
+        "contact",
+        "Jt/(m*v0)",
+        "vt/v0",
+        "Vt/v0",
+        "spin*l/v0",
+        "omega*l/v0",
+        "friction_loss/(m*v0^2)",
+    ];
+    let row = |mu: &str| {
+        let r = rows.iter().find(|r| r["mu"] == mu).unwrap();
+        names.map(|n| r[n].clone())
+    };
+    assert_eq!(
+        row("0"),
+        ["frictionless", "0", "1/2", "0", "5", "9/11", "0"]
+    );
+    assert_eq!(
+        row("1/4"),
+        ["slide", "3/22", "4/11", "3/22", "25/11", "9/11", "12/121"]
+    );
+    for mu in ["11/24", "2"] {
+        assert_eq!(
+            row(mu),
+            ["stick", "1/4", "1/4", "1/4", "0", "9/11", "1/8"],
+            "{mu}"
+        );
+    }
+    let (_, md, _) = rodimpact(&[
+        "table", "--only", "T6", "--a", "1/2", "--radius", "1/10", "--spin", "5",
+    ]);
+    assert!(
+        md.starts_with("### T6. Oblique impact with friction at a = 1/2 l\n"),
+        "{md}"
+    );
+    assert!(
+        md.contains("a solid disc of radius r = 1/10 l (I = m r²/2) spinning at ω_d0 = 5 v0/l"),
+        "{md}"
+    );
+    // Ten columns: narrower gaps keep the LaTeX table within the page.
+    let (_, latex, _) = rodimpact(&[
+        "table", "--only", "T6", "--radius", "1/10", "--format", "latex",
+    ]);
+    assert!(latex.contains("\\setlength{\\tabcolsep}{4pt}"));
+}
+
+/// T6 runs past mu* even when mu* is beyond the listed values (v0t = 3 v0: mu* = 15/4, and a
+/// row at 2 mu*); a scene with nothing sliding, a spin without a disc and an impact off the rod
+/// are refused.
+#[test]
+fn t6_runs_past_the_threshold_and_refuses_what_has_no_friction() {
+    let (rows, text) = t6_csv(&["--v0t", "3"]);
+    let last: Vec<[&str; 2]> = rows[rows.len() - 2..]
+        .iter()
+        .map(|r| [r["mu"].as_str(), r["contact"].as_str()])
+        .collect();
+    assert_eq!(last, [["15/4", "stick"], ["15/2", "stick"]], "{text}");
+    for (args, message) in [
+        (
+            &["--v0t", "0"][..],
+            "error: v0t: nothing slides at the contact before the impact (v0t + spin r = 0), so friction has nothing to do: give a --v0t or a disc's --spin\n",
+        ),
+        (
+            &["--v0t", "-1/2", "--radius", "1/10", "--spin", "5"],
+            "error: v0t: nothing slides at the contact before the impact (v0t + spin r = 0), so friction has nothing to do: give a --v0t or a disc's --spin\n",
+        ),
+        (
+            &["--spin", "1"],
+            "error: spin: a point projectile has no spin: give the disc's --radius too\n",
+        ),
+        (
+            &["--a", "3/2"],
+            "error: a: must lie on the rod, |a| <= l = 1, got 3/2\n",
+        ),
+        (&["--radius", "0"], "error: radius: must be > 0, got 0\n"),
+    ] {
+        let (code, stdout, stderr) = rodimpact(&[&["table", "--only", "T6"], args].concat());
+        assert_eq!(
+            (code, stdout.as_str(), stderr.as_str()),
+            (2, "", message),
+            "{args:?}"
+        );
+    }
 }
 
 /// The README shows T6 as `table --only T6` prints it.

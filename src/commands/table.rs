@@ -6,7 +6,7 @@ use num_traits::{One, Signed};
 use rodimpact::field::Q;
 use rodimpact::io::write_atomic;
 use rodimpact::report::{self, Format, TableOptions};
-use rodimpact::scene::{RodInertia, parse_field};
+use rodimpact::scene::{Disc, RodInertia, parse_field, spin_without_disc};
 use rodimpact::{Error, ErrorKind};
 use std::path::PathBuf;
 
@@ -15,14 +15,14 @@ pub(crate) struct TableArgs {
     /// Mass ratios M/m for T1 and T5, comma separated [default: 1/100,1/10,1/2,1,3/2,2,3,10,100].
     #[arg(long, value_name = "Q,Q,...")]
     pub(crate) ratios: Option<String>,
-    /// The mass ratio M/m of T2 and T3 [default: 1].
+    /// The mass ratio M/m of T2, T3 and T6 [default: 1].
     #[arg(long, value_name = "Q")]
     pub(crate) ratio: Option<String>,
     /// Mass distribution: uniform, dumbbell, rg=R (r_G = R l) or I=X (I = X M l^2), with
-    /// 0 < R, X <= 1 [default: uniform].
+    /// 0 < R, X <= 1 (all tables but T4) [default: uniform].
     #[arg(long, value_name = "KIND")]
     pub(crate) rod: Option<String>,
-    /// Coefficient of restitution for T1, T2 and T5 [default: 1].
+    /// Coefficient of restitution for T1, T2, T5 and T6 [default: 1].
     #[arg(long, value_name = "Q", allow_hyphen_values = true)]
     pub(crate) e: Option<String>,
     /// A pivot at p (in units of l) for T1.
@@ -31,6 +31,16 @@ pub(crate) struct TableArgs {
     /// The projectile's velocity along the rod for T6, in units of v0 [default: 1].
     #[arg(long, value_name = "Q", allow_hyphen_values = true)]
     pub(crate) v0t: Option<String>,
+    /// T6's impact point, in units of l, |a| <= 1 [default: 1, the end].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) a: Option<String>,
+    /// T6's projectile as a solid disc (I = m r^2/2) of this radius, in units of l.
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) radius: Option<String>,
+    /// The T6 disc's spin before the impact, counterclockwise seen from above, in units of
+    /// v0/l (needs --radius) [default: 0].
+    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    pub(crate) spin: Option<String>,
     /// Output format: md, latex or csv. CSV: one table is one file (a header line, exact
     /// strings and `_decimal` columns); several tables make one file with a leading `table`
     /// column (T1-T6) and the union of their columns, empty where a table has none.
@@ -65,6 +75,22 @@ fn table_options(args: &TableArgs) -> Result<TableOptions, Error> {
     if let Some(v0t) = &args.v0t {
         opts.v0t = parse_field("v0t", v0t)?;
     }
+    if let Some(a) = &args.a {
+        opts.a = parse_field("a", a)?;
+    }
+    let spin = args
+        .spin
+        .as_deref()
+        .map(|s| parse_field("spin", s))
+        .transpose()?;
+    opts.disc = match (&args.radius, spin) {
+        (Some(r), spin) => Some(Disc {
+            radius: parse_field("radius", r)?,
+            spin: spin.unwrap_or_default(),
+        }),
+        (None, Some(_)) => return Err(spin_without_disc()),
+        (None, None) => None,
+    };
     Ok(opts)
 }
 

@@ -8,7 +8,7 @@ use crate::error::{Error, ErrorKind};
 use crate::field::notation::{self, Notation};
 use crate::field::{Q, QSqrt, q};
 use crate::optimum::{Placement, optimum};
-use crate::scene::{Params, RodInertia, Scene};
+use crate::scene::{Disc, Params, RodInertia, Scene};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
 use crate::solve::oblique;
@@ -29,6 +29,11 @@ pub struct TableOptions {
     pub pivot: Option<Q>,
     /// The projectile's velocity along the rod, in units of v0, for T6 (the oblique table).
     pub v0t: Q,
+    /// T6's impact point, in units of l (default 1, the end).
+    pub a: Q,
+    /// T6's projectile as a solid disc (I = m r^2/2): its radius in units of l and its spin
+    /// before the impact in units of v0/l; a point projectile when `None`.
+    pub disc: Option<Disc>,
 }
 
 impl Default for TableOptions {
@@ -54,6 +59,8 @@ impl Default for TableOptions {
             e: Q::one(),
             pivot: None,
             v0t: Q::one(),
+            a: Q::one(),
+            disc: None,
         }
     }
 }
@@ -326,12 +333,15 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
     })
 }
 
-/// T6: an oblique impact with friction at the end of the rod, as mu grows past the exact
-/// threshold mu* at which the contact stops sliding (the rod of T2 and T3: `ratio`, `rod`, `e`;
-/// the projectile also moving along the rod with `v0t`).
+/// T6: an oblique impact with friction, as mu grows past the exact threshold mu* at which the
+/// contact stops sliding: the rod of T2 and T3 (`ratio`, `rod`, `e`) struck at `a` (the end by
+/// default) by a projectile also moving along the rod with `v0t`, or a solid disc spinning
+/// with `disc`. The rows are mu = 0, 1/10, 1/4, 1/2, 1, 2 and mu* itself, and 2 mu* when mu* is
+/// not below 2, so that the table always runs past the threshold.
 ///
 /// # Errors
-/// A scene the options make invalid (`v0t` is any number).
+/// A scene the options make invalid (`a` off the rod, a radius that is not positive), or no
+/// slip at the contact before the impact (v0t + spin r = 0): friction would have nothing to do.
 ///
 /// # Examples
 /// ```
@@ -348,7 +358,11 @@ pub fn t6(opts: &TableOptions) -> Result<Table, Error> {
         let mut b = Scene::builder(Q::one(), opts.ratio.clone())
             .rod(base.rod().clone())
             .e(opts.e.clone())
+            .a(opts.a.clone())
             .v0t(opts.v0t.clone());
+        if let Some(d) = &opts.disc {
+            b = b.disc(d.radius.clone(), d.spin.clone());
+        }
         if !mu.is_zero() {
             b = b.mu(mu.clone());
         }
@@ -361,54 +375,92 @@ pub fn t6(opts: &TableOptions) -> Result<Table, Error> {
     };
     // mu* = |u_t|/(J k_t): the stick impulse over the normal impulse.
     let frictionless = solved(&scene(&Q::zero())?);
-    let threshold = if frictionless.impulse.is_zero() {
-        Q::zero()
-    } else {
-        frictionless.stick_impulse.abs() / &frictionless.impulse
-    };
+    if frictionless.stick_impulse.is_zero() {
+        return Err(Error::new(
+            "v0t",
+            ErrorKind::Invalid(
+                "nothing slides at the contact before the impact (v0t + spin r = 0), so friction has nothing to do: give a --v0t or a disc's --spin".into(),
+            ),
+        ));
+    }
+    let threshold = frictionless.stick_impulse.abs() / &frictionless.impulse;
     let mut mus: Vec<Q> = [(0, 1), (1, 10), (1, 4), (1, 2), (1, 1), (2, 1)]
         .iter()
         .map(|&(n, d)| q(n, d))
         .chain([threshold.clone()])
         .collect();
+    if threshold >= q(2, 1) {
+        mus.push(&threshold * q(2, 1));
+    }
     mus.sort();
     mus.dedup();
     let mut rows = Vec::new();
     for mu in &mus {
         let out = solved(&scene(mu)?);
         let contact = match out.contact {
-            None => "none (frictionless)",
+            None => "frictionless",
             Some(c) => c.as_str(),
         };
-        rows.push(vec![
+        let mut row = vec![
             Cell::Rational(mu.clone()),
             Cell::Text(contact.into()),
             Cell::Rational(out.tangential_impulse.clone()),
             Cell::Rational(out.after.vt.clone()),
             Cell::Rational(out.after.rod.vt.clone()),
+        ];
+        row.extend(out.after.spin.clone().map(Cell::Rational));
+        row.extend([
             Cell::Rational(out.after.rod.omega.clone()),
             Cell::Rational(out.lost_friction.clone()),
         ]);
+        rows.push(row);
     }
+    let (title, at) = if opts.a.is_one() {
+        (
+            "at the end of the rod".to_string(),
+            "the end ($a = l$)".to_string(),
+        )
+    } else {
+        let at = format!("at $a = {}$", times(&opts.a, "l"));
+        (at.clone(), at)
+    };
+    let along = if opts.v0t.is_zero() {
+        "not along it".to_string()
+    } else {
+        format!("$v_{{0t}} = {}$ along it", times(&opts.v0t, "v_0"))
+    };
+    let disc = match &opts.disc {
+        None => String::new(),
+        Some(d) => format!(
+            "; it is a solid disc of radius $r = {}$ ($I = m r^2/2$) spinning at $\\omega_{{d0}} = {}$ before the impact, so its rim slips at $v_{{0t}} + \\omega_{{d0}}\\,r$",
+            times(&d.radius, "l"),
+            times(&d.spin, "v_0/l")
+        ),
+    };
+    let mut columns = vec![
+        Column::exact("$\\mu$", "mu"),
+        Column::exact("contact", "contact"),
+        Column::with_decimals("$J_t/(m v_0)$", "Jt/(m*v0)"),
+        Column::exact("$v_t/v_0$", "vt/v0"),
+        Column::exact("$V_t/v_0$", "Vt/v0"),
+    ];
+    if opts.disc.is_some() {
+        columns.push(Column::exact("$\\omega_d l/v_0$", "spin*l/v0"));
+    }
+    columns.extend([
+        Column::exact("$\\omega l/v_0$", "omega*l/v0"),
+        Column::with_decimals("$\\Delta E_{\\mu}/(m v_0^2)$", "friction_loss/(m*v0^2)"),
+    ]);
     Ok(Table {
         id: "T6",
-        title: "Oblique impact with friction at the end of the rod".into(),
+        title: format!("Oblique impact with friction {title}"),
         note: format!(
-            "The projectile strikes the end ($a = l$) moving at $v_0$ across the rod and $v_{{0t}} = {}$ along it; $m = 1$, $M/m = {}$. Friction $\\mu$ at the contact: the tangential impulse $J_t$ along the rod stops the slip when $\\mu$ is at least $\\mu^* = {}$ (stick), else it is $\\mu\\,J$ (slide). Impulses in units of $m v_0$, energies of $m v_0^2$, $\\omega$ of $v_0/l$: $\\omega$ is the frictionless value in every row, since $J_t$ acts through the centre. {}",
-            times(&opts.v0t, "v_0"),
+            "The projectile strikes {at} moving at $v_0$ across the rod and {along}{disc}; $m = 1$, $M/m = {}$. Friction $\\mu$ at the contact: the tangential impulse $J_t$ along the rod stops the slip when $\\mu$ is at least $\\mu^* = {}$ (stick), else it is $\\mu\\,J$ (slide). Impulses in units of $m v_0$, energies of $m v_0^2$, $\\omega$ of $v_0/l$; $\\Delta E_{{\\mu}}$ is the kinetic energy lost to friction, $\\omega$ the frictionless value in every row, since $J_t$ acts through the centre. {}",
             opts.ratio,
             threshold,
             setting(opts, true)
         ),
-        columns: vec![
-            Column::exact("$\\mu$", "mu"),
-            Column::exact("contact", "contact"),
-            Column::with_decimals("$J_t/(m v_0)$", "Jt/(m*v0)"),
-            Column::exact("$v_t/v_0$", "vt/v0"),
-            Column::exact("$V_t/v_0$", "Vt/v0"),
-            Column::exact("$\\omega l/v_0$", "omega*l/v0"),
-            Column::with_decimals("lost to friction $/(m v_0^2)$", "friction_loss/(m*v0^2)"),
-        ],
+        columns,
         rows,
     })
 }

@@ -368,6 +368,10 @@ impl Table {
             }
         }
         let mut out = String::from("\\begin{table}[ht]\n\\centering\n");
+        if heads.len() > 9 {
+            // Ten columns and more (T6 with a disc) fit the page with narrower gaps.
+            out.push_str("\\setlength{\\tabcolsep}{4pt}\n");
+        }
         let _ = writeln!(
             out,
             "\\caption{{{}. {}}}\\label{{tab:{}}}",

@@ -9,6 +9,7 @@ use crate::error::{Error, ErrorKind};
 use crate::field::RatFn;
 use crate::scene::{
     Disc, ObliqueParams, RodMotion, SceneInput, Support, dimension_of, no_approach,
+    spin_without_disc,
 };
 use crate::solve::oblique::normal_params;
 use crate::textbook::expr::{Budget, OBLIQUE_SYMBOLS, Radical};
@@ -87,14 +88,7 @@ pub fn oblique_params(
             radius,
             spin: or_zero(spin),
         }),
-        (None, Some(_)) => {
-            return Err(Error::new(
-                "spin",
-                ErrorKind::Conflict(
-                    "a point projectile has no spin: give the disc's --radius too".into(),
-                ),
-            ));
-        }
+        (None, Some(_)) => return Err(spin_without_disc()),
         (None, None) => None,
     };
     if let Support::Pivot(_) = scene.params.support {
