@@ -13,13 +13,13 @@
 //! in named symbols ([`field::RatFn`]).
 //!
 //! ```
-//! use rodimpact::{scene::Scene, solve::linear::solve, optimum::optimum, field::{q, Q}};
+//! use rodimpact::prelude::*;
 //! // The paper's example: M = m, uniform rod of half-length 1, hit at the end.
 //! let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 1)).build()?;
-//! let out = solve(&scene.params::<Q>()).expect("nonsingular");
-//! assert_eq!(out.after.omega, q(6, 5));
-//! assert!(out.residuals.all_zero()); // momentum, angular momentum and energy: exactly 0
-//! let best = optimum(&scene);
+//! let answer = Answer::of(&scene); // the front door: any scene, answered completely
+//! assert_eq!(answer.impact.outcome.after.omega, q(6, 5));
+//! assert!(answer.laws_hold()); // momentum, angular momentum and energy: exactly
+//! let best = answer.optimum.expect("the rod is at rest before the impact");
 //! assert_eq!(best.squared, q(2, 3)); // a* = sqrt(2/3) l, inside the rod
 //! assert!(best.within_rod);
 //! # Ok::<(), rodimpact::Error>(())
@@ -35,7 +35,7 @@
 //! | 0 numbers | [`field`] (its [`field::decimal`] exact printing, [`field::int`] word-sized integers), [`echo`], [`error`] | the [`field::Field`] trait and its number types; how numbers print; the error type |
 //! | 1 input | [`number`], [`units`] | exact parsing of `0.25`, `3/7`, `1.5e-3`; SI units |
 //! | 2 model | [`scene`], [`mechanics`] | a validated scene over any field; momentum, angular momentum, energy, the paper's groups |
-//! | 3 solve | [`solve`], [`optimum`] | every route to (v, V, omega) by name behind [`solve::with`]; a* and omega_max |
+//! | 3 solve | [`solve`] | the whole answer to any scene ([`solve::Answer`]); every route to (v, V, omega) by name behind [`solve::with`]; a* and omega_max ([`solve::optimum`]) |
 //! | 4 decide | [`claims`], [`textbook`], [`stability`], [`contact`], [`batch`], [`samples`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes |
 //! | 5 output | [`report`], [`io`] | every rendering (text, JSON, Markdown, LaTeX, CSV, SVG); atomic files and staged directories |
 //!
@@ -64,7 +64,7 @@ pub mod units;
 pub mod mechanics;
 pub mod scene;
 // Layer 3: solve.
-pub mod optimum;
+
 pub mod solve;
 // Layer 4: decide.
 pub mod batch;
@@ -86,16 +86,17 @@ pub mod report;
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 1)).build()?;
 /// let out = solve::linear::solve(&scene.params::<Q>()).expect("nonsingular");
 /// assert_eq!(out.after, Motion { v: q(3, 5), rod_v: q(2, 5), omega: q(6, 5) });
-/// assert_eq!(optimum(&scene).squared, q(2, 3));
+/// assert_eq!(optimum(&scene).map(|o| o.squared), Some(q(2, 3)));
+/// assert_eq!(Answer::of(&scene).impulse, q(2, 5)); // J = 2/(1/m + 1/M + a^2/I) = 2/5
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub mod prelude {
     pub use crate::error::{Error, ErrorKind};
     pub use crate::field::{Field, Q, QSqrt, RatFn, Sym, q};
     pub use crate::mechanics::Motion;
-    pub use crate::optimum::{Optimum, optimum};
     pub use crate::scene::{Params, RodInertia, Scene, SceneInput, Support};
-    pub use crate::solve::{self, Outcome, Route, Solved};
+    pub use crate::solve::optimum::{Optimum, optimum};
+    pub use crate::solve::{self, Answer, Impact, Outcome, Route, Solved};
 }
 
 pub use error::{Error, ErrorKind};

@@ -10,8 +10,8 @@
 
 use crate::field::{Q, QSqrt};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
-use crate::optimum::optimum;
 use crate::scene::{Scene, Support};
+use crate::solve::optimum::optimum;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
@@ -160,7 +160,9 @@ pub fn audit(scene: &Scene, exact: &Motion<Q>, claimed: &Motion<Q>) -> Audit {
     if residual.abs() > &law * &momentum_scale * scene.half_length() {
         findings.push(Finding::AngularMomentum);
     }
-    let omega_max = optimum(scene).omega_max;
+    let omega_max = optimum(scene)
+        .expect("a rod at rest before the impact has an optimum")
+        .omega_max;
     let bound = omega_max * &QSqrt::rational(Q::one() + &law);
     if QSqrt::rational(claimed.omega.abs()).cmp_exact(&bound) == Ordering::Greater {
         findings.push(Finding::AboveOmegaMax);

@@ -2,7 +2,8 @@
 
 use super::{Failure, ObliqueFlags, SceneFlags, parse_digits, print_out};
 use clap::{Args, ValueEnum};
-use rodimpact::report::{ExplainFormat, Solution, backend_values, explain};
+use rodimpact::report::{ExplainFormat, backend_values, explain, solution_json, solution_text};
+use rodimpact::solve::Answer;
 use rodimpact::solve::float::FloatFormula;
 use rodimpact::stability::Backend;
 use serde_json::Value;
@@ -112,10 +113,10 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
         Backend::Exact => None,
         _ => Some(backend_values(&scene, backend)?),
     };
-    let solution = Solution::of(&scene);
+    let answer = Answer::of(&scene);
     if args.json {
         let digits = parse_digits(args.digits.as_deref(), 30)?;
-        let mut json = solution.to_json(digits);
+        let mut json = solution_json(&answer, digits);
         if let (Value::Object(out), Some(floats)) = (&mut json, floats) {
             out.insert("backend".into(), Value::String(backend.name()));
             out.extend(floats);
@@ -124,7 +125,7 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
         print_out(&format!("{json}\n"));
     } else {
         let digits = parse_digits(args.digits.as_deref(), 15)?;
-        let mut text = solution.to_text(digits);
+        let mut text = solution_text(&answer, digits);
         if let Some(floats) = floats {
             text.push_str(&format!(
                 "\nBackend {}\n  against the exact values: rel_error = |float - exact|/|exact|, cond = condition number,\n  reliable = every input and the exact value fit the format, cond * unit roundoff <= 1e-3\n  and rel_error <= 4 cond * unit roundoff\n",
@@ -143,7 +144,7 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
         }
         print_out(&text);
     }
-    if solution.laws_hold() {
+    if answer.laws_hold() {
         Ok(())
     } else {
         Err(Failure::Check)

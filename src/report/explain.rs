@@ -6,9 +6,9 @@
 use crate::field::notation::{Notation, surd};
 use crate::field::{Q, QSqrt};
 use crate::mechanics::Groups;
-use crate::optimum::{Placement, optimum};
 use crate::scene::{Scene, Support};
 use crate::solve::linear::solve;
+use crate::solve::optimum::{Placement, optimum};
 use num_traits::{One, Signed};
 
 /// The output format of [`explain`].
@@ -280,7 +280,7 @@ fn pivot_steps(
 }
 
 fn a_star_step(scene: &Scene) -> Step {
-    let o = optimum(scene);
+    let o = optimum(scene).expect("a rod at rest before the impact has an optimum");
     let root = surd(&QSqrt::sqrt_of(&o.squared), Notation::Ascii);
     let approx = QSqrt::sqrt_of(&o.squared).decimal(6);
     let (lever, moment) = match scene.support() {

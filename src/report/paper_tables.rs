@@ -7,11 +7,11 @@ use super::table::{Cell, Column, Table};
 use crate::error::{Error, ErrorKind};
 use crate::field::notation::{self, Notation};
 use crate::field::{Q, QSqrt, q};
-use crate::optimum::{Placement, optimum};
 use crate::scene::{Disc, Params, RodInertia, Scene};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
 use crate::solve::oblique;
+use crate::solve::optimum::{Placement, optimum};
 use num_traits::{One, Signed, Zero};
 
 /// The choices a user can make for the tables.
@@ -117,7 +117,7 @@ pub fn t1(opts: &TableOptions) -> Result<Table, Error> {
     let mut rows = Vec::new();
     for ratio in &opts.ratios {
         let s = unit_scene(ratio, &opts.rod, &opts.e, opts.pivot.as_ref())?;
-        let o = optimum(&s);
+        let o = optimum(&s).expect("a rod at rest before the impact has an optimum");
         rows.push(vec![
             Cell::Rational(ratio.clone()),
             Cell::Rational(o.squared.clone()),
@@ -164,7 +164,7 @@ pub(super) fn solve_at(scene: &Scene, a: QSqrt) -> Outcome<QSqrt> {
 /// the listed points, that row is the optimum).
 pub fn t2(opts: &TableOptions) -> Result<Table, Error> {
     let s = unit_scene(&opts.ratio, &opts.rod, &opts.e, None)?;
-    let o = optimum(&s);
+    let o = optimum(&s).expect("a rod at rest before the impact has an optimum");
     let mut points: Vec<QSqrt> = [(0, 1), (1, 4), (1, 2), (3, 4), (1, 1)]
         .iter()
         .map(|&(n, d)| QSqrt::rational(q(n, d)))
@@ -222,7 +222,7 @@ pub fn t3(opts: &TableOptions) -> Result<Table, Error> {
     let mut omega_elastic = None;
     for e in [q(1, 1), q(1, 2), q(0, 1)] {
         let s = unit_scene(&opts.ratio, &opts.rod, &e, None)?;
-        let o = optimum(&s);
+        let o = optimum(&s).expect("a rod at rest before the impact has an optimum");
         let a = match o.placement {
             Placement::Beyond => QSqrt::one(),
             _ => QSqrt::sqrt_of(&o.squared),
@@ -267,7 +267,7 @@ pub fn t4() -> Result<Table, Error> {
     for tenths in 1..=10 {
         let r = q(tenths, 10);
         let s = unit_scene(&Q::one(), &RodInertia::Gyration(r.clone()), &Q::one(), None)?;
-        let o = optimum(&s);
+        let o = optimum(&s).expect("a rod at rest before the impact has an optimum");
         rows.push(vec![
             Cell::Rational(r.clone()),
             Cell::Rational(&r * &r),
@@ -299,7 +299,7 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
     for (name, pivot) in [("centre", Q::zero()), ("end", -Q::one())] {
         for ratio in &opts.ratios {
             let s = unit_scene(ratio, &opts.rod, &opts.e, Some(&pivot))?;
-            let o = optimum(&s);
+            let o = optimum(&s).expect("a rod at rest before the impact has an optimum");
             let inertia_p = s.inertia() + ratio * &pivot * &pivot;
             let percussion = if pivot.is_zero() {
                 Cell::Absent

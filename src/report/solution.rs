@@ -4,287 +4,228 @@
 use super::value_json;
 use crate::field::decimal::{self, Rounding};
 use crate::field::{Q, QSqrt};
-use crate::optimum::{Argmax, Optimum, PaperForm, Placement, optimum};
 use crate::scene::{Oblique, RodInertia, Scene, Support};
-use crate::solve::oblique::{self, ObliqueOutcome};
-use crate::solve::{self, Energy, Outcome, Route};
+use crate::solve::Answer;
+use crate::solve::Energy;
+use crate::solve::oblique::{ContactMode, ObliqueOutcome};
+use crate::solve::optimum::{Argmax, Placement};
 use num_traits::{One, Zero};
 use serde_json::{Map, Value, json};
 
-/// A scene solved exactly, with its optimum.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Solution {
-    /// The scene.
-    pub scene: Scene,
-    /// Velocities, energies, pivot impulse and residuals of the normal problem (for a plain
-    /// scene, of the scene itself: see [`Scene::normal_problem`]).
-    pub outcome: Outcome<Q>,
-    /// The whole answer of an oblique or frictional scene (both axes, friction, disc spin,
-    /// the rod's motion before), `None` for the paper's scene.
-    pub oblique: Option<ObliqueOutcome<Q>>,
-    /// a*, its in-rod decision and the exact maximum of omega; `None` when the rod turns
-    /// before the impact (the approach speed then depends on a, and the paper's optimum does
-    /// not apply).
-    pub optimum: Option<Optimum>,
+/// The JSON object of `solve --json` for `answer`: `scene`, `v`, `V`, `omega`, `energy`,
+/// `pivot_impulse` (pivot only), `residuals` (only the laws that apply), `a_star` (with
+/// `placement` and `threshold_M`, the rod mass at which a* reaches the end), `omega_max`,
+/// `argmax`, `omega_end`, `end_over_max` (omega at the end over omega_max), `gain` (what aiming
+/// at a* gains over the end) and `paper_form` (K, b^2, c of the paper's f(x) argument,
+/// verified as an identity in a); an oblique scene's keys as in docs/conventions.md. Decimals
+/// carry at least 30 significant digits; `a_star`'s bounds satisfy upper - lower <= 10^-digits a*.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::solution_json, scene::Scene, solve::Answer, field::q};
+/// let json = solution_json(&Answer::of(&Scene::builder(q(1, 1), q(1, 1)).build()?), 30);
+/// assert_eq!(json["v"]["exact"], "3/5");
+/// assert_eq!(json["a_star"]["within_rod"], true);
+/// assert!(json.get("pivot_impulse").is_none());
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn solution_json(answer: &Answer, digits: usize) -> Value {
+    let decimal_digits = digits.max(30);
+    let value = |x: &Q| value_json(x, decimal_digits);
+    let mut out = Map::new();
+    out.insert("scene".into(), scene_json(&answer.scene));
+    match &answer.impact.oblique {
+        None => paper_json(answer, &mut out, &value),
+        Some(o) => oblique_json(o, &mut out, &value),
+    }
+    let Some(o) = &answer.optimum else {
+        return Value::Object(out);
+    };
+    // Bounds one digit tighter than asked, printed outward with two more digits, so the
+    // printed interval still encloses a* and is at most 10^-digits a* wide.
+    let (lower, upper) = decimal::sqrt_bounds(&o.squared, digits + 1);
+    out.insert(
+        "a_star".into(),
+        json!({
+            "squared": o.squared.to_string(),
+            "exact": decimal::surd(&o.squared),
+            "decimal": decimal::decimal_sqrt(&o.squared, decimal_digits),
+            "lower": decimal::decimal_rounded(&lower, digits + 2, Rounding::Floor),
+            "upper": decimal::decimal_rounded(&upper, digits + 2, Rounding::Ceiling),
+            "within_rod": o.within_rod,
+            "placement": o.placement.as_str(),
+            "threshold_M": o.threshold_mass.as_ref().map(|t| t.to_string()),
+        }),
+    );
+    out.insert("omega_max".into(), surd_json(&o.omega_max, decimal_digits));
+    out.insert("argmax".into(), Value::String(o.argmax.as_str().into()));
+    out.insert("omega_end".into(), value(&o.omega_end));
+    out.insert(
+        "end_over_max".into(),
+        surd_json(&o.end_to_max(), decimal_digits),
+    );
+    out.insert("gain".into(), surd_json(&o.gain(), decimal_digits));
+    let (form, verified) = answer
+        .paper_form
+        .as_ref()
+        .expect("the paper's form accompanies the optimum");
+    out.insert(
+        "paper_form".into(),
+        json!({
+            "K": form.k.to_string(),
+            "b_squared": form.b_squared.to_string(),
+            "c": form.c.to_string(),
+            "verified": verified,
+        }),
+    );
+    Value::Object(out)
+}
+/// The paper scene's `v`, `V`, `omega`, `energy`, `pivot_impulse` and `residuals`.
+fn paper_json(answer: &Answer, out: &mut Map<String, Value>, value: &impl Fn(&Q) -> Value) {
+    let after = &answer.impact.outcome.after;
+    out.insert("v".into(), value(&after.v));
+    out.insert("V".into(), value(&after.rod_v));
+    out.insert("omega".into(), value(&after.omega));
+    let energy = &answer.impact.outcome.energy;
+    out.insert(
+        "energy".into(),
+        json!({
+            "before": value(&energy.before),
+            "after": value(&energy.after),
+            "lost": value(&energy.lost),
+        }),
+    );
+    if let Some(p) = &answer.impact.outcome.pivot_impulse {
+        out.insert("pivot_impulse".into(), value(p));
+    }
+    out.insert(
+        "residuals".into(),
+        residuals_json(answer.impact.outcome.residuals.iter()),
+    );
 }
 
-impl Solution {
-    /// Solves `scene` over Q by the fraction-free route ([`Route::FractionFree`]: the laws
-    /// checked as integer identities, one reduction per output) and computes its optimum.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::{report::Solution, scene::Scene, field::q};
-    /// let s = Solution::of(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap());
-    /// assert_eq!(s.outcome.after.omega, q(6, 5));
-    /// ```
-    pub fn of(scene: &Scene) -> Solution {
-        let normal = scene.normal_problem();
-        let outcome = solve::with::<Q>(&normal, Route::FractionFree)
-            .expect("the fraction-free route takes every scene in Q")
-            .outcome(&normal.params());
-        let oblique = scene.oblique().map(|o| {
-            oblique::complete(&scene.params(), &o.params(), outcome.after.clone(), None)
-                .expect("Q decides stick or slide, and every mass is positive")
-        });
-        let turning = scene.rod_before().omega != Q::zero();
-        Solution {
-            scene: scene.clone(),
-            outcome,
-            oblique,
-            optimum: (!turning).then(|| optimum(&normal)),
-        }
+/// The aligned, human-readable report of `solve` (decimals to `digits` significant digits),
+/// every value with its SI unit; a number too long to read is shown as a decimal (the
+/// exact value is in the JSON).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::solution_text, scene::Scene, solve::Answer, field::q};
+/// let text = solution_text(&Answer::of(&Scene::builder(q(1, 1), q(1, 1)).build()?), 6);
+/// assert!(text.contains("6/5 rad/s"));
+/// assert!(text.contains("a* is on the rod when") && text.contains("M ≤ 2m (here M = m)"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn solution_text(answer: &Answer, digits: usize) -> String {
+    let s = &answer.scene;
+    let mut t = Table::default();
+    let mut out = String::new();
+    out.push_str(&format!("Scene: {}\n", describe(s)));
+    let length = |x: &Q| format!("{} m", decimal::compact(x));
+    out.push_str(&format!(
+        "  m = {} kg, M = {} kg, l = {} (rod length {}), a = {}, v0 = {} m/s\n",
+        decimal::compact(s.m()),
+        decimal::compact(s.rod_mass()),
+        length(s.half_length()),
+        length(&(s.half_length() * Q::from_integer(2.into()))),
+        length(s.a()),
+        decimal::compact(s.v0())
+    ));
+    if let Some(o) = s.oblique() {
+        out.push_str(&format!("  {}\n", describe_oblique(o)));
     }
-
-    /// Whether every conservation law that applies holds exactly (for an oblique scene also
-    /// the energy loss equal to its closed forms).
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::{report::Solution, scene::Scene, field::q};
-    /// let s = Scene::builder(q(1, 1), q(1, 1)).v0t(q(1, 1)).mu(q(1, 2)).build().unwrap();
-    /// assert!(Solution::of(&s).laws_hold());
-    /// ```
-    pub fn laws_hold(&self) -> bool {
-        match &self.oblique {
-            Some(o) => o.residuals.all_zero(),
-            None => self.outcome.residuals.all_zero(),
-        }
+    out.push_str("  (SI units; a number given without a unit is read in SI)\n\n");
+    let value = |x: &Q, unit: &str| rational_cells(x, unit, digits);
+    match &answer.impact.oblique {
+        None => paper_rows(answer, &mut t, &value),
+        Some(o) => oblique_rows(answer, o, &mut t, &value),
     }
-
-    /// The JSON object of `solve --json`: `scene`, `v`, `V`, `omega`, `energy`,
-    /// `pivot_impulse` (pivot only), `residuals` (only the laws that apply), `a_star` (with
-    /// `placement` and `threshold_M`, the rod mass at which a* reaches the end), `omega_max`,
-    /// `argmax`, `omega_end`, `end_over_max` (omega at the end over omega_max), `gain` (what aiming
-    /// at a* gains over the end) and `paper_form` (K, b^2, c of the paper's f(x) argument,
-    /// verified as an identity in a). Decimals carry at least 30 significant digits; `a_star`'s
-    /// bounds satisfy upper - lower <= 10^-digits a*.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::{report::Solution, scene::Scene, field::q};
-    /// let json = Solution::of(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap()).to_json(30);
-    /// assert_eq!(json["v"]["exact"], "3/5");
-    /// assert_eq!(json["a_star"]["within_rod"], true);
-    /// assert!(json.get("pivot_impulse").is_none());
-    /// ```
-    pub fn to_json(&self, digits: usize) -> Value {
-        let decimal_digits = digits.max(30);
-        let value = |x: &Q| value_json(x, decimal_digits);
-        let mut out = Map::new();
-        out.insert("scene".into(), scene_json(&self.scene));
-        match &self.oblique {
-            None => self.paper_json(&mut out, &value),
-            Some(o) => oblique_json(o, &mut out, &value),
-        }
-        let Some(o) = &self.optimum else {
-            return Value::Object(out);
-        };
-        // Bounds one digit tighter than asked, printed outward with two more digits, so the
-        // printed interval still encloses a* and is at most 10^-digits a* wide.
-        let (lower, upper) = decimal::sqrt_bounds(&o.squared, digits + 1);
-        out.insert(
-            "a_star".into(),
-            json!({
-                "squared": o.squared.to_string(),
-                "exact": decimal::surd(&o.squared),
-                "decimal": decimal::decimal_sqrt(&o.squared, decimal_digits),
-                "lower": decimal::decimal_rounded(&lower, digits + 2, Rounding::Floor),
-                "upper": decimal::decimal_rounded(&upper, digits + 2, Rounding::Ceiling),
-                "within_rod": o.within_rod,
-                "placement": o.placement.as_str(),
-                "threshold_M": o.threshold_mass.as_ref().map(|t| t.to_string()),
-            }),
-        );
-        out.insert("omega_max".into(), surd_json(&o.omega_max, decimal_digits));
-        out.insert("argmax".into(), Value::String(o.argmax.as_str().into()));
-        out.insert("omega_end".into(), value(&o.omega_end));
-        out.insert(
-            "end_over_max".into(),
-            surd_json(&o.end_to_max(), decimal_digits),
-        );
-        out.insert("gain".into(), surd_json(&o.gain(), decimal_digits));
-        let normal = self.scene.normal_problem();
-        let form = PaperForm::of(&normal);
-        out.insert(
-            "paper_form".into(),
-            json!({
-                "K": form.k.to_string(),
-                "b_squared": form.b_squared.to_string(),
-                "c": form.c.to_string(),
-                "verified": form.verify(&normal),
-            }),
-        );
-        Value::Object(out)
-    }
-
-    /// The paper scene's `v`, `V`, `omega`, `energy`, `pivot_impulse` and `residuals`.
-    fn paper_json(&self, out: &mut Map<String, Value>, value: &impl Fn(&Q) -> Value) {
-        let after = &self.outcome.after;
-        out.insert("v".into(), value(&after.v));
-        out.insert("V".into(), value(&after.rod_v));
-        out.insert("omega".into(), value(&after.omega));
-        let energy = &self.outcome.energy;
-        out.insert(
-            "energy".into(),
-            json!({
-                "before": value(&energy.before),
-                "after": value(&energy.after),
-                "lost": value(&energy.lost),
-            }),
-        );
-        if let Some(p) = &self.outcome.pivot_impulse {
-            out.insert("pivot_impulse".into(), value(p));
-        }
-        out.insert(
-            "residuals".into(),
-            residuals_json(self.outcome.residuals.iter()),
-        );
-    }
-
-    /// The aligned, human-readable report of `solve` (decimals to `digits` significant digits),
-    /// every value with its SI unit; a number too long to read is shown as a decimal (the
-    /// exact value is in the JSON).
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::{report::Solution, scene::Scene, field::q};
-    /// let text = Solution::of(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap()).to_text(6);
-    /// assert!(text.contains("6/5 rad/s"));
-    /// assert!(text.contains("a* is on the rod when") && text.contains("M ≤ 2m (here M = m)"));
-    /// ```
-    pub fn to_text(&self, digits: usize) -> String {
-        let s = &self.scene;
-        let mut t = Table::default();
-        let mut out = String::new();
-        out.push_str(&format!("Scene: {}\n", describe(s)));
-        let length = |x: &Q| format!("{} m", decimal::compact(x));
-        out.push_str(&format!(
-            "  m = {} kg, M = {} kg, l = {} (rod length {}), a = {}, v0 = {} m/s\n",
-            decimal::compact(s.m()),
-            decimal::compact(s.rod_mass()),
-            length(s.half_length()),
-            length(&(s.half_length() * Q::from_integer(2.into()))),
-            length(s.a()),
-            decimal::compact(s.v0())
-        ));
-        if let Some(o) = s.oblique() {
-            out.push_str(&format!("  {}\n", describe_oblique(o)));
-        }
-        out.push_str("  (SI units; a number given without a unit is read in SI)\n\n");
-        let value = |x: &Q, unit: &str| rational_cells(x, unit, digits);
-        match &self.oblique {
-            None => self.paper_rows(&mut t, &value),
-            Some(o) => oblique_rows(s, o, &mut t, &value),
-        }
-        let Some(o) = &self.optimum else {
-            t.section("Fastest spin");
-            t.row(
-                "",
-                "not reported",
-                plain("the rod turns before the impact, so the approach speed depends on a".into()),
-            );
-            out.push_str(&t.render());
-            return out;
-        };
-        let (symbol, formula) = match s.support() {
-            Support::Free => ("a*^2", "I (M + m)/(m M)"),
-            Support::Pivot(_) => ("d*^2", "I_p/m, from the pivot"),
-        };
-        let star = &symbol[..2];
+    let Some(o) = &answer.optimum else {
         t.section("Fastest spin");
-        t.row(symbol, formula, value(&o.squared, "m^2"));
-        t.row(
-            star,
-            "optimal distance",
-            cells(
-                decimal::surd(&o.squared),
-                decimal::decimal_sqrt(&o.squared, digits),
-                "m",
-            ),
-        );
-        let end = match s.support() {
-            Support::Free => "l",
-            Support::Pivot(_) => "the pivot-to-end distance",
-        };
-        let arm = length(&o.arm);
-        let place = match o.placement {
-            Placement::Inside => format!("inside: {star} < {end} = {arm}"),
-            Placement::AtEnd => format!("exactly at the end: {star} = {end} = {arm}"),
-            Placement::Beyond => format!("beyond the end: {star} > {end} = {arm}"),
-        };
-        t.row("", "on the rod", plain(place));
         t.row(
             "",
-            &format!("{star} is on the rod when"),
-            plain(on_the_rod_when(s, o.threshold_mass.as_ref())),
-        );
-        let at = match o.argmax {
-            Argmax::AStar => format!("max |omega|, reached at {star}"),
-            Argmax::End => "max |omega|, reached at the end".to_string(),
-        };
-        t.row(
-            "",
-            &at,
-            cells(
-                o.omega_max.to_string(),
-                o.omega_max.decimal(digits),
-                "rad/s",
-            ),
-        );
-        let ratio = o.end_to_max();
-        t.row(
-            "",
-            "omega(end)/omega_max",
-            cells(ratio.to_string(), ratio.decimal(digits), ""),
+            "not reported",
+            plain("the rod turns before the impact, so the approach speed depends on a".into()),
         );
         out.push_str(&t.render());
-        out
+        return out;
+    };
+    let (symbol, formula) = match s.support() {
+        Support::Free => ("a*^2", "I (M + m)/(m M)"),
+        Support::Pivot(_) => ("d*^2", "I_p/m, from the pivot"),
+    };
+    let star = &symbol[..2];
+    t.section("Fastest spin");
+    t.row(symbol, formula, value(&o.squared, "m^2"));
+    t.row(
+        star,
+        "optimal distance",
+        cells(
+            decimal::surd(&o.squared),
+            decimal::decimal_sqrt(&o.squared, digits),
+            "m",
+        ),
+    );
+    let end = match s.support() {
+        Support::Free => "l",
+        Support::Pivot(_) => "the pivot-to-end distance",
+    };
+    let arm = length(&o.arm);
+    let place = match o.placement {
+        Placement::Inside => format!("inside: {star} < {end} = {arm}"),
+        Placement::AtEnd => format!("exactly at the end: {star} = {end} = {arm}"),
+        Placement::Beyond => format!("beyond the end: {star} > {end} = {arm}"),
+    };
+    t.row("", "on the rod", plain(place));
+    t.row(
+        "",
+        &format!("{star} is on the rod when"),
+        plain(on_the_rod_when(s, o.threshold_mass.as_ref())),
+    );
+    let at = match o.argmax {
+        Argmax::AStar => format!("max |omega|, reached at {star}"),
+        Argmax::End => "max |omega|, reached at the end".to_string(),
+    };
+    t.row(
+        "",
+        &at,
+        cells(
+            o.omega_max.to_string(),
+            o.omega_max.decimal(digits),
+            "rad/s",
+        ),
+    );
+    let ratio = o.end_to_max();
+    t.row(
+        "",
+        "omega(end)/omega_max",
+        cells(ratio.to_string(), ratio.decimal(digits), ""),
+    );
+    out.push_str(&t.render());
+    out
+}
+/// The paper scene's rows: velocities after, impulses, energy and residuals.
+fn paper_rows(answer: &Answer, t: &mut Table, value: &impl Fn(&Q, &str) -> [String; 2]) {
+    let s = &answer.scene;
+    let after = &answer.impact.outcome.after;
+    t.section("After the impact");
+    t.row("v", "projectile velocity", value(&after.v, "m/s"));
+    t.row("V", "rod centre velocity", value(&after.rod_v, "m/s"));
+    t.row(
+        "omega",
+        "rod angular velocity",
+        value(&after.omega, "rad/s"),
+    );
+    t.row(
+        "J",
+        "impulse on the rod, m (v0 - v)",
+        value(&answer.impulse, "N s"),
+    );
+    if let Some(p) = &answer.impact.outcome.pivot_impulse {
+        t.row("P", "impulse of the pivot on the rod", value(p, "N s"));
     }
-    /// The paper scene's rows: velocities after, impulses, energy and residuals.
-    fn paper_rows(&self, t: &mut Table, value: &impl Fn(&Q, &str) -> [String; 2]) {
-        let s = &self.scene;
-        let after = &self.outcome.after;
-        t.section("After the impact");
-        t.row("v", "projectile velocity", value(&after.v, "m/s"));
-        t.row("V", "rod centre velocity", value(&after.rod_v, "m/s"));
-        t.row(
-            "omega",
-            "rod angular velocity",
-            value(&after.omega, "rad/s"),
-        );
-        let impulse = self.outcome.impulse(&s.params::<Q>());
-        t.row(
-            "J",
-            "impulse on the rod, m (v0 - v)",
-            value(&impulse, "N s"),
-        );
-        if let Some(p) = &self.outcome.pivot_impulse {
-            t.row("P", "impulse of the pivot on the rod", value(p, "N s"));
-        }
-        energy_rows(t, &self.outcome.energy, value);
-        residual_rows(s, t, self.outcome.residuals.iter(), value);
-    }
+    energy_rows(t, &answer.impact.outcome.energy, value);
+    residual_rows(s, t, answer.impact.outcome.residuals.iter(), value);
 }
 
 /// The oblique scene's `v`, `V`, `omega`, `vt`, `Vt`, `spin` (disc), `tangential_impulse`,
@@ -304,7 +245,7 @@ fn oblique_json(o: &ObliqueOutcome<Q>, out: &mut Map<String, Value>, value: &imp
     out.insert("tangential_impulse".into(), value(&o.tangential_impulse));
     if let Some(contact) = o.contact {
         out.insert("contact".into(), Value::String(contact.as_str().into()));
-        out.insert("mu_star".into(), value(&mu_star(o)));
+        out.insert("mu_star".into(), value(&o.mu_star()));
     }
     let energy = &o.energy;
     out.insert(
@@ -324,11 +265,6 @@ fn oblique_json(o: &ObliqueOutcome<Q>, out: &mut Map<String, Value>, value: &imp
     out.insert("residuals".into(), residuals_json(o.residuals.iter()));
 }
 
-/// The friction coefficient at which the contact just sticks, |Jt_stick|/J (J > 0).
-fn mu_star(o: &ObliqueOutcome<Q>) -> Q {
-    num_traits::Signed::abs(&o.stick_impulse) / &o.impulse
-}
-
 /// `{"name": "exact residual", ...}`.
 fn residuals_json<'a>(residuals: impl Iterator<Item = (&'static str, &'a Q)>) -> Value {
     Value::Object(
@@ -341,7 +277,7 @@ fn residuals_json<'a>(residuals: impl Iterator<Item = (&'static str, &'a Q)>) ->
 /// The oblique scene's rows: both axes after the impact, the disc's spin, both impulses, the
 /// contact, energy (with the closed-form losses) and residuals.
 fn oblique_rows(
-    s: &Scene,
+    answer: &Answer,
     o: &ObliqueOutcome<Q>,
     t: &mut Table,
     value: &impl Fn(&Q, &str) -> [String; 2],
@@ -388,14 +324,14 @@ fn oblique_rows(
     );
     if let Some(contact) = o.contact {
         let meaning = match contact {
-            oblique::Contact::Stick => "contact: the slip stops (mu >= mu*)",
-            oblique::Contact::Slide { .. } => "contact: slides throughout, |Jt| = mu J",
+            ContactMode::Stick => "contact: the slip stops (mu >= mu*)",
+            ContactMode::Slide { .. } => "contact: slides throughout, |Jt| = mu J",
         };
         t.row("", meaning, plain(contact.as_str().into()));
         t.row(
             "mu*",
             "friction needed to stick, |Jt_stick|/J",
-            value(&mu_star(o), ""),
+            value(&o.mu_star(), ""),
         );
     }
     if let Some((across, along)) = &o.pivot_impulse {
@@ -421,7 +357,7 @@ fn oblique_rows(
         "to friction (closed form)",
         value(&o.lost_friction, "J"),
     );
-    residual_rows(s, t, o.residuals.iter(), value);
+    residual_rows(&answer.scene, t, o.residuals.iter(), value);
 }
 
 /// The kinetic energy section.

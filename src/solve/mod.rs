@@ -1,4 +1,8 @@
-//! Every route to (v, V, omega), by name, behind one front door.
+//! Every route to the answer, by name, behind one front door.
+//!
+//! [`answer::Answer::of`] answers any scene the library accepts completely (oblique, moving
+//! rod, disc, pivot: both impulses, the contact mode, mu*, the optimum). The routes below
+//! compute the paper's (v, V, omega), and [`with`] runs one of them by name:
 //!
 //! | route | module | number types | scenes | used by |
 //! |---|---|---|---|---|
@@ -6,21 +10,26 @@
 //! | [`Route::ClosedForm`] | [`closed_form`] | any [`Field`] | free and pivoted | `stability`'s exact reference, intervals, `batch --backend f64` |
 //! | [`Route::FractionFree`] | [`fraction_free`] | exact rationals ([`Q`]) only | free and pivoted | `solve`, `batch` |
 //! | [`Route::Float`] | [`float`] | `f64`, `f32` only | free rod only | `solve --backend`, `stability` |
+//! | the word rows | [`words`] | machine words, then [`Q`] | free and pivoted, batch cells | `batch` (exact and f64 rows of the paper's columns) |
 //!
-//! [`with`] runs a [`Scene`] through a named route and returns a [`Solved`], or an
-//! [`Unsupported`] saying why the route cannot take it in that number type. Every exact route
-//! gives the same reduced rationals bit for bit (property tests in `tests/solve_exact.rs` and
-//! `tests/fast_exact.rs`); the float routes are measured against them by
+//! [`with`] runs a paper [`Scene`] through a named route and returns a [`Solved`], or an
+//! [`Unsupported`] saying why the route cannot take it in that number type (an oblique scene
+//! is refused: its answer is [`answer::Answer`]'s). Every exact route gives the same reduced
+//! rationals bit for bit (property tests in `tests/lib/solve_exact.rs` and
+//! `tests/lib/fraction_free.rs`); the float routes are measured against them by
 //! [`crate::stability`]. Symbolic scenes ([`Params`] over rational functions) go straight to
 //! [`linear::solve`]. [`Outcome`] completes velocities into energies and residuals.
 
+pub mod answer;
 pub mod closed_form;
 pub mod float;
 pub mod fraction_free;
 pub mod linear;
 pub mod oblique;
+pub mod optimum;
 mod outcome;
 
+pub use answer::{Answer, Impact};
 pub use outcome::{Energy, Outcome, Residuals, outcome};
 
 use crate::field::{Field, Interval, Q};
@@ -76,6 +85,10 @@ pub enum Why {
     /// The system is singular in this number type: a float underflowed to zero (a valid scene
     /// is never singular over an exact field).
     Singular,
+    /// The scene is oblique or frictional, or its rod moves before the impact: a route solves
+    /// the paper's scene only; [`answer::Answer::of`] answers this one (or a route takes its
+    /// normal problem, [`Scene::normal_problem`], asked for by name).
+    Oblique,
 }
 
 impl fmt::Display for Why {
@@ -86,6 +99,9 @@ impl fmt::Display for Why {
             Why::FloatOnly => "it is a float formula and computes in f64 or f32 only",
             Why::Singular => {
                 "the impulse equations are singular in this number type (an underflow)"
+            }
+            Why::Oblique => {
+                "it solves the paper's scene, and this one is oblique, frictional or has a moving rod (answer it with solve::answer::Answer::of)"
             }
         })
     }
@@ -190,10 +206,16 @@ impl Solvable for Interval {}
 /// }
 /// assert_eq!(solve::with::<Q>(&s, Route::FractionFree)?.laws_hold, Some(true));
 /// assert!(solve::with::<f64>(&s, Route::FractionFree).is_err());
+/// // An oblique scene is refused, never answered in part:
+/// let oblique = Scene::builder(q(1, 1), q(1, 1)).v0(q(3, 1)).rod_before(q(1, 1), q(0, 1), q(0, 1)).build()?;
+/// assert_eq!(solve::with::<Q>(&oblique, Route::FractionFree).unwrap_err().why, solve::Why::Oblique);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn with<F: Solvable>(scene: &Scene, route: Route) -> Result<Solved<F>, Unsupported> {
     let refused = |why| Unsupported { route, why };
+    if scene.oblique().is_some() {
+        return Err(refused(Why::Oblique));
+    }
     let (after, laws_hold) = match route {
         Route::Linear => {
             let out = linear::solve(&scene.params::<F>()).ok_or(refused(Why::Singular))?;

@@ -18,15 +18,20 @@
 
 use super::{Energy, linear};
 use crate::field::Field;
+use crate::field::Q;
 use crate::mechanics::Motion;
+use crate::mechanics::planar::{
+    PlanarBody, Vec2, angular_momentum, disc_inertia, kinetic_energy, linear_momentum,
+};
 use crate::scene::{ObliqueParams, Params, RodMotion, Support};
+use num_traits::Signed;
 use std::cmp::Ordering;
 use std::fmt;
 
 /// How the contact ends when friction acts: sticking (no slip at the end of the impact) or
 /// sliding throughout.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Contact {
+pub enum ContactMode {
     /// The slip stops: `|u_t| <= mu J k_t`.
     Stick,
     /// The slip never stops; `forward` when the projectile slips along +y over the rod
@@ -37,18 +42,18 @@ pub enum Contact {
     },
 }
 
-impl Contact {
+impl ContactMode {
     /// `"stick"` or `"slide"`, the JSON value of `contact`.
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::oblique::Contact;
-    /// assert_eq!(Contact::Slide { forward: false }.as_str(), "slide");
+    /// use rodimpact::solve::oblique::ContactMode;
+    /// assert_eq!(ContactMode::Slide { forward: false }.as_str(), "slide");
     /// ```
     pub fn as_str(self) -> &'static str {
         match self {
-            Contact::Stick => "stick",
-            Contact::Slide { .. } => "slide",
+            ContactMode::Stick => "stick",
+            ContactMode::Slide { .. } => "slide",
         }
     }
 }
@@ -81,7 +86,7 @@ pub struct State<F> {
 /// The residuals of the laws that apply, after - before (zero when the law holds), and the
 /// energy lost minus its closed form.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Residuals<F> {
+pub struct PlanarResiduals<F> {
     /// Linear momentum along x (free rod only).
     pub linear_momentum: Option<F>,
     /// Linear momentum along the rod (free rod only).
@@ -93,13 +98,13 @@ pub struct Residuals<F> {
     pub energy_loss: F,
 }
 
-impl<F: Field> Residuals<F> {
+impl<F: Field> PlanarResiduals<F> {
     /// `(name, residual)` for each law that applies, in JSON order.
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::oblique::Residuals;
-    /// let r = Residuals { linear_momentum: None, tangential_momentum: None, angular_momentum: 0.0, energy_loss: 0.0 };
+    /// use rodimpact::solve::oblique::PlanarResiduals;
+    /// let r = PlanarResiduals { linear_momentum: None, tangential_momentum: None, angular_momentum: 0.0, energy_loss: 0.0 };
     /// assert_eq!(r.iter().count(), 2);
     /// ```
     pub fn iter(&self) -> impl Iterator<Item = (&'static str, &F)> {
@@ -121,8 +126,8 @@ impl<F: Field> Residuals<F> {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::oblique::Residuals;
-    /// let r = Residuals { linear_momentum: Some(1.0), tangential_momentum: None, angular_momentum: 0.0, energy_loss: 0.0 };
+    /// use rodimpact::solve::oblique::PlanarResiduals;
+    /// let r = PlanarResiduals { linear_momentum: Some(1.0), tangential_momentum: None, angular_momentum: 0.0, energy_loss: 0.0 };
     /// assert!(!r.all_zero());
     /// ```
     pub fn all_zero(&self) -> bool {
@@ -142,7 +147,7 @@ pub struct ObliqueOutcome<F> {
     /// The tangential impulse Jt of the projectile on the rod (+y).
     pub tangential_impulse: F,
     /// Stick or slide, when friction acts (mu != 0).
-    pub contact: Option<Contact>,
+    pub contact: Option<ContactMode>,
     /// The tangential impulse that would stop the slip, u_t/k_t (used when sticking); the
     /// friction needed to stick is mu* = |stick_impulse|/J.
     pub stick_impulse: F,
@@ -156,7 +161,25 @@ pub struct ObliqueOutcome<F> {
     /// sticking, mu J (|u_t| - mu J k_t/2) when sliding.
     pub lost_friction: F,
     /// The conservation residuals.
-    pub residuals: Residuals<F>,
+    pub residuals: PlanarResiduals<F>,
+}
+
+impl ObliqueOutcome<Q> {
+    /// The friction coefficient at which the contact just sticks, mu* = |Jt_stick|/J (the
+    /// normal impulse J is positive).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, scene::Scene, solve::oblique::solve};
+    /// // The sliding end hit: slip 1, k_t = 2, so sticking needs 1/2 = mu* J with J = 2/5.
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).v0t(q(1, 1)).mu(q(1, 2)).build()?;
+    /// let out = solve(&s.params(), &s.oblique().expect("oblique").params(), None).expect("solves");
+    /// assert_eq!(out.mu_star(), q(5, 4));
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn mu_star(&self) -> Q {
+        self.stick_impulse.abs() / &self.impulse
+    }
 }
 
 /// The normal problem: `p` with the approach speed `u_n = v0 - (V0 + omega0 a)` as its v0.
@@ -187,17 +210,17 @@ pub fn normal_params<F: Field>(p: &Params<F>, o: &ObliqueParams<F>) -> Params<F>
 /// ```
 /// use rodimpact::scene::Scene;
 /// use rodimpact::field::{q, Q};
-/// use rodimpact::solve::oblique::{solve, Contact};
+/// use rodimpact::solve::oblique::{solve, ContactMode};
 /// // Equal masses, centre hit, v0 = 1 and v0t = 1, mu = 1/4: the contact slides.
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(0, 1)).v0t(q(1, 1)).mu(q(1, 4)).build().unwrap();
 /// let out = solve(&s.params::<Q>(), &s.oblique().unwrap().params(), None).unwrap();
-/// assert_eq!(out.contact, Some(Contact::Slide { forward: true }));
+/// assert_eq!(out.contact, Some(ContactMode::Slide { forward: true }));
 /// assert_eq!(out.tangential_impulse, q(1, 4)); // mu J, J = 1
 /// ```
 pub fn solve<F: Field>(
     p: &Params<F>,
     o: &ObliqueParams<F>,
-    given: Option<Contact>,
+    given: Option<ContactMode>,
 ) -> Result<ObliqueOutcome<F>, Refusal> {
     let response = linear::solve(&normal_params(p, o)).ok_or(Refusal::Singular)?;
     complete(p, o, response.after, given)
@@ -225,7 +248,7 @@ pub fn complete<F: Field>(
     p: &Params<F>,
     o: &ObliqueParams<F>,
     response: Motion<F>,
-    given: Option<Contact>,
+    given: Option<ContactMode>,
 ) -> Result<ObliqueOutcome<F>, Refusal> {
     let rod0 = o.rod_moving(&p.support);
     let normal = normal_params(p, o);
@@ -255,9 +278,9 @@ pub fn complete<F: Field>(
     };
     let jt = match contact {
         None => F::zero(),
-        Some(Contact::Stick) => stick_impulse.clone(),
-        Some(Contact::Slide { forward: true }) => o.mu.clone() * &impulse,
-        Some(Contact::Slide { forward: false }) => -(o.mu.clone() * &impulse),
+        Some(ContactMode::Stick) => stick_impulse.clone(),
+        Some(ContactMode::Slide { forward: true }) => o.mu.clone() * &impulse,
+        Some(ContactMode::Slide { forward: false }) => -(o.mu.clone() * &impulse),
     };
     let before = State {
         v: p.v0.clone(),
@@ -295,25 +318,25 @@ pub fn complete<F: Field>(
         (F::one() - &(p.e.clone() * &p.e)) * &approach * &approach / &(two.clone() * &k_n);
     let lost_friction = match contact {
         None => F::zero(),
-        Some(Contact::Stick) => slip.clone() * &slip / &(two.clone() * &k_t),
-        Some(Contact::Slide { forward }) => {
+        Some(ContactMode::Stick) => slip.clone() * &slip / &(two.clone() * &k_t),
+        Some(ContactMode::Slide { forward }) => {
             let speed = if forward { slip.clone() } else { -slip.clone() };
             let mu_j = o.mu.clone() * &impulse;
             mu_j.clone() * &(speed - &(mu_j * &k_t / &two))
         }
     };
-    let energy_before = kinetic_energy(p, o, &before);
-    let energy_after = kinetic_energy(p, o, &after);
+    let (bodies_before, bodies_after) = (bodies(p, o, &before), bodies(p, o, &after));
+    let energy_before = kinetic_energy(&bodies_before);
+    let energy_after = kinetic_energy(&bodies_after);
     let lost = energy_before.clone() - &energy_after;
-    let about = p.axis();
-    let residuals = Residuals {
-        linear_momentum: free
-            .then(|| momentum(p, &after.v, &after.rod.v) - &momentum(p, &before.v, &before.rod.v)),
-        tangential_momentum: free.then(|| {
-            momentum(p, &after.vt, &after.rod.vt) - &momentum(p, &before.vt, &before.rod.vt)
-        }),
-        angular_momentum: angular_momentum(p, o, &after, &about)
-            - &angular_momentum(p, o, &before, &about),
+    // Angular momentum about the centre or the pivot, in the paper's sign (-L_z).
+    let about = Vec2::new(F::zero(), p.axis());
+    let momentum = linear_momentum(&bodies_after).sub(&linear_momentum(&bodies_before));
+    let residuals = PlanarResiduals {
+        linear_momentum: free.then(|| momentum.x.clone()),
+        tangential_momentum: free.then_some(momentum.y),
+        angular_momentum: angular_momentum(&bodies_before, &about)
+            - &angular_momentum(&bodies_after, &about),
         energy_loss: lost.clone() - &lost_restitution - &lost_friction,
     };
     Ok(ObliqueOutcome {
@@ -337,60 +360,42 @@ pub fn complete<F: Field>(
 
 /// Stick when `|slip| <= limit` (limit = mu J k_t), slide otherwise; `None` when the field
 /// cannot tell.
-fn decide<F: Field>(slip: &F, limit: &F) -> Option<Contact> {
+fn decide<F: Field>(slip: &F, limit: &F) -> Option<ContactMode> {
     let forward = slip.sign()? == Ordering::Greater;
     let speed = if forward { slip.clone() } else { -slip.clone() };
     match (limit.clone() - &speed).sign()? {
-        Ordering::Less => Some(Contact::Slide { forward }),
-        Ordering::Equal | Ordering::Greater => Some(Contact::Stick),
+        Ordering::Less => Some(ContactMode::Slide { forward }),
+        Ordering::Equal | Ordering::Greater => Some(ContactMode::Stick),
     }
 }
 
-/// m u + M U: the momentum of projectile and rod along one axis.
-fn momentum<F: Field>(p: &Params<F>, projectile: &F, rod: &F) -> F {
-    p.m.clone() * projectile + &(p.rod_mass.clone() * rod)
+/// The two bodies of an oblique impact as planar bodies: the projectile (a disc's centre at
+/// (-r, a), a point's at (0, a)) and the rod (centre at the origin, counterclockwise spin
+/// `-omega`: docs/conventions.md).
+fn bodies<F: Field>(p: &Params<F>, o: &ObliqueParams<F>, s: &State<F>) -> [PlanarBody<F>; 2] {
+    let (offset, inertia) = o.disc.as_ref().map_or_else(
+        || (F::zero(), F::zero()),
+        |d| (-d.radius.clone(), disc_inertia(&p.m, &d.radius)),
+    );
+    [
+        PlanarBody {
+            mass: p.m.clone(),
+            inertia,
+            centre: Vec2::new(offset, p.a.clone()),
+            velocity: Vec2::new(s.v.clone(), s.vt.clone()),
+            omega: s.spin.clone().unwrap_or_else(F::zero),
+        },
+        PlanarBody {
+            mass: p.rod_mass.clone(),
+            inertia: p.inertia.clone(),
+            centre: Vec2::zero(),
+            velocity: Vec2::new(s.rod.v.clone(), s.rod.vt.clone()),
+            omega: -s.rod.omega.clone(),
+        },
+    ]
 }
 
-/// The disc's moment of inertia about its centre, m r^2/2 (0 for a point).
-fn disc_inertia<F: Field>(p: &Params<F>, o: &ObliqueParams<F>) -> F {
-    o.disc.as_ref().map_or_else(F::zero, |d| {
-        p.m.clone() * &d.radius * &d.radius / &F::from_i64(2)
-    })
-}
-
-/// Kinetic energy of both bodies, translation along both axes and both rotations.
-fn kinetic_energy<F: Field>(p: &Params<F>, o: &ObliqueParams<F>, s: &State<F>) -> F {
-    let sq = |x: &F| x.clone() * x;
-    let spin = s
-        .spin
-        .as_ref()
-        .map_or_else(F::zero, |w| disc_inertia(p, o) * &sq(w));
-    let twice = p.m.clone() * &(sq(&s.v) + &sq(&s.vt))
-        + &(p.rod_mass.clone() * &(sq(&s.rod.v) + &sq(&s.rod.vt)))
-        + &(p.inertia.clone() * &sq(&s.rod.omega))
-        + &spin;
-    twice / &F::from_i64(2)
-}
-
-/// Angular momentum about the table's point (0, y_ref) in the sign of docs/conventions.md
-/// (`L = sum (y - y_ref) p_x - x p_y`, so a rod turning with omega has I omega): the projectile's
-/// orbit (its centre at (-r, a) for a disc), the disc's spin (counterclockwise counts
-/// negative) and the rod.
-fn angular_momentum<F: Field>(p: &Params<F>, o: &ObliqueParams<F>, s: &State<F>, about: &F) -> F {
-    let arm = p.a.clone() - about;
-    let orbit = p.m.clone() * &s.v * &arm
-        + &o.disc
-            .as_ref()
-            .map_or_else(F::zero, |d| p.m.clone() * &d.radius * &s.vt);
-    let spin = s
-        .spin
-        .as_ref()
-        .map_or_else(F::zero, |w| disc_inertia(p, o) * w);
-    let rod = p.inertia.clone() * &s.rod.omega - &(p.rod_mass.clone() * &s.rod.v * about);
-    orbit - &spin + &rod
-}
-
-impl fmt::Display for Contact {
+impl fmt::Display for ContactMode {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.as_str())
     }
@@ -418,7 +423,7 @@ mod tests {
             .build()
             .unwrap();
         let out = solved(&s);
-        assert_eq!(out.contact, Some(Contact::Slide { forward: true }));
+        assert_eq!(out.contact, Some(ContactMode::Slide { forward: true }));
         assert_eq!(
             (
                 &out.after.v,
@@ -448,7 +453,7 @@ mod tests {
             .build()
             .unwrap();
         let out = solved(&s);
-        assert_eq!(out.contact, Some(Contact::Stick));
+        assert_eq!(out.contact, Some(ContactMode::Stick));
         assert_eq!(out.tangential_impulse, q(1, 4));
         assert_eq!(
             (&out.after.vt, out.after.spin.as_ref(), &out.after.rod.vt),
@@ -468,7 +473,7 @@ mod tests {
             .build()
             .unwrap();
         let out = solve(&s.params::<f64>(), &s.oblique().unwrap().params(), None).unwrap();
-        assert_eq!(out.contact, Some(Contact::Slide { forward: true }));
+        assert_eq!(out.contact, Some(ContactMode::Slide { forward: true }));
         for (float, exact) in [
             (out.after.vt, 0.8),
             (out.after.rod.vt, 0.2),
@@ -493,7 +498,7 @@ mod tests {
         let (_, along) = out.pivot_impulse.clone().unwrap();
         assert_eq!(along, -out.tangential_impulse.clone());
         // d = 2, I_p = 4, J = 2/(1 + 4/4) = 1; slip -2 beyond mu J k_t = 1/3: slides back.
-        assert_eq!(out.contact, Some(Contact::Slide { forward: false }));
+        assert_eq!(out.contact, Some(ContactMode::Slide { forward: false }));
         assert_eq!(out.tangential_impulse, q(-1, 3));
         assert!(out.residuals.all_zero());
     }

@@ -15,11 +15,11 @@ use super::sigfig;
 use super::symbolic::{GivenScene, SymbolicScene, identity};
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, QSqrt, RatFn};
-use crate::optimum::{a_star_squared, optimum};
 use crate::scene::{Params, SceneInput, Support};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
 use crate::solve::oblique;
+use crate::solve::optimum::{a_star_squared, optimum};
 use num_traits::One;
 
 /// Checks claims about one scene given as typed (numbers may carry units; any formula in a
@@ -110,15 +110,14 @@ fn check_numeric(
         let exact = match value {
             Some(x) => Exact::Rational(x),
             None => {
-                if scene.rod_before().omega != Q::from_integer(0.into()) {
+                let Some(opt) = optimum(&scene) else {
                     return Err(Error::new(
                         format!("claim {}", claim.quantity.name()),
                         ErrorKind::Invalid(
                             "the rod turns before the impact, so the approach speed depends on a: the paper's optimum does not apply".into(),
                         ),
                     ));
-                }
-                let opt = optimum(&scene.normal_problem());
+                };
                 if claim.quantity == Quantity::AStar {
                     Exact::Surd(QSqrt::sqrt_of(&opt.squared))
                 } else {

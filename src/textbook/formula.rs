@@ -14,10 +14,10 @@ use super::symbolic::{GivenScene, SymbolicScene, oblique_params};
 use crate::error::Error;
 use crate::field::poly::Monomial;
 use crate::field::{Field, Poly, RatFn, TrySqrt};
-use crate::optimum::a_star_squared;
 use crate::scene::{ObliqueParams, Params, SceneInput, Support};
 use crate::solve::linear::{self, solve};
-use crate::solve::oblique::{self, Contact, ObliqueOutcome, normal_params};
+use crate::solve::oblique::{self, ContactMode, ObliqueOutcome, normal_params};
+use crate::solve::optimum::a_star_squared;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
@@ -136,8 +136,8 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
     let normal = linear::solve(&normal_params(p, o))
         .expect("the impulse equations of a valid scene are nonsingular")
         .after;
-    let with = |given: Option<Contact>| oblique::complete(p, o, normal.clone(), given);
-    let stick = with(Some(Contact::Stick)).expect("a valid scene's masses are positive");
+    let with = |given: Option<ContactMode>| oblique::complete(p, o, normal.clone(), given);
+    let stick = with(Some(ContactMode::Stick)).expect("a valid scene's masses are positive");
     let mut list = vec![
         rational("v", stick.after.v.clone()),
         rational("V", stick.after.rod.v.clone()),
@@ -225,11 +225,11 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
         };
         match decided {
             Ok(decided) => {
-                contact = Some(decided.contact.map_or("stick", Contact::as_str));
+                contact = Some(decided.contact.map_or("stick", ContactMode::as_str));
                 list.extend(tangential(&decided));
             }
             Err(_) => {
-                let slide = with(Some(Contact::Slide { forward }))
+                let slide = with(Some(ContactMode::Slide { forward }))
                     .expect("a valid scene's masses are positive");
                 let mu = match o.mu.as_constant() {
                     Some(c) => format!("mu = {c}"),

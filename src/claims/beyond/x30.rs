@@ -45,9 +45,9 @@ fn formalise(_paper: &Paper) -> Formalised {
     let mut certs = Vec::new();
     for contact in CONTACTS {
         let friction = match contact {
-            Contact::Stick => slip.pow(2) / &(Formula::int(2) * &k_t),
-            Contact::Slide { forward: true } => sliding(slip.clone()),
-            Contact::Slide { forward: false } => sliding(-slip.clone()),
+            ContactMode::Stick => slip.pow(2) / &(Formula::int(2) * &k_t),
+            ContactMode::Slide { forward: true } => sliding(slip.clone()),
+            ContactMode::Slide { forward: false } => sliding(-slip.clone()),
         };
         let out = oblique_solved(&rod, &o, contact);
         certs.push(Certificate::identity(
@@ -60,7 +60,7 @@ fn formalise(_paper: &Paper) -> Formalised {
         ));
     }
     // Sliding forward means u_t > mu_f J k_t: write u_t = mu_f J k_t + x with x > 0.
-    let slide = oblique_solved(&rod, &o, Contact::Slide { forward: true });
+    let slide = oblique_solved(&rod, &o, ContactMode::Slide { forward: true });
     let (mu_j_value, k_t_value) = (mu_j.value().clone(), k_t.value().clone());
     let excess = sym("x") + &(mu_j_value * &k_t_value) - &(sym("w") * &sym("r"));
     let k_n_form = sum([

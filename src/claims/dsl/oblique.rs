@@ -11,23 +11,23 @@ use crate::scene::{Disc, Params};
 use crate::solve::oblique::solve;
 
 pub(crate) use crate::scene::{ObliqueParams, RodMotion};
-pub(crate) use crate::solve::oblique::{Contact, ObliqueOutcome};
+pub(crate) use crate::solve::oblique::{ContactMode, ObliqueOutcome};
 use num_traits::Zero;
 
 /// The three ways a frictional contact can end, each a case of every friction claim: sticking,
 /// and sliding with the slip along +y or -y.
-pub(crate) const CONTACTS: [Contact; 3] = [
-    Contact::Stick,
-    Contact::Slide { forward: true },
-    Contact::Slide { forward: false },
+pub(crate) const CONTACTS: [ContactMode; 3] = [
+    ContactMode::Stick,
+    ContactMode::Slide { forward: true },
+    ContactMode::Slide { forward: false },
 ];
 
 /// "stick", "slide (u_t > 0)" or "slide (u_t < 0)": the case in a certificate's title.
-pub(crate) fn case(contact: Contact) -> &'static str {
+pub(crate) fn case(contact: ContactMode) -> &'static str {
     match contact {
-        Contact::Stick => "stick",
-        Contact::Slide { forward: true } => "slide (u_t > 0)",
-        Contact::Slide { forward: false } => "slide (u_t < 0)",
+        ContactMode::Stick => "stick",
+        ContactMode::Slide { forward: true } => "slide (u_t > 0)",
+        ContactMode::Slide { forward: false } => "slide (u_t < 0)",
     }
 }
 
@@ -57,7 +57,7 @@ pub(crate) fn oblique_rod() -> Params<RatFn> {
 pub(crate) fn oblique_solved(
     p: &Params<RatFn>,
     o: &ObliqueParams<RatFn>,
-    contact: Contact,
+    contact: ContactMode,
 ) -> ObliqueOutcome<RatFn> {
     solve(p, o, Some(contact)).expect("the symbolic oblique system is nonsingular")
 }

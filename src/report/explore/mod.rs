@@ -13,13 +13,14 @@
 //! ([`REFERENCE_SCENES`], those at a* solved in Q(sqrt d)), and checks its arithmetic against
 //! them each time it opens.
 
-use super::Solution;
 use super::page::{Page, document, json_script};
 use super::paper_tables::solve_at;
+use super::solution_json;
 use crate::Error;
 use crate::field::{QSqrt, q};
-use crate::optimum::a_star_squared;
 use crate::scene::{SceneInput, Support};
+use crate::solve::Answer;
+use crate::solve::optimum::a_star_squared;
 use serde_json::{Value, json};
 
 /// The page's body, with `{{VERSION}}` and `{{REFERENCE}}` (the reference answers) to fill.
@@ -93,7 +94,7 @@ pub fn reference_answers() -> Result<Vec<Value>, Error> {
                 ..Default::default()
             };
             let scene = input.build()?;
-            let json = Solution::of(&scene).to_json(6);
+            let json = solution_json(&Answer::of(&scene), 6);
             let exact = |path: &[&str]| {
                 path.iter()
                     .fold(&json, |v, key| &v[*key])

@@ -13,9 +13,9 @@ use super::svg::Stroke;
 use super::{Figure, PALETTE, SIZE};
 use crate::error::Error;
 use crate::field::Q;
-use crate::optimum::Argmax;
 use crate::scene::{Params, Scene};
 use crate::solve::Outcome;
+use crate::solve::optimum::Argmax;
 use num_traits::Zero;
 
 /// One sample: the impact point and the exact outcome there.

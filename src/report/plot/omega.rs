@@ -12,8 +12,8 @@ use super::{Figure, PALETTE, SIZE};
 use crate::error::Error;
 use crate::field::decimal;
 use crate::field::{Field, Q, QSqrt};
-use crate::optimum::Argmax;
 use crate::scene::{RodInertia, Scene};
+use crate::solve::optimum::Argmax;
 
 /// How far past the rod's end the continuation is drawn, in units of l.
 const REACH: f64 = 1.2;

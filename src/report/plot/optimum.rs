@@ -13,8 +13,8 @@ use super::{Figure, PALETTE, SIZE};
 use crate::error::Error;
 use crate::field::decimal;
 use crate::field::{Q, TrySqrt};
-use crate::optimum::{Optimum, optimum};
 use crate::scene::{RodInertia, Scene};
+use crate::solve::optimum::{Optimum, optimum};
 use num_bigint::BigInt;
 use num_traits::{One, Signed};
 
@@ -74,7 +74,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
     let l = base.half_length().clone();
     let pivoted = pivot_of(base).is_some();
     let probe = struck(base)?;
-    let probe_optimum = optimum(&probe);
+    let probe_optimum = optimum(&probe).expect("a rod at rest before the impact has an optimum");
     let arm = f(&(&probe_optimum.arm / &l));
     let threshold = probe_optimum.threshold_mass.as_ref().map(|t| t / base.m());
     let own = base.rod_mass() / base.m();
@@ -94,7 +94,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
     for j in first..=last {
         let ratio = ten_power_hundredths(j);
         let scene = struck(&mass_ratio_family(base, std::slice::from_ref(&ratio))?[0])?;
-        let o = optimum(&scene);
+        let o = optimum(&scene).expect("a rod at rest before the impact has an optimum");
         let best = best_squared(&o);
         let x = f(&ratio);
         star_curve.push((x, f(&decimal::sqrt_bounds(&(&o.squared / (&l * &l)), 17).0)));
@@ -224,7 +224,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
     };
     labels.push((end_text, (x_lo * 3.0, arm), "#000000"));
     if mark {
-        let o = optimum(&probe);
+        let o = optimum(&probe).expect("a rod at rest before the impact has an optimum");
         let best = best_squared(&o);
         let at = chart.marker(
             (

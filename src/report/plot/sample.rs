@@ -3,10 +3,10 @@
 
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, QSqrt};
-use crate::optimum::{Optimum, optimum};
 use crate::scene::{Params, Scene, Support};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
+use crate::solve::optimum::{Optimum, optimum};
 use num_traits::{One, ToPrimitive};
 
 /// Sample points per half-length l.
@@ -69,7 +69,8 @@ pub(crate) fn arm_optima(scene: &Scene) -> Result<Vec<ArmOptimum>, Error> {
         {
             continue; // the pivot is at this end: no arm on this side
         }
-        let o = optimum(&scene.with_a(end)?);
+        let o =
+            optimum(&scene.with_a(end)?).expect("a rod at rest before the impact has an optimum");
         let root = QSqrt::sqrt_of(&o.squared);
         let axis = match scene.support() {
             Support::Free => 0.0,

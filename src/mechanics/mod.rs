@@ -7,9 +7,12 @@
 //! Angular momentum about a point (0, y_ref) of the rod's line is `sum (y - y_ref) * p_x`, the sign
 //! for which the paper's Eq. (angular) reads `m v0 a = m v a + I omega`.
 
+pub mod planar;
+
 use crate::field::Field;
 use crate::scene::Params;
 use num_traits::One;
+use planar::{PlanarBody, Vec2};
 use std::ops::{Add, Div, Mul};
 
 /// The velocities of the two bodies at one instant.
@@ -231,7 +234,7 @@ impl<F: Field> Groups<F> {
 /// assert_eq!(linear_momentum(&p, &after), q(1, 1));
 /// ```
 pub fn linear_momentum<F: Field>(p: &Params<F>, s: &Motion<F>) -> F {
-    p.m.clone() * &s.v + &(p.rod_mass.clone() * &s.rod_v)
+    planar::linear_momentum(&paper_bodies(p, s)).x
 }
 
 /// Total angular momentum about the point `about` of the rod's line (at the impact instant).
@@ -247,9 +250,8 @@ pub fn linear_momentum<F: Field>(p: &Params<F>, s: &Motion<F>) -> F {
 /// assert_eq!(angular_momentum(&p, &Motion::before(q(1, 1)), &q(0, 1)), q(1, 1));
 /// ```
 pub fn angular_momentum<F: Field>(p: &Params<F>, s: &Motion<F>, about: &F) -> F {
-    let projectile = p.m.clone() * &s.v * &(p.a.clone() - about);
-    let rod = p.inertia.clone() * &s.omega - &(p.rod_mass.clone() * &s.rod_v * about);
-    projectile + &rod
+    let about = Vec2::new(F::zero(), about.clone());
+    -planar::angular_momentum(&paper_bodies(p, s), &about)
 }
 
 /// Total kinetic energy: `m v^2/2 + M V^2/2 + I omega^2/2`.
@@ -263,9 +265,26 @@ pub fn angular_momentum<F: Field>(p: &Params<F>, s: &Motion<F>, about: &F) -> F 
 /// assert_eq!(kinetic_energy(&p, &Motion::before(q(3, 1))), q(9, 1));
 /// ```
 pub fn kinetic_energy<F: Field>(p: &Params<F>, s: &Motion<F>) -> F {
-    let two = F::from_i64(2);
-    let twice = p.m.clone() * &s.v * &s.v
-        + &(p.rod_mass.clone() * &s.rod_v * &s.rod_v)
-        + &(p.inertia.clone() * &s.omega * &s.omega);
-    twice / &two
+    planar::kinetic_energy(&paper_bodies(p, s))
+}
+
+/// The paper's two bodies as planar bodies: the point projectile at (0, a) moving along x,
+/// the rod's centre at the origin, its counterclockwise spin `-omega` (docs/conventions.md).
+fn paper_bodies<F: Field>(p: &Params<F>, s: &Motion<F>) -> [PlanarBody<F>; 2] {
+    [
+        PlanarBody {
+            mass: p.m.clone(),
+            inertia: F::zero(),
+            centre: Vec2::new(F::zero(), p.a.clone()),
+            velocity: Vec2::new(s.v.clone(), F::zero()),
+            omega: F::zero(),
+        },
+        PlanarBody {
+            mass: p.rod_mass.clone(),
+            inertia: p.inertia.clone(),
+            centre: Vec2::zero(),
+            velocity: Vec2::new(s.rod_v.clone(), F::zero()),
+            omega: -s.omega.clone(),
+        },
+    ]
 }

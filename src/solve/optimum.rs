@@ -26,7 +26,7 @@ impl Argmax {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::optimum::Argmax;
+    /// use rodimpact::solve::optimum::Argmax;
     /// assert_eq!(Argmax::End.as_str(), "end");
     /// ```
     pub fn as_str(self) -> &'static str {
@@ -53,7 +53,7 @@ impl Placement {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::optimum::Placement;
+    /// use rodimpact::solve::optimum::Placement;
     /// assert_eq!(Placement::AtEnd.as_str(), "at the end");
     /// ```
     pub fn as_str(self) -> &'static str {
@@ -94,8 +94,8 @@ impl Optimum {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{scene::Scene, optimum::optimum, field::q};
-    /// let o = optimum(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap());
+    /// use rodimpact::{scene::Scene, solve::optimum::optimum, field::q};
+    /// let o = optimum(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap()).unwrap();
     /// assert_eq!(o.end_to_max().to_string(), "2*sqrt(6)/5");
     /// ```
     pub fn end_to_max(&self) -> QSqrt {
@@ -106,8 +106,8 @@ impl Optimum {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{scene::Scene, optimum::optimum, field::q};
-    /// let o = optimum(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap());
+    /// use rodimpact::{scene::Scene, solve::optimum::optimum, field::q};
+    /// let o = optimum(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap()).unwrap();
     /// assert_eq!(o.gain().to_string(), "-1 + 5*sqrt(6)/12"); // about 2.06 %
     /// ```
     pub fn gain(&self) -> QSqrt {
@@ -133,7 +133,7 @@ impl PaperForm {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{scene::Scene, optimum::PaperForm, field::q};
+    /// use rodimpact::{scene::Scene, solve::optimum::PaperForm, field::q};
     /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
     /// let f = PaperForm::of(&s);
     /// assert_eq!((&f.k, &f.b_squared, &f.c), (&q(2, 1), &q(2, 3), &q(1, 1)));
@@ -177,7 +177,7 @@ impl PaperForm {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{scene::Scene, optimum::a_star_squared, field::{q, Q}};
+/// use rodimpact::{scene::Scene, solve::optimum::a_star_squared, field::{q, Q}};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
 /// assert_eq!(a_star_squared(&s.params::<Q>()), q(2, 3));
 /// ```
@@ -189,19 +189,38 @@ pub fn a_star_squared<F: Field>(p: &Params<F>) -> F {
     }
 }
 
-/// Computes the optimum of `scene` exactly: no float, no approximate square root.
+/// Computes the optimum of `scene` exactly: no float, no approximate square root; `None` when
+/// the rod turns before the impact (the approach speed v0 - (V0 + omega0 a) then depends on a,
+/// and omega(a) is no longer the paper's curve). An oblique or frictional scene, or a rod
+/// drifting without turning, has the optimum of its normal problem ([`Scene::normal_problem`]):
+/// friction and drift leave a* unchanged (X27, X31) and scale omega_max with the approach speed.
 ///
 /// # Examples
 /// The paper's M = m uniform rod: a* = sqrt(2/3) l on the rod, omega_max = sqrt(3/2) v0/l.
 /// ```
-/// use rodimpact::{scene::Scene, optimum::{optimum, Argmax}, field::q};
-/// let o = optimum(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap());
+/// use rodimpact::{scene::Scene, solve::optimum::{optimum, Argmax}, field::q};
+/// let o = optimum(&Scene::builder(q(1, 1), q(1, 1)).build()?).expect("the rod is at rest");
 /// assert_eq!(o.squared, q(2, 3));
 /// assert!(o.within_rod);
 /// assert_eq!(o.argmax, Argmax::AStar);
 /// assert_eq!(o.omega_max.to_string(), "sqrt(6)/2");
+/// // A rod turning before the impact has no such optimum.
+/// let turning = Scene::builder(q(1, 1), q(1, 1)).v0(q(3, 1)).rod_before(q(0, 1), q(0, 1), q(1, 1)).build()?;
+/// assert!(optimum(&turning).is_none());
+/// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn optimum(scene: &Scene) -> Optimum {
+pub fn optimum(scene: &Scene) -> Option<Optimum> {
+    if !scene.rod_before().omega.is_zero() {
+        return None;
+    }
+    Some(match scene.oblique() {
+        None => of_rod_at_rest(scene),
+        Some(_) => of_rod_at_rest(&scene.normal_problem()),
+    })
+}
+
+/// The optimum of a scene whose rod does not turn before the impact.
+fn of_rod_at_rest(scene: &Scene) -> Optimum {
     let (m, big_m) = (scene.m(), scene.rod_mass());
     let l = scene.half_length();
     let squared: Q = a_star_squared(&scene.params());
@@ -267,7 +286,7 @@ mod tests {
 
     #[test]
     fn paper_threshold_m_equals_2m_puts_a_star_at_the_end() {
-        let o = optimum(&scene(q(1, 1), q(2, 1)).build().unwrap());
+        let o = optimum(&scene(q(1, 1), q(2, 1)).build().unwrap()).unwrap();
         assert_eq!(o.squared, q(1, 1));
         assert!(o.within_rod);
         // omega_max = v0/l at a* = l, and equals omega at the end from the solver.
@@ -278,7 +297,7 @@ mod tests {
     #[test]
     fn heavy_rod_peaks_at_the_end() {
         let s = scene(q(1, 1), q(3, 1)).build().unwrap();
-        let o = optimum(&s);
+        let o = optimum(&s).unwrap();
         assert_eq!(o.squared, q(4, 3));
         assert!(!o.within_rod);
         assert_eq!(o.argmax, Argmax::End);
@@ -289,7 +308,7 @@ mod tests {
     #[test]
     fn optimum_beats_the_end_for_a_light_rod() {
         let s = scene(q(1, 1), q(1, 1)).build().unwrap();
-        let o = optimum(&s);
+        let o = optimum(&s).unwrap();
         let at_end = QSqrt::rational(solve(&s.params::<Q>()).unwrap().after.omega);
         assert_eq!(
             (o.omega_max.clone() - at_end).sign(),
@@ -301,30 +320,31 @@ mod tests {
     fn pivot_optimum_is_measured_from_the_pivot() {
         // Uniform rod M = 3, l = 1, pivot at the end p = -1: I_p = 1 + 3 = 4, d*^2 = 4/m.
         let s = scene(q(1, 1), q(3, 1)).pivot(q(-1, 1)).build().unwrap();
-        let o = optimum(&s);
+        let o = optimum(&s).unwrap();
         assert_eq!((o.squared.clone(), o.arm.clone()), (q(4, 1), q(2, 1)));
         assert!(o.within_rod); // d* = 2 = the whole rod: a door is best hit at its edge iff M >= 3m
         let s = scene(q(2, 1), q(3, 1)).pivot(q(-1, 1)).build().unwrap();
-        assert_eq!(optimum(&s).squared, q(2, 1));
+        assert_eq!(optimum(&s).unwrap().squared, q(2, 1));
     }
 
     #[test]
     fn thresholds_are_where_a_star_reaches_the_end() {
         // Uniform free rod: M = 2m; dumbbell: never inside; door (pivot at an end): M = 3m.
-        let o = optimum(&scene(q(1, 1), q(5, 1)).build().unwrap());
+        let o = optimum(&scene(q(1, 1), q(5, 1)).build().unwrap()).unwrap();
         assert_eq!(o.threshold_mass, Some(q(2, 1)));
         let o = optimum(
             &scene(q(1, 1), q(5, 1))
                 .rod(crate::scene::RodInertia::Dumbbell)
                 .build()
                 .unwrap(),
-        );
+        )
+        .unwrap();
         assert_eq!(o.threshold_mass, None);
         assert_eq!(o.placement, Placement::Beyond);
-        let o = optimum(&scene(q(1, 1), q(5, 1)).pivot(q(-1, 1)).build().unwrap());
+        let o = optimum(&scene(q(1, 1), q(5, 1)).pivot(q(-1, 1)).build().unwrap()).unwrap();
         assert_eq!(o.threshold_mass, Some(q(3, 1)));
         // At the threshold itself a* is exactly at the end.
-        let o = optimum(&scene(q(1, 1), q(2, 1)).build().unwrap());
+        let o = optimum(&scene(q(1, 1), q(2, 1)).build().unwrap()).unwrap();
         assert_eq!(o.placement, Placement::AtEnd);
         assert_eq!(o.end_to_max(), QSqrt::one());
     }
@@ -347,7 +367,7 @@ mod tests {
         for s in scenes {
             let form = PaperForm::of(&s);
             assert!(form.verify(&s), "{s:?}");
-            assert_eq!(form.argmax(), QSqrt::sqrt_of(&optimum(&s).squared));
+            assert_eq!(form.argmax(), QSqrt::sqrt_of(&optimum(&s).unwrap().squared));
             let wrong = PaperForm {
                 b_squared: &form.b_squared * q(2, 1),
                 ..form

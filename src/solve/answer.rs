@@ -1,0 +1,200 @@
+//! The front door of the library: the whole answer to any scene the library accepts.
+//!
+//! [`Answer::of`] answers a [`Scene`] completely and exactly, whatever it holds: the paper's
+//! scene, a pivot, an oblique or frictional impact, a spinning disc, a rod moving before the
+//! impact. It solves the normal impulse problem at the approach speed (fraction-free, the laws
+//! checked as integer identities), completes it along the rod when the scene is oblique
+//! ([`oblique::complete`]: both impulses, the contact mode and `mu*`), and adds the optimum
+//! a* with omega_max where it applies (the rod not turning before the impact).
+//!
+//! A partial answer is asked for by name: [`Impact::of`] is the impact without the optimum
+//! (what `batch` needs per row); [`super::with`] runs one named route on the paper's scene only
+//! and refuses an oblique one ([`super::Why::Oblique`]).
+
+use super::optimum::{Optimum, PaperForm, optimum};
+use super::{Outcome, Route, oblique};
+use crate::field::Q;
+use crate::scene::Scene;
+use oblique::{ContactMode, ObliqueOutcome};
+
+/// The impact of a scene solved exactly: the normal problem's outcome and, for an oblique or
+/// frictional scene, its completion along the rod. No optimum (see [`Answer`]).
+///
+/// # Examples
+/// A rod drifting at V0 = 1 before a projectile at v0 = 3 arrives: the normal problem is the
+/// paper's at the approach speed 2, shifted back by the drift.
+/// ```
+/// use rodimpact::{field::q, scene::Scene, solve::answer::Impact};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).v0(q(3, 1)).rod_before(q(1, 1), q(0, 1), q(0, 1)).build()?;
+/// let impact = Impact::of(&s);
+/// let after = &impact.oblique.as_ref().expect("a moving rod is oblique").after;
+/// // At rest with v0 = 2: v = 6/5, V = 4/5, omega = 12/5; add the drift 1 to the velocities.
+/// assert_eq!((&after.v, &after.rod.v, &after.rod.omega), (&q(11, 5), &q(9, 5), &q(12, 5)));
+/// assert!(impact.laws_hold);
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Impact {
+    /// The normal problem's velocities, energies, pivot impulse and residuals: the scene's own
+    /// for the paper's scene; for an oblique one the paper's scene at the approach speed
+    /// ([`Scene::normal_problem`]), whose velocities are relative to the rod's before.
+    pub outcome: Outcome<Q>,
+    /// The whole impact of an oblique or frictional scene (both axes, the contact mode, the
+    /// disc's spin, the rod's motion before), `None` for the paper's scene.
+    pub oblique: Option<ObliqueOutcome<Q>>,
+    /// Every conservation law that applies holds exactly (for an oblique scene also the
+    /// energy loss equal to its closed forms).
+    pub laws_hold: bool,
+}
+
+impl Impact {
+    /// Solves `scene`'s impact exactly: the normal problem by the fraction-free route, then
+    /// the completion along the rod when the scene is oblique.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, scene::Scene, solve::answer::Impact};
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).build()?;
+    /// let impact = Impact::of(&s);
+    /// assert_eq!(impact.outcome.after.omega, q(6, 5));
+    /// assert!(impact.oblique.is_none() && impact.laws_hold);
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn of(scene: &Scene) -> Impact {
+        let Some(o) = scene.oblique() else {
+            return Impact::normal(scene);
+        };
+        let normal = Impact::normal(&scene.normal_problem());
+        let done = oblique::complete(
+            &scene.params(),
+            &o.params(),
+            normal.outcome.after.clone(),
+            None,
+        )
+        .expect("Q decides stick or slide, and every mass is positive");
+        Impact {
+            laws_hold: normal.laws_hold && done.residuals.all_zero(),
+            outcome: normal.outcome,
+            oblique: Some(done),
+        }
+    }
+
+    /// The paper's scene (no oblique part) solved by the fraction-free route.
+    fn normal(scene: &Scene) -> Impact {
+        let solved = super::with::<Q>(scene, Route::FractionFree)
+            .expect("the fraction-free route takes every paper scene in Q");
+        let laws_hold = solved.laws_hold == Some(true);
+        Impact {
+            outcome: solved.outcome(&scene.params()),
+            oblique: None,
+            laws_hold,
+        }
+    }
+
+    /// The contact mode when friction acts (`None` without friction or for the paper's scene).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, scene::Scene, solve::{answer::Impact, oblique::ContactMode}};
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).v0t(q(1, 1)).mu(q(1, 2)).build()?;
+    /// assert_eq!(Impact::of(&s).contact(), Some(ContactMode::Slide { forward: true }));
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn contact(&self) -> Option<ContactMode> {
+        self.oblique.as_ref().and_then(|o| o.contact)
+    }
+}
+
+/// The whole answer to a scene: its [`Impact`], the normal impulse on the rod, and the
+/// optimum a* with omega_max and the paper's form of omega(a) where they apply.
+///
+/// # Examples
+/// ```
+/// use rodimpact::prelude::*;
+/// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).v0t(q(1, 1)).mu(q(1, 4)).build()?;
+/// let answer = Answer::of(&s);
+/// let o = answer.impact.oblique.as_ref().expect("oblique");
+/// // Friction along the rod never changes the spin (X27): omega is the paper's 12/11
+/// // (J = 2/(1/m + 1/M + a^2/I) = 8/11, omega = J a/I); sticking needs |u_t|/(k_t J) = 11/16.
+/// assert_eq!(o.after.rod.omega, q(12, 11));
+/// assert_eq!(answer.mu_star(), Some(q(11, 16)));
+/// assert_eq!(answer.optimum.expect("rod at rest").squared, q(2, 3));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Answer {
+    /// The scene answered.
+    pub scene: Scene,
+    /// The impact: velocities, energies, impulses, residuals and, when oblique, both axes.
+    pub impact: Impact,
+    /// The normal impulse J of the projectile on the rod, m (approach - v) of the normal
+    /// problem.
+    pub impulse: Q,
+    /// a*, its placement and the exact maximum of omega; `None` when the rod turns before the
+    /// impact (the approach speed then depends on a).
+    pub optimum: Option<Optimum>,
+    /// The paper's form of omega(a) for the normal problem (`omega = K x/(b^2 + c^2 x^2)`)
+    /// and whether it was verified as an identity in a; present with the optimum.
+    pub paper_form: Option<(PaperForm, bool)>,
+}
+
+impl Answer {
+    /// Answers `scene` completely and exactly.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, scene::Scene, solve::answer::Answer};
+    /// let answer = Answer::of(&Scene::builder(q(1, 1), q(3, 1)).pivot(q(-1, 1)).e(q(0, 1)).build()?);
+    /// // I_p = I + M p^2 = 4, J = 1/(1/m + (a - p)^2/I_p) = 1/2, omega = J (a - p)/I_p = 1/4,
+    /// // V = -omega p = 1/4: the pivot pushes with M V - J = 1/4.
+    /// assert_eq!(answer.impact.outcome.pivot_impulse, Some(q(1, 4)));
+    /// assert_eq!(answer.impulse, q(1, 2));
+    /// assert!(answer.laws_hold());
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn of(scene: &Scene) -> Answer {
+        let impact = Impact::of(scene);
+        let normal = scene.normal_problem();
+        let impulse = impact.outcome.impulse(&normal.params());
+        let optimum = optimum(scene);
+        let paper_form = optimum.as_ref().map(|_| {
+            let form = PaperForm::of(&normal);
+            let verified = form.verify(&normal);
+            (form, verified)
+        });
+        Answer {
+            scene: scene.clone(),
+            impact,
+            impulse,
+            optimum,
+            paper_form,
+        }
+    }
+
+    /// Whether every conservation law that applies holds exactly.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, scene::Scene, solve::answer::Answer};
+    /// assert!(Answer::of(&Scene::builder(q(2, 7), q(5, 3)).e(q(1, 3)).build()?).laws_hold());
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn laws_hold(&self) -> bool {
+        self.impact.laws_hold
+    }
+
+    /// The friction coefficient at which the contact just sticks, mu* = |Jt_stick|/J, when
+    /// friction acts.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, scene::Scene, solve::answer::Answer};
+    /// let plain = Answer::of(&Scene::builder(q(1, 1), q(1, 1)).build()?);
+    /// assert_eq!(plain.mu_star(), None);
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn mu_star(&self) -> Option<Q> {
+        let o = self.impact.oblique.as_ref()?;
+        o.contact.map(|_| o.mu_star())
+    }
+}
