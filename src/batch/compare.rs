@@ -3,7 +3,7 @@
 //! ulps of the correctly rounded float of the exact value. A claimed NaN or infinity is a wrong
 //! claim, never an error.
 
-use super::header::{Arithmetic, CLAIMS};
+use super::plan::{Arithmetic, CLAIMS, OutputCheck};
 use super::ulps::{FloatFormat, ulp_distance};
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
@@ -117,64 +117,6 @@ impl Agreement {
                     crate::echo::echo(text)
                 ),
             )),
-        }
-    }
-}
-
-/// A claimed value compared with the computed one.
-///
-/// # Examples
-/// ```
-/// use rodimpact::{batch::{Batch, Arithmetic}, field::q};
-/// let row = Batch::new("m,M,V", Arithmetic::Exact).unwrap().row(1, "1,1,0.5").unwrap();
-/// let check = &row.checks[0];
-/// assert_eq!((check.output, check.ok), (1, false));
-/// assert_eq!(check.rel_error, Some(q(1, 4))); // |1/2 - 2/5| / (2/5)
-/// ```
-#[derive(Debug, Clone, PartialEq)]
-pub struct OutputCheck {
-    /// Which claim: 0 v, 1 V, 2 omega, 3 J, 4 energy_before, 5 energy_after.
-    pub output: usize,
-    /// The claim agrees under the batch's [`Agreement`].
-    pub ok: bool,
-    /// |claim - value| / |value|, exact; `None` when it is infinite (a zero value and a nonzero
-    /// claim) or the claim is not a number.
-    pub rel_error: Option<Q>,
-    /// The ulp distance, under [`Agreement::Ulps`] and for a finite claim.
-    pub ulps: Option<u64>,
-    /// The claim was NaN or infinite.
-    pub not_finite: bool,
-}
-
-impl OutputCheck {
-    /// Appends the check's cells: `,<ok>,<rel_error>`, and `,<ulps>` when `ulps_column`.
-    pub(super) fn write_cells(&self, out: &mut String, ulps_column: bool) {
-        out.push_str(if self.ok { ",true," } else { ",false," });
-        out.push_str(&self.rel_error_text());
-        if ulps_column {
-            out.push(',');
-            match self.ulps {
-                Some(u) => out.push_str(&u.to_string()),
-                None => out.push_str("nan"),
-            }
-        }
-    }
-
-    /// The text of the `<name>_rel_error` cell: three significant digits, `inf`, or `nan` for a
-    /// claim that was not a finite number.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::batch::{Batch, Arithmetic};
-    /// let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
-    /// assert_eq!(b.row(1, "1,1,0.61").unwrap().checks[0].rel_error_text(), "0.0167");
-    /// assert_eq!(b.row(2, "1,1,NaN").unwrap().checks[0].rel_error_text(), "nan");
-    /// ```
-    pub fn rel_error_text(&self) -> String {
-        match (&self.rel_error, self.not_finite) {
-            (_, true) => "nan".to_string(),
-            (Some(r), false) => crate::field::decimal::decimal(r, 3),
-            (None, false) => "inf".to_string(),
         }
     }
 }

@@ -10,14 +10,14 @@
 //! byte: every input is the same correctly rounded f64 either way, and every relative error the
 //! same reduced fraction (`tests/batch_words.rs`).
 
-use super::compare::{Agreement, OutputCheck, float_rel_error};
-use super::header::{Arithmetic, STATE};
-use super::row::{SolvedRow, write_float};
-use super::word_row::{Inputs, Part, WordPlan, read_cells};
+use super::compare::{Agreement, float_rel_error};
+use super::plan::{Arithmetic, OutputCheck, STATE, SolvedRow, WordPlan, write_float};
+use super::word_row::read_cells;
 use crate::field::int::U256;
 use crate::number::WordRatio;
 use crate::scene::{Params, Support};
 use crate::solve::closed_form::closed_form;
+use crate::solve::words::{Inputs, Part};
 
 /// The nearest f64 to `n/d` (ties to even), for `0 < d` and `n, d < 2^74` (the callers bound
 /// their parts below 2^24).

@@ -2,80 +2,21 @@
 //! appended to the output) and the cells of a data row, read into a scene and claimed values.
 
 use super::compare::{Agreement, Claimed};
-use super::word_row::{Role, WORD_SCENE, WordPlan};
+use super::plan::{Arithmetic, CLAIMS, OBLIQUE_OUTPUTS, Role, STATE, WORD_SCENE, WordPlan};
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
-use crate::scene::{Scene, SceneInput};
-use crate::solve::Route;
+use crate::scene::{SCENE_KEYS, Scene, SceneInput, SceneKey};
 
-/// The arithmetic of a batch (`rodimpact batch --backend exact|f64`). Not a
-/// [`stability::Backend`](crate::stability::Backend): that one pairs a number format with a float
-/// formula to measure its error; this one only says how the batch's rows are solved.
-///
-/// # Examples
-/// ```
-/// use rodimpact::batch::{Batch, Arithmetic};
-/// let row = Batch::new("m,M", Arithmetic::F64).unwrap().row(1, "1,1").unwrap();
-/// assert_eq!(row.laws_held, None); // f64 decides nothing exactly
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Arithmetic {
-    /// Exact rationals by [`Route::FractionFree`]: claims agree only when exactly equal.
-    Exact,
-    /// The naive closed form in f64 ([`Route::ClosedForm`], the paper's formulas as a float
-    /// code would write them): claims agree within [`FLOAT_TOLERANCE`](super::FLOAT_TOLERANCE);
-    /// laws not decided.
-    F64,
+/// The scene key of the batch column `name`, if it is one.
+fn scene_column(name: &str) -> Option<&'static SceneKey> {
+    SCENE_KEYS.iter().find(|k| k.column && k.name == name)
 }
-
-impl Arithmetic {
-    /// The route the batch solves by.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::{batch::Arithmetic, solve::Route};
-    /// assert_eq!(Arithmetic::F64.route(), Route::ClosedForm);
-    /// ```
-    pub fn route(self) -> Route {
-        match self {
-            Arithmetic::Exact => Route::FractionFree,
-            Arithmetic::F64 => Route::ClosedForm,
-        }
-    }
-}
-
-const SCENE_COLUMNS: [&str; 15] = [
-    "m",
-    "M",
-    "l",
-    "a",
-    "v0",
-    "rod",
-    "e",
-    "pivot",
-    "v0t",
-    "mu",
-    "radius",
-    "spin",
-    "rod-v",
-    "rod-vt",
-    "rod-omega",
-];
-/// The first of the oblique scene columns (`v0t` ... `rod-omega`) in `SCENE_COLUMNS`.
-const FIRST_OBLIQUE: usize = 8;
-/// The columns an oblique header appends after `omega` (docs/conventions.md).
-pub(super) const OBLIQUE_OUTPUTS: [&str; 5] = ["vt", "Vt", "spin", "tangential_impulse", "contact"];
-/// The claim columns, in the order of their checks: the state after the impact, the impulse on
-/// the rod, the energies.
-pub(super) const CLAIMS: [&str; 6] = ["v", "V", "omega", "J", "energy_before", "energy_after"];
-/// The claims that make up the state after the impact (audited when all three are claimed).
-pub(super) const STATE: usize = 3;
 
 /// What one input column feeds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Column {
-    /// A scene field: index into `SCENE_COLUMNS`.
-    Scene(usize),
+    /// A scene field: a key of [`SCENE_KEYS`] that is a batch column.
+    Scene(&'static SceneKey),
     /// A claim: index into [`CLAIMS`].
     Claim(usize),
     /// Any other column (an engine log's `id`, `engine`, `dt`, ...): passed through in place.
@@ -120,7 +61,7 @@ impl Batch {
         let bad = |why: String| Error::new("header", ErrorKind::Invalid(why));
         let mut columns = Vec::new();
         for name in header.split(',').map(str::trim) {
-            let column = match SCENE_COLUMNS.iter().position(|c| *c == name) {
+            let column = match scene_column(name) {
                 Some(k) => Column::Scene(k),
                 None => CLAIMS
                     .iter()
@@ -135,12 +76,12 @@ impl Batch {
             }
             columns.push(column);
         }
-        for required in [0, 1] {
-            if !columns.contains(&Column::Scene(required)) {
-                return Err(bad(format!(
-                    "column '{}' is required",
-                    SCENE_COLUMNS[required]
-                )));
+        for required in ["m", "M"] {
+            if !columns
+                .iter()
+                .any(|c| matches!(c, Column::Scene(k) if k.name == required))
+            {
+                return Err(bad(format!("column '{required}' is required")));
             }
         }
         let claims = (0..CLAIMS.len())
@@ -151,7 +92,7 @@ impl Batch {
             .zip(&columns)
             .position(|(name, c)| *c == Column::Passed && name.trim() == "id");
         let oblique = columns.iter().find_map(|c| match c {
-            Column::Scene(k) if *k >= FIRST_OBLIQUE => Some(SCENE_COLUMNS[*k]),
+            Column::Scene(k) if k.oblique => Some(k.name),
             _ => None,
         });
         if let Some(name) = oblique {
@@ -249,7 +190,7 @@ impl Batch {
     pub fn is_oblique(&self) -> bool {
         self.columns
             .iter()
-            .any(|c| matches!(c, Column::Scene(k) if *k >= FIRST_OBLIQUE))
+            .any(|c| matches!(c, Column::Scene(k) if k.oblique))
     }
 
     /// The header of the output file (with its newline). The computed columns are named for
@@ -287,8 +228,8 @@ impl Batch {
         if self.is_oblique() {
             for name in OBLIQUE_OUTPUTS {
                 // The disc's spin after the impact, beside the input column `spin` (before).
-                let input = SCENE_COLUMNS.iter().position(|c| *c == name);
-                let clash = input.is_some_and(|k| self.columns.contains(&Column::Scene(k)));
+                let clash =
+                    scene_column(name).is_some_and(|k| self.columns.contains(&Column::Scene(k)));
                 let suffix = if clash { "_after" } else { "" };
                 out.push_str(&format!(",{name}{suffix}"));
             }
@@ -353,10 +294,9 @@ impl Batch {
         let mut claimed: [Option<Claimed>; 6] = Default::default();
         for (&column, &cell) in self.columns.iter().zip(&cells) {
             match column {
-                Column::Scene(k) if k < 2 || !cell.is_empty() => {
-                    *input
-                        .slot(SCENE_COLUMNS[k])
-                        .expect("scene columns are scene inputs") = Some(cell.to_string());
+                Column::Scene(k) if ["m", "M"].contains(&k.name) || !cell.is_empty() => {
+                    *input.slot(k.name).expect("scene columns are scene inputs") =
+                        Some(cell.to_string());
                 }
                 Column::Claim(k) if !cell.is_empty() => {
                     claimed[k] = Some(Claimed::parse(k, cell).map_err(at)?);
@@ -374,7 +314,10 @@ fn word_plan(columns: &[Column]) -> Option<WordPlan> {
     let roles = columns
         .iter()
         .map(|column| match *column {
-            Column::Scene(k) => WORD_SCENE.iter().position(|&w| w == k).map(Role::Scene),
+            Column::Scene(k) => WORD_SCENE
+                .iter()
+                .position(|&w| w == k.name)
+                .map(Role::Scene),
             Column::Claim(k) => (k < STATE).then_some(Role::Claim(k)),
             Column::Passed => Some(Role::Passed),
         })

@@ -2,42 +2,17 @@
 //! line with v, V, omega, whether the laws held, and each claim's check appended.
 
 use super::audit::{Finding, audit};
-use super::compare::{Agreement, Claimed, OutputCheck, compare};
+use super::compare::{Agreement, Claimed, compare};
 use super::float_row::float_word_row;
-use super::header::{Arithmetic, Batch, STATE};
+use super::header::Batch;
+use super::plan::{Arithmetic, Diagnosis, OutputCheck, STATE, SolvedRow, write_float};
 use super::word_row::word_row;
 use crate::error::Error;
 use crate::field::Q;
 use crate::mechanics::{Motion, kinetic_energy};
 use crate::scene::Scene;
-use crate::solve::{self, Route, Why, oblique};
+use crate::solve::{self, Impact, Route, Why};
 use num_traits::{Signed, Zero};
-
-/// One output row: the CSV line (with its newline) and what the summary needs.
-///
-/// # Examples
-/// ```
-/// use rodimpact::batch::{Batch, Arithmetic};
-/// let row = Batch::new("m,M", Arithmetic::Exact).unwrap().row(1, "1,1").unwrap();
-/// assert_eq!((row.line.as_str(), row.laws_held), ("1,1,3/5,2/5,6/5,true\n", Some(true)));
-/// ```
-#[derive(Debug, Clone, PartialEq)]
-pub struct SolvedRow {
-    /// The data row's number (1-based, as in error messages).
-    pub number: usize,
-    /// The output line.
-    pub line: String,
-    /// The laws held exactly (`None` in f64, which decides no law).
-    pub laws_held: Option<bool>,
-    /// The claims of the row.
-    pub checks: Vec<OutputCheck>,
-    /// The audit of the claimed state (`None` when the batch audits none: v, V, omega not all
-    /// claimed, or the f64 arithmetic).
-    pub diagnosis: Option<Diagnosis>,
-    /// What the summary calls the row when its audit found something: its `id` cell when the
-    /// batch has an `id` column, else `row N`.
-    pub label: Option<String>,
-}
 
 impl Batch {
     /// Solves data row `number` (1-based) given as its line.
@@ -169,43 +144,6 @@ impl Batch {
     }
 }
 
-/// The diagnosis of a row: its findings, `ok`, or not audited (a state claim missing).
-///
-/// # Examples
-/// ```
-/// use rodimpact::batch::{Arithmetic, Batch, Diagnosis, Finding};
-/// let b = Batch::new("m,M,v,V,omega", Arithmetic::Exact).unwrap();
-/// assert_eq!(b.row(1, "1,1,1,0,0").unwrap().diagnosis, Some(Diagnosis::Findings(vec![Finding::NoContact])));
-/// assert_eq!(b.row(2, "1,1,0.6,0.4,").unwrap().diagnosis, Some(Diagnosis::NotAudited));
-/// ```
-#[derive(Debug, Clone, PartialEq)]
-pub enum Diagnosis {
-    /// v, V or omega not claimed in this row: nothing audited.
-    NotAudited,
-    /// The findings (none: `ok`).
-    Findings(Vec<Finding>),
-}
-
-impl Diagnosis {
-    /// The `diagnosis` cell: `-`, `ok`, or the findings joined by `;`.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::batch::{Diagnosis, Finding};
-    /// assert_eq!(Diagnosis::Findings(vec![]).text(), "ok");
-    /// assert_eq!(Diagnosis::Findings(vec![Finding::EnergyGain, Finding::AboveOmegaMax]).text(),
-    ///            "energy-gain;above-omega-max");
-    /// assert_eq!(Diagnosis::NotAudited.text(), "-");
-    /// ```
-    pub fn text(&self) -> String {
-        match self {
-            Diagnosis::NotAudited => "-".to_string(),
-            Diagnosis::Findings(f) if f.is_empty() => "ok".to_string(),
-            Diagnosis::Findings(f) => f.iter().map(|f| f.name()).collect::<Vec<_>>().join(";"),
-        }
-    }
-}
-
 /// The energy change cell and the diagnosis of a row whose state is claimed.
 fn diagnose(
     scene: &Scene,
@@ -280,15 +218,14 @@ fn exact_values(
 
 /// Writes v, V, omega and the oblique columns (`vt, Vt, spin, tangential_impulse, contact`;
 /// `spin` empty for a point projectile, `contact` empty without friction) of an oblique
-/// header's row, solved exactly (the normal problem fraction-free, then
-/// [`oblique::complete`]); returns v, V, omega and whether every law held.
+/// header's row, solved exactly by [`Impact::of`]; returns v, V, omega and whether every law
+/// held.
 fn oblique_values(scene: &Scene, out: &mut String) -> ([Q; 3], bool) {
-    let normal = scene.normal_problem();
-    let solved = solve::with::<Q>(&normal, Route::FractionFree)
-        .expect("the fraction-free route takes every scene in Q");
-    let o = scene.oblique().cloned().unwrap_or_default();
-    let done = oblique::complete(&scene.params(), &o.params(), solved.after, None)
-        .expect("Q decides stick or slide, and every mass is positive");
+    let impact = Impact::of(scene);
+    let done = impact
+        .oblique
+        .as_ref()
+        .expect("an oblique header's scene is answered along the rod too");
     let after = &done.after;
     let values = [
         Some(&after.v),
@@ -307,13 +244,12 @@ fn oblique_values(scene: &Scene, out: &mut String) -> ([Q; 3], bool) {
     }
     out.push(',');
     out.push_str(done.contact.map_or("", |c| c.as_str()));
-    let laws = solved.laws_hold == Some(true) && done.residuals.all_zero();
     let exact = [
         after.v.clone(),
         after.rod.v.clone(),
         after.rod.omega.clone(),
     ];
-    (exact, laws)
+    (exact, impact.laws_hold)
 }
 
 /// v, V, omega by `route` in f64 (NaN where the system underflowed to a singular one; and J
@@ -361,17 +297,6 @@ fn float_values(
         out
     };
     (exact, xs.map(|x| x.map(text)))
-}
-
-/// Appends `x` as its shortest round-trip text (`0.6`, `1.2e-7`), a zero as `0.0` whatever its
-/// sign (`-0.0` only says which way the float rounded).
-pub(super) fn write_float(out: &mut String, x: f64) {
-    use std::fmt::Write;
-    if x == 0.0 {
-        out.push_str("0.0");
-    } else {
-        write!(out, "{x:?}").expect("writing to a String cannot fail");
-    }
 }
 
 #[cfg(test)]

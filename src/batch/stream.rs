@@ -2,7 +2,7 @@
 //! written in input order, reading and writing overlapped with solving.
 
 use super::header::Batch;
-use super::row::SolvedRow;
+use super::plan::SolvedRow;
 use super::summary::Summary;
 use crate::error::{Error, ErrorKind};
 use rayon::prelude::*;

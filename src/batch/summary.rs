@@ -2,8 +2,7 @@
 //! the median relative error (from a bounded histogram, so memory stays flat in the rows).
 
 use super::audit::Finding;
-use super::header::CLAIMS;
-use super::row::{Diagnosis, SolvedRow};
+use super::plan::{CLAIMS, Diagnosis, SolvedRow};
 use crate::field::Q;
 use num_traits::Zero;
 use std::cmp::Ordering;

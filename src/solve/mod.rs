@@ -28,6 +28,7 @@ pub mod linear;
 pub mod oblique;
 pub mod optimum;
 mod outcome;
+pub mod words;
 
 pub use answer::{Answer, Impact};
 pub use outcome::{Energy, Outcome, Residuals, outcome};
