@@ -82,9 +82,9 @@ fn committed_certificates_match_the_regenerated_ones() {
 /// need neither). Every file, and nothing else, is committed.
 #[test]
 fn committed_exports_match_the_regenerated_ones() {
-    use rodimpact::claims::export::{Format, export_all};
+    use rodimpact::claims::export::{ExportFormat, export_all};
     let mut problems = Vec::new();
-    for format in [Format::Smt2, Format::Sympy] {
+    for format in [ExportFormat::Smt2, ExportFormat::Sympy] {
         let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("proofs")
             .join(format.name());

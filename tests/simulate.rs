@@ -4,8 +4,8 @@
 //! over a sample of scenes, and the runs it must flag.
 
 use rodimpact::contact::{
-    Contact, Ending, Geometry, Integrator, LOOSEST, MAX_WORK, Miss, Slopes, fit_slope, simulate,
-    sweep_k, work,
+    CompliantContact, Ending, Geometry, Integrator, LOOSEST, MAX_WORK, Miss, Slopes, fit_slope,
+    simulate, sweep_k, work,
 };
 use rodimpact::field::{Q, q};
 use rodimpact::scene::{RodInertia, Scene};
@@ -36,7 +36,7 @@ fn not_magic(h_omega: f64) -> f64 {
 
 /// A run of `c` with event-driven RK4 at T_c / 4000, whose error (about 0.007 (h Omega)^4,
 /// 1e-15 here) is below every model error measured.
-fn fine_run(c: &Contact) -> rodimpact::contact::Run {
+fn fine_run(c: &CompliantContact) -> rodimpact::contact::Run {
     simulate(c, Integrator::EventRk4, c.contact_time() / 4000.0).unwrap()
 }
 
@@ -110,7 +110,7 @@ fn pivoted_rod_converges_to_the_exact_velocities_and_pivot_impulse() {
     for s in [centre, end] {
         // Frozen geometry: the impulse for every k, to rounding.
         for k in [1e2, 1e6, 1e10] {
-            let c = Contact::new(&s, k, Geometry::Frozen).unwrap();
+            let c = CompliantContact::new(&s, k, Geometry::Frozen).unwrap();
             let run = fine_run(&c);
             let p = run.pivot_impulse.unwrap();
             let want = c.reference_pivot_impulse().unwrap();
@@ -166,7 +166,7 @@ fn sticking_contact_converges_to_the_exact_sticking_values() {
 
     for s in [free, pivoted] {
         for k in [1e2, 1e6, 1e10] {
-            let c = Contact::new(&s, k, Geometry::Frozen).unwrap();
+            let c = CompliantContact::new(&s, k, Geometry::Frozen).unwrap();
             assert!(c.sticking());
             let run = fine_run(&c);
             assert_eq!(run.ending, Ending::Settled);
@@ -201,7 +201,7 @@ fn frozen_geometry_reproduces_the_impulse_for_every_k() {
         for e in [q(1, 1), q(1, 2)] {
             let s = scene(rod_mass.clone(), q(1, 2), e);
             for k in [1e2, 1e6, 1e10] {
-                let c = Contact::new(&s, k, Geometry::Frozen).unwrap();
+                let c = CompliantContact::new(&s, k, Geometry::Frozen).unwrap();
                 let run = simulate(&c, Integrator::EventRk4, c.contact_time() / 200.0).unwrap();
                 assert!(
                     run.errors.iter().all(|e| *e < 1e-8),
@@ -213,14 +213,14 @@ fn frozen_geometry_reproduces_the_impulse_for_every_k() {
         }
     }
     // Fixed-step RK4 with h Omega = 0.01 through approach, contact and departure.
-    let c = Contact::new(&textbook(), 1e6, Geometry::Frozen).unwrap();
+    let c = CompliantContact::new(&textbook(), 1e6, Geometry::Frozen).unwrap();
     let run = simulate(&c, Integrator::Rk4, not_magic(0.01) / c.frequency()).unwrap();
     assert!(run.errors.iter().all(|e| *e < 1e-5), "{:?}", run.errors);
 }
 
 #[test]
 fn reference_is_the_exact_solution() {
-    let c = Contact::new(&textbook(), 1e6, Geometry::Exact).unwrap();
+    let c = CompliantContact::new(&textbook(), 1e6, Geometry::Exact).unwrap();
     let exact = solve(&textbook().params::<Q>()).unwrap().after;
     assert_eq!(exact.omega, q(12, 11));
     assert_eq!(c.exact().after, exact);
@@ -229,7 +229,7 @@ fn reference_is_the_exact_solution() {
 
 /// Event-driven RK4 error at steps T_c / n, n = 10, 20, 40, 80, and the fitted order.
 fn event_order(s: &Scene) -> f64 {
-    let c = Contact::new(s, 1e6, Geometry::Frozen).unwrap();
+    let c = CompliantContact::new(s, 1e6, Geometry::Frozen).unwrap();
     let ns = [10.0, 20.0, 40.0, 80.0];
     let errors: Vec<f64> = ns
         .iter()
@@ -253,7 +253,7 @@ fn event_driven_rk4_is_fourth_order() {
 
 #[test]
 fn explicit_integrators_gain_energy_beyond_their_stability_limits() {
-    let c = Contact::new(&textbook(), 1e6, Geometry::Frozen).unwrap();
+    let c = CompliantContact::new(&textbook(), 1e6, Geometry::Frozen).unwrap();
     let run = |method, h_omega: f64| simulate(&c, method, h_omega / c.frequency()).unwrap();
     for h_omega in [0.1, 0.3] {
         assert!(
@@ -290,7 +290,7 @@ fn explicit_integrators_gain_energy_beyond_their_stability_limits() {
 
 #[test]
 fn implicit_integrators_stay_bounded_and_backward_euler_turns_plastic() {
-    let c = Contact::new(&textbook(), 1e6, Geometry::Frozen).unwrap();
+    let c = CompliantContact::new(&textbook(), 1e6, Geometry::Frozen).unwrap();
     for h_omega in [2.5, 10.0] {
         let run = simulate(&c, Integrator::Midpoint, h_omega / c.frequency()).unwrap();
         assert!(run.energy_change < 3.0, "midpoint {}", run.energy_change);
@@ -361,7 +361,7 @@ fn stated_tolerance_bounds_the_errors_over_a_sample_of_scenes() {
             )
         };
         let Ok(s) = builder.build() else { continue };
-        let c = Contact::new(&s, k, geometry).unwrap();
+        let c = CompliantContact::new(&s, k, geometry).unwrap();
         let run = simulate(&c, method, h_omega / c.frequency()).unwrap();
         // Runs the verdict does not judge on their errors: a real slide-off near the end, an
         // explicit method beyond its stability limit, a tolerance above 10 % (a soft k, whose
@@ -396,14 +396,14 @@ fn hits_at_or_sliding_off_the_end_are_refused_or_flagged() {
     let end = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
     for a in [q(1, 1), q(-1, 1)] {
         let s = end.with_a(a).unwrap();
-        let err = Contact::new(&s, 1e6, Geometry::Exact).unwrap_err();
+        let err = CompliantContact::new(&s, 1e6, Geometry::Exact).unwrap_err();
         assert_eq!(err.field, "a");
         assert!(err.to_string().contains("--geometry frozen"), "{err}");
-        let frozen = Contact::new(&s, 1e6, Geometry::Frozen).unwrap();
+        let frozen = CompliantContact::new(&s, 1e6, Geometry::Frozen).unwrap();
         assert_eq!(fine_run(&frozen).miss, None);
     }
     let near = end.with_a(q(9999, 10000)).unwrap();
-    let c = Contact::new(&near, 1e3, Geometry::Exact).unwrap();
+    let c = CompliantContact::new(&near, 1e3, Geometry::Exact).unwrap();
     let run = fine_run(&c);
     assert_eq!(run.ending, Ending::SlidOff);
     assert_eq!(run.miss, Some(Miss::SlidOff));
@@ -414,7 +414,7 @@ fn hits_at_or_sliding_off_the_end_are_refused_or_flagged() {
 /// The cap is now on work, in force evaluations, with an implicit step costing 60.
 #[test]
 fn work_is_capped_per_integrator_cost() {
-    let c = Contact::new(&textbook(), 1e4, Geometry::Exact).unwrap();
+    let c = CompliantContact::new(&textbook(), 1e4, Geometry::Exact).unwrap();
     // RELIABILITY F12's case: at most 1.1e7 steps through the approach (0.1 s) and four
     // contact times (4 x 18.9 ms), fine for RK4 (4.4e7 evaluations), not for backward Euler
     // (6.6e8).

@@ -6,7 +6,9 @@ use rodimpact::scene::SceneInput;
 use rodimpact::textbook::problems::parse_problems;
 use rodimpact::textbook::sigfig::{Precision, Printed, Tie, round_sig};
 use rodimpact::textbook::units::{Dimension, Measured, pi_bounds};
-use rodimpact::textbook::{Agreement, ClaimedAnswer, Exact, check_scene, expr, numeric::decide};
+use rodimpact::textbook::{
+    AnswerAgreement, ClaimedAnswer, Exact, check_scene, expr, numeric::decide,
+};
 
 fn rat(text: &str) -> rodimpact::field::Q {
     rodimpact::number::parse(text).unwrap()
@@ -85,7 +87,7 @@ fn rounding_to_significant_figures() {
     assert_eq!(round_sig(&rat("1450"), 2, Tie::Down), rat("1400"));
 }
 
-fn agreement(claim: &str, exact: &str) -> Agreement {
+fn agreement(claim: &str, exact: &str) -> AnswerAgreement {
     decide(
         &ClaimedAnswer::parse(claim).unwrap(),
         &Exact::Rational(rat(exact)),
@@ -97,27 +99,27 @@ fn agreement(claim: &str, exact: &str) -> Agreement {
 #[test]
 fn verdicts_by_significant_figures() {
     let cases = [
-        ("omega=1.89", "36/19", Agreement::Agrees),
-        ("omega=1.90", "36/19", Agreement::LastDigit),
+        ("omega=1.89", "36/19", AnswerAgreement::Agrees),
+        ("omega=1.90", "36/19", AnswerAgreement::LastDigit),
         // 1.88 is one unit off the rounded 1.89 but 1.5 units from 1.8947...: not a slip.
-        ("omega=1.88", "36/19", Agreement::Disagrees),
-        ("omega=1.87", "36/19", Agreement::Disagrees),
-        ("omega=0.947", "36/19", Agreement::Disagrees),
-        ("omega=-1.89", "36/19", Agreement::Agrees), // by magnitude
-        ("v=-1.89", "36/19", Agreement::Disagrees),  // only omega ignores the sign
-        ("omega=36/19", "36/19", Agreement::Agrees),
-        ("omega=1.8947", "36/19", Agreement::Agrees),
-        ("omega=1.895", "36/19", Agreement::Agrees), // 1.894736... to 4 figures
-        ("omega=1.896", "36/19", Agreement::Disagrees), // 1.26 units from 1.894736...
-        ("omega=1.894", "36/19", Agreement::LastDigit), // 0.74 units: a rounding slip
-        ("v=2.2", "9/4", Agreement::Agrees),         // exact tie 2.25: either rounding is right
-        ("v=2.3", "9/4", Agreement::Agrees),
-        ("v=1500", "1549", Agreement::Agrees), // ambiguous: read with 2 figures
-        ("v=1500", "1551", Agreement::LastDigit),
-        ("v=0.0", "1/50", Agreement::Agrees), // 0.02 rounds to 0.0
-        ("v=0.0", "1/10", Agreement::Disagrees), // a zero carries no figure: -100 %
-        ("v=0", "1/1000", Agreement::Disagrees), // an integer zero is exact
-        ("v=37/19", "36/19", Agreement::Disagrees),
+        ("omega=1.88", "36/19", AnswerAgreement::Disagrees),
+        ("omega=1.87", "36/19", AnswerAgreement::Disagrees),
+        ("omega=0.947", "36/19", AnswerAgreement::Disagrees),
+        ("omega=-1.89", "36/19", AnswerAgreement::Agrees), // by magnitude
+        ("v=-1.89", "36/19", AnswerAgreement::Disagrees),  // only omega ignores the sign
+        ("omega=36/19", "36/19", AnswerAgreement::Agrees),
+        ("omega=1.8947", "36/19", AnswerAgreement::Agrees),
+        ("omega=1.895", "36/19", AnswerAgreement::Agrees), // 1.894736... to 4 figures
+        ("omega=1.896", "36/19", AnswerAgreement::Disagrees), // 1.26 units from 1.894736...
+        ("omega=1.894", "36/19", AnswerAgreement::LastDigit), // 0.74 units: a rounding slip
+        ("v=2.2", "9/4", AnswerAgreement::Agrees), // exact tie 2.25: either rounding is right
+        ("v=2.3", "9/4", AnswerAgreement::Agrees),
+        ("v=1500", "1549", AnswerAgreement::Agrees), // ambiguous: read with 2 figures
+        ("v=1500", "1551", AnswerAgreement::LastDigit),
+        ("v=0.0", "1/50", AnswerAgreement::Agrees), // 0.02 rounds to 0.0
+        ("v=0.0", "1/10", AnswerAgreement::Disagrees), // a zero carries no figure: -100 %
+        ("v=0", "1/1000", AnswerAgreement::Disagrees), // an integer zero is exact
+        ("v=37/19", "36/19", AnswerAgreement::Disagrees),
     ];
     for (claim, exact, expected) in cases {
         assert_eq!(agreement(claim, exact), expected, "{claim} vs {exact}");
@@ -128,7 +130,7 @@ fn verdicts_by_significant_figures() {
         &Exact::Rational(rat("1549")),
         Some(4),
     );
-    assert_eq!(d.agreement, Agreement::Disagrees);
+    assert_eq!(d.agreement, AnswerAgreement::Disagrees);
     let d = decide(
         &ClaimedAnswer::parse("v=1500").unwrap(),
         &Exact::Rational(rat("1549")),
@@ -180,13 +182,28 @@ fn rpm_is_decided_with_bounds_on_pi() {
     assert!(lo < hi && hi.clone() - &lo == rat("1e-30"));
     assert!(rat("3.14159265358979") < lo && hi < rat("355/113")); // 355/113 = 3.14159292 > pi
     // omega = 36/19 rad/s = 18.0931... rpm.
-    assert_eq!(agreement("omega=18.1 rpm", "36/19"), Agreement::Agrees);
-    assert_eq!(agreement("omega=18.09 rpm", "36/19"), Agreement::Agrees);
-    assert_eq!(agreement("omega=18.2 rpm", "36/19"), Agreement::Disagrees); // 0.107 rpm off
-    assert_eq!(agreement("omega=18.0 rpm", "36/19"), Agreement::LastDigit); // 0.093 rpm off
-    assert_eq!(agreement("omega=18 rpm", "36/19"), Agreement::Agrees);
+    assert_eq!(
+        agreement("omega=18.1 rpm", "36/19"),
+        AnswerAgreement::Agrees
+    );
+    assert_eq!(
+        agreement("omega=18.09 rpm", "36/19"),
+        AnswerAgreement::Agrees
+    );
+    assert_eq!(
+        agreement("omega=18.2 rpm", "36/19"),
+        AnswerAgreement::Disagrees
+    ); // 0.107 rpm off
+    assert_eq!(
+        agreement("omega=18.0 rpm", "36/19"),
+        AnswerAgreement::LastDigit
+    ); // 0.093 rpm off
+    assert_eq!(agreement("omega=18 rpm", "36/19"), AnswerAgreement::Agrees);
     // A fraction in rpm can never equal a rational omega (pi is irrational).
-    assert_eq!(agreement("omega=18/1 rpm", "36/19"), Agreement::Disagrees);
+    assert_eq!(
+        agreement("omega=18/1 rpm", "36/19"),
+        AnswerAgreement::Disagrees
+    );
 }
 
 #[test]
@@ -239,7 +256,7 @@ fn expressions_parse_with_limits() {
     );
 }
 
-fn symbolic(input: SceneInput, claims: &[&str]) -> Vec<(Agreement, Vec<String>)> {
+fn symbolic(input: SceneInput, claims: &[&str]) -> Vec<(AnswerAgreement, Vec<String>)> {
     let claims: Vec<ClaimedAnswer> = claims
         .iter()
         .map(|c| ClaimedAnswer::parse(c).unwrap())
@@ -278,8 +295,8 @@ fn symbolic_identities_true_and_false() {
             "V_cm=m*v0/(m+M)",
         ],
     );
-    let verdicts: Vec<Agreement> = r.iter().map(|(v, _)| *v).collect();
-    use Agreement::*;
+    let verdicts: Vec<AnswerAgreement> = r.iter().map(|(v, _)| *v).collect();
+    use AnswerAgreement::*;
     assert_eq!(
         verdicts,
         [Agrees, Disagrees, Agrees, Agrees, Agrees, Agrees, Agrees]
@@ -307,7 +324,10 @@ fn symbolic_scene_flags_and_free_symbols() {
         s,
         &["v=0", "omega=3*v0/(4*l)", "omega=3*v0/(2*L)", "V=v0/4"],
     );
-    assert!(r.iter().all(|(v, _)| *v == Agreement::Agrees), "{r:?}");
+    assert!(
+        r.iter().all(|(v, _)| *v == AnswerAgreement::Agrees),
+        "{r:?}"
+    );
     // Sticking at a = L/4 on a free rod with m = M: the claim with d (= l - a = l/2).
     // Exact: 1/M_eff = 1/M + a^2/I = (1 + 3/4)/M, M_eff = 4M/7; J = m M_eff v0/(m + M_eff)
     // = 4 m v0/11 (M = m); omega = J a / I = (4 m v0/11)(l/2)/(m l^2/3) = 6 v0/(11 l).
@@ -326,10 +346,14 @@ fn symbolic_scene_flags_and_free_symbols() {
             "omega=6*v0/(11*d)",
         ],
     );
-    let verdicts: Vec<Agreement> = r.iter().map(|(v, _)| *v).collect();
+    let verdicts: Vec<AnswerAgreement> = r.iter().map(|(v, _)| *v).collect();
     assert_eq!(
         verdicts,
-        [Agreement::Agrees, Agreement::Agrees, Agreement::Disagrees]
+        [
+            AnswerAgreement::Agrees,
+            AnswerAgreement::Agrees,
+            AnswerAgreement::Disagrees
+        ]
     );
     // Every quantity not given is free except e (elastic) and the rod (uniform), as in solve.
     let s = SceneInput {
@@ -337,8 +361,8 @@ fn symbolic_scene_flags_and_free_symbols() {
         ..Default::default()
     };
     let r = symbolic(s, &["V_cm=m*v0/(m+M)", "v=v0"]);
-    assert_eq!(r[0].0, Agreement::Agrees);
-    assert_eq!(r[1].0, Agreement::Disagrees);
+    assert_eq!(r[0].0, AnswerAgreement::Agrees);
+    assert_eq!(r[1].0, AnswerAgreement::Disagrees);
 }
 
 #[test]
@@ -526,7 +550,7 @@ fn symbolic_defaults_and_an_explicit_symbol_e() {
         None,
     )
     .unwrap();
-    assert_eq!(r.answers[0].agreement, Agreement::Agrees);
-    assert_eq!(r.answers[1].agreement, Agreement::Disagrees);
+    assert_eq!(r.answers[0].agreement, AnswerAgreement::Agrees);
+    assert_eq!(r.answers[1].agreement, AnswerAgreement::Disagrees);
     assert_eq!(r.symbolic.unwrap().defaults, ["uniform rod (I = M l^2/3)"]);
 }

@@ -2,7 +2,7 @@
 
 use super::{Failure, parse_ratios, print_out};
 use clap::Args;
-use rodimpact::claims::export::{Format as ExportFormat, export_all};
+use rodimpact::claims::export::{ExportFormat, export_all};
 use rodimpact::claims::{self, Decided, Paper};
 use rodimpact::io::{write_atomic, write_directory};
 use rodimpact::report::{self, Format, TableOptions};
@@ -52,7 +52,7 @@ pub(crate) enum PaperFormat {
     Html,
 }
 
-/// The ids `prove` takes, both ranges: `C1-C46 and X1-X26`.
+/// The ids `prove` takes, both ranges, from the registry (e.g. `C1-C46 and X1-X31`).
 fn id_ranges(separator: &str) -> String {
     format!("{}{separator}{}", claims::paper_ids(), claims::beyond_ids())
 }

@@ -15,41 +15,30 @@ pub(crate) mod table;
 
 use clap::Args;
 use rodimpact::Error;
-use rodimpact::scene::{SceneInput, parse_field};
+use rodimpact::scene::{SceneInput, flag_help, parse_field};
 
 /// Scene flags shared by the commands that take one scene. Numbers are exact: "2", "0.25",
 /// "3/7", "1.5e-3", "75/9.8", and may carry a unit ("100 g", "120cm", "36 km/h"), converted
 /// exactly to SI.
 #[derive(Args, Debug)]
 pub(crate) struct SceneFlags {
-    /// Projectile mass m (> 0); numbers may carry a unit (kg, g; m, cm, mm; m/s, cm/s, km/h),
-    /// read exactly in SI.
-    #[arg(long = "m", value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long = "m", value_name = "Q", allow_hyphen_values = true, help = const { flag_help("m") })]
     pub(crate) m: Option<String>,
-    /// Rod mass M (> 0).
-    #[arg(long = "M", value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long = "M", value_name = "Q", allow_hyphen_values = true, help = const { flag_help("M") })]
     pub(crate) rod_mass: Option<String>,
-    /// Half-length l of the rod (the rod is 2l long) [default: 1].
-    #[arg(long = "l", value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long = "l", value_name = "Q", allow_hyphen_values = true, help = const { flag_help("l") })]
     pub(crate) l: Option<String>,
-    /// Full length L = 2l of the rod, instead of --l.
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("length") })]
     pub(crate) length: Option<String>,
-    /// Signed impact distance a from the rod's centre, |a| <= l [default: l, the end].
-    #[arg(long = "a", value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long = "a", value_name = "Q", allow_hyphen_values = true, help = const { flag_help("a") })]
     pub(crate) a: Option<String>,
-    /// Impact distance d from the end, instead of --a (a = l - d).
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("from-end") })]
     pub(crate) from_end: Option<String>,
-    /// Projectile speed v0 (> 0) [default: 1].
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("v0") })]
     pub(crate) v0: Option<String>,
-    /// Mass distribution: uniform, dumbbell, rg=<radius of gyration> or I=<moment of inertia>
-    /// [default: uniform].
-    #[arg(long, value_name = "KIND")]
+    #[arg(long, value_name = "KIND", help = const { flag_help("rod") })]
     pub(crate) rod: Option<String>,
-    /// Coefficient of restitution, 0 <= e <= 1 [default: 1].
-    #[arg(long, value_name = "Q", allow_hyphen_values = true, group = "law")]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, group = "law", help = const { flag_help("e") })]
     pub(crate) e: Option<String>,
     /// Elastic impact, e = 1 (the default).
     #[arg(long, group = "law")]
@@ -57,8 +46,7 @@ pub(crate) struct SceneFlags {
     /// Totally inelastic impact, e = 0: the projectile sticks to the rod.
     #[arg(long, group = "law")]
     pub(crate) inelastic: bool,
-    /// Put the rod on a fixed frictionless pivot at signed position p, |p| <= l.
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("pivot") })]
     pub(crate) pivot: Option<String>,
 }
 
@@ -91,26 +79,19 @@ impl SceneFlags {
 /// "Oblique and frictional impacts").
 #[derive(Args, Debug, Default)]
 pub(crate) struct ObliqueFlags {
-    /// The projectile's velocity along the rod (+y, towards increasing a) [default: 0].
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("v0t") })]
     pub(crate) v0t: Option<String>,
-    /// Coulomb friction coefficient at the contact, mu >= 0 [default: 0].
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("mu") })]
     pub(crate) mu: Option<String>,
-    /// A solid disc projectile of this radius (I = m r^2/2) instead of a point.
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("radius") })]
     pub(crate) radius: Option<String>,
-    /// The disc's spin before the impact, counterclockwise seen from above [default: 0].
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("spin") })]
     pub(crate) spin: Option<String>,
-    /// The rod centre's velocity across the rod (along x) before the impact [default: 0].
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("rod-v") })]
     pub(crate) rod_v: Option<String>,
-    /// The rod centre's velocity along the rod before the impact [default: 0].
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("rod-vt") })]
     pub(crate) rod_vt: Option<String>,
-    /// The rod's angular velocity before the impact (sign of omega) [default: 0].
-    #[arg(long, value_name = "Q", allow_hyphen_values = true)]
+    #[arg(long, value_name = "Q", allow_hyphen_values = true, help = const { flag_help("rod-omega") })]
     pub(crate) rod_omega: Option<String>,
 }
 

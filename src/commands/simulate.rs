@@ -5,7 +5,9 @@
 use super::{Failure, SceneFlags, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::Error;
-use rodimpact::contact::{Contact, Geometry, Integrator, MAX_WORK, simulate, sweep_k, work};
+use rodimpact::contact::{
+    CompliantContact, Geometry, Integrator, MAX_WORK, simulate, sweep_k, work,
+};
 use rodimpact::field::Field;
 use rodimpact::report::{
     simulation_json, simulation_passes, simulation_text, sweep_json, sweep_passes, sweep_text,
@@ -22,7 +24,7 @@ const SWEEP_STEPS: u32 = 1000;
 /// The default steps per contact time: `base` per pi/Omega, so that h Omega = pi/base whatever
 /// the law (a damped contact lasts longer than pi/Omega, a sticking one's settle time T_s about
 /// 34/Omega).
-fn default_steps(contact: &Contact, base: u32) -> u32 {
+fn default_steps(contact: &CompliantContact, base: u32) -> u32 {
     let halves = contact.contact_time() * contact.frequency() / std::f64::consts::PI;
     (f64::from(base) * halves).ceil().min(1e6) as u32
 }
@@ -63,7 +65,7 @@ pub(crate) struct SimulateArgs {
         required_unless_present = "sweep_k"
     )]
     pub(crate) stiffness: Option<String>,
-    /// Contact geometry.
+    /// CompliantContact geometry.
     #[arg(long, value_enum, default_value = "exact")]
     pub(crate) geometry: GeometryArg,
     /// One integrator [default: all five for one k, event-rk4 for --sweep-k].
@@ -112,7 +114,7 @@ fn positive_f64(field: &str, text: &str) -> Result<f64, Error> {
 
 /// The step for `contact`: --dt (refused beyond the contact time, where a step would jump over
 /// the contact), or T_c / --steps.
-fn step(args: &SimulateArgs, contact: &Contact) -> Result<f64, Error> {
+fn step(args: &SimulateArgs, contact: &CompliantContact) -> Result<f64, Error> {
     let Some(text) = &args.dt else {
         let steps = args.steps.unwrap_or_else(|| default_steps(contact, STEPS));
         return Ok(contact.contact_time() / f64::from(steps));
@@ -135,7 +137,10 @@ fn step(args: &SimulateArgs, contact: &Contact) -> Result<f64, Error> {
 
 /// Refuses runs whose total work exceeds [`MAX_WORK`], before any is started; names the flag
 /// that set the step (or the stiffness or the sweep, which set it through T_c).
-fn check_work(args: &SimulateArgs, runs: &[(&Contact, Integrator, f64)]) -> Result<(), Error> {
+fn check_work(
+    args: &SimulateArgs,
+    runs: &[(&CompliantContact, Integrator, f64)],
+) -> Result<(), Error> {
     let total: f64 = runs.iter().map(|(c, m, h)| work(c, *m, *h)).sum();
     if total <= MAX_WORK {
         return Ok(());
@@ -170,7 +175,7 @@ pub(crate) fn run_simulate(args: &SimulateArgs) -> Result<(), Failure> {
         let method = args.integrator.map_or(Integrator::EventRk4, integrator);
         let contacts = SWEEP_K
             .iter()
-            .map(|&k| Contact::new(&scene, k, geometry))
+            .map(|&k| CompliantContact::new(&scene, k, geometry))
             .collect::<Result<Vec<_>, _>>()?;
         let steps = args
             .steps
@@ -190,7 +195,7 @@ pub(crate) fn run_simulate(args: &SimulateArgs) -> Result<(), Failure> {
         return if ok { Ok(()) } else { Err(Failure::Check) };
     }
     let k = positive_f64("stiffness", args.stiffness.as_deref().unwrap_or_default())?;
-    let contact = Contact::new(&scene, k, geometry)?;
+    let contact = CompliantContact::new(&scene, k, geometry)?;
     let methods: Vec<Integrator> = match args.integrator {
         Some(arg) => vec![integrator(arg)],
         None => Integrator::ALL.to_vec(),

@@ -1,6 +1,6 @@
 //! How far a run is from the exact impulsive values, how far it may be, and the verdict.
 
-use super::{Contact, Ending, Integrator};
+use super::{CompliantContact, Ending, Integrator};
 use std::fmt;
 
 /// The largest tolerance at which a run still cross-checks the impulse: 10 %.
@@ -41,10 +41,10 @@ pub const LOOSEST: f64 = 0.1;
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Contact, Geometry, Integrator, Tolerance};
+/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, Tolerance};
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-/// let c = Contact::new(&scene, 1e6, Geometry::Frozen)?;
+/// let c = CompliantContact::new(&scene, 1e6, Geometry::Frozen)?;
 /// let t = Tolerance::of(&c, Integrator::BackwardEuler, 0.01 / c.frequency(), 1000);
 /// assert_eq!(t.model, 0.0); // the frozen oscillator is exact for every k
 /// assert!((t.integrator - 0.02).abs() < 1e-15);
@@ -66,16 +66,16 @@ impl Tolerance {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry, Integrator, Tolerance};
+    /// use rodimpact::contact::{CompliantContact, Geometry, Integrator, Tolerance};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-    /// let c = Contact::new(&scene, 1e6, Geometry::Exact)?;
+    /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
     /// let t = Tolerance::of(&c, Integrator::EventRk4, c.contact_time() / 100.0, 100);
     /// let turn = 12.0 / 11.0 * c.contact_time(); // max(omega = 12/11, v0/l = 1) T_c
     /// assert!((t.model / (10.0 * turn * turn) - 1.0).abs() < 1e-12);
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
-    pub fn of(c: &Contact, integrator: Integrator, h: f64, steps: usize) -> Tolerance {
+    pub fn of(c: &CompliantContact, integrator: Integrator, h: f64, steps: usize) -> Tolerance {
         let model = match c.geometry {
             super::Geometry::Frozen => 0.0,
             super::Geometry::Exact => {
@@ -201,20 +201,20 @@ impl fmt::Display for Miss {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Contact, Geometry, Integrator, stability_limit};
+/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, stability_limit};
 /// use rodimpact::{field::q, scene::Scene};
 /// let elastic = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-/// let c = Contact::new(&elastic, 1e6, Geometry::Frozen)?;
+/// let c = CompliantContact::new(&elastic, 1e6, Geometry::Frozen)?;
 /// assert_eq!(stability_limit(&c, Integrator::Verlet), Some(2.0));
 /// assert!((stability_limit(&c, Integrator::Rk4).unwrap() - 2.828).abs() < 1e-3);
 /// assert_eq!(stability_limit(&c, Integrator::Midpoint), None);
 /// let glued = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).e(q(0, 1)).build()?;
-/// let c = Contact::new(&glued, 1e6, Geometry::Frozen)?;
+/// let c = CompliantContact::new(&glued, 1e6, Geometry::Frozen)?;
 /// assert!((stability_limit(&c, Integrator::Verlet).unwrap() - 0.828).abs() < 1e-3);
 /// assert!((stability_limit(&c, Integrator::EventRk4).unwrap() - 2.785).abs() < 1e-3);
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn stability_limit(c: &Contact, integrator: Integrator) -> Option<f64> {
+pub fn stability_limit(c: &CompliantContact, integrator: Integrator) -> Option<f64> {
     let zeta = c.zeta;
     match integrator {
         Integrator::Verlet => Some(2.0 * ((1.0 + zeta * zeta).sqrt() - zeta)),
@@ -248,7 +248,7 @@ fn rk4_limit(zeta: f64) -> f64 {
 /// The errors of (v, V, omega) and of the pivot impulse, as the module documentation defines
 /// them.
 pub(super) fn errors(
-    c: &Contact,
+    c: &CompliantContact,
     velocities: &[f64; 3],
     pivot_impulse: Option<f64>,
 ) -> ([f64; 3], Option<f64>) {
@@ -273,7 +273,7 @@ pub(super) fn errors(
 
 /// The first reason the run misses, if any.
 pub(super) fn judge(
-    c: &Contact,
+    c: &CompliantContact,
     integrator: Integrator,
     h_omega: f64,
     ending: Ending,

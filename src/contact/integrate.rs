@@ -4,7 +4,7 @@
 
 use super::accuracy::{self, Miss, Tolerance};
 use super::slot::{PIVOT_X, POSITIONS, VY};
-use super::{Contact, State};
+use super::{CompliantContact, State};
 use crate::error::Error;
 use crate::solve::linear::solve_linear;
 use std::time::Instant;
@@ -103,7 +103,7 @@ pub struct Run {
     pub integrator: Integrator,
     /// The time step h (seconds).
     pub h: f64,
-    /// Final velocities (v, V, omega), comparable with [`Contact::reference`].
+    /// Final velocities (v, V, omega), comparable with [`CompliantContact::reference`].
     pub velocities: [f64; 3],
     /// The pivot's impulse on the rod (x-component) integrated while the contact acted;
     /// `None` for a free rod.
@@ -145,7 +145,7 @@ pub const MAX_WORK: f64 = 3e8;
 /// The longest time after the onset that a run covers: the settle time of a sticking contact
 /// (where it is read), four contact times of a bouncing one (which ends at its separation,
 /// normally after one).
-fn contact_span(c: &Contact) -> f64 {
+fn contact_span(c: &CompliantContact) -> f64 {
     if c.sticking {
         c.contact_time()
     } else {
@@ -155,7 +155,7 @@ fn contact_span(c: &Contact) -> f64 {
 
 /// The most steps a run of `integrator` with step `h` takes: fixed-step runs cover the approach
 /// (l/10 at v0) and [`contact_span`]; the event-driven one only the latter.
-fn steps_needed(c: &Contact, integrator: Integrator, h: f64) -> f64 {
+fn steps_needed(c: &CompliantContact, integrator: Integrator, h: f64) -> f64 {
     let approach = if integrator.fixed_step() {
         c.gap() / c.v0
     } else {
@@ -169,16 +169,16 @@ fn steps_needed(c: &Contact, integrator: Integrator, h: f64) -> f64 {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Contact, Geometry, Integrator, work};
+/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, work};
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-/// let c = Contact::new(&scene, 1e6, Geometry::Exact)?;
+/// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
 /// let units = work(&c, Integrator::EventRk4, c.contact_time() / 100.0);
 /// // At most 4 T_c of steps of 4 evaluations (the contact separates after about 100).
 /// assert!((1600.0..=1604.0).contains(&units));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn work(c: &Contact, integrator: Integrator, h: f64) -> f64 {
+pub fn work(c: &CompliantContact, integrator: Integrator, h: f64) -> f64 {
     steps_needed(c, integrator, h) * integrator.cost_per_step()
 }
 
@@ -189,16 +189,16 @@ pub fn work(c: &Contact, integrator: Integrator, h: f64) -> f64 {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Contact, Ending, Geometry, Integrator, simulate};
+/// use rodimpact::contact::{CompliantContact, Ending, Geometry, Integrator, simulate};
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-/// let c = Contact::new(&scene, 1e6, Geometry::Frozen)?;
+/// let c = CompliantContact::new(&scene, 1e6, Geometry::Frozen)?;
 /// let run = simulate(&c, Integrator::EventRk4, c.contact_time() / 100.0)?;
 /// assert!(run.errors.iter().all(|e| *e < 1e-8));
 /// assert_eq!(run.ending, Ending::Separated);
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn simulate(c: &Contact, integrator: Integrator, h: f64) -> Result<Run, Error> {
+pub fn simulate(c: &CompliantContact, integrator: Integrator, h: f64) -> Result<Run, Error> {
     if !(h.is_finite() && h > 0.0) {
         return Err(Error::out_of_range("dt", "must be a positive finite step"));
     }
@@ -253,7 +253,7 @@ pub fn simulate(c: &Contact, integrator: Integrator, h: f64) -> Result<Run, Erro
 /// A fixed-step run from rest, the point l/10 short of the rod, through the approach and the
 /// contact: to the first step after separation (bouncing) or over the settle time (sticking).
 /// A pivoted rod's centre turns on after the contact, so the velocities are read when it ends.
-fn fixed_step(c: &Contact, integrator: Integrator, h: f64) -> (State, usize, Ending) {
+fn fixed_step(c: &CompliantContact, integrator: Integrator, h: f64) -> (State, usize, Ending) {
     let limit = steps_needed(c, integrator, h) as usize;
     let mut s = c.start(c.gap());
     let mut touched = false;
@@ -281,7 +281,7 @@ fn fixed_step(c: &Contact, integrator: Integrator, h: f64) -> (State, usize, End
 /// How a run that reached its last step without a separation ended: settled if the contact is
 /// sticking or its relative motion has decayed (a nearly critically damped bouncing contact
 /// whose penetration lingers at the rounding level), else still in contact.
-fn unfinished(c: &Contact, s: &State) -> Ending {
+fn unfinished(c: &CompliantContact, s: &State) -> Ending {
     if c.sticking || c.settled(s) {
         Ending::Settled
     } else {
@@ -293,7 +293,7 @@ fn axpy(y: &State, h: f64, d: &State) -> State {
     std::array::from_fn(|i| y[i] + h * d[i])
 }
 
-fn rk4(c: &Contact, s: &State, h: f64, switched: bool) -> State {
+fn rk4(c: &CompliantContact, s: &State, h: f64, switched: bool) -> State {
     let k1 = c.derivative(s, switched);
     let k2 = c.derivative(&axpy(s, h / 2.0, &k1), switched);
     let k3 = c.derivative(&axpy(s, h / 2.0, &k2), switched);
@@ -303,7 +303,7 @@ fn rk4(c: &Contact, s: &State, h: f64, switched: bool) -> State {
 
 /// Velocity Verlet; the dashpot's velocity is taken at the half step (explicit). The pivot's
 /// impulse is kicked like a velocity (the trapezoidal rule).
-fn verlet(c: &Contact, s: &State, h: f64) -> State {
+fn verlet(c: &CompliantContact, s: &State, h: f64) -> State {
     let half = |s: &State| {
         let d = c.derivative(s, true);
         let mut out = *s;
@@ -321,7 +321,7 @@ fn verlet(c: &Contact, s: &State, h: f64) -> State {
 
 /// One step of y1 = y0 + h f(y0 + theta (y1 - y0)): theta = 1/2 the implicit midpoint rule,
 /// theta = 1 backward Euler. Newton's method with a finite-difference Jacobian.
-fn implicit(c: &Contact, y0: &State, h: f64, theta: f64) -> State {
+fn implicit(c: &CompliantContact, y0: &State, h: f64, theta: f64) -> State {
     let residual = |y1: &State| -> State {
         let mid: State = std::array::from_fn(|i| y0[i] + theta * (y1[i] - y0[i]));
         let f = c.derivative(&mid, true);
@@ -362,7 +362,7 @@ fn implicit(c: &Contact, y0: &State, h: f64, theta: f64) -> State {
 /// settle time of a sticking contact (the last step shortened to end on it). Returns the state
 /// then (free flight after it does not change the velocities), the number of steps and how the
 /// contact ended. A bouncing contact still acting after four contact times is given up.
-fn event_rk4(c: &Contact, h: f64) -> (State, usize, Ending) {
+fn event_rk4(c: &CompliantContact, h: f64) -> (State, usize, Ending) {
     let mut s = c.start(0.0);
     let span = contact_span(c);
     let (steps, last, settles) = if c.sticking {

@@ -84,16 +84,16 @@ use slot::*;
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Contact, Geometry};
+/// use rodimpact::contact::{CompliantContact, Geometry};
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-/// let c = Contact::new(&scene, 1e6, Geometry::Frozen)?;
+/// let c = CompliantContact::new(&scene, 1e6, Geometry::Frozen)?;
 /// assert!((c.reference()[2] - 12.0 / 11.0).abs() < 1e-15); // omega = 12/11
 /// assert_eq!(c.exact().after.omega, q(12, 11));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
-pub struct Contact {
+pub struct CompliantContact {
     m: f64,
     rod_mass: f64,
     inertia: f64,
@@ -135,7 +135,7 @@ fn settle_phase(tol: f64) -> f64 {
     x
 }
 
-impl Contact {
+impl CompliantContact {
     /// The model for `scene` (free or pivoted rod, any e in [0, 1]) with spring stiffness `k`.
     ///
     /// # Errors
@@ -145,19 +145,19 @@ impl Contact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry};
+    /// use rodimpact::contact::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(3, 1)).a(q(1, 2)).pivot(q(0, 1)).e(q(0, 1)).build()?;
-    /// let c = Contact::new(&scene, 1e6, Geometry::Exact)?;
+    /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
     /// assert!(c.sticking());
     /// assert_eq!(c.exact().pivot_impulse, Some(q(-4, 5)));
-    /// assert_eq!(Contact::new(&scene, 0.0, Geometry::Exact).unwrap_err().field, "stiffness");
+    /// assert_eq!(CompliantContact::new(&scene, 0.0, Geometry::Exact).unwrap_err().field, "stiffness");
     /// let end = Scene::builder(q(1, 1), q(1, 1)).build()?; // a = l by default
-    /// assert_eq!(Contact::new(&end, 1e6, Geometry::Exact).unwrap_err().field, "a");
-    /// assert!(Contact::new(&end, 1e6, Geometry::Frozen).is_ok());
+    /// assert_eq!(CompliantContact::new(&end, 1e6, Geometry::Exact).unwrap_err().field, "a");
+    /// assert!(CompliantContact::new(&end, 1e6, Geometry::Frozen).is_ok());
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
-    pub fn new(scene: &Scene, k: f64, geometry: Geometry) -> Result<Contact, Error> {
+    pub fn new(scene: &Scene, k: f64, geometry: Geometry) -> Result<CompliantContact, Error> {
         if !(k.is_finite() && k > 0.0) {
             return Err(Error::out_of_range(
                 "stiffness",
@@ -216,7 +216,7 @@ impl Contact {
             let log_e = e.ln();
             -log_e / (std::f64::consts::PI.powi(2) + log_e * log_e).sqrt()
         };
-        let mut c = Contact {
+        let mut c = CompliantContact {
             m: to_f64("m", scene.m())?,
             rod_mass: to_f64("M", scene.rod_mass())?,
             inertia: to_f64("rod", &scene.inertia())?,
@@ -248,10 +248,10 @@ impl Contact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry};
+    /// use rodimpact::contact::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-    /// assert_eq!(Contact::new(&scene, 1e6, Geometry::Exact)?.scene(), &scene);
+    /// assert_eq!(CompliantContact::new(&scene, 1e6, Geometry::Exact)?.scene(), &scene);
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
     pub fn scene(&self) -> &Scene {
@@ -262,10 +262,10 @@ impl Contact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry};
+    /// use rodimpact::contact::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-    /// let c = Contact::new(&scene, 1e6, Geometry::Exact)?;
+    /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
     /// assert_eq!(c.exact().after.v, q(3, 11));
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
@@ -277,10 +277,10 @@ impl Contact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry};
+    /// use rodimpact::contact::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-    /// let r = Contact::new(&scene, 1e2, Geometry::Exact)?.reference();
+    /// let r = CompliantContact::new(&scene, 1e2, Geometry::Exact)?.reference();
     /// assert_eq!(r, [3.0 / 11.0, 8.0 / 11.0, 12.0 / 11.0]);
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
@@ -292,10 +292,10 @@ impl Contact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry};
+    /// use rodimpact::contact::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).pivot(q(0, 1)).build()?;
-    /// let c = Contact::new(&scene, 1e6, Geometry::Exact)?;
+    /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
     /// assert_eq!(c.reference_pivot_impulse(), Some(-8.0 / 7.0));
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
@@ -307,10 +307,10 @@ impl Contact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry};
+    /// use rodimpact::contact::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).e(q(0, 1)).build()?;
-    /// assert!(Contact::new(&scene, 1e6, Geometry::Frozen)?.sticking());
+    /// assert!(CompliantContact::new(&scene, 1e6, Geometry::Frozen)?.sticking());
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
     pub fn sticking(&self) -> bool {
@@ -321,10 +321,10 @@ impl Contact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry};
+    /// use rodimpact::contact::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).build()?;
-    /// assert_eq!(Contact::new(&scene, 1e6, Geometry::Frozen)?.geometry(), Geometry::Frozen);
+    /// assert_eq!(CompliantContact::new(&scene, 1e6, Geometry::Frozen)?.geometry(), Geometry::Frozen);
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
     pub fn geometry(&self) -> Geometry {
@@ -335,10 +335,10 @@ impl Contact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry};
+    /// use rodimpact::contact::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).build()?;
-    /// assert_eq!(Contact::new(&scene, 1e6, Geometry::Frozen)?.stiffness(), 1e6);
+    /// assert_eq!(CompliantContact::new(&scene, 1e6, Geometry::Frozen)?.stiffness(), 1e6);
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
     pub fn stiffness(&self) -> f64 {
@@ -373,10 +373,10 @@ impl Contact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry};
+    /// use rodimpact::contact::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(0, 1)).build()?;
-    /// let c = Contact::new(&scene, 8.0, Geometry::Frozen)?;
+    /// let c = CompliantContact::new(&scene, 8.0, Geometry::Frozen)?;
     /// assert!((c.frequency() - 4.0).abs() < 1e-15); // mu_eff = 1/2
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
@@ -390,13 +390,13 @@ impl Contact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Contact, Geometry};
+    /// use rodimpact::contact::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(0, 1)).build()?;
-    /// let c = Contact::new(&scene, 8.0, Geometry::Frozen)?;
+    /// let c = CompliantContact::new(&scene, 8.0, Geometry::Frozen)?;
     /// assert!((c.contact_time() - std::f64::consts::PI / 4.0).abs() < 1e-15);
     /// let glued = Scene::builder(q(1, 1), q(1, 1)).a(q(0, 1)).e(q(0, 1)).build()?;
-    /// let sticking = Contact::new(&glued, 8.0, Geometry::Frozen)?;
+    /// let sticking = CompliantContact::new(&glued, 8.0, Geometry::Frozen)?;
     /// let x = 4.0 * sticking.contact_time(); // Omega T_s
     /// assert!(((2.0 * x - 1.0) * (-x).exp() / 1e-13 - 1.0).abs() < 1e-9);
     /// # Ok::<(), rodimpact::Error>(())

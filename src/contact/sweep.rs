@@ -1,7 +1,7 @@
 //! Convergence in the stiffness: the exact-geometry model against the impulsive values for a
 //! range of k, with least-squares slopes on log-log axes.
 
-use super::{Contact, Geometry, Integrator, Run, simulate};
+use super::{CompliantContact, Geometry, Integrator, Run, simulate};
 use crate::error::Error;
 use crate::scene::Scene;
 
@@ -9,7 +9,7 @@ use crate::scene::Scene;
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepRow {
     /// The model at this stiffness (its k, T_c and exact values).
-    pub contact: Contact,
+    pub contact: CompliantContact,
     /// The run at this stiffness.
     pub run: Run,
 }
@@ -80,7 +80,7 @@ impl Slopes {
 /// time T_c.
 ///
 /// # Errors
-/// Those of [`Contact::new`] and [`simulate`].
+/// Those of [`CompliantContact::new`] and [`simulate`].
 ///
 /// # Examples
 /// ```
@@ -100,7 +100,7 @@ pub fn sweep_k(
 ) -> Result<Vec<SweepRow>, Error> {
     ks.iter()
         .map(|&k| {
-            let contact = Contact::new(scene, k, geometry)?;
+            let contact = CompliantContact::new(scene, k, geometry)?;
             let run = simulate(&contact, integrator, contact.contact_time() / steps as f64)?;
             Ok(SweepRow { contact, run })
         })

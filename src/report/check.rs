@@ -6,7 +6,7 @@ use crate::field::decimal::magnitude;
 use crate::field::{Field, Q};
 use crate::textbook::problems::ProblemCheck;
 use crate::textbook::sigfig::{Tie, round_sig};
-use crate::textbook::{Agreement, CheckedAnswer, Counterexample, RelError, SceneCheck};
+use crate::textbook::{AnswerAgreement, CheckedAnswer, Counterexample, RelError, SceneCheck};
 use num_traits::{Signed, Zero};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
@@ -18,15 +18,15 @@ const JSON_DIGITS: usize = 30;
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{report::agreement_label, textbook::Agreement};
-/// assert_eq!(agreement_label(Agreement::LastDigit), "DISAGREES (last digit off by one)");
+/// use rodimpact::{report::agreement_label, textbook::AnswerAgreement};
+/// assert_eq!(agreement_label(AnswerAgreement::LastDigit), "DISAGREES (last digit off by one)");
 /// ```
-pub fn agreement_label(agreement: Agreement) -> &'static str {
+pub fn agreement_label(agreement: AnswerAgreement) -> &'static str {
     match agreement {
-        Agreement::Agrees => "agrees",
-        Agreement::Disagrees => "DISAGREES",
-        Agreement::LastDigit => "DISAGREES (last digit off by one)",
-        Agreement::Undecided => "UNDECIDED",
+        AnswerAgreement::Agrees => "agrees",
+        AnswerAgreement::Disagrees => "DISAGREES",
+        AnswerAgreement::LastDigit => "DISAGREES (last digit off by one)",
+        AnswerAgreement::Undecided => "UNDECIDED",
     }
 }
 
@@ -34,15 +34,15 @@ pub fn agreement_label(agreement: Agreement) -> &'static str {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{report::agreement_key, textbook::Agreement};
-/// assert_eq!(agreement_key(Agreement::LastDigit), "last_digit_off_by_one");
+/// use rodimpact::{report::agreement_key, textbook::AnswerAgreement};
+/// assert_eq!(agreement_key(AnswerAgreement::LastDigit), "last_digit_off_by_one");
 /// ```
-pub fn agreement_key(agreement: Agreement) -> &'static str {
+pub fn agreement_key(agreement: AnswerAgreement) -> &'static str {
     match agreement {
-        Agreement::Agrees => "agrees",
-        Agreement::Disagrees => "disagrees",
-        Agreement::LastDigit => "last_digit_off_by_one",
-        Agreement::Undecided => "undecided",
+        AnswerAgreement::Agrees => "agrees",
+        AnswerAgreement::Disagrees => "disagrees",
+        AnswerAgreement::LastDigit => "last_digit_off_by_one",
+        AnswerAgreement::Undecided => "undecided",
     }
 }
 

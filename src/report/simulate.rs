@@ -4,7 +4,7 @@
 
 use super::solution::{describe, scene_json};
 use crate::contact::{
-    Contact, Ending, Geometry, Integrator, LOOSEST, Run, Slopes, SweepRow, Tolerance,
+    CompliantContact, Ending, Geometry, Integrator, LOOSEST, Run, Slopes, SweepRow, Tolerance,
     stability_limit,
 };
 use crate::field::Q;
@@ -19,10 +19,10 @@ const DIGITS: usize = 15;
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Contact, Geometry, Integrator, simulate};
+/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, simulate};
 /// use rodimpact::{field::q, report::simulation_text, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-/// let c = Contact::new(&scene, 1e6, Geometry::Exact)?;
+/// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
 /// let run = simulate(&c, Integrator::EventRk4, c.contact_time() / 100.0)?;
 /// let text = simulation_text(&c, &[run]);
 /// assert!(text.contains("3/11"));
@@ -30,7 +30,7 @@ const DIGITS: usize = 15;
 /// assert!(text.ends_with("The run reproduces the exact values within its tolerance.\n"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn simulation_text(contact: &Contact, runs: &[Run]) -> String {
+pub fn simulation_text(contact: &CompliantContact, runs: &[Run]) -> String {
     let pivoted = contact.reference_pivot_impulse().is_some();
     let mut out = header(contact);
     out += &format!(
@@ -93,10 +93,10 @@ pub fn simulation_text(contact: &Contact, runs: &[Run]) -> String {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Contact, Geometry, Integrator, simulate};
+/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, simulate};
 /// use rodimpact::{field::q, report::simulation_passes, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-/// let c = Contact::new(&scene, 1e2, Geometry::Exact)?; // too soft: the model floor is 0.43
+/// let c = CompliantContact::new(&scene, 1e2, Geometry::Exact)?; // too soft: the model floor is 0.43
 /// let run = simulate(&c, Integrator::EventRk4, c.contact_time() / 100.0)?;
 /// assert!(!simulation_passes(&[run]));
 /// # Ok::<(), rodimpact::Error>(())
@@ -142,10 +142,10 @@ fn fixed_or_sci(x: f64) -> String {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Contact, Geometry, Integrator, simulate};
+/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, simulate};
 /// use rodimpact::{field::q, report::simulation_json, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-/// let c = Contact::new(&scene, 1e6, Geometry::Exact)?;
+/// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
 /// let run = simulate(&c, Integrator::EventRk4, c.contact_time() / 100.0)?;
 /// let doc = simulation_json(&c, &[run]);
 /// assert_eq!(doc["exact"]["v"], "3/11");
@@ -153,7 +153,7 @@ fn fixed_or_sci(x: f64) -> String {
 /// assert_eq!(doc["ok"], true);
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn simulation_json(contact: &Contact, runs: &[Run]) -> Value {
+pub fn simulation_json(contact: &CompliantContact, runs: &[Run]) -> Value {
     let omega_c = contact.frequency();
     let rows: Vec<Value> = runs
         .iter()
@@ -335,7 +335,7 @@ fn merge(doc: &mut Value, extra: Value) {
 }
 
 /// The scene (words and numbers).
-fn header(contact: &Contact) -> String {
+fn header(contact: &CompliantContact) -> String {
     let scene = contact.scene();
     let numbers = scene_json(scene);
     let list: Vec<String> = ["m", "M", "l", "a", "v0"]
@@ -356,7 +356,7 @@ fn geometry_words(geometry: Geometry) -> &'static str {
     }
 }
 
-fn time_words(contact: &Contact) -> String {
+fn time_words(contact: &CompliantContact) -> String {
     if contact.sticking() {
         format!(
             "T_s = {:.4e} s (settle time of the glued, critically damped contact)",
@@ -367,7 +367,7 @@ fn time_words(contact: &Contact) -> String {
     }
 }
 
-fn steps_words(contact: &Contact) -> &'static str {
+fn steps_words(contact: &CompliantContact) -> &'static str {
     if contact.sticking() {
         "fixed-step methods run through the approach (l/10 at v0) and T_s; event-rk4 integrates \
          only the contact, from its onset to T_s"
@@ -379,7 +379,7 @@ fn steps_words(contact: &Contact) -> &'static str {
 }
 
 /// The exact values, exact with a decimal beside, and the energy change they imply.
-fn exact_block(contact: &Contact) -> String {
+fn exact_block(contact: &CompliantContact) -> String {
     let exact = contact.exact();
     let mut rows: Vec<(&str, &str, Q)> = vec![
         ("v", "projectile velocity", exact.after.v.clone()),
@@ -432,7 +432,7 @@ fn error_legend(pivoted: bool) -> String {
 
 /// The tolerance column's definition; `contact` gives the model floor's value (one stiffness),
 /// `None` in a sweep, where it falls with k.
-fn tolerance_legend(geometry: Geometry, contact: Option<&Contact>) -> String {
+fn tolerance_legend(geometry: Geometry, contact: Option<&CompliantContact>) -> String {
     let value = contact.map_or(String::new(), |c| {
         let model = Tolerance::of(c, Integrator::EventRk4, 0.0, 0).model;
         format!(" {model:.1e}")
@@ -527,7 +527,7 @@ fn sweep_verdict_lines(rows: &[SweepRow]) -> String {
 }
 
 /// The scene, the model and the exact values (as exact strings, and rounded to f64).
-fn model_json(contact: &Contact) -> Value {
+fn model_json(contact: &CompliantContact) -> Value {
     let exact = contact.exact();
     let mut exact_doc = json!({
         "v": exact.after.v.to_string(), "V": exact.after.rod_v.to_string(),

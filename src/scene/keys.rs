@@ -64,16 +64,16 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Mass,
         true,
         false,
-        "Projectile mass m (> 0); numbers may carry a unit (kg, g; m, cm, mm; m/s, cm/s, km/h), read exactly in SI.",
+        "Projectile mass m (> 0); numbers may carry a unit (kg, g; m, cm, mm; m/s, cm/s, km/h), read exactly in SI",
     ),
-    key("M", "M", Mass, true, false, "Rod mass M (> 0)."),
+    key("M", "M", Mass, true, false, "Rod mass M (> 0)"),
     key(
         "l",
         "l",
         Length,
         true,
         false,
-        "Half-length l of the rod (the rod is 2l long) [default: 1].",
+        "Half-length l of the rod (the rod is 2l long) [default: 1]",
     ),
     key(
         "length",
@@ -81,7 +81,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Length,
         false,
         false,
-        "Full length L = 2l of the rod, instead of --l.",
+        "Full length L = 2l of the rod, instead of --l",
     ),
     key(
         "a",
@@ -89,7 +89,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Length,
         true,
         false,
-        "Signed impact distance a from the rod's centre, |a| <= l [default: l, the end].",
+        "Signed impact distance a from the rod's centre, |a| <= l [default: l, the end]",
     ),
     key(
         "from-end",
@@ -97,7 +97,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Length,
         false,
         false,
-        "Impact distance d from the end, instead of --a (a = l - d).",
+        "Impact distance d from the end, instead of --a (a = l - d)",
     ),
     key(
         "v0",
@@ -105,7 +105,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Speed,
         true,
         false,
-        "Projectile speed v0 (> 0) [default: 1].",
+        "Projectile speed v0 (> 0) [default: 1]",
     ),
     key(
         "rod",
@@ -113,7 +113,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Pure,
         true,
         false,
-        "Mass distribution: uniform, dumbbell, rg=<radius of gyration> or I=<moment of inertia> [default: uniform].",
+        "Mass distribution: uniform, dumbbell, rg=<radius of gyration> or I=<moment of inertia> [default: uniform]",
     ),
     key(
         "e",
@@ -121,7 +121,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Pure,
         true,
         false,
-        "Coefficient of restitution, 0 <= e <= 1 [default: 1].",
+        "Coefficient of restitution, 0 <= e <= 1 [default: 1]",
     ),
     key(
         "pivot",
@@ -129,7 +129,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Length,
         true,
         false,
-        "Put the rod on a fixed frictionless pivot at signed position p, |p| <= l.",
+        "Put the rod on a fixed frictionless pivot at signed position p, |p| <= l",
     ),
     key(
         "v0t",
@@ -137,7 +137,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Speed,
         true,
         true,
-        "The projectile's velocity along the rod (+y, towards increasing a) [default: 0].",
+        "The projectile's velocity along the rod (+y, towards increasing a) [default: 0]",
     ),
     key(
         "mu",
@@ -145,7 +145,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Pure,
         true,
         true,
-        "Coulomb friction coefficient at the contact, mu >= 0 [default: 0].",
+        "Coulomb friction coefficient at the contact, mu >= 0 [default: 0]",
     ),
     key(
         "radius",
@@ -153,7 +153,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Length,
         true,
         true,
-        "A solid disc projectile of this radius (I = m r^2/2) instead of a point.",
+        "A solid disc projectile of this radius (I = m r^2/2) instead of a point",
     ),
     key(
         "spin",
@@ -161,7 +161,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         AngularSpeed,
         true,
         true,
-        "The disc's spin before the impact, counterclockwise seen from above [default: 0].",
+        "The disc's spin before the impact, counterclockwise seen from above [default: 0]",
     ),
     key(
         "rod-v",
@@ -169,7 +169,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Speed,
         true,
         true,
-        "The rod centre's velocity across the rod (along x) before the impact [default: 0].",
+        "The rod centre's velocity across the rod (along x) before the impact [default: 0]",
     ),
     key(
         "rod-vt",
@@ -177,7 +177,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Speed,
         true,
         true,
-        "The rod centre's velocity along the rod before the impact [default: 0].",
+        "The rod centre's velocity along the rod before the impact [default: 0]",
     ),
     key(
         "rod-omega",
@@ -185,7 +185,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         AngularSpeed,
         true,
         true,
-        "The rod's angular velocity before the impact (sign of omega) [default: 0].",
+        "The rod's angular velocity before the impact (sign of omega) [default: 0]",
     ),
 ];
 

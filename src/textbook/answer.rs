@@ -1,4 +1,4 @@
-//! What checking a claimed answer found: its [`Agreement`] with the exact value, how far off it
+//! What checking a claimed answer found: its [`AnswerAgreement`] with the exact value, how far off it
 //! is ([`RelError`]), a [`Counterexample`] scene for a refuted formula, and the
 //! [`SceneCheck`] that gathers one [`CheckedAnswer`] per claim. `crate::report` renders them.
 
@@ -8,7 +8,7 @@ use num_traits::{Signed, Zero};
 
 /// Whether a claimed answer agrees with the exact one.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Agreement {
+pub enum AnswerAgreement {
     /// The claim is right (to its own significant figures, exactly, or as an identity).
     Agrees,
     /// The claim is wrong.
@@ -91,7 +91,7 @@ pub struct CheckedAnswer {
     /// A scene refuting a formula.
     pub counterexample: Option<Counterexample>,
     /// Whether the claim agrees.
-    pub agreement: Agreement,
+    pub agreement: AnswerAgreement,
     /// Remarks: ambiguous figures, bounds on pi, opposite sign, identity, counterexample.
     pub notes: Vec<String>,
 }
@@ -101,9 +101,9 @@ impl CheckedAnswer {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::textbook::{Agreement, CheckedAnswer};
+    /// use rodimpact::textbook::{AnswerAgreement, CheckedAnswer};
     /// let answer = CheckedAnswer::new("v", "2.3", "7/3".into(), None);
-    /// assert_eq!(answer.agreement, Agreement::Undecided);
+    /// assert_eq!(answer.agreement, AnswerAgreement::Undecided);
     /// ```
     pub fn new(name: &str, claim: &str, exact: String, value: Option<Exact>) -> CheckedAnswer {
         CheckedAnswer {
@@ -113,7 +113,7 @@ impl CheckedAnswer {
             value,
             rel_error: None,
             counterexample: None,
-            agreement: Agreement::Undecided,
+            agreement: AnswerAgreement::Undecided,
             notes: Vec::new(),
         }
     }
@@ -126,7 +126,7 @@ impl CheckedAnswer {
     /// assert!(!CheckedAnswer::new("v", "2.3", "7/3".into(), None).agrees());
     /// ```
     pub fn agrees(&self) -> bool {
-        self.agreement == Agreement::Agrees
+        self.agreement == AnswerAgreement::Agrees
     }
 }
 

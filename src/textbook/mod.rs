@@ -7,7 +7,7 @@
 //! counterexample scene when false. [`problems`] reads problem collections (TOML).
 //!
 //! The files, bottom up: the claimed answer and what it is about (`quantity.rs`, `claim.rs`,
-//! `exact.rs`), what checking it found (`answer.rs`: [`CheckedAnswer`], [`Agreement`],
+//! `exact.rs`), what checking it found (`answer.rs`: [`CheckedAnswer`], [`AnswerAgreement`],
 //! [`SceneCheck`]), deciding a number ([`numeric`]) or a formula ([`symbolic`]), and the
 //! orchestration of one scene's claims (`check.rs`: [`check_scene`]). The reports are rendered
 //! by [`crate::report`] (`check_table`, `check_json`, `problems_text`, `problems_json`).
@@ -40,7 +40,9 @@ pub mod sigfig;
 pub mod symbolic;
 pub mod units;
 
-pub use answer::{Agreement, CheckedAnswer, Counterexample, RelError, SceneCheck, SceneSummary};
+pub use answer::{
+    AnswerAgreement, CheckedAnswer, Counterexample, RelError, SceneCheck, SceneSummary,
+};
 pub use check::{check_scene, check_scene_within};
 pub use claim::{ClaimedAnswer, ClaimedValue};
 pub use exact::Exact;

@@ -2,7 +2,7 @@
 //! figures (with exact rational bounds on pi for rpm), an exact number or a constant formula
 //! exactly.
 
-use super::answer::{Agreement, CheckedAnswer, RelError};
+use super::answer::{AnswerAgreement, CheckedAnswer, RelError};
 use super::claim::{ClaimedAnswer, ClaimedValue};
 use super::exact::Exact;
 use super::quantity::Quantity;
@@ -18,10 +18,10 @@ use std::cmp::Ordering;
 ///
 /// # Examples
 /// ```
-/// use rodimpact::textbook::{numeric::decide, Agreement, ClaimedAnswer, Exact};
+/// use rodimpact::textbook::{numeric::decide, AnswerAgreement, ClaimedAnswer, Exact};
 /// use rodimpact::field::q;
 /// let d = decide(&ClaimedAnswer::parse("omega=1.90").unwrap(), &Exact::Rational(q(36, 19)), None);
-/// assert_eq!(d.agreement, Agreement::LastDigit);
+/// assert_eq!(d.agreement, AnswerAgreement::LastDigit);
 /// ```
 pub fn decide(claim: &ClaimedAnswer, exact: &Exact, sig: Option<u32>) -> CheckedAnswer {
     let mut d = CheckedAnswer::new(
@@ -40,9 +40,9 @@ pub fn decide(claim: &ClaimedAnswer, exact: &Exact, sig: Option<u32>) -> Checked
                     if !same_sign {
                         d.notes.push(opposite_sign_note());
                     }
-                    Agreement::Agrees
+                    AnswerAgreement::Agrees
                 } else {
-                    Agreement::Disagrees
+                    AnswerAgreement::Disagrees
                 };
                 let claim_mid = midpoint(&Exact::Surd(QSqrt::new(Q::zero(), c, rad)), 40);
                 d.rel_error = rel_error(&claim_mid, &midpoint(exact, 40), omega);
@@ -153,7 +153,7 @@ fn printed(d: &mut CheckedAnswer, m: &Measured, exact: &Exact, omega: bool, sig:
 
 /// The agreement of a printed value against an exact value known to lie in `[lo, hi]`, or `None`
 /// when the interval is still too wide to decide the rounding.
-fn judge(claim: &Q, p: &Printed, lo: &Q, hi: &Q) -> Option<Agreement> {
+fn judge(claim: &Q, p: &Printed, lo: &Q, hi: &Q) -> Option<AnswerAgreement> {
     let round = |x: &Q, tie: Tie| match &p.precision {
         Precision::ZeroAt { place } => round_at(x, *place, tie),
         Precision::Figures { figures, .. } => round_sig(x, *figures, tie),
@@ -161,9 +161,9 @@ fn judge(claim: &Q, p: &Printed, lo: &Q, hi: &Q) -> Option<Agreement> {
     };
     if p.precision == Precision::Exact {
         return Some(if lo == hi && claim == lo {
-            Agreement::Agrees
+            AnswerAgreement::Agrees
         } else {
-            Agreement::Disagrees
+            AnswerAgreement::Disagrees
         });
     }
     let mut accepted = Vec::with_capacity(2);
@@ -175,16 +175,16 @@ fn judge(claim: &Q, p: &Printed, lo: &Q, hi: &Q) -> Option<Agreement> {
         accepted.push(r);
     }
     if accepted.contains(claim) {
-        return Some(Agreement::Agrees);
+        return Some(AnswerAgreement::Agrees);
     }
     let unit = pow10(p.place().unwrap_or(0));
     let one_digit_off = accepted.iter().any(|r| (claim - r).abs() == unit);
     let within_a_unit = (claim - lo).abs() <= unit && (claim - hi).abs() <= unit;
     let two_figures = matches!(p.precision, Precision::Figures { figures, .. } if figures >= 2);
     if one_digit_off && within_a_unit && two_figures {
-        Some(Agreement::LastDigit)
+        Some(AnswerAgreement::LastDigit)
     } else {
-        Some(Agreement::Disagrees)
+        Some(AnswerAgreement::Disagrees)
     }
 }
 

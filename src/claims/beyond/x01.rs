@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Free, Law::Restitution).impulses(),
+        Setting::new(Rod::Free, Law::Restitution).impulses(),
         &[
             Check::holds(
                 "the impulse and the velocities",

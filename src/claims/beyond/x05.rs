@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Free, Law::Restitution).impulses(),
+        Setting::new(Rod::Free, Law::Restitution).impulses(),
         &[
             Check::holds(
                 "omega_e = (1+e) v0 a/(a*^2 + a^2)",

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Scene::new(Rod::Free, Law::Restitution),
+    Setting::new(Rod::Free, Law::Restitution),
     &[
         Check::holds("omega(a*) = (1+e) v0/(2a*)", "omega_s = (1 + e)*v0/(2*s)"),
         Check::holds("omega(a*)^2 = ((1+e) v0/2)^2 mu/I", "omega_s^2 = ((1 + e)*v0/2)^2*(m*M/(M + m))/I"),

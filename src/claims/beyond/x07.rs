@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Free, Law::Restitution),
+        Setting::new(Rod::Free, Law::Restitution),
         &[
             Check::holds(
                 "omega(a)/omega(a*) = 2s/(1+s^2) with s = a/a*",

@@ -14,7 +14,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Restitution),
+        Setting::new(Rod::Uniform, Law::Restitution),
         &[
             Check::holds(
                 "(omega(l)/omega(a*))^2 = 12(1+k)/(4+k)^2, k = M/m",

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Scene::new(Rod::Free, Law::Restitution),
+    Setting::new(Rod::Free, Law::Restitution),
     &[
         Check::holds("at a*: v - V, V and the rotational energy", "v_s - V_s = (1 - e)*v0/2 and V_s = (1 + e)*m*v0/(2*(M + m)) and I*omega_s^2 = ((1 + e)/2)^2*(m*M/(M + m))*v0^2"),
     ],

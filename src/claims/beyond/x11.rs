@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Free, Law::Restitution),
+        Setting::new(Rod::Free, Law::Restitution),
         &[
             Check::holds(
                 "energy lost: 2 dK = (1 - e^2) m_eff v0^2, m_eff = 1/(1/m + 1/M + a^2/I)",

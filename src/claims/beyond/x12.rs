@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Scene::new(Rod::Gyration, Law::Restitution),
+    Setting::new(Rod::Gyration, Law::Restitution),
     &[
         Check::holds("v = v0 (m - e M_eff)/(m + M_eff), M_eff = M r_G^2/(r_G^2 + a^2)", "v = v0*(m - e*Me)/(m + Me)"),
         Check::holds("bounces back iff m < e M_eff, stops iff m = e M_eff", "(v < 0 => m < e*Me) and (m < e*Me => v < 0) and (v = 0 => m = e*Me) and (m = e*Me => v = 0)"),

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, Law::Elastic),
         &[
             Check::holds(
                 "v = v0 (a^2 - a0^2)/(a^2 + a*^2), a0^2 = l^2 (M - m)/(3m)",

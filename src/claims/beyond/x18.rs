@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Pivot, Law::Restitution).impulses(),
+        Setting::new(Rod::Pivot, Law::Restitution).impulses(),
         &[
             Check::holds(
                 "omega = (1+e) m d v0/(I_p + m d^2)",

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Scene::new(Rod::Free, Law::Elastic),
+    Setting::new(Rod::Free, Law::Elastic),
     &[
         Check::holds("at a*: v = V = m v0/(M + m) and omega a* = v0 (the projectile rests relative to the rod's centre, which meets it again after half a turn with closing speed omega a* = v0)", "v_s = m*v0/(M + m) and V_s = m*v0/(M + m) and omega_s*s = v0"),
     ],

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Free, Law::Restitution),
+        Setting::new(Rod::Free, Law::Restitution),
         &[
             Check::holds(
                 "the rod's share I omega/(m v0 a) = (1+e)/D",

@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Gyration, Law::Restitution),
+        Setting::new(Rod::Gyration, Law::Restitution),
         &[
             Check::holds(
                 "the struck point's speed is (1+e) v0 m/(m + M_eff)",

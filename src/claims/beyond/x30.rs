@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 // the states the physics gives, disc spin included.
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Free, Law::Restitution).oblique(Friction::Slide),
+        Setting::new(Rod::Free, Law::Restitution).oblique(Friction::Slide),
         &[
             Check::holds(
                 "sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (u_t - mu_f J k_t/2), u_t = v0t + w rd, k_t = 3/m + 1/M",

@@ -16,7 +16,8 @@ mod sympy;
 pub use expr::{Expr, ParseError, Prop, parse};
 pub use physics::{Hypothesis, hypotheses, unknowns};
 pub use statement::{
-    AT_A, Balance, Check, Expect, Export, Friction, Impact, Law, Oblique, Rod, Scene, Statement,
+    AT_A, Balance, Check, Expect, Export, Friction, Impact, Law, ObliqueSetting, Rod, Setting,
+    Statement,
 };
 pub use sympy::supported as sympy_supported;
 
@@ -24,27 +25,27 @@ use super::Entry;
 
 /// The export formats.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Format {
+pub enum ExportFormat {
     /// SMT-LIB 2 (QF_NRA), for z3.
     Smt2,
     /// A Python script using SymPy.
     Sympy,
 }
 
-impl Format {
+impl ExportFormat {
     /// `smt2` or `sympy`.
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::claims::export::Format;
-    /// assert_eq!(Format::parse("sympy"), Some(Format::Sympy));
-    /// assert_eq!(Format::Smt2.name(), "smt2");
-    /// assert_eq!(Format::parse("coq"), None);
+    /// use rodimpact::claims::export::ExportFormat;
+    /// assert_eq!(ExportFormat::parse("sympy"), Some(ExportFormat::Sympy));
+    /// assert_eq!(ExportFormat::Smt2.name(), "smt2");
+    /// assert_eq!(ExportFormat::parse("coq"), None);
     /// ```
-    pub fn parse(text: &str) -> Option<Format> {
+    pub fn parse(text: &str) -> Option<ExportFormat> {
         match text {
-            "smt2" => Some(Format::Smt2),
-            "sympy" => Some(Format::Sympy),
+            "smt2" => Some(ExportFormat::Smt2),
+            "sympy" => Some(ExportFormat::Sympy),
             _ => None,
         }
     }
@@ -52,8 +53,8 @@ impl Format {
     /// The format's name on the command line.
     pub fn name(self) -> &'static str {
         match self {
-            Format::Smt2 => "smt2",
-            Format::Sympy => "sympy",
+            ExportFormat::Smt2 => "smt2",
+            ExportFormat::Sympy => "sympy",
         }
     }
 }
@@ -87,15 +88,15 @@ fn header(entry: &Entry, statement: &Statement, comment: &str) -> String {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::claims::{export::{Format, not_exported}, find};
-/// assert_eq!(not_exported(find("C15").unwrap(), Format::Smt2), None);
-/// assert!(not_exported(find("X26").unwrap(), Format::Smt2).is_some());
+/// use rodimpact::claims::{export::{ExportFormat, not_exported}, find};
+/// assert_eq!(not_exported(find("C15").unwrap(), ExportFormat::Smt2), None);
+/// assert!(not_exported(find("X26").unwrap(), ExportFormat::Smt2).is_some());
 /// ```
-pub fn not_exported(entry: &Entry, format: Format) -> Option<&'static str> {
+pub fn not_exported(entry: &Entry, format: ExportFormat) -> Option<&'static str> {
     match (&entry.export, format) {
         (Export::Unstated(why), _) => Some(why),
-        (Export::Stated(_), Format::Smt2) => None,
-        (Export::Stated(s), Format::Sympy) => (!sympy_supported(s).contains(&true)).then_some(
+        (Export::Stated(_), ExportFormat::Smt2) => None,
+        (Export::Stated(s), ExportFormat::Sympy) => (!sympy_supported(s).contains(&true)).then_some(
             "only inequalities over a domain (no identity, no check at given values): z3 decides them, see smt2/",
         ),
     }
@@ -105,12 +106,12 @@ pub fn not_exported(entry: &Entry, format: Format) -> Option<&'static str> {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::claims::{export::{Format, export}, find};
-/// let file = export(find("C15").unwrap(), Format::Smt2).unwrap();
+/// use rodimpact::claims::{export::{ExportFormat, export}, find};
+/// let file = export(find("C15").unwrap(), ExportFormat::Smt2).unwrap();
 /// assert_eq!(file.name, "C15.smt2");
 /// assert!(file.text.contains("(check-sat-using qfnra)") && file.text.ends_with("; expect: sat unsat\n"));
 /// ```
-pub fn export(entry: &Entry, format: Format) -> Option<Exported> {
+pub fn export(entry: &Entry, format: ExportFormat) -> Option<Exported> {
     if not_exported(entry, format).is_some() {
         return None;
     }
@@ -118,8 +119,8 @@ pub fn export(entry: &Entry, format: Format) -> Option<Exported> {
         return None;
     };
     Some(match format {
-        Format::Smt2 => smt2::write(entry, statement),
-        Format::Sympy => sympy::write(entry, statement),
+        ExportFormat::Smt2 => smt2::write(entry, statement),
+        ExportFormat::Sympy => sympy::write(entry, statement),
     })
 }
 
@@ -128,12 +129,12 @@ pub fn export(entry: &Entry, format: Format) -> Option<Exported> {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::claims::{export::{Format, export_all}, registry};
-/// let files = export_all(registry(), Format::Smt2);
+/// use rodimpact::claims::{export::{ExportFormat, export_all}, registry};
+/// let files = export_all(registry(), ExportFormat::Smt2);
 /// assert!(files.iter().any(|f| f.name == "README.md"));
 /// assert!(files.iter().any(|f| f.name == "C1.smt2"));
 /// ```
-pub fn export_all(entries: &[Entry], format: Format) -> Vec<Exported> {
+pub fn export_all(entries: &[Entry], format: ExportFormat) -> Vec<Exported> {
     let mut files: Vec<Exported> = entries.iter().filter_map(|e| export(e, format)).collect();
     files.push(Exported {
         name: "README.md".into(),
@@ -142,13 +143,13 @@ pub fn export_all(entries: &[Entry], format: Format) -> Vec<Exported> {
     files
 }
 
-fn index(entries: &[Entry], format: Format) -> String {
+fn index(entries: &[Entry], format: ExportFormat) -> String {
     let exported = entries
         .iter()
         .filter(|e| not_exported(e, format).is_none())
         .count();
     let (checker, run, extension) = match format {
-        Format::Smt2 => (
+        ExportFormat::Smt2 => (
             "z3",
             "`z3 FILE` prints one answer per `(check-sat-using qfnra)` (z3's strategy for \
              nonlinear real arithmetic, ending in its complete procedure nlsat); the last line of each file, \
@@ -156,7 +157,7 @@ fn index(entries: &[Entry], format: Format) -> String {
              reading meant to fail, or a witness, with its model).",
             "smt2",
         ),
-        Format::Sympy => (
+        ExportFormat::Sympy => (
             "SymPy",
             "`python3 FILE` exits with status 0 when every check is confirmed.",
             "py",
@@ -178,7 +179,7 @@ fn index(entries: &[Entry], format: Format) -> String {
                 if let Export::Stated(s) = &e.export {
                     let decided = sympy_supported(s);
                     let n = decided.iter().filter(|d| **d).count();
-                    if format == Format::Sympy && n < decided.len() {
+                    if format == ExportFormat::Sympy && n < decided.len() {
                         cell.push_str(&format!(
                             " ({n} of {} checks; the others, inequalities over a domain, are z3's)",
                             decided.len()

@@ -2,7 +2,7 @@
 //! inertia, and for each impact the balance equations and the contact law in its own unknowns.
 //! Nothing here comes from rodimpact's solver.
 
-use super::statement::{Balance, Friction, Impact, Law, Oblique, Rod, Scene, Statement};
+use super::statement::{Balance, Friction, Impact, Law, ObliqueSetting, Rod, Setting, Statement};
 
 /// A hypothesis: what it says in words and the proposition.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -26,13 +26,13 @@ fn hyp(label: impl Into<String>, text: impl Into<String>) -> Hypothesis {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::claims::export::{Friction, Impact, Scene, Rod, Law, AT_A, unknowns};
-/// let scene = Scene::new(Rod::Uniform, Law::Elastic);
+/// use rodimpact::claims::export::{Friction, Impact, Setting, Rod, Law, AT_A, unknowns};
+/// let scene = Setting::new(Rod::Uniform, Law::Elastic);
 /// assert_eq!(unknowns(&scene, &Impact { at: "l", tag: "1" }), ["v_1", "V_1", "omega_1"]);
-/// let oblique = Scene::new(Rod::Free, Law::Elastic).oblique(Friction::Stick);
+/// let oblique = Setting::new(Rod::Free, Law::Elastic).oblique(Friction::Stick);
 /// assert_eq!(unknowns(&oblique, &AT_A[0]), ["v", "V", "omega", "J", "vt", "Vt", "spin", "Jt"]);
 /// ```
-pub fn unknowns(scene: &Scene, impact: &Impact) -> Vec<String> {
+pub fn unknowns(scene: &Setting, impact: &Impact) -> Vec<String> {
     let mut names = match scene.rod {
         Rod::Nothing => vec![],
         Rod::Pivot => vec!["v", "omega"],
@@ -63,7 +63,7 @@ fn tagged(name: &str, tag: &str) -> String {
 }
 
 /// The domain and the moment of inertia of the scene.
-fn domain(scene: &Scene) -> Vec<Hypothesis> {
+fn domain(scene: &Setting) -> Vec<Hypothesis> {
     let mut out = Vec::new();
     if scene.rod == Rod::Nothing {
         return out;
@@ -109,7 +109,7 @@ fn domain(scene: &Scene) -> Vec<Hypothesis> {
 }
 
 /// The balance equations and the contact law of one impact.
-fn impact_physics(scene: &Scene, impact: &Impact) -> Vec<Hypothesis> {
+fn impact_physics(scene: &Setting, impact: &Impact) -> Vec<Hypothesis> {
     let [v, big_v, w, j, p] = ["v", "V", "omega", "J", "P"].map(|n| tagged(n, impact.tag));
     let a = format!("({})", impact.at);
     let at = if impact.tag.is_empty() {
@@ -214,7 +214,7 @@ fn impact_physics(scene: &Scene, impact: &Impact) -> Vec<Hypothesis> {
 /// on the disc at its contact point, `rd` from its centre), and the friction law. The rod's
 /// point `(d, a)` moves along the rod at `Vt - omega*d` (`-omega*d` on a pivot, which holds the
 /// rod along its axis); the disc's contact point at `vt + spin*rd`.
-fn along_the_rod(oblique: Oblique, pivot: bool) -> Vec<Hypothesis> {
+fn along_the_rod(oblique: ObliqueSetting, pivot: bool) -> Vec<Hypothesis> {
     let mut out = vec![hyp(
         "projectile, along the rod: impulse -Jt",
         "m*vt - m*v0t = -Jt",
@@ -252,9 +252,9 @@ fn along_the_rod(oblique: Oblique, pivot: bool) -> Vec<Hypothesis> {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::claims::export::{Check, Law, Rod, Scene, Statement, hypotheses};
+/// use rodimpact::claims::export::{Check, Law, Rod, Setting, Statement, hypotheses};
 /// const CHECKS: &[Check] = &[Check::holds("V > 0", "V > 0")];
-/// let s = Statement::new(Scene::new(Rod::Free, Law::Elastic), CHECKS);
+/// let s = Statement::new(Setting::new(Rod::Free, Law::Elastic), CHECKS);
 /// let texts: Vec<String> = hypotheses(&s).into_iter().map(|h| h.text).collect();
 /// assert!(texts.contains(&"m*v0 = m*v + M*V".to_string()));
 /// assert!(texts.contains(&"V + omega*(a) - v = v0".to_string()));

@@ -15,7 +15,7 @@ pub enum Export {
 #[derive(Debug, Clone, Copy)]
 pub struct Statement {
     /// The scene whose physics is assumed.
-    pub scene: Scene,
+    pub scene: Setting,
     /// The impacts considered (the same scene struck at each point, with its own unknowns).
     pub impacts: &'static [Impact],
     /// Hypotheses every check shares, in the statement language.
@@ -100,7 +100,7 @@ pub enum Friction {
 /// point `(d, a)` of its axis (`d = 0`), a friction law, and the rod at rest or drifting with
 /// `(V0, Vt0)` without turning.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Oblique {
+pub struct ObliqueSetting {
     /// The law along the rod.
     pub friction: Friction,
     /// Whether the rod drifts with `(V0, Vt0)` before the impact.
@@ -109,7 +109,7 @@ pub struct Oblique {
 
 /// The physics assumed: body, balance and contact law.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Scene {
+pub struct Setting {
     /// The body struck.
     pub rod: Rod,
     /// The balance equations.
@@ -117,13 +117,13 @@ pub struct Scene {
     /// The contact law.
     pub law: Law,
     /// The motion along the rod and its friction, for an oblique impact.
-    pub oblique: Option<Oblique>,
+    pub oblique: Option<ObliqueSetting>,
 }
 
-impl Scene {
+impl Setting {
     /// The scene with the momentum balances.
-    pub const fn new(rod: Rod, law: Law) -> Scene {
-        Scene {
+    pub const fn new(rod: Rod, law: Law) -> Setting {
+        Setting {
             rod,
             balance: Balance::Momentum,
             law,
@@ -136,15 +136,15 @@ impl Scene {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::claims::export::{Balance, Friction, Law, Rod, Scene};
-    /// let scene = Scene::new(Rod::Free, Law::Restitution).oblique(Friction::Stick);
+    /// use rodimpact::claims::export::{Balance, Friction, Law, Rod, Setting};
+    /// let scene = Setting::new(Rod::Free, Law::Restitution).oblique(Friction::Stick);
     /// assert_eq!(scene.balance, Balance::Impulses);
     /// assert!(!scene.oblique.unwrap().moving);
     /// ```
-    pub const fn oblique(self, friction: Friction) -> Scene {
-        Scene {
+    pub const fn oblique(self, friction: Friction) -> Setting {
+        Setting {
             balance: Balance::Impulses,
-            oblique: Some(Oblique {
+            oblique: Some(ObliqueSetting {
                 friction,
                 moving: false,
             }),
@@ -153,25 +153,25 @@ impl Scene {
     }
 
     /// The oblique scene with the rod drifting with `(V0, Vt0)` before the impact (a scene
-    /// without [`Scene::oblique`] stays as it is).
+    /// without [`Setting::oblique`] stays as it is).
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::claims::export::{Friction, Law, Rod, Scene};
-    /// let scene = Scene::new(Rod::Free, Law::Restitution).oblique(Friction::Any).moving();
+    /// use rodimpact::claims::export::{Friction, Law, Rod, Setting};
+    /// let scene = Setting::new(Rod::Free, Law::Restitution).oblique(Friction::Any).moving();
     /// assert!(scene.oblique.unwrap().moving);
     /// ```
-    pub const fn moving(self) -> Scene {
+    pub const fn moving(self) -> Setting {
         let oblique = match self.oblique {
-            Some(o) => Some(Oblique { moving: true, ..o }),
+            Some(o) => Some(ObliqueSetting { moving: true, ..o }),
             None => None,
         };
-        Scene { oblique, ..self }
+        Setting { oblique, ..self }
     }
 
     /// The same scene written with the impulses of each body.
-    pub const fn impulses(self) -> Scene {
-        Scene {
+    pub const fn impulses(self) -> Setting {
+        Setting {
             balance: Balance::Impulses,
             ..self
         }
@@ -242,7 +242,7 @@ impl Check {
 
 impl Statement {
     /// The statement of `checks` about one impact at `a`, with no further hypotheses.
-    pub const fn new(scene: Scene, checks: &'static [Check]) -> Statement {
+    pub const fn new(scene: Setting, checks: &'static [Check]) -> Statement {
         Statement {
             scene,
             impacts: AT_A,

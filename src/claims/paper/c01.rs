@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Scene::new(Rod::Uniform, Law::Elastic),
+    Setting::new(Rod::Uniform, Law::Elastic),
     &[
         Check::exists("a point a < l where omega exceeds omega(l): the witness M = m = l = v0 = 1, a = a* (a^2 = 2/3)", "0 <= a and a < l and omega > omega_l").given(&["m = 1", "M = 1", "l = 1", "v0 = 1", "a^2 = 2/3"]),
     ],

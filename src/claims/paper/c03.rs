@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, Law::Elastic),
         &[Check::fails(
             "the intuition, refuted at M = m = l = v0 = 1 between a1 = a* (a1^2 = 2/3) and a2 = l",
             "0 <= a1 and a1 < a2 and a2 <= l => omega_1 < omega_2",

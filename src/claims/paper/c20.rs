@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Free, Law::Elastic),
+        Setting::new(Rod::Free, Law::Elastic),
         &[
             Check::holds("omega = 2 v0 a/(a*^2 + a^2)", "omega = 2*v0*a/(s^2 + a^2)"),
             Check::holds(

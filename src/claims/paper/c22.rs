@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, Law::Elastic),
         &[
             Check::holds(
                 "a* = sqrt((M+m)/(3m)) l is the a*^2 = (M+m) I/(mM) of C20 for I = M l^2/3",

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, Law::Elastic),
         &[Check::holds(
             "M > 2m: omega strictly increasing on [0, l]",
             "0 <= a1 and a1 < a2 and a2 <= l => omega_1 < omega_2",

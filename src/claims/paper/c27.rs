@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, Law::Elastic),
         &[Check::holds(
             "M < 2m: a* < l, omega(a*) > omega(l), and a* is the only maximiser on [0, l]",
             "s < l and omega_s > omega_l and (0 <= a and a <= l and a != s => omega < omega_s)",

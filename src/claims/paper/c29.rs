@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, Law::Elastic),
         &[
             Check::holds(
                 "a*^2 - l^2/3 = (M/m) l^2/3, which tends to 0 as M/m -> 0",

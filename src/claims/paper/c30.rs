@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Sticking),
+        Setting::new(Rod::Uniform, Law::Sticking),
         &[Check::holds(
             "sticking: omega = m a v0/(I + mu a^2) is maximal at the same a* over a >= 0",
             "a >= 0 and a != s => omega < omega_s",

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Elastic).impulses(),
+        Setting::new(Rod::Uniform, Law::Elastic).impulses(),
         &[Check::exists(
             "the impulse differs between a = 0 and a = l (M = m = l = v0 = 1)",
             "J_1 != J_2",

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, Law::Elastic),
         &[Check::holds(
             "I_lin = M V decreases as a increases (a >= 0)",
             "0 <= a1 and a1 < a2 => M*V_2 < M*V_1",

@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Free, Law::Restitution),
+        Setting::new(Rod::Free, Law::Restitution),
         &[Check::holds(
             "I omega = a (M V) with M V > 0 strictly decreasing on a >= 0",
             "I*omega = a*M*V and M*V > 0 and (0 <= a1 and a1 < a2 => M*V_2 < M*V_1)",

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, Law::Elastic),
         &[Check::holds(
             "M >= 2m: a = l wins on [0, l]",
             "0 <= a and a < l => omega < omega_l",

@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Gyration, Law::Elastic),
+        Setting::new(Rod::Gyration, Law::Elastic),
         &[Check::holds(
             "a* = sqrt((M+m)/m) r_G maximises omega over a >= 0",
             "a >= 0 and a != s => omega < omega_s",

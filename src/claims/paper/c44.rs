@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Scene::new(Rod::Dumbbell, Law::Elastic),
+        Setting::new(Rod::Dumbbell, Law::Elastic),
         &[Check::holds(
             "a* > l always, and the maximum on [0, l] is at a = l",
             "s > l and (0 <= a and a < l => omega < omega_l)",

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Scene::new(Rod::Gyration, Law::Elastic),
+    Setting::new(Rod::Gyration, Law::Elastic),
     &[
         Check::holds("every r_G < l has masses with an interior optimum: M = m (l^2 - r_G^2)/(2 r_G^2) gives a* < l and omega(a*) > omega(l)", "s < l and omega_s > omega_l").given(&["r < l", "M = m*(l^2 - r^2)/(2*r^2)"]),
         Check::holds("r_G = l (the dumbbell): a* > l for all masses", "s > l").given(&["r = l"]),

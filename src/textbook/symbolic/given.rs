@@ -8,19 +8,13 @@ use crate::textbook::claim::{ClaimedValue, read_value};
 use crate::textbook::expr::Budget;
 use crate::units::Dimension;
 
-/// The numeric scene inputs in the order they are read: (key, text).
-fn numeric_fields(input: &SceneInput) -> [(&'static str, &Option<String>); 9] {
-    [
-        ("m", &input.m),
-        ("M", &input.rod_mass),
-        ("l", &input.l),
-        ("length", &input.length),
-        ("a", &input.a),
-        ("from-end", &input.from_end),
-        ("v0", &input.v0),
-        ("e", &input.e),
-        ("pivot", &input.pivot),
-    ]
+/// The paper's numeric scene inputs in the order they are read, (key, text): every scene key
+/// but the rod's kind and the oblique inputs.
+fn numeric_fields(input: &SceneInput) -> impl Iterator<Item = (&'static str, &Option<String>)> {
+    input
+        .inputs()
+        .filter(|(k, _)| !k.oblique && k.name != "rod")
+        .map(|(k, text)| (k.name, text))
 }
 
 /// How the rod was given.

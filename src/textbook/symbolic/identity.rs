@@ -6,7 +6,7 @@ use super::scene::{SAMPLES, SymbolicScene};
 use crate::error::Error;
 use crate::field::decimal;
 use crate::field::{Poly, Q, RatFn};
-use crate::textbook::answer::{Agreement, CheckedAnswer, Counterexample, RelError};
+use crate::textbook::answer::{AnswerAgreement, CheckedAnswer, Counterexample, RelError};
 use crate::textbook::claim::ClaimedAnswer;
 use crate::textbook::exact::Exact;
 use crate::textbook::expr::{Budget, Radical, words};
@@ -29,12 +29,12 @@ pub(crate) fn identity(
     if c.is_rational() && exact.is_rational() {
         let (claimed, value) = (Fraction::of(&c.coeff), Fraction::of(&exact.coeff));
         if claimed.equals(&value, false, budget, field)? {
-            d.agreement = Agreement::Agrees;
+            d.agreement = AnswerAgreement::Agrees;
             d.notes.push(identity_note(scene));
             return Ok(d);
         }
         if omega && claimed.equals(&value, true, budget, field)? {
-            d.agreement = Agreement::Agrees;
+            d.agreement = AnswerAgreement::Agrees;
             d.notes.push(identity_note(scene));
             d.notes
                 .push("opposite sign: compared by magnitude (rotation conventions differ)".into());
@@ -74,7 +74,7 @@ pub(crate) fn identity(
         let value = Exact::radical(ec, er);
         let (equal, same_sign) = radical_matches(&cc, &cr, &value);
         if equal && (same_sign || omega) && squares_agree {
-            d.agreement = Agreement::Agrees;
+            d.agreement = AnswerAgreement::Agrees;
             if !same_sign {
                 d.notes.push("opposite sign: compared by magnitude".into());
             }
@@ -172,7 +172,7 @@ fn identity_note(scene: &SymbolicScene) -> String {
 
 /// Refutes the claim with a counterexample scene: the relative error there, and a note.
 fn refute(answer: &mut CheckedAnswer, counterexample: Counterexample, omega: bool) {
-    answer.agreement = Agreement::Disagrees;
+    answer.agreement = AnswerAgreement::Disagrees;
     let (claimed, exact) = (
         midpoint(&counterexample.claimed, 40),
         midpoint(&counterexample.exact, 40),
