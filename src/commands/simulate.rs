@@ -65,7 +65,7 @@ pub(crate) struct SimulateArgs {
         required_unless_present = "sweep_k"
     )]
     pub(crate) stiffness: Option<String>,
-    /// CompliantContact geometry.
+    /// Contact geometry.
     #[arg(long, value_enum, default_value = "exact")]
     pub(crate) geometry: GeometryArg,
     /// One integrator [default: all five for one k, event-rk4 for --sweep-k].
