@@ -101,4 +101,58 @@ mod tests {
             prop_assert_eq!(q, Q::new(a, BigInt::from(d)));
         }
     }
+
+    /// G1 (docs/upstream-dashu-gcd.md): dashu-int 0.4.3's gcd panicked ("not enough memory
+    /// allocated") on these 91-word operands, the smallest of their shape, and on the
+    /// reduction of `solve --m 1 --M 1 --pivot 1e-622`. Fixed upstream in 0.5.1; rodimpact
+    /// requires 0.6. The reduction must give num-rational's value.
+    #[test]
+    fn the_operands_that_made_dashu_0_4_panic_reduce() {
+        let two = BigInt::from(2u8);
+        let w = two.pow(3648) + 1;
+        let v = two.pow(2112) * &w + 1;
+        let u = &v + &w;
+        for (n, d) in [(&u, &v), (&v, &u)] {
+            let reduced = IBig::ratio(ibig_from_big(n), ibig_from_big(d));
+            prop_assert_eq_plain(reduced, Q::new(n.clone(), d.clone()));
+        }
+        // The scene's own pair: 2P^3(P-3) over 2P^2(2P^2-3P+3), P = 10^622.
+        let p = BigInt::from(10u8).pow(622);
+        let n = 2 * p.pow(3) * (&p - 3);
+        let d = 2 * p.pow(2) * (2 * p.pow(2) - 3 * &p + 3);
+        prop_assert_eq_plain(
+            IBig::ratio(ibig_from_big(&n), ibig_from_big(&d)),
+            Q::new(n, d),
+        );
+    }
+
+    fn prop_assert_eq_plain(a: Q, b: Q) {
+        assert_eq!((a.numer(), a.denom()), (b.numer(), b.denom()));
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// Lopsided pairs `(Q R + 1 + R, Q R + 1)` of 20-220 words, the family on which
+        /// dashu-int 0.4.3's gcd panicked 1,850 times in 2,747 (a Lehmer step dividing a long
+        /// remainder by a much shorter one): reduced as num-rational reduces them.
+        #[test]
+        fn lopsided_gcds_reduce(r_words in 20usize..220, q_words in 20usize..140, seed in any::<u64>()) {
+            let mut state = seed | 1;
+            let mut word = || {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                state
+            };
+            let mut random = |words: usize| {
+                BigInt::from(BigUint::new((0..2 * words).map(|_| word() as u32).collect()))
+            };
+            let (r, q) = (random(r_words) + 1, random(q_words) + 1);
+            let v = &q * &r + 1;
+            let u = &v + &r;
+            let reduced = IBig::ratio(ibig_from_big(&u), ibig_from_big(&v));
+            let expected = Q::new(u, v);
+            prop_assert_eq!((reduced.numer(), reduced.denom()), (expected.numer(), expected.denom()));
+        }
+    }
 }
