@@ -218,14 +218,14 @@ fn exact_values(
 
 /// Writes v, V, omega and the oblique columns (`vt, Vt, spin, tangential_impulse, contact`;
 /// `spin` empty for a point projectile, `contact` empty without friction) of an oblique
-/// header's row, solved exactly by [`Impact::of`]; returns v, V, omega and whether every law
+/// header's row, solved exactly by [`Impact::on_both_axes`]; returns v, V, omega and whether every law
 /// held.
 fn oblique_values(scene: &Scene, out: &mut String) -> ([Q; 3], bool) {
-    let impact = Impact::of(scene);
+    let impact = Impact::on_both_axes(scene);
     let done = impact
         .oblique
         .as_ref()
-        .expect("an oblique header's scene is answered along the rod too");
+        .expect("answered on both axes");
     let after = &done.after;
     let values = [
         Some(&after.v),

@@ -61,9 +61,31 @@ impl Impact {
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
     pub fn of(scene: &Scene) -> Impact {
-        let Some(o) = scene.oblique() else {
-            return Impact::normal(scene);
-        };
+        match scene.oblique() {
+            None => Impact::normal(scene),
+            Some(o) => Impact::completed(scene, o),
+        }
+    }
+
+    /// [`Impact::of`] answered on both axes even for the paper's scene (its motion along the
+    /// rod then stays zero): what a table with columns along the rod prints for every row.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::q, scene::Scene, solve::answer::Impact};
+    /// let plain = Scene::builder(q(1, 1), q(1, 1)).build()?;
+    /// let both = Impact::on_both_axes(&plain);
+    /// let o = both.oblique.as_ref().expect("always answered along the rod");
+    /// assert_eq!((&o.after.rod.omega, &o.after.vt, &o.tangential_impulse), (&q(6, 5), &q(0, 1), &q(0, 1)));
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn on_both_axes(scene: &Scene) -> Impact {
+        let at_rest = crate::scene::Oblique::default();
+        Impact::completed(scene, scene.oblique().unwrap_or(&at_rest))
+    }
+
+    /// The normal problem solved, then completed along the rod with the oblique part `o`.
+    fn completed(scene: &Scene, o: &crate::scene::Oblique) -> Impact {
         let normal = Impact::normal(&scene.normal_problem());
         let done = oblique::complete(
             &scene.params(),

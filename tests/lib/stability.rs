@@ -2,7 +2,7 @@
 //! NaN/inf/spurious zero where the exact output is normal, the interval always encloses, and
 //! the exact path decides v = 0 and its sign.
 
-mod common;
+use crate::common;
 
 use num_traits::Zero;
 use proptest::prelude::*;

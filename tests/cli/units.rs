@@ -4,7 +4,7 @@
 //! (`SceneInput::build`) that converts a unit exactly to SI; each test compares a run with
 //! units against the same run in plain SI numbers.
 
-mod common;
+use crate::common;
 
 use common::rodimpact;
 use serde_json::Value;

@@ -2,7 +2,7 @@
 //! both reference batches and on random scenes, in each arithmetic (i128, 512 bits, big integers:
 //! dashu's, or malachite's with the feature, from small inputs to thousands of bits).
 
-mod common;
+use crate::common;
 
 use common::{any_scene, reference_rows};
 use proptest::prelude::*;

@@ -7,7 +7,7 @@
 //! the stick candidate tested against the friction cone, else sliding with |Pt| = mu Pn). The
 //! hand derivations below repeat it in the decoupled form the physics allows.
 
-mod common;
+use crate::common;
 
 use common::{rat, rodimpact};
 use num_traits::Signed;

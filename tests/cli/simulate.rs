@@ -2,7 +2,7 @@
 //! sweep with its slopes, exact values printed exactly, the refusals and the exit code of a
 //! miss.
 
-mod common;
+use crate::common;
 use common::rodimpact;
 
 /// `simulate --m 1 --M 1` plus `args`.

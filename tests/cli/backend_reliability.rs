@@ -3,7 +3,7 @@
 //! 4 cond u; the stable formula rescales the exact inputs by powers of two, so outputs in range
 //! are right even when the inputs are not.
 
-mod common;
+use crate::common;
 
 use common::rodimpact;
 use num_traits::Zero;

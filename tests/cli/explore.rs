@@ -2,7 +2,7 @@
 //! rodimpact's exact answers for its reference scenes embedded (the page checks its own
 //! arithmetic against them when it opens; `.ci/browser/run` drives it in headless Chromium).
 
-mod common;
+use crate::common;
 
 use common::rodimpact;
 

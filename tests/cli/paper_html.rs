@@ -3,7 +3,7 @@
 //! to the network. (The page is also loaded in headless Chromium by `.ci/browser/run`, which
 //! `cargo test` does not need.)
 
-mod common;
+use crate::common;
 
 use common::rodimpact;
 

@@ -1,6 +1,6 @@
 //! The `prove` and `paper` command-line contract.
 
-mod common;
+use crate::common;
 
 use common::rodimpact;
 use rodimpact::claims::{beyond_ids, paper_ids, registry};

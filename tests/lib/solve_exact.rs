@@ -1,7 +1,7 @@
 //! The exact solver against independent derivations, the closed forms, the reference batch
 //! and the conservation laws.
 
-mod common;
+use crate::common;
 
 use common::{any_scene, rat, reference_rows, scene};
 use num_traits::{Signed, Zero};

@@ -6,7 +6,7 @@
 //! that also rests on a step argued by hand). A claim added to the registry is expected PROVED
 //! unless it is listed here.
 
-mod common;
+use crate::common;
 
 use common::rodimpact;
 use rodimpact::claims::{Paper, decide_all, registry};

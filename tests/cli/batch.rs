@@ -1,7 +1,7 @@
 //! `rodimpact batch`: the reference batches confirmed exactly, a wrong claim reported with its
 //! row, bad cells named by row and column, nothing half-written.
 
-mod common;
+use crate::common;
 
 use common::{data_file, rodimpact};
 use std::path::{Path, PathBuf};

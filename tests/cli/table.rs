@@ -1,6 +1,6 @@
 //! The `table` command-line contract: options, formats, and the defects users met.
 
-mod common;
+use crate::common;
 
 use common::rodimpact;
 

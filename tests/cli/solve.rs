@@ -1,6 +1,6 @@
 //! The `solve` command-line contract: JSON keys and value forms, exit codes, one-line errors.
 
-mod common;
+use crate::common;
 
 use common::rodimpact;
 use serde_json::Value;

@@ -7,7 +7,7 @@ use rodimpact::field::Q;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-mod common;
+use crate::common;
 use common::rat;
 
 fn rodimpact(args: &[&str]) -> (i32, String) {

@@ -7,7 +7,7 @@
 //! definitions: docs/engines.md "Diagnoses"); they change only if a fixture or a definition
 //! does.
 
-mod common;
+use crate::common;
 
 use common::{data_file, rodimpact};
 use num_traits::Signed;

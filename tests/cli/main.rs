@@ -1,0 +1,28 @@
+//! The command-line tool run as its users run it: every subcommand's contract, bad input, output
+//! files and signals, the engine fixtures. One test binary (the library and the tool are built once
+//! for all of these); each module was a test file of its own.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod backend_reliability;
+mod bad_input;
+mod batch;
+mod batch_f64;
+mod check;
+mod claims;
+mod engines;
+mod explain;
+mod explore;
+mod formula;
+mod no_half_written;
+mod oblique;
+mod paper_equations;
+mod paper_html;
+mod plot;
+mod prove;
+mod simulate;
+mod solve;
+mod stability;
+mod table;
+mod units;

@@ -1,0 +1,16 @@
+//! The library tested directly: the exact routes against each other, the batch word rows, the
+//! claims and their mutations, the golden files, the documentation, the float error and the
+//! compliant-contact model. One test binary; each module was a test file of its own.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod batch_words;
+mod docs;
+mod fraction_free;
+mod golden;
+mod mutation;
+mod simulate;
+mod solve_exact;
+mod stability;
+mod textbook;
