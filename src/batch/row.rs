@@ -222,10 +222,7 @@ fn exact_values(
 /// held.
 fn oblique_values(scene: &Scene, out: &mut String) -> ([Q; 3], bool) {
     let impact = Impact::on_both_axes(scene);
-    let done = impact
-        .oblique
-        .as_ref()
-        .expect("answered on both axes");
+    let done = impact.oblique.as_ref().expect("answered on both axes");
     let after = &done.after;
     let values = [
         Some(&after.v),

@@ -12,10 +12,11 @@
 //! argv holds at most 128 KiB per argument on Linux, so the 10^7-digit numbers and the
 //! 100,000-deep nest go through files (TOML and CSV); the flags get a 100,000-digit number.
 
+use crate::common::scratch;
 use std::ffi::OsString;
 use std::io::Read;
 use std::os::unix::ffi::OsStringExt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
@@ -106,12 +107,6 @@ fn matrix(cases: Vec<(String, Vec<OsString>, String)>) {
         .filter_map(|(name, args, field)| verdict(name, args, field))
         .collect();
     assert!(failures.is_empty(), "\n{}", failures.join("\n"));
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rodimpact-bad-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 fn write(dir: &Path, name: &str, bytes: &[u8]) -> OsString {

@@ -2,15 +2,10 @@
 //! row, bad cells named by row and column, nothing half-written.
 
 use crate::common;
+use common::scratch;
 
 use common::{data_file, rodimpact};
-use std::path::{Path, PathBuf};
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rodimpact-batch-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+use std::path::Path;
 
 fn leftovers(dir: &Path) -> Vec<String> {
     std::fs::read_dir(dir)

@@ -12,7 +12,7 @@ use std::process::Command;
 
 #[test]
 fn the_f64_backend_says_what_it_checked() {
-    let dir = std::env::temp_dir().join(format!("rodimpact-f64-{}", std::process::id()));
+    let dir = crate::common::scratch("f64");
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("in.csv");
     // Row 1: M = 3m on a pivot at the centre, hit at the end: v = 0, V = 0, omega = 1; f64

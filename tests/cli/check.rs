@@ -1,20 +1,7 @@
 //! The `check` command-line contract: the done-when commands, exit codes, JSON, limits.
 
+use crate::common::rodimpact;
 use serde_json::Value;
-use std::process::Command;
-
-fn rodimpact(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 #[test]
 fn disc_and_stick_agrees() {
@@ -111,7 +98,7 @@ fn bad_input_is_one_line_and_exit_2() {
     // One argument may hold at most 128 KiB (Linux), so the 100,000-deep nest goes in a file.
     let deep = "(".repeat(60_000) + "m" + &")".repeat(60_000);
     let deep_claim = format!("omega={deep}");
-    let file = std::env::temp_dir().join(format!("rodimpact-deep-{}.toml", std::process::id()));
+    let file = crate::common::scratch("deep").join("deep.toml");
     let nest = "(".repeat(100_000) + "m" + &")".repeat(100_000);
     let toml = format!(
         "[[problem]]\nid = \"deep\"\nsource = \"test\"\n[problem.given]\nm = \"1\"\nM = \"1\"\n[problem.claims]\nomega = \"{nest}\"\n"
@@ -148,7 +135,7 @@ fn bad_input_is_one_line_and_exit_2() {
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(out.is_empty(), "{out}");
     }
-    let _ = std::fs::remove_file(&file);
+    let _ = std::fs::remove_dir_all(file.parent().expect("in its scratch directory"));
 }
 
 #[test]
@@ -404,14 +391,14 @@ fn check_wording_for_one_claim_and_for_stray_arguments() {
         out.ends_with("\n1 of 2 claims agrees; 1 disagrees\n"),
         "{out}"
     );
-    let file = std::env::temp_dir().join(format!("rodimpact-one-{}.toml", std::process::id()));
+    let file = crate::common::scratch("one").join("one.toml");
     std::fs::write(
         &file,
         "[[problem]]\nid = \"p\"\nsource = \"s\"\n[problem.given]\nm = \"1\"\nM = \"1\"\n[problem.claims]\nomega = \"6/5\"\n",
     )
     .unwrap();
     let (code, out, _) = check(&[file.to_str().unwrap()]);
-    let _ = std::fs::remove_file(&file);
+    let _ = std::fs::remove_dir_all(file.parent().expect("in its scratch directory"));
     assert_eq!(code, 0);
     assert!(out.ends_with("\n1 problem; 1 claim, it agrees\n"), "{out}");
     let (code, _, err) = check(&["--m", "10", "g", "--M", "1", "--claim", "v=1"]);
@@ -500,10 +487,10 @@ fn a_run_has_one_work_budget() {
         )
     };
     let text: String = (1..=20).map(problem).collect();
-    let file = std::env::temp_dir().join(format!("rodimpact-budget-{}.toml", std::process::id()));
+    let file = crate::common::scratch("budget").join("budget.toml");
     std::fs::write(&file, text).unwrap();
     let (code, _, err) = check(&[file.to_str().unwrap()]);
-    let _ = std::fs::remove_file(&file);
+    let _ = std::fs::remove_dir_all(file.parent().expect("in its scratch directory"));
     assert_eq!(code, 2);
     assert!(
         err.contains(": problem 'p17': claims.omega: the claims of this run together cost more than 40000000 work units (limit)"),

@@ -26,7 +26,7 @@ fn the_engine_suite_is_generated_byte_for_byte() {
     let (code, stdout, stderr) = rodimpact(&["scenes", "--suite", "engines"]);
     assert_eq!(code, 0, "{stderr}");
     assert_eq!(stdout, committed);
-    let out = std::env::temp_dir().join(format!("rodimpact-suite-{}.csv", std::process::id()));
+    let out = crate::common::scratch("suite").join("suite.csv");
     let (code, stdout, stderr) = rodimpact(&[
         "scenes",
         "--suite",
@@ -36,7 +36,7 @@ fn the_engine_suite_is_generated_byte_for_byte() {
     ]);
     assert_eq!((code, stdout.as_str()), (0, ""), "{stderr}");
     assert_eq!(std::fs::read_to_string(&out).unwrap(), committed);
-    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_dir_all(out.parent().expect("in its scratch directory")).unwrap();
 }
 
 /// One audited row: its cells by column name.
@@ -324,7 +324,7 @@ fn mujoco_compliant_contact_is_never_exact() {
 /// after it are still audited, and the batch ends with exit 1.
 #[test]
 fn a_nan_from_the_engine_is_a_wrong_claim_and_the_stream_goes_on() {
-    let path = std::env::temp_dir().join(format!("rodimpact-nan-{}.csv", std::process::id()));
+    let path = crate::common::scratch("nan").join("nan.csv");
     std::fs::write(
         &path,
         "id,engine,m,M,a,v,V,omega\n\
@@ -347,21 +347,21 @@ fn a_nan_from_the_engine_is_a_wrong_claim_and_the_stream_goes_on() {
         stderr.contains("v: 4 claims, 3 wrong (rows 2, 3, 4)"),
         "{stderr}"
     );
-    std::fs::remove_file(&path).unwrap();
+    std::fs::remove_dir_all(path.parent().expect("in its scratch directory")).unwrap();
 }
 
 /// Column names that are not scene fields or claims pass through in place, and are echoed
 /// escaped in the stderr note (a header is user input).
 #[test]
 fn passed_through_names_are_escaped() {
-    let path = std::env::temp_dir().join(format!("rodimpact-pass-{}.csv", std::process::id()));
+    let path = crate::common::scratch("pass").join("pass.csv");
     std::fs::write(&path, "m,\x1b[2Jx,M\n1,tag,1\n").unwrap();
     let (code, stdout, stderr) = rodimpact(&["batch", path.to_str().unwrap()]);
     assert_eq!(code, 0, "{stderr}");
     assert!(stdout.starts_with("m,\x1b[2Jx,M,v,V,omega,laws_held\n1,tag,1,3/5,2/5,6/5,true\n"));
     assert!(!stderr.contains('\x1b'), "{stderr:?}");
     assert!(stderr.starts_with("passed through: "), "{stderr}");
-    std::fs::remove_file(&path).unwrap();
+    std::fs::remove_dir_all(path.parent().expect("in its scratch directory")).unwrap();
 }
 
 /// The same scene with e = 0.

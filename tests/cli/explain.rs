@@ -5,19 +5,11 @@
 //! Pivot at p = 1/2, M = 3, a = 1, sticking: I = 1, d = 1/2, I + M p^2 = 7/4, q = m d^2/(7/4) = 1/7,
 //! D = 8/7, v = q/D = 1/8, omega = (m d/(7/4))/D = 1/4, V = -p omega = -1/8.
 
-use std::process::Command;
+use crate::common::rodimpact;
 
+/// `rodimpact solve ARGS`: (exit code, stdout, stderr).
 fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .arg("solve")
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
+    rodimpact(&[&["solve"], args].concat())
 }
 
 #[test]

@@ -9,12 +9,7 @@ use rodimpact::textbook::expr::{Radical, parse};
 use std::process::Command;
 
 fn formula_json(args: &[&str]) -> serde_json::Value {
-    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .arg("formula")
-        .args(args)
-        .args(["--format", "json"])
-        .output()
-        .unwrap();
+    let out = crate::common::output([&["formula"], args, &["--format", "json"]].concat());
     assert!(
         out.status.success(),
         "{}",
@@ -25,11 +20,7 @@ fn formula_json(args: &[&str]) -> serde_json::Value {
 
 /// `rodimpact formula ARGS` as it ran (any exit code).
 fn run(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .arg("formula")
-        .args(args)
-        .output()
-        .unwrap()
+    crate::common::output([&["formula"], args].concat())
 }
 
 fn value(text: &str) -> Radical {

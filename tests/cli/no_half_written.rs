@@ -7,21 +7,15 @@
 //! kill (a clean error, a panic or a catchable signal removes it); this is accepted and
 //! documented in the README: it is hidden, named as temporary, and never mistaken for the output.
 
+use crate::common::scratch;
 use std::os::unix::fs::{FileTypeExt, PermissionsExt};
 use std::os::unix::process::ExitStatusExt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 /// A bound only a hang reaches; the run is signalled as soon as partial output exists.
 const HANG: Duration = Duration::from_secs(20);
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rodimpact-out-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 fn write_big_csv(path: &Path, rows: usize) {
     let mut text = String::with_capacity(rows * 24);

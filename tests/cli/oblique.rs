@@ -9,17 +9,9 @@
 
 use crate::common;
 
-use common::{rat, rodimpact};
+use common::{rat, rodimpact, solve_json};
 use num_traits::Signed;
 use serde_json::Value;
-
-fn solve_json(args: &[&str]) -> Value {
-    let mut all = vec!["solve", "--json"];
-    all.extend_from_slice(args);
-    let (code, stdout, stderr) = rodimpact(&all);
-    assert_eq!(code, 0, "stderr: {stderr}");
-    serde_json::from_str(&stdout).expect("one JSON object")
-}
 
 fn exact(j: &Value, key: &str) -> String {
     j[key]["exact"]

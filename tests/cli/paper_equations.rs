@@ -2,8 +2,6 @@
 //! (maximal-a-gyration), each checked as printed by one `check` command that the README shows:
 //! the commands are read here from README.md, so the README cannot drift from what is tested.
 
-use std::process::Command;
-
 /// The `rodimpact check ...` command lines of the README's "paper's equations" block
 /// (continuation lines joined), as argument lists.
 fn readme_commands() -> Vec<Vec<String>> {
@@ -58,10 +56,7 @@ fn shell_words(line: &str) -> Vec<String> {
 }
 
 fn run(args: &[String]) -> (i32, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .args(args)
-        .output()
-        .unwrap();
+    let out = crate::common::output(args);
     (
         out.status.code().unwrap_or(-1),
         String::from_utf8(out.stdout).unwrap(),

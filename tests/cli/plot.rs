@@ -5,27 +5,21 @@
 
 use rodimpact::field::Q;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use crate::common;
 use common::rat;
 
+/// `rodimpact ARGS`: (exit code, stderr).
 fn rodimpact(args: &[&str]) -> (i32, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .args(args)
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    let (code, _, stderr) = common::rodimpact(args);
+    (code, stderr)
 }
 
 struct Dir(PathBuf);
 
 impl Dir {
     fn new(name: &str) -> Dir {
-        let dir = std::env::temp_dir().join(format!("rodimpact-{name}-{}", std::process::id()));
+        let dir = crate::common::scratch(name);
         std::fs::create_dir_all(&dir).unwrap();
         Dir(dir)
     }

@@ -1,6 +1,7 @@
 //! The `prove` and `paper` command-line contract.
 
 use crate::common;
+use common::scratch;
 
 use common::rodimpact;
 use rodimpact::claims::{beyond_ids, paper_ids, registry};
@@ -74,7 +75,7 @@ fn assert_written_as_committed(dir: &std::path::Path, committed: &std::path::Pat
 
 #[test]
 fn prove_write_reproduces_the_committed_certificates() {
-    let dir = std::env::temp_dir().join(format!("rodimpact-proofs-{}", std::process::id()));
+    let dir = crate::common::scratch("proofs");
     let (code, _, stderr) = rodimpact(&["prove", "--write", dir.to_str().unwrap()]);
     assert_eq!(code, 0, "{stderr}");
     let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("proofs");
@@ -122,14 +123,6 @@ fn a_closed_pipe_ends_the_program_quietly() {
     let out = child.wait_with_output().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!stderr.contains("panicked"), "{stderr}");
-}
-
-/// A fresh scratch directory for one test.
-fn scratch(tag: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("rodimpact-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 /// Every file under `dir` (recursively) with its contents, and the names of hidden entries
@@ -305,8 +298,7 @@ fn the_current_directory_is_not_an_output_directory() {
 #[test]
 fn prove_export_reproduces_the_committed_exports() {
     for format in ["smt2", "sympy"] {
-        let dir =
-            std::env::temp_dir().join(format!("rodimpact-export-{format}-{}", std::process::id()));
+        let dir = crate::common::scratch(&format!("export-{format}"));
         let (code, _, stderr) = rodimpact(&["prove", "--export", format, dir.to_str().unwrap()]);
         assert_eq!(code, 0, "{stderr}");
         let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -322,7 +314,7 @@ fn prove_export_reproduces_the_committed_exports() {
 /// written.
 #[test]
 fn an_unknown_export_format_exits_2() {
-    let dir = std::env::temp_dir().join(format!("rodimpact-export-coq-{}", std::process::id()));
+    let dir = crate::common::scratch("export-coq").join("proofs");
     let (code, _, stderr) = rodimpact(&["prove", "C1", "--export", "coq", dir.to_str().unwrap()]);
     assert_eq!(code, 2);
     assert!(
@@ -330,4 +322,5 @@ fn an_unknown_export_format_exits_2() {
         "{stderr}"
     );
     assert!(!dir.exists());
+    std::fs::remove_dir_all(dir.parent().expect("in its scratch directory")).unwrap();
 }

@@ -2,16 +2,7 @@
 
 use crate::common;
 
-use common::rodimpact;
-use serde_json::Value;
-
-fn solve_json(args: &[&str]) -> Value {
-    let mut all = vec!["solve", "--json"];
-    all.extend_from_slice(args);
-    let (code, stdout, stderr) = rodimpact(&all);
-    assert_eq!(code, 0, "stderr: {stderr}");
-    serde_json::from_str(&stdout).expect("one JSON object")
-}
+use common::{rodimpact, solve_json};
 
 #[test]
 fn paper_example_m_equals_m_hit_at_the_end() {
@@ -250,7 +241,7 @@ fn a_star_bounds_are_fifty_digits_tight_when_asked() {
 
 #[test]
 fn plots_are_written_and_bad_figures_refused() {
-    let dir = std::env::temp_dir().join(format!("rodimpact-plot-{}", std::process::id()));
+    let dir = crate::common::scratch("plot");
     std::fs::create_dir_all(&dir).unwrap();
     for figure in ["omega", "optimum", "figure1"] {
         let out = dir.join(format!("{figure}.svg"));

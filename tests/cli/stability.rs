@@ -4,7 +4,7 @@ use std::process::Command;
 
 #[test]
 fn stability_prints_every_backend_and_writes_the_plot() {
-    let dir = std::env::temp_dir().join(format!("rodimpact-stab-{}", std::process::id()));
+    let dir = crate::common::scratch("stab");
     std::fs::create_dir_all(&dir).unwrap();
     let svg = dir.join("stability.svg");
     let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))

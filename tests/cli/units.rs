@@ -60,7 +60,7 @@ fn solve_reads_units_exactly() {
 
 #[test]
 fn plot_and_simulate_read_units_exactly() {
-    let dir = std::env::temp_dir().join(format!("rodimpact-units-{}", std::process::id()));
+    let dir = crate::common::scratch("units");
     std::fs::create_dir_all(&dir).unwrap();
     let (a, b) = (dir.join("units.svg"), dir.join("si.svg"));
     run(&with(
@@ -82,7 +82,7 @@ fn plot_and_simulate_read_units_exactly() {
 
 #[test]
 fn batch_cells_read_units_exactly() {
-    let dir = std::env::temp_dir().join(format!("rodimpact-units-batch-{}", std::process::id()));
+    let dir = crate::common::scratch("units-batch");
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("units.csv");
     // I = M l^2/3 = 0.18; 1/M_eff = 1/M + a^2/I = 37/18; J = 2 m M_eff v0/(m + M_eff) =

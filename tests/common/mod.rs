@@ -77,12 +77,42 @@ pub fn any_scene() -> impl Strategy<Value = Scene> {
         })
 }
 
+/// Runs the `rodimpact` binary with `args` and returns what it did, any exit code.
+pub fn output<I, A>(args: I) -> std::process::Output
+where
+    I: IntoIterator<Item = A>,
+    A: AsRef<std::ffi::OsStr>,
+{
+    std::process::Command::new(env!("CARGO_BIN_EXE_rodimpact"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the binary runs")
+}
+
+/// `rodimpact solve --json ARGS`, which must succeed, parsed.
+pub fn solve_json(args: &[&str]) -> serde_json::Value {
+    let mut all = vec!["solve", "--json"];
+    all.extend_from_slice(args);
+    let (code, stdout, stderr) = rodimpact(&all);
+    assert_eq!(code, 0, "stderr: {stderr}");
+    serde_json::from_str(&stdout).expect("solve --json prints JSON")
+}
+
+/// A new empty directory of its own for one test (`rodimpact-TAG-XXXXXX` under the system's
+/// temporary directory), created race-free, so tests running side by side (and test runs of
+/// other checkouts) never share a file. The test removes it when it is done.
+pub fn scratch(tag: &str) -> std::path::PathBuf {
+    tempfile::Builder::new()
+        .prefix(&format!("rodimpact-{tag}-"))
+        .tempdir()
+        .expect("a temporary directory")
+        .keep()
+}
+
 /// Runs the `rodimpact` binary with `args`: (exit code, stdout, stderr).
 pub fn rodimpact(args: &[&str]) -> (i32, String, String) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .args(args)
-        .output()
-        .expect("the binary runs");
+    let out = output(args);
     (
         out.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&out.stdout).into_owned(),
