@@ -2,7 +2,7 @@
 //! solver over Q) and the fast exact path (fixed width, then big integers), each solving and
 //! checking the conservation laws, on the first 1000 scenes of both reference batches; and the
 //! growth of the fast exact cost with the size of the inputs. Throughput is in scenes; the
-//! ratios to f64 are the figures of the README.
+//! ratios to f64 are the figures of docs/performance.md.
 
 mod support;
 

@@ -1,5 +1,5 @@
 //! How long `prove` takes for every claim: build the symbolic computations and re-check every
-//! certificate. Goal (README, Performance): all claims in at most 1 s on a 2-core machine.
+//! certificate. Goal (docs/performance.md): all claims in at most 1 s on a 2-core machine.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rodimpact::claims::{Paper, decide_all};
