@@ -8,7 +8,7 @@
 //! A row it does not take (a claim in another form, a part of 2^24 or more, a product past
 //! 2^256, anything the word row leaves) goes to the general row, whose line it gives byte for
 //! byte: every input is the same correctly rounded f64 either way, and every relative error the
-//! same reduced fraction (`tests/batch_words.rs`).
+//! same reduced fraction (`tests/lib/batch_words.rs`).
 
 use super::compare::{Agreement, float_rel_error};
 use super::plan::{Arithmetic, OutputCheck, STATE, SolvedRow, WordPlan, write_float};

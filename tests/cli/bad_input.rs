@@ -718,7 +718,7 @@ fn batch_files() {
 
 /// The flags and columns of the engine audit (issue 15): `--rtol`, `--ulps`, `--float`, the
 /// `J` and energy claims, and `scenes --suite`. A claimed NaN or infinity is not among them: it
-/// is a wrong claim in its row (tests/engines.rs, src/batch/compare.rs).
+/// is a wrong claim in its row (tests/cli/engines.rs, src/batch/compare.rs).
 #[test]
 fn engine_audit_flags() {
     let dir = scratch("audit");
@@ -890,7 +890,7 @@ fn control_characters_in_input_never_reach_the_terminal() {
     .into_iter()
     .map(|(n, a, f)| (n.to_string(), os(&a), f.to_string()))
     .collect();
-    // Unknown columns pass through (tests/engines.rs checks that their names are escaped on
+    // Unknown columns pass through (tests/cli/engines.rs checks that their names are escaped on
     // stderr); a bad row after such a header names the row.
     let header = write(&dir, "header.csv", b"m,M,\x1b[2J\r\0x\n1,1\n");
     cases.push((

@@ -11,6 +11,7 @@ mod batch;
 mod batch_f64;
 mod check;
 mod claims;
+mod console;
 mod engines;
 mod explain;
 mod explore;

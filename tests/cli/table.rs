@@ -290,12 +290,3 @@ fn t6_runs_past_the_threshold_and_refuses_what_has_no_friction() {
         );
     }
 }
-
-/// The README shows T6 as `table --only T6` prints it.
-#[test]
-fn readme_shows_t6_as_printed() {
-    let (_, t6, _) = rodimpact(&["table", "--only", "T6"]);
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
-    assert!(readme.contains(&format!("$ rodimpact table --only T6\n{t6}```")));
-}

@@ -51,6 +51,8 @@ fn relative_links(markdown: &str) -> Vec<String> {
 fn every_relative_link_of_the_docs_leads_to_a_file() {
     let mut pages = vec![
         root().join("README.md"),
+        root().join("CONTRIBUTING.md"),
+        root().join("engines/README.md"),
         root().join("tests/data/README.md"),
     ];
     for entry in std::fs::read_dir(root().join("docs")).unwrap() {
@@ -82,6 +84,67 @@ fn every_relative_link_of_the_docs_leads_to_a_file() {
             "README links docs/{doc}"
         );
     }
+}
+
+/// The repository paths written in backticks in `text` (`src/solve/answer.rs`,
+/// `tests/cli/console.rs:12`), without a line number; globs and placeholders are left out.
+fn backticked_paths(text: &str) -> Vec<String> {
+    const TOP: [&str; 10] = [
+        "src/",
+        "tests/",
+        "docs/",
+        "examples/",
+        "benches/",
+        "bench/",
+        "engines/",
+        "proofs/",
+        ".ci/",
+        "fuzz/",
+    ];
+    text.split('`')
+        .skip(1)
+        .step_by(2)
+        .filter(|t| TOP.iter().any(|top| t.starts_with(top)))
+        .filter(|t| !t.contains([' ', '*', '<', '{', '$', '|']))
+        .map(|t| t.split(':').next().unwrap_or_default().to_string())
+        .collect()
+}
+
+#[test]
+fn every_backticked_repository_path_exists() {
+    let mut files = vec![
+        root().join("README.md"),
+        root().join("CONTRIBUTING.md"),
+        root().join("engines/README.md"),
+        root().join("tests/data/README.md"),
+    ];
+    for dir in ["docs", "src", "tests", "benches", "examples"] {
+        text_files(&root().join(dir), &mut files);
+    }
+    let mut stale = Vec::new();
+    let mut checked = 0;
+    for file in files
+        .iter()
+        .filter(|f| f.extension().is_some_and(|e| e == "md" || e == "rs"))
+    {
+        let text = std::fs::read_to_string(file).unwrap();
+        for path in backticked_paths(&text) {
+            checked += 1;
+            if !root().join(&path).exists() {
+                stale.push(format!("{}: {path}", file.display()));
+            }
+        }
+    }
+    assert!(
+        stale.is_empty(),
+        "paths that do not exist:\n{}",
+        stale.join("\n")
+    );
+    assert!(checked >= 50, "only {checked} paths checked");
+    assert_eq!(
+        backticked_paths("see `src/lib.rs:12` and `tests/*.rs`, not `docs/x.md`"),
+        ["src/lib.rs", "docs/x.md"]
+    );
 }
 
 #[test]
