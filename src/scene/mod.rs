@@ -8,8 +8,8 @@
 //! |---|---|
 //! | `mod.rs` | [`Scene`], [`Support`] and [`SceneBuilder`] with the validation |
 //! | `rod.rs` | [`RodInertia`]: the four mass distributions |
-//! | `oblique.rs` | [`Oblique`], [`Disc`], [`RodMotion`]: what an oblique scene adds |
-//! | `params.rs` | [`Params`], [`ObliqueParams`]: the scene lifted into a field |
+//! | `oblique.rs` | [`Oblique`]: what an oblique scene adds, and its refusals |
+//! | `params.rs` | [`Params`], [`ObliqueParams`], [`Disc`], [`RodMotion`]: the scene's numbers in any field |
 //! | `keys.rs` | [`SCENE_KEYS`]: the one table of scene inputs (flags, CSV columns, TOML keys, help) |
 //! | `input.rs` | [`SceneInput`]: a scene as typed, parsed field by field with units |
 
@@ -21,8 +21,8 @@ mod rod;
 
 pub use input::{SceneInput, dimension_of, parse_field};
 pub use keys::{SCENE_KEYS, SceneKey, flag_help, scene_key};
-pub use oblique::{Disc, Oblique, RodMotion, no_approach, spin_without_disc};
-pub use params::{ObliqueParams, Params};
+pub use oblique::{Oblique, no_approach, spin_without_disc};
+pub use params::{Disc, ObliqueParams, Params, RodMotion};
 pub use rod::{RodInertia, gyration_moment};
 
 use crate::error::{Error, ErrorKind};

@@ -2,7 +2,7 @@
 //! rod, Coulomb friction, a disc projectile with its spin, the rod's motion before the impact;
 //! and the refusals that belong to them.
 
-use super::params::ObliqueParams;
+use super::params::{Disc, ObliqueParams, RodMotion};
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q};
 
@@ -22,29 +22,6 @@ pub struct Oblique {
     pub disc: Option<Disc>,
     /// The rod's motion before the impact (zero: at rest).
     pub rod_before: RodMotion<Q>,
-}
-
-/// A solid disc projectile (I = m r^2/2) sliding on the table, its rim touching the rod.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Disc<F = Q> {
-    /// The disc's radius r (> 0).
-    pub radius: F,
-    /// The disc's angular velocity before the impact, counterclockwise seen from above
-    /// (about z = x cross y).
-    pub spin: F,
-}
-
-/// The rod's motion: the velocity of its centre across (`v`, along x) and along (`vt`, along
-/// y) the rod, and its angular velocity `omega` (the sign of docs/conventions.md: the point at
-/// y moves along x with `v + omega y`).
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct RodMotion<F> {
-    /// Centre velocity along x.
-    pub v: F,
-    /// Centre velocity along the rod (y).
-    pub vt: F,
-    /// Angular velocity.
-    pub omega: F,
 }
 
 impl Oblique {

@@ -2,8 +2,30 @@
 //! [`ObliqueParams`] (what an oblique scene adds), or built directly with symbolic entries.
 
 use super::Support;
-use super::oblique::{Disc, RodMotion};
-use crate::field::{Field, RatFn};
+use crate::field::{Field, Q, RatFn};
+
+/// A solid disc projectile (I = m r^2/2) sliding on the table, its rim touching the rod.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Disc<F = Q> {
+    /// The disc's radius r (> 0).
+    pub radius: F,
+    /// The disc's angular velocity before the impact, counterclockwise seen from above
+    /// (about z = x cross y).
+    pub spin: F,
+}
+
+/// The rod's motion: the velocity of its centre across (`v`, along x) and along (`vt`, along
+/// y) the rod, and its angular velocity `omega` (the sign of docs/conventions.md: the point at
+/// y moves along x with `v + omega y`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RodMotion<F> {
+    /// Centre velocity along x.
+    pub v: F,
+    /// Centre velocity along the rod (y).
+    pub vt: F,
+    /// Angular velocity.
+    pub omega: F,
+}
 
 /// The oblique part of a scene lifted into a field `F` (see [`Oblique`]), or built directly
 /// with symbolic entries for a proof.

@@ -5,6 +5,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod architecture;
 mod batch_words;
 mod docs;
 mod fraction_free;
