@@ -358,3 +358,138 @@ fn oblique_problem_collection_agrees() {
     assert_eq!(j["contact"], "stick");
     assert_eq!(exact(&j, "mu_star"), "1302925/2251666");
 }
+
+/// A random oblique scene the library accepts: any masses, impact point, restitution,
+/// friction, slip, an optional spinning disc, an optional pivot, and the rod moving or turning
+/// before the impact (refused scenes, no approach, are left out by the caller).
+fn oblique_scene() -> impl proptest::strategy::Strategy<Value = Option<rodimpact::scene::Scene>> {
+    use common::{positive, signed_unit, unit_interval};
+    use proptest::prelude::*;
+    (
+        (
+            positive(),
+            positive(),
+            signed_unit(),
+            unit_interval(),
+            positive(),
+        ),
+        (
+            signed_unit(),
+            unit_interval(),
+            proptest::option::of((positive(), signed_unit())),
+        ),
+        (
+            proptest::option::of(signed_unit()),
+            signed_unit(),
+            signed_unit(),
+            signed_unit(),
+        ),
+    )
+        .prop_map(
+            |((m, big_m, a, e, v0), (v0t, mu, disc), (pivot, rv, rvt, rw))| {
+                let mut b = rodimpact::scene::Scene::builder(m, big_m)
+                    .a(a)
+                    .e(e)
+                    .v0(v0 * rat("3") + rat("2"))
+                    .v0t(v0t)
+                    .mu(mu);
+                if let Some((radius, spin)) = disc {
+                    b = b.disc(radius, spin * rat("5"));
+                }
+                b = match pivot {
+                    Some(p) => b.pivot(p).rod_before(rat("0"), rat("0"), rw),
+                    None => b.rod_before(rv, rvt, rw),
+                };
+                b.build().ok()
+            },
+        )
+}
+
+/// `{"exact": ...}` of `key` in `json`, or `None` when the key is absent.
+fn exact_of(json: &Value, key: &str) -> Option<String> {
+    json.get(key)
+        .map(|v| v["exact"].as_str().unwrap().to_string())
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 48, ..Default::default() })]
+
+    /// The front door: `solve::Answer::of` is the whole answer, and `solve --json` prints
+    /// exactly it (both axes, the disc's spin, the impulses, the contact, mu*, the optimum), on
+    /// random oblique, frictional, spinning-disc, pivoted and moving-rod scenes.
+    #[test]
+    fn the_library_answer_is_what_solve_json_prints(scene in oblique_scene()) {
+        let Some(scene) = scene else { return Ok(()) };
+        let answer = rodimpact::solve::Answer::of(&scene);
+        let mut args = vec!["--m".to_string(), scene.m().to_string(), "--M".into(), scene.rod_mass().to_string(),
+            "--a".into(), scene.a().to_string(), "--e".into(), scene.e().to_string(), "--v0".into(), scene.v0().to_string()];
+        if let rodimpact::scene::Support::Pivot(p) = scene.support() {
+            args.extend(["--pivot".to_string(), p.to_string()]);
+        }
+        let o = scene.oblique().cloned().unwrap_or_default();
+        for (flag, value) in [("--v0t", &o.v0t), ("--mu", &o.mu), ("--rod-omega", &o.rod_before.omega)] {
+            args.extend([flag.to_string(), value.to_string()]);
+        }
+        if !matches!(scene.support(), rodimpact::scene::Support::Pivot(_)) {
+            args.extend(["--rod-v".to_string(), o.rod_before.v.to_string(), "--rod-vt".into(), o.rod_before.vt.to_string()]);
+        }
+        if let Some(d) = &o.disc {
+            args.extend(["--radius".to_string(), d.radius.to_string(), "--spin".into(), d.spin.to_string()]);
+        }
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let json = solve_json(&args);
+        let text = |x: &rodimpact::field::Q| Some(x.to_string());
+        match &answer.impact.oblique {
+            Some(done) => {
+                proptest::prop_assert_eq!(exact_of(&json, "v"), text(&done.after.v));
+                proptest::prop_assert_eq!(exact_of(&json, "V"), text(&done.after.rod.v));
+                proptest::prop_assert_eq!(exact_of(&json, "omega"), text(&done.after.rod.omega));
+                proptest::prop_assert_eq!(exact_of(&json, "vt"), text(&done.after.vt));
+                proptest::prop_assert_eq!(exact_of(&json, "Vt"), text(&done.after.rod.vt));
+                proptest::prop_assert_eq!(exact_of(&json, "spin"), done.after.spin.as_ref().and_then(text));
+                proptest::prop_assert_eq!(exact_of(&json, "impulse"), text(&answer.impulse));
+                proptest::prop_assert_eq!(exact_of(&json, "tangential_impulse"), text(&done.tangential_impulse));
+                proptest::prop_assert_eq!(json.get("contact").and_then(Value::as_str), done.contact.map(|c| c.as_str()));
+                proptest::prop_assert_eq!(exact_of(&json, "mu_star"), answer.mu_star().as_ref().and_then(text));
+            }
+            None => {
+                let after = &answer.impact.outcome.after;
+                proptest::prop_assert_eq!(exact_of(&json, "v"), text(&after.v));
+                proptest::prop_assert_eq!(exact_of(&json, "omega"), text(&after.omega));
+            }
+        }
+        proptest::prop_assert_eq!(json["a_star"]["squared"].as_str().map(String::from), answer.optimum.as_ref().map(|o| o.squared.to_string()));
+        proptest::prop_assert!(answer.laws_hold());
+    }
+
+    /// X29: a free rod drifting with (V0, Vt0) before the impact, not turning, answers what the
+    /// rod at rest answers at the approach speed v0 - V0, shifted by the drift: v + V0, V + V0,
+    /// omega the same (and the slip along the rod counted relative to the rod).
+    #[test]
+    fn a_drifting_rod_is_the_rod_at_rest_shifted(
+        (m, big_m, a, e) in (common::positive(), common::positive(), common::signed_unit(), common::unit_interval()),
+        (v0, drift) in (common::positive(), common::signed_unit()),
+    ) {
+        use rodimpact::scene::Scene;
+        let v0 = v0 + rat("1");
+        let moving = Scene::builder(m.clone(), big_m.clone()).a(a.clone()).e(e.clone()).v0(v0.clone())
+            .rod_before(drift.clone(), rat("0"), rat("0")).build().unwrap();
+        let at_rest = Scene::builder(m, big_m).a(a).e(e).v0(&v0 - &drift).build().unwrap();
+        let moved = rodimpact::solve::Answer::of(&moving);
+        let rest = rodimpact::solve::Answer::of(&at_rest);
+        // A zero drift is the paper's scene itself, answered without the along-the-rod part.
+        let (v, rod_v, omega) = match &moved.impact.oblique {
+            Some(o) => (&o.after.v, &o.after.rod.v, &o.after.rod.omega),
+            None => {
+                let after = &moved.impact.outcome.after;
+                (&after.v, &after.rod_v, &after.omega)
+            }
+        };
+        let still = &rest.impact.outcome.after;
+        proptest::prop_assert_eq!(v, &(&still.v + &drift));
+        proptest::prop_assert_eq!(rod_v, &(&still.rod_v + &drift));
+        proptest::prop_assert_eq!(omega, &still.omega);
+        proptest::prop_assert_eq!(&moved.impulse, &rest.impulse);
+        proptest::prop_assert_eq!(moved.optimum.map(|o| o.squared), rest.optimum.map(|o| o.squared));
+    }
+}
