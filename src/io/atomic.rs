@@ -20,7 +20,7 @@ use crate::error::Error;
 use std::fs;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
-use std::sync::{Mutex, MutexGuard, OnceLock, PoisonError};
+use std::sync::{Mutex, MutexGuard, PoisonError};
 
 /// Writes `contents` to `path` as [`AtomicFile`] does: a regular file (or a new one) atomically,
 /// a device, FIFO or descriptor in place. An interrupted or failing run leaves a previous file
@@ -337,13 +337,18 @@ fn temporaries() -> MutexGuard<'static, Vec<PathBuf>> {
 /// # Errors
 /// `signal: ...` when the handlers cannot be installed.
 ///
+/// Only with the feature `signals` (part of `cli`, the default): a program embedding the library
+/// where its host owns the signals (Python, a browser) leaves it out.
+///
 /// # Examples
 /// ```
 /// rodimpact::io::remove_temporaries_on_signals().unwrap();
 /// rodimpact::io::remove_temporaries_on_signals().unwrap(); // once is enough
 /// ```
+#[cfg(feature = "signals")]
 pub fn remove_temporaries_on_signals() -> Result<(), Error> {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    use std::sync::OnceLock;
     static INSTALLED: OnceLock<Result<(), String>> = OnceLock::new();
     INSTALLED
         .get_or_init(|| {
@@ -375,6 +380,7 @@ pub fn remove_temporaries_on_signals() -> Result<(), Error> {
         .map_err(|why| Error::io("signal", "", io::Error::other(why)))
 }
 
+#[cfg(feature = "signals")]
 /// The signals this process ignores, as a mask (bit n-1 for signal n), from the `SigIgn` line
 /// of `/proc/self/status`; none where that cannot be read.
 fn ignored_signals() -> u64 {

@@ -7,5 +7,7 @@
 mod atomic;
 mod output_dir;
 
-pub use atomic::{AtomicFile, remove_temporaries_on_signals, write_atomic};
+#[cfg(feature = "signals")]
+pub use atomic::remove_temporaries_on_signals;
+pub use atomic::{AtomicFile, write_atomic};
 pub use output_dir::write_directory;
