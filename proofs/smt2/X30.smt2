@@ -54,25 +54,44 @@
 (assert (= (* (* m (* rd rd)) (- spin w)) (* (* (- 2) rd) Jt)))
 ; sliding forward: Coulomb's law, Jt = mu_f J
 (assert (= Jt (* mu_f J)))
-; check 1: sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (u_t - mu_f J k_t/2), u_t = v0t + w rd, k_t = 3/m + 1/M
+; check 1: the normal impulse: J k_n = (1 + e) v0, k_n = 1/m + 1/M + a^2/I
+; the hypotheses are consistent
+(push 1)
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (not (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) v0))))
+(check-sat-using qfnra)
+(pop 1)
+; check 2: sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (u_t - mu_f J k_t/2), u_t = v0t + w rd, k_t = 3/m + 1/M
 ; the hypotheses are consistent
 (push 1)
 (assert (> rd 0))
+; proved above (check 1), a lemma
+(assert (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) v0)))
 (check-sat-using qfnra)
 (get-model)
 (pop 1)
 ; the negation of the conclusion is not
 (push 1)
 (assert (> rd 0))
+; proved above (check 1), a lemma
+(assert (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) v0)))
 (assert (not (= (- (+ (/ (* m (+ (* v0 v0) (* v0t v0t))) 2) (/ (* (* m (* rd rd)) (* w w)) 4)) (+ (+ (+ (/ (* m (+ (* v v) (* vt vt))) 2) (/ (* M (+ (* V V) (* Vt Vt))) 2)) (/ (* I (* omega omega)) 2)) (/ (* (* m (* rd rd)) (* spin spin)) 4))) (+ (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))) (* (* mu_f J) (- (+ v0t (* w rd)) (/ (* (* mu_f J) (+ (/ 3 m) (/ 1 M))) 2)))))))
 (check-sat-using qfnra)
 (pop 1)
-; check 2: still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive
+; check 3: still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive
 ; the hypotheses are consistent
 (push 1)
 (assert (> rd 0))
 (assert (> mu_f 0))
 (assert (> (- (+ v0t (* w rd)) (* (* mu_f J) (+ (/ 3 m) (/ 1 M)))) 0))
+; proved above (check 1), a lemma
+(assert (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) v0)))
+; proved above (check 2), a lemma
+(assert (= (- (+ (/ (* m (+ (* v0 v0) (* v0t v0t))) 2) (/ (* (* m (* rd rd)) (* w w)) 4)) (+ (+ (+ (/ (* m (+ (* v v) (* vt vt))) 2) (/ (* M (+ (* V V) (* Vt Vt))) 2)) (/ (* I (* omega omega)) 2)) (/ (* (* m (* rd rd)) (* spin spin)) 4))) (+ (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))) (* (* mu_f J) (- (+ v0t (* w rd)) (/ (* (* mu_f J) (+ (/ 3 m) (/ 1 M))) 2))))))
 (check-sat-using qfnra)
 (get-model)
 (pop 1)
@@ -81,7 +100,11 @@
 (assert (> rd 0))
 (assert (> mu_f 0))
 (assert (> (- (+ v0t (* w rd)) (* (* mu_f J) (+ (/ 3 m) (/ 1 M)))) 0))
+; proved above (check 1), a lemma
+(assert (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) v0)))
+; proved above (check 2), a lemma
+(assert (= (- (+ (/ (* m (+ (* v0 v0) (* v0t v0t))) 2) (/ (* (* m (* rd rd)) (* w w)) 4)) (+ (+ (+ (/ (* m (+ (* v v) (* vt vt))) 2) (/ (* M (+ (* V V) (* Vt Vt))) 2)) (/ (* I (* omega omega)) 2)) (/ (* (* m (* rd rd)) (* spin spin)) 4))) (+ (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))) (* (* mu_f J) (- (+ v0t (* w rd)) (/ (* (* mu_f J) (+ (/ 3 m) (/ 1 M))) 2))))))
 (assert (not (> (- (- (+ (/ (* m (+ (* v0 v0) (* v0t v0t))) 2) (/ (* (* m (* rd rd)) (* w w)) 4)) (+ (+ (+ (/ (* m (+ (* v v) (* vt vt))) 2) (/ (* M (+ (* V V) (* Vt Vt))) 2)) (/ (* I (* omega omega)) 2)) (/ (* (* m (* rd rd)) (* spin spin)) 4))) (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))))) 0)))
 (check-sat-using qfnra)
 (pop 1)
-; expect: sat unsat sat unsat
+; expect: sat unsat sat unsat sat unsat

@@ -111,13 +111,19 @@ filters = [
 
 ok = True
 
-# check 1: sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (u_t - mu_f J k_t/2), u_t = v0t + w rd, k_t = 3/m + 1/M
+# check 1: the normal impulse: J k_n = (1 + e) v0, k_n = 1/m + 1/M + a^2/I
+defs = definitions + []
+found = (solutions(balance, unknowns, defs, filters + [
+]), defs)
+ok = confirm("the normal impulse: J k_n = (1 + e) v0, k_n = 1/m + 1/M + a^2/I", "holds", lambda at: EQ(at((J * (((Integer(1) / m) + (Integer(1) / M)) + ((a ** 2) / I)))), at(((Integer(1) + e) * v0))), found) and ok
+
+# check 2: sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (u_t - mu_f J k_t/2), u_t = v0t + w rd, k_t = 3/m + 1/M
 defs = definitions + []
 found = (solutions(balance, unknowns, defs, filters + [
 ]), defs)
 ok = confirm("sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (u_t - mu_f J k_t/2), u_t = v0t + w rd, k_t = 3/m + 1/M", "holds", lambda at: EQ(at(((((m * ((v0 ** 2) + (v0t ** 2))) / Integer(2)) + (((m * (rd ** 2)) * (w ** 2)) / Integer(4))) - (((((m * ((v ** 2) + (vt ** 2))) / Integer(2)) + ((M * ((V ** 2) + (Vt ** 2))) / Integer(2))) + ((I * (omega ** 2)) / Integer(2))) + (((m * (rd ** 2)) * (spin ** 2)) / Integer(4))))), at(((((Integer(1) - (e ** 2)) * (v0 ** 2)) / (Integer(2) * (((Integer(1) / m) + (Integer(1) / M)) + ((a ** 2) / I)))) + ((mu_f * J) * ((v0t + (w * rd)) - (((mu_f * J) * ((Integer(3) / m) + (Integer(1) / M))) / Integer(2))))))), found) and ok
 
-# check 2: still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive
+# check 3: still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive
 print("left to z3 (not an identity or a check at given values): still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive")
 
 sys.exit(0 if ok else 1)

@@ -16,15 +16,21 @@ const EXPORT: Export = Export::Stated(
         Setting::new(Rod::Free, Law::Restitution).oblique(Friction::Slide),
         &[
             Check::holds(
+                "the normal impulse: J k_n = (1 + e) v0, k_n = 1/m + 1/M + a^2/I",
+                "J*(1/m + 1/M + a^2/I) = (1 + e)*v0",
+            ),
+            Check::holds(
                 "sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (u_t - mu_f J k_t/2), u_t = v0t + w rd, k_t = 3/m + 1/M",
                 "(m*(v0^2 + v0t^2)/2 + m*rd^2*w^2/4 - (m*(v^2 + vt^2)/2 + M*(V^2 + Vt^2)/2 + I*omega^2/2 + m*rd^2*spin^2/4)) = (1 - e^2)*v0^2/(2*(1/m + 1/M + a^2/I)) + mu_f*J*(v0t + w*rd - mu_f*J*(3/m + 1/M)/2)",
             )
-            .given(&["rd > 0"]),
+            .given(&["rd > 0"])
+            .using(&[0]),
             Check::holds(
                 "still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive",
                 "(m*(v0^2 + v0t^2)/2 + m*rd^2*w^2/4 - (m*(v^2 + vt^2)/2 + M*(V^2 + Vt^2)/2 + I*omega^2/2 + m*rd^2*spin^2/4)) - (1 - e^2)*v0^2/(2*(1/m + 1/M + a^2/I)) > 0",
             )
-            .given(&["rd > 0", "mu_f > 0", "v0t + w*rd - mu_f*J*(3/m + 1/M) > 0"]),
+            .given(&["rd > 0", "mu_f > 0", "v0t + w*rd - mu_f*J*(3/m + 1/M) > 0"])
+            .using(&[0, 1]),
         ],
     )
     .partly("the sticking loss u_t^2/(2 k_t) is certified by rodimpact only: one scene per exported statement"),

@@ -105,10 +105,33 @@ pub(super) fn write(entry: &Entry, statement: &Statement) -> Exported {
     let mut answers = Vec::new();
     for (i, (check, given, claim)) in checks.iter().enumerate() {
         out.push_str(&format!("; check {}: {}\n", i + 1, check.what));
+        let lemmas: Vec<String> = check
+            .using
+            .iter()
+            .map(|&j| {
+                let (earlier, _, proved) = &checks[j];
+                assert!(
+                    j < i
+                        && earlier.expect == Expect::Holds
+                        && earlier.given.iter().all(|g| check.given.contains(g)),
+                    "{}: check {} may use only earlier proved checks whose hypotheses it has",
+                    entry.id,
+                    i + 1
+                );
+                format!(
+                    "; proved above (check {}), a lemma\n(assert {})\n",
+                    j + 1,
+                    prop(proved)
+                )
+            })
+            .collect();
         let mut block = |note: &str, asserted: Option<String>, answer: &'static str| {
             out.push_str(&format!("; {note}\n(push 1)\n"));
             for g in given {
                 out.push_str(&format!("(assert {})\n", prop(g)));
+            }
+            for lemma in &lemmas {
+                out.push_str(lemma);
             }
             if let Some(asserted) = asserted {
                 out.push_str(&format!("(assert {asserted})\n"));

@@ -201,6 +201,12 @@ pub struct Check {
     pub given: &'static [&'static str],
     /// The conclusion, in the statement language.
     pub claim: &'static str,
+    /// Earlier checks (0-based) of the same statement whose conclusions, already proved, z3 may
+    /// assume as lemmas: a proof split into steps that each decide fast. Each must be a
+    /// `holds` check whose own hypotheses are among this one's, so the chain stays sound (the
+    /// exporter refuses anything else). SymPy solves the balance equations outright and needs
+    /// none.
+    pub using: &'static [usize],
 }
 
 impl Check {
@@ -211,6 +217,7 @@ impl Check {
             expect: Expect::Holds,
             given: &[],
             claim,
+            using: &[],
         }
     }
 
@@ -221,6 +228,7 @@ impl Check {
             expect: Expect::Fails,
             given: &[],
             claim,
+            using: &[],
         }
     }
 
@@ -231,12 +239,19 @@ impl Check {
             expect: Expect::Exists,
             given: &[],
             claim,
+            using: &[],
         }
     }
 
     /// The check with hypotheses of its own.
     pub const fn given(self, given: &'static [&'static str]) -> Check {
         Check { given, ..self }
+    }
+
+    /// The check with the conclusions of the earlier checks `using` (0-based, already proved
+    /// under hypotheses this check also has) as lemmas for z3.
+    pub const fn using(self, using: &'static [usize]) -> Check {
+        Check { using, ..self }
     }
 }
 
