@@ -27,7 +27,7 @@ pub struct RodMotion<F> {
     pub omega: F,
 }
 
-/// The oblique part of a scene lifted into a field `F` (see [`Oblique`]), or built directly
+/// The oblique part of a scene lifted into a field `F` (see [`Oblique`](super::Oblique)), or built directly
 /// with symbolic entries for a proof.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ObliqueParams<F> {
@@ -89,7 +89,7 @@ impl<F: Field> ObliqueParams<F> {
 }
 /// The numbers the solver needs, lifted into a field `F`.
 ///
-/// Built from a validated [`Scene`] by [`Scene::params`], or directly (for example with symbolic
+/// Built from a validated [`Scene`](super::Scene) by [`Scene::params`](super::Scene::params), or directly (for example with symbolic
 /// entries over [`crate::field::RatFn`]) when a proof needs all parameter values at once.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Params<F> {

@@ -136,7 +136,7 @@ fn hostile(rng: &mut SplitMix64) -> Q {
         0 => {
             let k = 300 + (rng.next_u64() % 1701) as u32;
             let p = ten.pow(k);
-            if rng.next_u64() % 2 == 0 {
+            if rng.next_u64().is_multiple_of(2) {
                 Q::from_integer(p)
             } else {
                 Q::new(1.into(), p)

@@ -57,7 +57,7 @@ pub fn oblique_params(
         return Ok(None);
     }
     let mut values = [None, None, None, None, None, None, None];
-    for ((field, text), slot) in input.oblique_inputs().into_iter().zip(&mut values) {
+    for ((field, text), slot) in input.oblique_inputs().zip(&mut values) {
         let Some(text) = text else { continue };
         let (value, _) = value_of(field, text, dimension_of(field), budget)?;
         let value = scene
