@@ -34,7 +34,7 @@
 //! |---|---|---|
 //! | 0 numbers | [`field`] (its [`field::decimal`] exact printing, [`field::int`] word-sized integers), [`echo`], [`error`] | the [`field::Field`] trait and its number types; how numbers print; the error type |
 //! | 1 input | [`number`], [`units`] | exact parsing of `0.25`, `3/7`, `1.5e-3`; SI units |
-//! | 2 model | [`scene`], [`mechanics`] | a validated scene over any field; momentum, angular momentum, energy, the paper's groups |
+//! | 2 model | [`scene`], [`mechanics`], [`model`] | a validated scene over any field; momentum, angular momentum, energy, the paper's groups; planar bodies and contacts as data |
 //! | 3 solve | [`solve`] | the whole answer to any scene ([`solve::Answer`]); every route to (v, V, omega) by name behind [`solve::with`]; a* and omega_max ([`solve::optimum`]) |
 //! | 4 decide | [`claims`], [`textbook`], [`stability`], [`contact`], [`batch`], [`suite`], [`samples`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes; the designed suites of scenes (engines) |
 //! | 5 output | [`report`], [`io`] | every rendering (text, JSON, Markdown, LaTeX, CSV, SVG); atomic files and staged directories |
@@ -62,6 +62,7 @@ pub mod number;
 pub mod units;
 // Layer 2: model.
 pub mod mechanics;
+pub mod model;
 pub mod scene;
 // Layer 3: solve.
 

@@ -24,6 +24,7 @@ pub mod answer;
 pub mod closed_form;
 pub mod float;
 pub mod fraction_free;
+pub mod impact;
 pub mod linear;
 pub mod oblique;
 pub mod optimum;

@@ -1,0 +1,23 @@
+//! Planar rigid bodies and their contacts as data: the model of `rodimpact impact`.
+//!
+//! A [`System`] holds bodies (mass, inertia about the centre of mass, position, velocity and
+//! spin; free, pinned at a point, or fixed), optional [`Shape`]s that give the inertia and
+//! check that each contact point lies on its body, and contacts (two bodies, a point, a normal
+//! that need not be a unit vector, e, mu). Everything stays in Q: no unit vectors, no angles.
+//!
+//! | file | what it holds |
+//! |---|---|
+//! | `shape.rs` | [`Shape`]: point, disc, rod (with an optional thickness), box, convex polygon |
+//! | `system.rs` | [`Body`], [`Contact`], [`System`] and their validation |
+//! | `input.rs` | a system as written: a TOML scene file or one JSON line of a batch |
+//! | `paper.rs` | the paper's scene (any [`crate::scene::Scene`]) written as bodies |
+
+mod input;
+mod paper;
+mod shape;
+mod system;
+
+pub use input::{MAX_SCENE_BYTES, MAX_VERTICES, from_value, parse_toml};
+pub use paper::{PROJECTILE, ROD, paper_system};
+pub use shape::Shape;
+pub use system::{Body, Contact, MAX_BODIES, MAX_CONTACTS, Mobility, System};
