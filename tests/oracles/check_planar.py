@@ -29,6 +29,8 @@ x + y*sqrt(d)), and checks, with SymPy and without calling the oracle:
   7. the contact point lies on both bodies' outlines (a fixed body without shape: on the line
      through its position perpendicular to the normal).
   8. with --regenerate-check: re-running the oracle gives the fixture byte for byte.
+  9. a float march in lam that projects each tangential increment onto the Coulomb cone (the
+     way time-stepping engines do; Routh's modes are never named) ends near the same lam_f, tau_f;
 
 Run:  python3 tests/oracles/check_planar.py         (needs sympy; exit status 1 on any failure)
 """
@@ -365,6 +367,12 @@ def check(name):
         # the path-free energy formula u0 . P + P.K.P/2 (K symmetric)
         quad = sp.expand(un0 * lf + ut0 * tf + (Wnn * lf**2 + 2 * Wnt * lf * tf + Wtt * tf**2) / 2)
         expect(zero(quad - (E1 - E0)), f"{name}/{law}: energy = u0.P + P.K.P/2")
+        # 9. a float stepping in lam that projects onto the cone (no modes named) agrees
+        got = stepping(Wnn, Wnt, Wtt, un0, ut0, mu, e, law)
+        scale_ = float(abs(un0) / Wnn) + 1e-300
+        ok = got is not None and abs(got[0] - float(lf)) < 1e-3 * scale_ and \
+            abs(got[1] - float(tf)) < 1e-3 * scale_ + 1e-9
+        expect(ok, f"{name}/{law}: float stepping agrees ({got} vs {float(lf)}, {float(tf)})")
         # 6. closed forms
         if mu == 0:
             J = (1 + e) * (-un0) / Wnn
@@ -379,6 +387,48 @@ def check(name):
                 v1, w1 = after[bname]
                 expect(zero(v1[0] - vx) and zero(v1[1] - vy) and zero(w1 - w),
                        f"{name}/{law}: hand-worked answer for {bname}")
+
+
+def stepping(Wnn, Wnt, Wtt, un0, ut0, mu, e, law, steps=200000):
+    """A different algorithm, in floats: march lam in small steps; each step's tangential
+    increment is the one that brings u_t closest to 0 inside the cone |dtau| <= mu dlam (a
+    projection, as time-stepping engines do), so Routh's modes are never named.  Returns
+    (lam_f, tau_f, u_n, u_t) to O(step)."""
+    Wnn, Wnt, Wtt, un, ut, mu, e = map(float, (Wnn, Wnt, Wtt, un0, ut0, mu, e))
+    un0f = un
+    # a step size from the frictionless impulse scale
+    h = 4 * abs(un0f) / Wnn / steps
+    lam = tau = wc = wr = 0.0
+    lam_c = None
+    while True:
+        dtau = 0.0
+        if Wtt > 0:
+            want = -(ut + Wnt * h) / Wtt                 # the increment that zeroes u_t
+            dtau = max(-mu * h, min(mu * h, want))
+        un_new = un + Wnn * h + Wnt * dtau
+        work = (un + un_new) / 2 * h
+        if lam_c is None:
+            # compression ends inside this step (the tolerance matters only for a rank-one W,
+            # where u_n and u_t vanish together and rounding can leave u_n at -1e-17 for ever)
+            if un_new >= -1e-12 * abs(un0f):
+                f = min(1.0, -un / (un_new - un)) if un_new > un else 1.0
+                lam_c = lam + f * h
+                wc += un * f * h / 2
+                wr += un_new * (1 - f) * h / 2
+            else:
+                wc += work
+        else:
+            wr += work
+        lam, tau, un, ut = lam + h, tau + dtau, un_new, ut + Wnt * h + Wtt * dtau
+        if lam_c is not None:
+            if law == "newton" and un >= -e * un0f - 1e-12 * abs(un0f):
+                return lam, tau, un, ut
+            if law == "poisson" and lam >= (1 + e) * lam_c:
+                return lam, tau, un, ut
+            if law == "energetic" and wr >= -e * e * wc:
+                return lam, tau, un, ut
+        if lam > 100 * h * steps:
+            return None
 
 
 Q = sp.Rational

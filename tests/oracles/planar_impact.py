@@ -181,10 +181,10 @@ class QSqrt:
             raise ValueError("square root of a negative number")
         # sqrt(p/r) = sqrt(p r)/r
         pr = q.numerator * q.denominator
-        s, d = _squarefree(pr) if pr > 0 else (0, 1)
-        if d == 1:
-            return Fraction(s, q.denominator)
-        return QSqrt(0, Fraction(s, q.denominator), d)
+        r = math.isqrt(pr)
+        if r * r == pr:
+            return Fraction(r, q.denominator)
+        return QSqrt(0, Fraction(1, q.denominator), pr)   # made square-free only for output
 
     def _coerce(self, o):
         if isinstance(o, QSqrt):
@@ -667,7 +667,10 @@ def phase_at(path, lam):
 # Solve
 # --------------------------------------------------------------------------------------------
 
-def solve(scene):
+def solve(scene, fmt=None):
+    """The three laws' answers as a JSON-ready dict.  fmt formats each exact number (default
+    qstr; pass `lambda v: v` to keep Fractions and QSqrts, as the sweep does)."""
+    fmt = fmt or qstr
     A, B, x, n, t, mu, e = scene.A, scene.B, scene.point, scene.n, scene.t, scene.mu, scene.e
     u = sub(A.point_velocity(x), B.point_velocity(x))
     un0, ut0 = dot(u, n), dot(u, t)
@@ -691,15 +694,15 @@ def solve(scene):
         "oracle": "tests/oracles/planar_impact.py",
         "title": scene.title,
         "contact": {
-            "bodies": [A.name, B.name], "point": [qstr(c) for c in x],
-            "normal": [qstr(c) for c in n], "tangent": [qstr(c) for c in t],
-            "e": qstr(e), "mu": qstr(mu),
-            "W": {"nn": qstr(Wnn), "nt": qstr(Wnt), "tt": qstr(Wtt)},
+            "bodies": [A.name, B.name], "point": [fmt(c) for c in x],
+            "normal": [fmt(c) for c in n], "tangent": [fmt(c) for c in t],
+            "e": fmt(e), "mu": fmt(mu),
+            "W": {"nn": fmt(Wnn), "nt": fmt(Wnt), "tt": fmt(Wtt)},
             "stick_admissible": bool(abs(Wnt) <= mu * Wtt),
         },
-        "path": [{"mode": p.mode, "from": qstr(p.start),
-                  "to": None if p.end is None else qstr(p.end)} for p in path],
-        "lam_c": qstr(lam_c),
+        "path": [{"mode": p.mode, "from": fmt(p.start),
+                  "to": None if p.end is None else fmt(p.end)} for p in path],
+        "lam_c": fmt(lam_c),
         "laws": [],
     }
 
@@ -720,7 +723,7 @@ def solve(scene):
             Pb = P if b is A else (scale(-1, P) if b is B else (0, 0))
             v, w = b.apply(Pb, x) if b in (A, B) else (b.velocity, b.omega)
             after[b.name] = (v, w)
-            bodies[b.name] = {"velocity": [qstr(c) for c in v], "omega": qstr(w)}
+            bodies[b.name] = {"velocity": [fmt(c) for c in v], "omega": fmt(w)}
         # the contact velocity after, recomputed from the bodies (consistency with the path)
         def pv(b):
             if b.fixed:
@@ -749,28 +752,28 @@ def solve(scene):
             if b.pin is not None:
                 v, _ = after[b.name]
                 Pb = P if b is A else (scale(-1, P) if b is B else (0, 0))
-                pins[b.name] = [qstr(c) for c in sub(scale(b.mass, sub(v, b.velocity)), Pb)]
+                pins[b.name] = [fmt(c) for c in sub(scale(b.mass, sub(v, b.velocity)), Pb)]
         phases = []
         for p in path:
             if p.start > lam_f or (p.start == lam_f and phases):
                 break
             hi = lam_f if p.end is None else min(p.end, lam_f)
-            phases.append({"mode": p.mode, "from": qstr(p.start), "to": qstr(hi)})
+            phases.append({"mode": p.mode, "from": fmt(p.start), "to": fmt(hi)})
         entry = {
             "law": law,
             "bodies": bodies,
-            "impulse": [qstr(c) for c in P],
-            "impulse_coefficients": {"lam": qstr(lam_f), "tau": qstr(tauf)},
-            "lam_c": qstr(lam_c),
-            "lam_f": qstr(lam_f),
+            "impulse": [fmt(c) for c in P],
+            "impulse_coefficients": {"lam": fmt(lam_f), "tau": fmt(tauf)},
+            "lam_c": fmt(lam_c),
+            "lam_f": fmt(lam_f),
             "phases": phases,
             "contact_velocity": {
-                "before": {"n": qstr(un0), "t": qstr(ut0), "world": [qstr(c) for c in u]},
-                "after": {"n": qstr(unf), "t": qstr(utf), "world": [qstr(c) for c in uf]},
+                "before": {"n": fmt(un0), "t": fmt(ut0), "world": [fmt(c) for c in u]},
+                "after": {"n": fmt(unf), "t": fmt(utf), "world": [fmt(c) for c in uf]},
             },
-            "work": {"normal_compression": qstr(wn_c), "normal_restitution": qstr(wn_r),
-                     "friction": qstr(wt)},
-            "energy": {"before": qstr(E0), "after": qstr(E1), "change": qstr(E1 - E0)},
+            "work": {"normal_compression": fmt(wn_c), "normal_restitution": fmt(wn_r),
+                     "friction": fmt(wt)},
+            "energy": {"before": fmt(E0), "after": fmt(E1), "change": fmt(E1 - E0)},
             "energy_gain": bool(sign(E1 - E0) > 0),
         }
         if pins:
