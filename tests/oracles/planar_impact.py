@@ -322,12 +322,16 @@ class Body:
         self.shape = table.get("shape")
         self.pin = None
         self.position = self._vec(table, "position", ("0", "0"))
+        self.axis = self._vec(table, "axis", ("1", "0"))   # a rod's length / box's width side
+        if self.axis == (0, 0):
+            raise SceneError(f"body {self.name}: axis must not be zero")
         if self.fixed:
             self.mass = self.inertia = None
             self.velocity, self.omega = (Fraction(0), Fraction(0)), Fraction(0)
             for key in ("velocity", "omega", "mass", "inertia"):
                 if key in table:
                     raise SceneError(f"body {self.name}: a fixed body takes no {key}")
+            self._shape_inertia(table)        # reads the outline's dimensions only
             return
         if "mass" not in table:
             raise SceneError(f"body {self.name}: mass must be given")
@@ -336,9 +340,6 @@ class Body:
             raise SceneError(f"body {self.name}: mass must be given and > 0")
         self.velocity = self._vec(table, "velocity", ("0", "0"))
         self.omega = parse_number(table.get("omega", "0"), f"body {self.name}: omega")
-        self.axis = self._vec(table, "axis", ("1", "0"))
-        if self.axis == (0, 0):
-            raise SceneError(f"body {self.name}: axis must not be zero")
         shape_I = self._shape_inertia(table)
         if "inertia" in table:
             self.inertia = parse_number(table["inertia"], f"body {self.name}: inertia")
@@ -361,7 +362,7 @@ class Body:
     def _shape_inertia(self, table):
         """I about the centre from the shape: rod m L^2/12, disc m r^2/2, box m(w^2+h^2)/12,
         point 0."""
-        m, kind = self.mass, self.shape
+        m, kind = (self.mass if self.mass is not None else Fraction(0)), self.shape
         if kind is None:
             return None
         g = lambda k: parse_number(table[k], f"body {self.name}: {k}") if k in table else None
@@ -796,8 +797,9 @@ def main(argv):
     args = ap.parse_args(argv)
     try:
         result = solve(load(args.scene))
-    except SceneError as exc:
-        print(f"error: {exc}", file=sys.stderr)
+    except (SceneError, KeyError, TypeError, tomllib.TOMLDecodeError) as exc:
+        print(f"error: {exc if not isinstance(exc, KeyError) else f'missing key {exc}'}",
+              file=sys.stderr)
         return 2
     text = json.dumps(result, indent=2) + "\n"
     if args.output:

@@ -14,7 +14,8 @@ frictionless) and e (0 and 1 included).  Reports how often each law gains energy
 relative gain, how often the laws coincide, and every scene where Poisson's or the energetic law
 gains (none expected: Stronge 1991; Poisson can gain only with several contacts, Glocker 2013).
 
-Also checked on every scene: with mu = 0 the three laws give the same answer, and when the u_n
+Also checked on every scene: a Newton gain has W_nt != 0 and a mode change inside the impact; with
+mu = 0 the three laws give the same answer, and when the u_n
 slope never changes before the largest lam_f (W_nt = 0, or no mode change in the window) they
 coincide too.
 
@@ -144,6 +145,9 @@ def main(argv):
             if L["energy_gain"]:
                 st["gain"][law] += 1
                 if law == "newton":
+                    # a gain needs coupling (W_nt != 0) and a mode change inside the impact
+                    if res["contact"]["W"]["nt"] == 0 or len(L["phases"]) < 2:
+                        bad.append(("newton gain without coupling and mode change", doc))
                     rel = L["energy"]["change"] / E0
                     if rel > st["max_gain"]:
                         st["max_gain"], st["max_scene"] = rel, doc
