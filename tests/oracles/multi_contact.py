@@ -469,6 +469,71 @@ def poly_roots(coeffs):
     return roots
 
 
+def poly_div_root(coeffs, r):
+    """Divide a polynomial (coefficients from the top degree) by (x - r), exactly (r a root)."""
+    out = [coeffs[0]]
+    for c in coeffs[1:-1]:
+        out.append(c + out[-1] * r)
+    return out
+
+
+def surd(a: Q, b: Q, d: int) -> str:
+    """The string of a + b sqrt(d) (d > 1 squarefree, or d = 1 folded in)."""
+    if d == 1:
+        return qs(a + b)
+    if b == 0:
+        return qs(a)
+    bs = f"sqrt({d})" if b == 1 else f"-sqrt({d})" if b == -1 else f"{qs(b)}*sqrt({d})"
+    if a == 0:
+        return bs
+    return f"{qs(a)} + {bs}" if b > 0 else f"{qs(a)} - {bs.lstrip('-')}"
+
+
+def squarefree_split(n: int):
+    """n = k^2 d with d squarefree; returns (k, d)."""
+    k, d, f = 1, n, 2
+    while f * f <= d:
+        while d % (f * f) == 0:
+            d //= f * f
+            k *= f
+        f += 1
+    return k, d
+
+
+def dominant_root_exact(coeffs):
+    """The root of largest modulus as an exact string if it is rational or a real quadratic surd.
+
+    Rational roots are divided out; a remaining quadratic x^2 + p x + q with real roots gives
+    (-p +- sqrt(p^2 - 4q))/2.  Returns None if the dominant root is of higher degree.
+    """
+    c = list(coeffs)
+    roots = []  # (float value, string)
+    while len(c) > 1 and c[-1] == 0:
+        c.pop()
+        roots.append((0.0, "0"))
+    for r in rational_roots(c):
+        if r == 0:
+            continue
+        while len(c) > 1 and sum((a * r ** (len(c) - 1 - k) for k, a in enumerate(c)), ZERO) == 0:
+            c = poly_div_root(c, r)
+            roots.append((float(r), qs(r)))
+    if len(c) == 3:
+        p, q = c[1] / c[0], c[2] / c[0]
+        disc = p * p - 4 * q
+        if disc < 0:
+            return None
+        num_, den = disc.numerator, disc.denominator
+        k, d = squarefree_split(num_ * den)
+        b = Q(k, 2 * den)
+        for sgn in (1, -1):
+            roots.append((float(-p / 2) + sgn * float(b) * math.sqrt(d), surd(-p / 2, sgn * b, d)))
+    elif len(c) > 3:
+        return None
+    if not roots:
+        return None
+    return max(roots, key=lambda t: abs(t[0]))[1]
+
+
 def rational_roots(coeffs):
     """Exact rational roots of a polynomial with rational coefficients (rational root theorem)."""
     l = math.lcm(*[x.denominator for x in coeffs])
@@ -776,12 +841,11 @@ def model_pgs_json(sc, W, u0, sweeps=(1, 2, 3, 10)):
             cp = charpoly(G)
             roots = poly_roots(cp)
             rho = max((abs(r) for r in roots), default=0.0)
-            rr = rational_roots(cp)
             conv["gauss_seidel_matrix_charpoly"] = [qs(c) for c in cp]
             conv["asymptotic_rate_per_sweep"] = f"{rho:.15g}"
-            exact = [r for r in rr if abs(abs(float(r)) - rho) < 1e-12]
-            if exact:
-                conv["asymptotic_rate_per_sweep_exact"] = qs(abs(exact[0]))
+            exact = dominant_root_exact(cp)
+            if exact is not None:
+                conv["asymptotic_rate_per_sweep_exact"] = exact
         # error ratios of successive sweeps
         errs = [[h[i] - star[i] for i in range(sc.n)] for h in hist]
         ratios = []
@@ -789,6 +853,9 @@ def model_pgs_json(sc, W, u0, sweeps=(1, 2, 3, 10)):
             a, b = errs[k], errs[k + 1]
             rs = set()
             okr = True
+            if all(x == 0 for x in a) and all(y == 0 for y in b):
+                ratios.append("converged")
+                continue
             for x, y in zip(a, b):
                 if x == 0 and y == 0:
                     continue
@@ -798,7 +865,7 @@ def model_pgs_json(sc, W, u0, sweeps=(1, 2, 3, 10)):
                 rs.add(y / x)
             ratios.append(qs(rs.pop()) if okr and len(rs) == 1 else None)
         conv["error_ratio_sweep_k_to_k_plus_1"] = ratios
-        if ratios and all(r is not None and r == ratios[0] for r in ratios):
+        if ratios and ratios[0] not in (None, "converged") and all(r == ratios[0] for r in ratios):
             conv["exact_geometric_ratio"] = ratios[0]
             conv["first_sweep_error"] = [qs(v) for v in errs[0]]
         lim["convergence"] = conv
