@@ -598,10 +598,13 @@ def solve_lcp(W, q):
     return sols, degenerate
 
 
-def status_of(sols, degenerate):
+def status_of(sols, degenerate=False):
+    """ "none", "unique" or "several".  (A degenerate active set only makes the impulses
+    indeterminate: for W = J M^-1 J^T a null vector z of W_SS has J_S^T z = 0, so it moves no
+    velocity; the solutions found at the vertices then carry every velocity state.)"""
     if not sols:
         return "none"
-    if len(sols) > 1 or degenerate:
+    if len(sols) > 1:
         return "several"
     return "unique"
 
@@ -620,8 +623,8 @@ def model_newton_json(sc, W, u0):
     sols, deg = model_newton(sc, W, u0)
     out = {"model": "simultaneous-newton",
            "formulation": "lambda >= 0, w = u0 + W lambda + e .* min(u0, 0) >= 0, lambda . w = 0",
-           "status": status_of(sols, deg)}
-    if len(sols) == 1 and not deg:
+           "status": status_of(sols), "impulses_indeterminate": deg}
+    if len(sols) == 1:
         out.update(sc.result(sols[0]))
     else:
         out["solutions"] = [sc.result(s) for s in sols]
@@ -653,14 +656,14 @@ def model_poisson_json(sc, W, u0):
            "formulation": ("compression: lC >= 0, uC = u0 + W lC >= 0, lC . uC = 0; "
                            "expansion: lE = e .* lC + x, x >= 0, u+ = uC + W lE >= 0, x . u+ = 0; "
                            "lambda = lC + lE"),
-           "status": status_of(res, deg)}
+           "status": status_of(res), "impulses_indeterminate": deg}
     sols = []
     for lc, uc, x, tot in res:
         extra = {"compression": {"impulses": [qs(v) for v in lc], "normal_velocity_end": [qs(v) for v in uc]},
                  "expansion": {"impulses": [qs(sc.contacts[i].e * lc[i] + x[i]) for i in range(sc.n)],
                                "extra_impulses": [qs(v) for v in x]}}
         sols.append(sc.result(tot, extra=extra))
-    if len(sols) == 1 and not deg:
+    if len(sols) == 1:
         out.update(sols[0])
     else:
         out["solutions"] = sols
@@ -823,7 +826,7 @@ def model_pgs_json(sc, W, u0, sweeps=(1, 2, 3, 10)):
     # limit
     sols, deg = model_newton(sc, W, u0)
     lim = {"model": "pgs:limit"}
-    if len(sols) == 1 and not deg and rank(W) == sc.n:
+    if len(sols) == 1 and rank(W) == sc.n:
         star = sols[0]
         lim["limit_is"] = "simultaneous-newton (W positive definite: projected Gauss-Seidel converges to the unique LCP solution)"
         S = [i for i in range(sc.n) if star[i] != 0]
@@ -884,6 +887,60 @@ NORMAL_MODES = ("closed", "open")
 TANG_MODES = ("stick", "slide+", "slide-")
 
 
+def affine_solutions(A, b):
+    """The solution set of A x = b as (x0, N): x = x0 + N z, N's columns a null-space basis.
+
+    Exact reduced row echelon form.  Returns None if the system is inconsistent.
+    """
+    rows, cols = len(A), len(A[0])
+    M = [list(map(Q, A[i])) + [Q(b[i])] for i in range(rows)]
+    pivots = []
+    r = 0
+    for c in range(cols):
+        piv = next((k for k in range(r, rows) if M[k][c] != 0), None)
+        if piv is None:
+            continue
+        M[r], M[piv] = M[piv], M[r]
+        pv = M[r][c]
+        M[r] = [v / pv for v in M[r]]
+        for k in range(rows):
+            if k != r and M[k][c] != 0:
+                f = M[k][c]
+                M[k] = [a - f * bb for a, bb in zip(M[k], M[r])]
+        pivots.append(c)
+        r += 1
+        if r == rows:
+            break
+    for k in range(r, rows):
+        if M[k][cols] != 0:
+            return None
+    free = [c for c in range(cols) if c not in pivots]
+    x0 = [ZERO] * cols
+    for k, c in enumerate(pivots):
+        x0[c] = M[k][cols]
+    N = []
+    for f in free:
+        v = [ZERO] * cols
+        v[f] = ONE
+        for k, c in enumerate(pivots):
+            v[c] = -M[k][f]
+        N.append(v)
+    return x0, N
+
+
+def polytope_vertices(G, h, k):
+    """Vertices of {z in Q^k : G z >= h} by choosing k tight rows (exact; k small)."""
+    verts = []
+    for rows in itertools.combinations(range(len(G)), k):
+        z = solve_linear([G[r] for r in rows], [h[r] for r in rows])
+        if z is None:
+            continue
+        if all(sum((g * zz for g, zz in zip(G[r], z)), ZERO) >= h[r] for r in range(len(G))):
+            if z not in verts:
+                verts.append(z)
+    return verts
+
+
 def phase_solve(sc: Scene, uN, uT, base, off):
     """All solutions of one impact phase with Coulomb friction.
 
@@ -894,9 +951,16 @@ def phase_solve(sc: Scene, uN, uT, base, off):
       tangential: |LT_i| <= mu_i LN_i and LT_i = -mu_i LN_i sign(uT'_i) when uT'_i != 0
                   ("stick": uT'_i = 0; "slide+": LT_i = -mu_i LN_i, uT'_i >= 0;
                    "slide-": LT_i = +mu_i LN_i, uT'_i <= 0).
-    For a mode vector, the equalities are a linear system in (LN, LT); its solution is kept if
-    every inequality holds.  A singular system is reported as degenerate if consistent.
-    Returns (solutions [(LN, LT, modes)], degenerate).
+    For a mode vector the equalities are a linear system in (LN, LT).  If it is nonsingular its
+    solution is kept when every inequality holds.  If it is singular (two sticking points on one
+    body whose tangent rows coincide, e.g. a box flat on a floor: the split of the tangential
+    impulse between them is statically indeterminate), its solution set x0 + N z is cut by the
+    inequalities and the vertices of that polytope (exact, k tight rows at a time) are taken.
+    Solutions are then grouped by the velocities and normal impulses they produce: tangential
+    impulses that differ only along directions with J^T dx = 0 give one physical solution,
+    reported at the centroid of its vertices (a solution too: every condition is convex once
+    the velocities are fixed) with ``indeterminate`` true.
+    Returns a list of (LN, LT, modes, uN', uT', indeterminate).
     """
     n = sc.n
     Wnn = sc.delassus(sc.rows_n, sc.rows_n)
@@ -904,8 +968,33 @@ def phase_solve(sc: Scene, uN, uT, base, off):
     Wtn = sc.delassus(sc.rows_t, sc.rows_n)
     Wtt = sc.delassus(sc.rows_t, sc.rows_t)
     mu = [c.mu for c in sc.contacts]
-    sols = []
-    degenerate = False
+
+    def ends(LN, LT):
+        uN1 = [uN[i] + sum((Wnn[i][j] * LN[j] + Wnt[i][j] * LT[j] for j in range(n)), ZERO) for i in range(n)]
+        uT1 = [uT[i] + sum((Wtn[i][j] * LN[j] + Wtt[i][j] * LT[j] for j in range(n)), ZERO) for i in range(n)]
+        return uN1, uT1
+
+    def inequalities(tm):
+        """Rows (g, h) meaning g . x >= h, x = (LN, LT), for the mode's inequalities."""
+        rows = []
+        for i in range(n):
+            g = [ZERO] * (2 * n)
+            g[i] = ONE
+            rows.append((g, base[i]))                                   # LN_i >= base_i
+            rows.append((Wnn[i] + Wnt[i], -(uN[i] + off[i])))           # uN'_i + off_i >= 0
+            g1 = [ZERO] * (2 * n)
+            g1[i], g1[n + i] = mu[i], -ONE
+            rows.append((g1, ZERO))                                     # mu LN - LT >= 0
+            g2 = [ZERO] * (2 * n)
+            g2[i], g2[n + i] = mu[i], ONE
+            rows.append((g2, ZERO))                                     # mu LN + LT >= 0
+            if tm[i] == "slide+":
+                rows.append((Wtn[i] + Wtt[i], -uT[i]))                  # uT'_i >= 0
+            if tm[i] == "slide-":
+                rows.append(([-v for v in Wtn[i] + Wtt[i]], uT[i]))     # uT'_i <= 0
+        return rows
+
+    cands = []  # (x, modes, indeterminate)
     for nm in itertools.product(NORMAL_MODES, repeat=n):
         for tm in itertools.product(TANG_MODES, repeat=n):
             A, b = [], []
@@ -927,30 +1016,44 @@ def phase_solve(sc: Scene, uN, uT, base, off):
                     row[i] = s * mu[i]
                     A.append(row)
                     b.append(ZERO)
-            x = solve_linear(A, b)
-            if x is None:
-                aug = [A[r] + [b[r]] for r in range(2 * n)]
-                if rank(A) == rank(aug):
-                    degenerate = True
+            sol = affine_solutions(A, b)
+            if sol is None:
                 continue
-            LN, LT = x[:n], x[n:]
-            uN1 = [uN[i] + sum((Wnn[i][j] * LN[j] + Wnt[i][j] * LT[j] for j in range(n)), ZERO) for i in range(n)]
-            uT1 = [uT[i] + sum((Wtn[i][j] * LN[j] + Wtt[i][j] * LT[j] for j in range(n)), ZERO) for i in range(n)]
-            good = True
-            for i in range(n):
-                if LN[i] - base[i] < 0 or uN1[i] + off[i] < 0:
-                    good = False
-                if abs(LT[i]) > mu[i] * LN[i]:
-                    good = False
-                if tm[i] == "slide+" and uT1[i] < 0:
-                    good = False
-                if tm[i] == "slide-" and uT1[i] > 0:
-                    good = False
-            if not good:
+            x0, N = sol
+            ineq = inequalities(tm)
+            if not N:
+                if all(sum((g * x for g, x in zip(gr, x0)), ZERO) >= h for gr, h in ineq):
+                    cands.append((x0, tuple(zip(nm, tm)), False))
                 continue
-            if all((LN, LT) != (s[0], s[1]) for s in sols):
-                sols.append((LN, LT, tuple(zip(nm, tm)), uN1, uT1))
-    return sols, degenerate
+            k = len(N)
+            G = [[sum((gr[j] * N[c][j] for j in range(2 * n)), ZERO) for c in range(k)] for gr, _ in ineq]
+            H = [h - sum((gr[j] * x0[j] for j in range(2 * n)), ZERO) for gr, h in ineq]
+            for z in polytope_vertices(G, H, k):
+                x = [x0[j] + sum((N[c][j] * z[c] for c in range(k)), ZERO) for j in range(2 * n)]
+                cands.append((x, tuple(zip(nm, tm)), True))
+    # group by the velocities produced
+    groups = []
+    for x, modes, ind in cands:
+        st = sc.initial_state()
+        for i in range(n):
+            sc.apply(st, sc.rows_n[i], x[i])
+            sc.apply(st, sc.rows_t[i], x[n + i])
+        key = ([tuple(r) for r in st], x[:n])  # same velocities and normal impulses
+        for g in groups:
+            if g["key"] == key:
+                if x not in g["xs"]:
+                    g["xs"].append(x)
+                break
+        else:
+            groups.append({"key": key, "xs": [x], "modes": modes})
+    out = []
+    for g in groups:
+        xs = g["xs"]
+        x = [sum((v[j] for v in xs), ZERO) / len(xs) for j in range(2 * n)]
+        LN, LT = x[:n], x[n:]
+        uN1, uT1 = ends(LN, LT)
+        out.append((LN, LT, g["modes"], uN1, uT1, len(xs) > 1))
+    return out
 
 
 def mode_names(sol, LN, uT1):
@@ -969,15 +1072,16 @@ def mode_names(sol, LN, uT1):
 def friction_newton_json(sc, u0, uT0):
     n = sc.n
     off = [sc.contacts[i].e * min(u0[i], ZERO) for i in range(n)]
-    sols, deg = phase_solve(sc, u0, uT0, [ZERO] * n, off)
+    sols = phase_solve(sc, u0, uT0, [ZERO] * n, off)
     out = {"model": "simultaneous-newton",
            "formulation": ("one phase: lambda_N >= 0, uN+ + e .* min(u0, 0) >= 0 complementary; "
                            "Coulomb: |lambda_T| <= mu lambda_N, lambda_T = -mu lambda_N sign(uT+) if uT+ != 0"),
-           "status": status_of(sols, deg)}
+           "status": status_of(sols, False)}
     res = []
-    for LN, LT, modes, uN1, uT1 in sols:
-        res.append(sc.result(LN, LT, extra={"modes": mode_names(modes, LN, uT1)}))
-    if len(res) == 1 and not deg:
+    for LN, LT, modes, uN1, uT1, ind in sols:
+        res.append(sc.result(LN, LT, extra={"modes": mode_names(modes, LN, uT1),
+                                            "tangential_split_indeterminate": ind}))
+    if len(res) == 1:
         out.update(res[0])
     else:
         out["solutions"] = res
@@ -995,28 +1099,26 @@ def friction_poisson(sc, u0, uT0):
     """
     n = sc.n
     e = [c.e for c in sc.contacts]
-    comp, deg1 = phase_solve(sc, u0, uT0, [ZERO] * n, [ZERO] * n)
+    comp = phase_solve(sc, u0, uT0, [ZERO] * n, [ZERO] * n)
     res = []
-    deg = deg1
-    for LNc, LTc, mc, uNc, uTc in comp:
+    for LNc, LTc, mc, uNc, uTc, indc in comp:
         base = [e[i] * LNc[i] for i in range(n)]
-        exps, deg2 = phase_solve(sc, uNc, uTc, base, [ZERO] * n)
-        deg = deg or deg2
-        for LNe, LTe, me, uNe, uTe in exps:
-            res.append((LNc, LTc, mc, uNc, uTc, LNe, LTe, me, uNe, uTe))
-    return res, deg
+        exps = phase_solve(sc, uNc, uTc, base, [ZERO] * n)
+        for LNe, LTe, me, uNe, uTe, inde in exps:
+            res.append((LNc, LTc, mc, uNc, uTc, LNe, LTe, me, uNe, uTe, indc or inde))
+    return res
 
 
 def friction_poisson_json(sc, u0, uT0):
     n = sc.n
-    res, deg = friction_poisson(sc, u0, uT0)
+    res = friction_poisson(sc, u0, uT0)
     out = {"model": "simultaneous-poisson",
            "formulation": ("compression: LN_C >= 0, uN_C >= 0 complementary, Coulomb on (LT_C, uT_C); "
                            "expansion: LN_E = e .* LN_C + x, x >= 0, uN+ >= 0, x . uN+ = 0, Coulomb on "
                            "(LT_E, uT+) with |LT_E| <= mu LN_E; tangential restitution 0"),
-           "status": status_of(res, deg)}
+           "status": status_of(distinct_states(sc, res), False)}
     sols = []
-    for LNc, LTc, mc, uNc, uTc, LNe, LTe, me, uNe, uTe in res:
+    for LNc, LTc, mc, uNc, uTc, LNe, LTe, me, uNe, uTe, ind in res:
         s_c = sc.after(LNc, LTc)
         extra = {"compression": {"normal_impulses": [qs(v) for v in LNc], "tangential_impulses": [qs(v) for v in LTc],
                                  "normal_velocity_end": [qs(v) for v in uNc],
@@ -1025,13 +1127,24 @@ def friction_poisson_json(sc, u0, uT0):
                                  "energy_change": qs(ke_of(sc, s_c) - ke_of(sc, sc.initial_state()))},
                  "expansion": {"normal_impulses": [qs(v) for v in LNe], "tangential_impulses": [qs(v) for v in LTe],
                                "extra_impulses": [qs(LNe[i] - sc.contacts[i].e * LNc[i]) for i in range(n)],
-                               "modes": mode_names(me, LNe, uTe)}}
+                               "modes": mode_names(me, LNe, uTe)},
+                 "tangential_split_indeterminate": ind}
         sols.append(sc.result([a + b for a, b in zip(LNc, LNe)], [a + b for a, b in zip(LTc, LTe)], extra=extra))
-    if len(sols) == 1 and not deg:
+    if len(sols) == 1:
         out.update(sols[0])
     else:
         out["solutions"] = sols
     return out
+
+
+def distinct_states(sc, res):
+    """The distinct velocity states of a list of Poisson results (for the status)."""
+    keys = []
+    for r in res:
+        st = sc.after([a + b for a, b in zip(r[0], r[5])], [a + b for a, b in zip(r[1], r[6])])
+        if st not in keys:
+            keys.append(st)
+    return keys
 
 
 def ke_of(sc, s):
