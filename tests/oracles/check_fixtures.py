@@ -11,6 +11,7 @@ tested exactly:
   simultaneous-poisson  the compression and expansion conditions, phase by phase
   sequential            the listed impacts replayed from the velocities before, each one checked to be
                         the next firing of the pass rule, the final state nobody approaching
+  sequential-priority   the same with the first-approaching-contact rule
   pgs:K                 K sweeps re-run from scratch with the effective masses computed per contact
   ledger                momentum, angular momentum about the origin, energy, normal velocities after
 
@@ -233,6 +234,31 @@ def check_sequential(bodies, contacts, m):
         check_ledger(bodies, contacts, st, o, where)
 
 
+def check_sequential_priority(bodies, contacts, m):
+    for o in m["orders"]:
+        where = o["model"]
+        if not o["terminated"]:
+            continue
+        order = [i - 1 for i in o["order"]]
+        st = state0(bodies)
+        k = 0
+        listed = [(i["contact"] - 1, num(i["impulse"])) for i in o["impacts"]]
+        while True:
+            nxt = next((i for i in order if rel(bodies, st, contacts[i], contacts[i]["n"]) < 0), None)
+            if nxt is None:
+                break
+            c = contacts[nxt]
+            lam = -(1 + c["e"]) * rel(bodies, st, c, c["n"]) / eff(bodies, c, c["n"])
+            if k < len(listed) and listed[k] != (nxt, lam):
+                fail(f"{where}: impact {k + 1} should be contact {nxt + 1} with {lam}")
+            push(bodies, st, c, lam)
+            k += 1
+        if k != o["number_of_impacts"]:
+            fail(f"{where}: number of impacts")
+        check_state(bodies, st, o, where)
+        check_ledger(bodies, contacts, st, o, where)
+
+
 def check_pgs(bodies, contacts, models, u0):
     for m in models:
         if not m["model"].startswith("pgs:") or m["model"] == "pgs:limit":
@@ -265,6 +291,8 @@ def main():
         for m in d["models"]:
             if m["model"] == "sequential":
                 check_sequential(bodies, contacts, m)
+            elif m["model"] == "sequential-priority":
+                check_sequential_priority(bodies, contacts, m)
             else:
                 check_model(bodies, contacts, m, u0)
             n += 1
