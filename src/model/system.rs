@@ -161,6 +161,24 @@ impl System {
         for (k, c) in system.contacts.iter().enumerate() {
             system.check_contact(k, c)?;
         }
+        // At least one contact approaches; with several, the others may touch (a resting ball
+        // of Newton's cradle) or separate.
+        let approaching = |c: &Contact| system.relative_velocity(c).dot(&c.normal).is_negative();
+        if !system.contacts.iter().any(approaching) {
+            let c = &system.contacts[0];
+            let u_n = system.relative_velocity(c).dot(&c.normal);
+            let (field, what) = if system.contacts.len() == 1 {
+                ("contact[1]".to_string(), format!("is {u_n}, not < 0"))
+            } else {
+                ("contact".to_string(), "is >= 0 at every contact".to_string())
+            };
+            return Err(Error::out_of_range(
+                field,
+                format!(
+                    "no approach: the normal relative velocity (A's point minus B's, along the normal) {what}"
+                ),
+            ));
+        }
         Ok(system)
     }
 
@@ -236,15 +254,6 @@ impl System {
                     ),
                 ));
             }
-        }
-        let u_n = self.relative_velocity(c).dot(&c.normal);
-        if !u_n.is_negative() {
-            return Err(Error::out_of_range(
-                format!("contact[{}]", k + 1),
-                format!(
-                    "no approach: the normal relative velocity (A's point minus B's, along the normal) is {u_n}, not < 0"
-                ),
-            ));
         }
         Ok(())
     }

@@ -10,6 +10,7 @@ mod batch_words;
 mod docs;
 mod fraction_free;
 mod golden;
+mod impact_oracle;
 mod msrv;
 mod mutation;
 mod simulate;
