@@ -359,52 +359,6 @@ fn oblique_problem_collection_agrees() {
     assert_eq!(exact(&j, "mu_star"), "1302925/2251666");
 }
 
-/// A random oblique scene the library accepts: any masses, impact point, restitution,
-/// friction, slip, an optional spinning disc, an optional pivot, and the rod moving or turning
-/// before the impact (refused scenes, no approach, are left out by the caller).
-fn oblique_scene() -> impl proptest::strategy::Strategy<Value = Option<rodimpact::scene::Scene>> {
-    use common::{positive, signed_unit, unit_interval};
-    use proptest::prelude::*;
-    (
-        (
-            positive(),
-            positive(),
-            signed_unit(),
-            unit_interval(),
-            positive(),
-        ),
-        (
-            signed_unit(),
-            unit_interval(),
-            proptest::option::of((positive(), signed_unit())),
-        ),
-        (
-            proptest::option::of(signed_unit()),
-            signed_unit(),
-            signed_unit(),
-            signed_unit(),
-        ),
-    )
-        .prop_map(
-            |((m, big_m, a, e, v0), (v0t, mu, disc), (pivot, rv, rvt, rw))| {
-                let mut b = rodimpact::scene::Scene::builder(m, big_m)
-                    .a(a)
-                    .e(e)
-                    .v0(v0 * rat("3") + rat("2"))
-                    .v0t(v0t)
-                    .mu(mu);
-                if let Some((radius, spin)) = disc {
-                    b = b.disc(radius, spin * rat("5"));
-                }
-                b = match pivot {
-                    Some(p) => b.pivot(p).rod_before(rat("0"), rat("0"), rw),
-                    None => b.rod_before(rv, rvt, rw),
-                };
-                b.build().ok()
-            },
-        )
-}
-
 /// `{"exact": ...}` of `key` in `json`, or `None` when the key is absent.
 fn exact_of(json: &Value, key: &str) -> Option<String> {
     json.get(key)
@@ -418,7 +372,7 @@ proptest::proptest! {
     /// exactly it (both axes, the disc's spin, the impulses, the contact, mu*, the optimum), on
     /// random oblique, frictional, spinning-disc, pivoted and moving-rod scenes.
     #[test]
-    fn the_library_answer_is_what_solve_json_prints(scene in oblique_scene()) {
+    fn the_library_answer_is_what_solve_json_prints(scene in common::oblique_scene()) {
         let Some(scene) = scene else { return Ok(()) };
         let answer = rodimpact::solve::Answer::of(&scene);
         let mut args = vec!["--m".to_string(), scene.m().to_string(), "--M".into(), scene.rod_mass().to_string(),

@@ -140,3 +140,47 @@ pub fn reference_rows(file: &str, limit: usize) -> Vec<(String, Scene, [Q; 3])> 
         })
         .collect()
 }
+
+/// A random oblique scene the library accepts: any masses, impact point, restitution,
+/// friction, slip, an optional spinning disc, an optional pivot, and the rod moving or turning
+/// before the impact (refused scenes, no approach, are left out by the caller).
+pub fn oblique_scene() -> impl Strategy<Value = Option<Scene>> {
+    (
+        (
+            positive(),
+            positive(),
+            signed_unit(),
+            unit_interval(),
+            positive(),
+        ),
+        (
+            signed_unit(),
+            unit_interval(),
+            proptest::option::of((positive(), signed_unit())),
+        ),
+        (
+            proptest::option::of(signed_unit()),
+            signed_unit(),
+            signed_unit(),
+            signed_unit(),
+        ),
+    )
+        .prop_map(
+            |((m, big_m, a, e, v0), (v0t, mu, disc), (pivot, rv, rvt, rw))| {
+                let mut b = Scene::builder(m, big_m)
+                    .a(a)
+                    .e(e)
+                    .v0(v0 * rat("3") + rat("2"))
+                    .v0t(v0t)
+                    .mu(mu);
+                if let Some((radius, spin)) = disc {
+                    b = b.disc(radius, spin * rat("5"));
+                }
+                b = match pivot {
+                    Some(p) => b.pivot(p).rod_before(rat("0"), rat("0"), rw),
+                    None => b.rod_before(rv, rvt, rw),
+                };
+                b.build().ok()
+            },
+        )
+}

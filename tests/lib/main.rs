@@ -11,6 +11,7 @@ mod docs;
 mod fraction_free;
 mod golden;
 mod impact_oracle;
+mod impact_paper;
 mod msrv;
 mod mutation;
 mod simulate;
