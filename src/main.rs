@@ -36,6 +36,9 @@ enum Command {
     /// Figures as SVG (and their data as CSV): omega against a, a* against M/m, Figure 1,
     /// velocities before/after, quantities and energy along the rod.
     Plot(Box<commands::plot::PlotArgs>),
+    /// Any planar impact with one contact (bodies, shapes and contacts in a TOML file) under
+    /// Newton's, Poisson's and Stronge's restitution laws side by side, exactly.
+    Impact(Box<commands::impact::ImpactArgs>),
     /// Check published answers (printed numbers, fractions, formulas) against the exact ones.
     Check(Box<commands::check::CheckArgs>),
     /// The exact answer as formulas (v, V, omega, J, energy lost, a*^2, omega_max; with the
@@ -93,6 +96,7 @@ fn main() -> ExitCode {
         Command::Table(args) => commands::table::run_table(args),
         Command::Plot(args) => commands::plot::run_plot(args),
         Command::Check(args) => commands::check::run_check(args),
+        Command::Impact(args) => commands::impact::run_impact(args),
         Command::Formula(args) => commands::formula::run_formula(args),
         Command::Explore(args) => commands::explore::run_explore(args),
         Command::Stability(args) => commands::stability::run_stability(args),

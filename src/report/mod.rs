@@ -9,6 +9,7 @@ mod check;
 mod claims_doc;
 mod explain;
 pub mod explore;
+mod impact;
 mod formula;
 pub mod markup;
 pub mod mathml;
@@ -47,11 +48,12 @@ pub use proofs::{
 pub use simulate::{
     simulation_json, simulation_passes, simulation_text, sweep_json, sweep_passes, sweep_text,
 };
+pub use impact::{impact_json, impact_text};
 pub use solution::{solution_json, solution_text};
 pub use stability::{stability_json, stability_markdown};
 pub use table::{Cell, Column, Format, Table, render_document};
 
-use crate::field::Q;
+use crate::field::{Q, QSqrt};
 use crate::field::decimal;
 use serde_json::{Value, json};
 
@@ -67,4 +69,17 @@ use serde_json::{Value, json};
 /// ```
 pub fn value_json(x: &Q, digits: usize) -> Value {
     json!({ "exact": x.to_string(), "decimal": decimal::decimal(x, digits) })
+}
+
+/// The JSON value form of an element of Q(sqrt d): `{"exact": "x + y*sqrt(d)" in the
+/// canonical surd form, "decimal": "..."}` (a rational prints as `p/q`).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::surd_json, field::{q, QSqrt}};
+/// let v = surd_json(&QSqrt::sqrt_of(&q(2, 3)), 5);
+/// assert_eq!((v["exact"].as_str(), v["decimal"].as_str()), (Some("sqrt(6)/3"), Some("0.81650")));
+/// ```
+pub fn surd_json(x: &QSqrt, digits: usize) -> Value {
+    json!({ "exact": x.to_string(), "decimal": x.decimal(digits) })
 }

@@ -1,9 +1,9 @@
 //! The answer to one scene, as `rodimpact solve` prints it: JSON (the keys of docs/conventions.md)
 //! and an aligned text report.
 
-use super::value_json;
+use super::{surd_json, value_json};
 use crate::field::decimal::{self, Rounding};
-use crate::field::{Q, QSqrt};
+use crate::field::Q;
 use crate::scene::{Oblique, RodInertia, Scene, Support};
 use crate::solve::Answer;
 use crate::solve::Energy;
@@ -469,11 +469,6 @@ fn cells(exact: String, decimal: String, unit: &str) -> [String; 2] {
 /// A text cell with no decimal.
 fn plain(text: String) -> [String; 2] {
     [text, String::new()]
-}
-
-/// The `{"exact": "...", "decimal": "..."}` form of an element of Q(sqrt d).
-fn surd_json(x: &QSqrt, digits: usize) -> Value {
-    json!({ "exact": x.to_string(), "decimal": x.decimal(digits) })
 }
 
 pub(super) fn scene_json(s: &Scene) -> Value {
