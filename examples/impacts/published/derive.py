@@ -256,6 +256,13 @@ def main():
     show("cube", cube, after, f"impulse (n, t) = ({pn}, {pt}); phases {ph}")
     print("    printed: omega = 3v/(5a) = 0.6 rad/s -> WRONG (I about the edge taken as 5/3 M a^2; it is 8/3 M a^2: omega = 3v/(8a))")
 
+    print("7. byjus-rod-37deg-floor: rod at 37 deg (cos 4/5) falls at v0 = 1 m/s onto one end, smooth floor, e = 1/2")
+    rod = Body(1, F(1, 3), (0, 0), (0, -1), 0)
+    after, (pn, pt), ph = single_contact(rod, (F(-4, 5), F(-3, 5)), (0, 1), F(1, 2), 0)
+    show("rod", rod, after, f"normal impulse {pn} = {float(pn):.7g}")
+    print("    page's own equations give J = 75/146 M v0, V = 71/146 v0 down, omega = 180/73 v0/L;")
+    print("    printed (as read from garbled text): J = 50/121 M v0, speed 111/121 v0 -> disagree")
+
     try:
         import sympy as sp
         h = sp.Rational(3, 20)
@@ -335,6 +342,13 @@ def solve_scene(path):
             after = after.apply(p, (F(0), x))
     values = {f"{name}.omega": after.omega, f"{name}.velocity.x": after.vel[0],
               f"{name}.velocity.y": after.vel[1], "energy.change": after.energy() - E0}
+    if len(cs) == 1:
+        nvec = [num(x) for x in cs[0]["normal"]]
+        P = (body.m * (after.vel[0] - body.vel[0]), body.m * (after.vel[1] - body.vel[1]))
+        nn = nvec[0] ** 2 + nvec[1] ** 2
+        if nn == 1:  # impulse components along the unit normal and tangent
+            values["impulse.normal"] = P[0] * nvec[0] + P[1] * nvec[1]
+            values["impulse.tangential"] = -P[0] * nvec[1] + P[1] * nvec[0]
     print(f"{os.path.basename(path)}:")
     for cl in sc.get("claim", []):
         exact = values[cl["quantity"]]
