@@ -3,9 +3,11 @@
 use super::{Failure, parse_digits, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::field::QSqrt;
-use rodimpact::model::{MAX_SCENE_BYTES, parse_toml};
-use rodimpact::report::{impact_json, impact_text};
+use rodimpact::model::{MAX_SCENE_BYTES, from_value, toml_value};
+use rodimpact::report::{check_json, check_summary, check_table, impact_json, impact_text};
 use rodimpact::solve::impact::{Law, solve_contact};
+use rodimpact::textbook::SceneCheck;
+use rodimpact::textbook::impact::{check_impact_claims, read_impact_claims};
 use rodimpact::{Error, ErrorKind};
 use std::io::Read;
 use std::path::PathBuf;
@@ -49,8 +51,13 @@ pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
         .map_err(|e| Error::io(label.clone(), "cannot read", e))?;
     let text = String::from_utf8(bytes)
         .map_err(|_| Error::new(label.clone(), ErrorKind::Invalid("not UTF-8 text".into())))?;
-    let system = parse_toml(&label, &text)?;
+    let value = toml_value(&label, &text)?;
+    let at_file = |e: Error| Error::new(format!("{label}: {}", e.field), e.kind);
+    let system = from_value(&value).map_err(at_file)?;
+    let claims = read_impact_claims(&value, &system).map_err(at_file)?;
+    // A file's published answers need their laws answered whatever --law says.
     let laws: &[Law] = match args.law {
+        _ if !claims.is_empty() => &Law::ALL,
         LawChoice::Newton => &[Law::Newton],
         LawChoice::Poisson => &[Law::Poisson],
         LawChoice::Energetic => &[Law::Energetic],
@@ -63,10 +70,17 @@ pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
                 .map_err(|e| Error::new(label.clone(), ErrorKind::Invalid(e.to_string())))
         })
         .collect::<Result<Vec<_>, _>>()?;
+    let checked = SceneCheck {
+        symbolic: None,
+        answers: check_impact_claims(&claims, &system, &answers).map_err(at_file)?,
+    };
     match args.format {
         ImpactFormat::Json => {
             let digits = parse_digits(args.digits.as_deref(), 30)?;
-            let json = impact_json(&system, &answers, digits);
+            let mut json = impact_json(&system, &answers, digits);
+            if !claims.is_empty() {
+                json["claims"] = check_json(&checked);
+            }
             print_out(&format!(
                 "{}\n",
                 serde_json::to_string_pretty(&json).expect("JSON of strings and bools")
@@ -74,8 +88,20 @@ pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
         }
         ImpactFormat::Text => {
             let digits = parse_digits(args.digits.as_deref(), 6)?;
-            print_out(&impact_text(&system, &answers, digits));
+            let mut text = impact_text(&system, &answers, digits);
+            if !claims.is_empty() {
+                text.push_str(&format!(
+                    "\nPublished answers (the file's claims, each under its source's law)\n{}  {}\n",
+                    check_table(&checked),
+                    check_summary(&checked)
+                ));
+            }
+            print_out(&text);
         }
     }
-    Ok(())
+    if checked.all_agree() {
+        Ok(())
+    } else {
+        Err(Failure::Check)
+    }
 }

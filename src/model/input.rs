@@ -18,7 +18,7 @@
 //! omega = "0"               # counterclockwise positive
 //! [[body]]
 //! name = "floor"
-//! fixed = true              # without a shape: the half-plane whose edge passes through position
+//! fixed = true              # the ground: a face through the contact point across the normal
 //! [[contact]]
 //! bodies = ["rod", "floor"] # A, B: the impulse on A is P, on B -P
 //! point = ["-3/5", "0"]
@@ -73,6 +73,23 @@ pub const MAX_VERTICES: usize = 1_000;
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn parse_toml(label: &str, text: &str) -> Result<System, Error> {
+    let value = toml_value(label, text)?;
+    from_value(&value).map_err(|e| Error::new(format!("{label}: {}", e.field), e.kind))
+}
+
+/// A scene file's text (TOML) as its JSON form, unchecked: what [`from_value`] reads, and
+/// where a scene's other tables (its published `claim`s) are found.
+///
+/// # Errors
+/// The TOML's own error with its line, or a file over [`MAX_SCENE_BYTES`].
+///
+/// # Examples
+/// ```
+/// let v = rodimpact::model::toml_value("t.toml", "title = \"x\"\n[[claim]]\nlaw = \"newton\"\n")?;
+/// assert_eq!(v["claim"][0]["law"], "newton");
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn toml_value(label: &str, text: &str) -> Result<Value, Error> {
     if text.len() > MAX_SCENE_BYTES {
         return Err(Error::out_of_range(
             label,
@@ -92,10 +109,8 @@ pub fn parse_toml(label: &str, text: &str) -> Result<System, Error> {
             ErrorKind::Invalid(format!("{}{message}", line.unwrap_or_default())),
         )
     })?;
-    let value = serde_json::to_value(&table).map_err(|e| {
-        Error::new(label, ErrorKind::Invalid(format!("not a scene: {e}")))
-    })?;
-    from_value(&value).map_err(|e| Error::new(format!("{label}: {}", e.field), e.kind))
+    serde_json::to_value(&table)
+        .map_err(|e| Error::new(label, ErrorKind::Invalid(format!("not a scene: {e}"))))
 }
 
 /// Reads a system from its JSON form (one line of `impact --batch`; a TOML file's structure).
@@ -115,7 +130,13 @@ pub fn parse_toml(label: &str, text: &str) -> Result<System, Error> {
 /// ```
 pub fn from_value(value: &Value) -> Result<System, Error> {
     let top = object(value, "scene")?;
-    only_keys(top, "scene", &["title", "body", "contact", "pin", "claimed", "claim", "source"])?;
+    only_keys(
+        top,
+        "scene",
+        &[
+            "title", "body", "contact", "pin", "claimed", "claim", "source",
+        ],
+    )?;
     let title = match top.get("title") {
         None => None,
         Some(Value::String(t)) => Some(t.clone()),
@@ -150,7 +171,11 @@ pub fn from_value(value: &Value) -> Result<System, Error> {
         let pin = object(v, &field)?;
         only_keys(pin, &field, &["body", "point"])?;
         let at = index_of(&format!("{field}.body"), required(pin, &field, "body")?)?;
-        let point = vector(required(pin, &field, "point")?, &format!("{field}.point"), Dimension::Length)?;
+        let point = vector(
+            required(pin, &field, "point")?,
+            &format!("{field}.point"),
+            Dimension::Length,
+        )?;
         match &bodies[at].mobility {
             Mobility::Free => bodies[at].mobility = Mobility::Pinned(point),
             Mobility::Pinned(_) => {
@@ -188,9 +213,18 @@ pub fn from_value(value: &Value) -> Result<System, Error> {
             Ok(Contact {
                 a,
                 b,
-                point: vector(required(c, &field, "point")?, &format!("{field}.point"), Dimension::Length)?,
-                normal: vector(required(c, &field, "normal")?, &format!("{field}.normal"), Dimension::Pure)?,
-                e: optional_number(c, &field, "e", Dimension::Pure)?.unwrap_or_else(|| Q::from_integer(1.into())),
+                point: vector(
+                    required(c, &field, "point")?,
+                    &format!("{field}.point"),
+                    Dimension::Length,
+                )?,
+                normal: vector(
+                    required(c, &field, "normal")?,
+                    &format!("{field}.normal"),
+                    Dimension::Pure,
+                )?,
+                e: optional_number(c, &field, "e", Dimension::Pure)?
+                    .unwrap_or_else(|| Q::from_integer(1.into())),
                 mu: optional_number(c, &field, "mu", Dimension::Pure)?.unwrap_or_else(Q::zero),
             })
         })
@@ -205,12 +239,27 @@ fn body(field: &str, v: &Value) -> Result<Body, Error> {
         b,
         field,
         &[
-            "name", "fixed", "mass", "inertia", "shape", "radius", "length", "thickness", "width",
-            "height", "axis", "vertices", "position", "velocity", "omega",
+            "name",
+            "fixed",
+            "mass",
+            "inertia",
+            "shape",
+            "radius",
+            "length",
+            "thickness",
+            "width",
+            "height",
+            "axis",
+            "vertices",
+            "position",
+            "velocity",
+            "omega",
         ],
     )?;
     let name = match required(b, field, "name")? {
-        Value::String(n) if !n.trim().is_empty() && n.len() <= 100 && !n.chars().any(char::is_control) => {
+        Value::String(n)
+            if !n.trim().is_empty() && n.len() <= 100 && !n.chars().any(char::is_control) =>
+        {
             n.clone()
         }
         _ => {
@@ -244,7 +293,9 @@ fn body(field: &str, v: &Value) -> Result<Body, Error> {
             if b.contains_key(key) {
                 return Err(Error::new(
                     format!("{field}.{key}"),
-                    ErrorKind::Conflict("a fixed body never moves: give it no mass or motion".into()),
+                    ErrorKind::Conflict(
+                        "a fixed body never moves: give it no mass or motion".into(),
+                    ),
                 ));
             }
         }
@@ -259,8 +310,15 @@ fn body(field: &str, v: &Value) -> Result<Body, Error> {
             shape,
         });
     }
-    let mass = number(required(b, field, "mass")?, &format!("{field}.mass"), Dimension::Mass)?;
-    let inertia = match (optional_number(b, field, "inertia", Dimension::MomentOfInertia)?, &shape) {
+    let mass = number(
+        required(b, field, "mass")?,
+        &format!("{field}.mass"),
+        Dimension::Mass,
+    )?;
+    let inertia = match (
+        optional_number(b, field, "inertia", Dimension::MomentOfInertia)?,
+        &shape,
+    ) {
         (Some(i), _) => i,
         (None, Some(s)) => s.inertia(&mass, &position),
         (None, None) => Q::zero(),
@@ -284,7 +342,15 @@ fn body(field: &str, v: &Value) -> Result<Body, Error> {
 fn shape(b: &Map<String, Value>, field: &str) -> Result<Option<Shape>, Error> {
     let kind = match b.get("shape") {
         None => {
-            for key in ["radius", "length", "thickness", "width", "height", "axis", "vertices"] {
+            for key in [
+                "radius",
+                "length",
+                "thickness",
+                "width",
+                "height",
+                "axis",
+                "vertices",
+            ] {
                 if b.contains_key(key) {
                     return Err(Error::new(
                         format!("{field}.{key}"),
@@ -295,7 +361,12 @@ fn shape(b: &Map<String, Value>, field: &str) -> Result<Option<Shape>, Error> {
             return Ok(None);
         }
         Some(Value::String(kind)) => kind.as_str(),
-        Some(_) => return Err(invalid(&format!("{field}.shape"), "point, disc, rod, box or polygon".into())),
+        Some(_) => {
+            return Err(invalid(
+                &format!("{field}.shape"),
+                "point, disc, rod, box or polygon".into(),
+            ));
+        }
     };
     let keys: &[&str] = match kind {
         "point" => &[],
@@ -313,7 +384,15 @@ fn shape(b: &Map<String, Value>, field: &str) -> Result<Option<Shape>, Error> {
             ));
         }
     };
-    for key in ["radius", "length", "thickness", "width", "height", "axis", "vertices"] {
+    for key in [
+        "radius",
+        "length",
+        "thickness",
+        "width",
+        "height",
+        "axis",
+        "vertices",
+    ] {
         if b.contains_key(key) && !keys.contains(&key) {
             return Err(Error::new(
                 format!("{field}.{key}"),
@@ -322,11 +401,18 @@ fn shape(b: &Map<String, Value>, field: &str) -> Result<Option<Shape>, Error> {
         }
     }
     let positive = |key: &str| -> Result<Q, Error> {
-        let x = number(required(b, field, key)?, &format!("{field}.{key}"), Dimension::Length)?;
+        let x = number(
+            required(b, field, key)?,
+            &format!("{field}.{key}"),
+            Dimension::Length,
+        )?;
         if x.is_positive() {
             Ok(x)
         } else {
-            Err(Error::out_of_range(format!("{field}.{key}"), format!("must be > 0, got {x}")))
+            Err(Error::out_of_range(
+                format!("{field}.{key}"),
+                format!("must be > 0, got {x}"),
+            ))
         }
     };
     let axis = || -> Result<Vec2<Q>, Error> {
@@ -335,7 +421,10 @@ fn shape(b: &Map<String, Value>, field: &str) -> Result<Option<Shape>, Error> {
             None => Vec2::new(Q::from_integer(1.into()), Q::zero()),
         };
         if axis.x.is_zero() && axis.y.is_zero() {
-            return Err(Error::out_of_range(format!("{field}.axis"), "the axis is zero"));
+            return Err(Error::out_of_range(
+                format!("{field}.axis"),
+                "the axis is zero",
+            ));
         }
         Ok(axis)
     };
@@ -368,7 +457,13 @@ fn shape(b: &Map<String, Value>, field: &str) -> Result<Option<Shape>, Error> {
                 Value::Array(vs) if (3..=MAX_VERTICES).contains(&vs.len()) => vs
                     .iter()
                     .enumerate()
-                    .map(|(j, v)| vector(v, &format!("{field}.vertices[{}]", j + 1), Dimension::Length))
+                    .map(|(j, v)| {
+                        vector(
+                            v,
+                            &format!("{field}.vertices[{}]", j + 1),
+                            Dimension::Length,
+                        )
+                    })
                     .collect::<Result<Vec<_>, _>>()?,
                 _ => {
                     return Err(invalid(
@@ -434,7 +529,10 @@ fn number(v: &Value, field: &str, dimension: Dimension) -> Result<Q, Error> {
             "a floating-point literal is not read exactly: write the number as a string (\"0.25\")"
                 .into(),
         )),
-        _ => Err(invalid(field, "expected a number (a string such as \"3/7\")".into())),
+        _ => Err(invalid(
+            field,
+            "expected a number (a string such as \"3/7\")".into(),
+        )),
     }
 }
 

@@ -17,7 +17,7 @@ mod paper;
 mod shape;
 mod system;
 
-pub use input::{MAX_SCENE_BYTES, MAX_VERTICES, from_value, parse_toml};
+pub use input::{MAX_SCENE_BYTES, MAX_VERTICES, from_value, parse_toml, toml_value};
 pub use paper::{PROJECTILE, ROD, paper_system};
 pub use shape::Shape;
 pub use system::{Body, Contact, MAX_BODIES, MAX_CONTACTS, Mobility, System};

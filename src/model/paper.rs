@@ -79,6 +79,7 @@ pub fn paper_system(scene: &Scene) -> System {
         e: scene.e().clone(),
         mu: o.mu,
     };
-    System::new(None, vec![projectile, rod], vec![contact])
-        .expect("a valid scene is a valid system: the masses are positive and the projectile approaches")
+    System::new(None, vec![projectile, rod], vec![contact]).expect(
+        "a valid scene is a valid system: the masses are positive and the projectile approaches",
+    )
 }

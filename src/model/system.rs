@@ -110,9 +110,9 @@ pub const MAX_CONTACTS: usize = 16;
 impl System {
     /// Checks a system and returns it: names unique, masses positive, inertias non-negative (a
     /// turning body needs inertia), every contact between two bodies that are not both fixed,
-    /// its normal not zero, its point on both bodies' shapes (on the edge of a fixed body
-    /// without a shape: the half-plane through its position), 0 <= e <= 1, mu >= 0, a pinned
-    /// point at rest, and every contact approaching.
+    /// its normal not zero, its point on both bodies' shapes (a body without a shape is not
+    /// checked), 0 <= e <= 1, mu >= 0, a pinned point at rest, and a contact approaching (with
+    /// several contacts, the others may touch).
     ///
     /// # Errors
     /// One error naming the field (`body[2].mass`, `contact[1].normal`, ...) and the reason.
@@ -170,7 +170,10 @@ impl System {
             let (field, what) = if system.contacts.len() == 1 {
                 ("contact[1]".to_string(), format!("is {u_n}, not < 0"))
             } else {
-                ("contact".to_string(), "is >= 0 at every contact".to_string())
+                (
+                    "contact".to_string(),
+                    "is >= 0 at every contact".to_string(),
+                )
             };
             return Err(Error::out_of_range(
                 field,
@@ -229,19 +232,12 @@ impl System {
             ));
         }
         for body in [a, b] {
-            if !lies_on(body, &c.point, &c.normal) {
+            if !lies_on(body, &c.point) {
                 return Err(Error::out_of_range(
                     field("point"),
                     format!(
-                        "({}, {}) is not on the {} of body '{}'",
-                        c.point.x,
-                        c.point.y,
-                        match (&body.shape, body.moves()) {
-                            (Some(_), _) => "boundary of the shape",
-                            (None, true) => "centre (a point mass without a shape)",
-                            (None, false) => "edge (the line through its position across the normal)",
-                        },
-                        body.name
+                        "({}, {}) is not on the boundary of the shape of body '{}'",
+                        c.point.x, c.point.y, body.name
                     ),
                 ));
             }
@@ -259,14 +255,14 @@ impl System {
     }
 }
 
-/// Whether `point` lies on `body`: on its shape's boundary; at the centre of a point mass
-/// without a shape; on the edge of a fixed body without a shape (the line through its
-/// position across `normal`).
-fn lies_on(body: &Body, point: &Vec2<Q>, normal: &Vec2<Q>) -> bool {
-    match (&body.shape, body.moves()) {
-        (Some(shape), _) => shape.on_boundary(point, &body.position),
-        (None, true) => &body.position == point,
-        (None, false) => point.sub(&body.position).dot(normal).is_zero(),
+/// Whether `point` lies on `body`: on its shape's boundary when it has one. A body without a
+/// shape has nothing to check against: a moving one is given by its inertia alone (a point
+/// mass, inertia 0, is checked apart to be struck at its centre), and a fixed one (the ground,
+/// a wall, a step) is a face through the contact point across the normal.
+fn lies_on(body: &Body, point: &Vec2<Q>) -> bool {
+    match &body.shape {
+        Some(shape) => shape.on_boundary(point, &body.position),
+        None => true,
     }
 }
 

@@ -186,11 +186,14 @@ fn show(x: &QSqrt, digits: usize) -> String {
     }
     // A fraction whose decimal ends within the digits shown: exactly that decimal.
     let trimmed = match decimal.split_once('e') {
-        None if decimal.contains('.') => decimal.trim_end_matches('0').trim_end_matches('.').to_string(),
+        None if decimal.contains('.') => decimal
+            .trim_end_matches('0')
+            .trim_end_matches('.')
+            .to_string(),
         _ => decimal.clone(),
     };
-    let terminates = x.y().is_zero()
-        && crate::number::parse(&trimmed).is_ok_and(|back| &back == x.x());
+    let terminates =
+        x.y().is_zero() && crate::number::parse(&trimmed).is_ok_and(|back| &back == x.x());
     if terminates {
         format!("{exact} = {trimmed}")
     } else {

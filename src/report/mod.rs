@@ -9,8 +9,8 @@ mod check;
 mod claims_doc;
 mod explain;
 pub mod explore;
-mod impact;
 mod formula;
+mod impact;
 pub mod markup;
 pub mod mathml;
 pub mod page;
@@ -33,6 +33,7 @@ pub use check::{
 pub use claims_doc::claims_markdown;
 pub use explain::{ExplainFormat, explain};
 pub use formula::{formula_json, formula_latex, formula_markdown, formula_text};
+pub use impact::{impact_json, impact_text};
 pub use paper_html::paper_html;
 pub use paper_tables::{
     ALL_TABLE_IDS, TABLE_IDS, TableOptions, all_tables, t1, t2, t3, t4, t5, t6, tables,
@@ -48,13 +49,12 @@ pub use proofs::{
 pub use simulate::{
     simulation_json, simulation_passes, simulation_text, sweep_json, sweep_passes, sweep_text,
 };
-pub use impact::{impact_json, impact_text};
 pub use solution::{solution_json, solution_text};
 pub use stability::{stability_json, stability_markdown};
 pub use table::{Cell, Column, Format, Table, render_document};
 
-use crate::field::{Q, QSqrt};
 use crate::field::decimal;
+use crate::field::{Q, QSqrt};
 use serde_json::{Value, json};
 
 /// The JSON value form of an exact number: `{"exact": "p/q", "decimal": "..."}`, the decimal

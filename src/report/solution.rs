@@ -2,8 +2,8 @@
 //! and an aligned text report.
 
 use super::{surd_json, value_json};
-use crate::field::decimal::{self, Rounding};
 use crate::field::Q;
+use crate::field::decimal::{self, Rounding};
 use crate::scene::{Oblique, RodInertia, Scene, Support};
 use crate::solve::Answer;
 use crate::solve::Energy;

@@ -137,6 +137,22 @@ impl ClaimedAnswer {
     }
 }
 
+/// A claimed value as written: a printed number with an optional unit of `dimension`, or a
+/// constant formula; `name` names it in errors.
+///
+/// # Errors
+/// A value that is neither, or a unit of another dimension.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{textbook::read_claimed, units::Dimension};
+/// assert!(read_claimed("rod.omega", "3.2 rad/s", Dimension::AngularSpeed).is_ok());
+/// assert!(read_claimed("rod.omega", "3.2 kg", Dimension::AngularSpeed).is_err());
+/// ```
+pub fn read_claimed(name: &str, text: &str, dimension: Dimension) -> Result<ClaimedValue, Error> {
+    read_value(name, text, dimension, &mut Budget::new(expr::MAX_WORK))
+}
+
 /// A printed number with an optional unit, or else a formula (charged to `budget`); when
 /// neither reads, the error of the form the text looks like.
 pub(crate) fn read_value(

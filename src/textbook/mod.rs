@@ -33,6 +33,7 @@ mod claim;
 mod exact;
 pub mod expr;
 pub mod formula;
+pub mod impact;
 pub mod numeric;
 pub mod problems;
 mod quantity;
@@ -44,6 +45,6 @@ pub use answer::{
     AnswerAgreement, CheckedAnswer, Counterexample, RelError, SceneCheck, SceneSummary,
 };
 pub use check::{check_scene, check_scene_within};
-pub use claim::{ClaimedAnswer, ClaimedValue};
+pub use claim::{ClaimedAnswer, ClaimedValue, read_claimed};
 pub use exact::Exact;
 pub use quantity::Quantity;

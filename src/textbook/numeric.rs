@@ -24,14 +24,46 @@ use std::cmp::Ordering;
 /// assert_eq!(d.agreement, AnswerAgreement::LastDigit);
 /// ```
 pub fn decide(claim: &ClaimedAnswer, exact: &Exact, sig: Option<u32>) -> CheckedAnswer {
-    let mut d = CheckedAnswer::new(
+    let omega = claim.quantity == Quantity::Omega;
+    decide_value(
         claim.quantity.name(),
         &claim.text,
-        exact.to_string(),
-        Some(exact.clone()),
-    );
-    let omega = claim.quantity == Quantity::Omega;
-    match &claim.value {
+        &claim.value,
+        exact,
+        omega,
+        sig,
+    )
+}
+
+/// Decides the claim `text` (read as `value`) named `name` against the exact value: a printed
+/// number by its own significant figures (`sig` overrides them), an exact number or a constant
+/// formula exactly. `by_magnitude` compares magnitudes and notes an opposite sign (textbooks'
+/// rotation conventions differ); otherwise the sign counts.
+///
+/// # Examples
+/// A published claim about any quantity, here a body's spin written as printed:
+/// ```
+/// use rodimpact::textbook::{numeric::decide_value, read_claimed, AnswerAgreement, Exact};
+/// use rodimpact::{field::q, units::Dimension};
+/// let value = read_claimed("bar.omega", "-16.714", Dimension::AngularSpeed)?;
+/// let d = decide_value("bar.omega", "-16.714", &value, &Exact::Rational(q(-117, 7)), false, None);
+/// assert_eq!(d.agreement, AnswerAgreement::Agrees);
+/// let wrong = decide_value("bar.omega", "16.714", &read_claimed("bar.omega", "16.714", Dimension::AngularSpeed)?,
+///                          &Exact::Rational(q(-117, 7)), false, None);
+/// assert_eq!(wrong.agreement, AnswerAgreement::Disagrees);
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn decide_value(
+    name: &str,
+    text: &str,
+    value: &ClaimedValue,
+    exact: &Exact,
+    by_magnitude: bool,
+    sig: Option<u32>,
+) -> CheckedAnswer {
+    let mut d = CheckedAnswer::new(name, text, exact.to_string(), Some(exact.clone()));
+    let omega = by_magnitude;
+    match value {
         ClaimedValue::Printed(m) => printed(&mut d, m, exact, omega, sig),
         ClaimedValue::Formula(r) => match r.constant() {
             Some((c, rad)) if !rad.is_negative() => {

@@ -44,7 +44,8 @@ fn one_contact_scenes() -> Vec<(String, System, Value)> {
             continue;
         }
         let fixture = root().join(format!("tests/data/impacts/{name}.json"));
-        let fixture: Value = serde_json::from_str(&std::fs::read_to_string(fixture).unwrap()).unwrap();
+        let fixture: Value =
+            serde_json::from_str(&std::fs::read_to_string(fixture).unwrap()).unwrap();
         out.push((name, system, fixture));
     }
     out.sort_by(|a, b| a.0.cmp(&b.0));
@@ -57,28 +58,98 @@ fn check(name: &str, system: &System, expected: &Value, got: &LawAnswer<QSqrt>) 
     for body in &got.bodies {
         let body_name = &system.bodies[body.index].name;
         let e = &expected["bodies"][body_name];
-        assert_eq!([body.velocity.x.clone(), body.velocity.y.clone()], pair(&e["velocity"]), "{}", at(body_name));
-        assert_eq!(body.omega, number(&e["omega"]), "{}", at(&format!("{body_name}.omega")));
+        assert_eq!(
+            [body.velocity.x.clone(), body.velocity.y.clone()],
+            pair(&e["velocity"]),
+            "{}",
+            at(body_name)
+        );
+        assert_eq!(
+            body.omega,
+            number(&e["omega"]),
+            "{}",
+            at(&format!("{body_name}.omega"))
+        );
     }
-    assert_eq!([got.impulse.x.clone(), got.impulse.y.clone()], pair(&expected["impulse"]), "{}", at("impulse"));
-    assert_eq!(got.lam, number(&expected["impulse_coefficients"]["lam"]), "{}", at("lam"));
-    assert_eq!(got.tau, number(&expected["impulse_coefficients"]["tau"]), "{}", at("tau"));
+    assert_eq!(
+        [got.impulse.x.clone(), got.impulse.y.clone()],
+        pair(&expected["impulse"]),
+        "{}",
+        at("impulse")
+    );
+    assert_eq!(
+        got.lam,
+        number(&expected["impulse_coefficients"]["lam"]),
+        "{}",
+        at("lam")
+    );
+    assert_eq!(
+        got.tau,
+        number(&expected["impulse_coefficients"]["tau"]),
+        "{}",
+        at("tau")
+    );
     assert_eq!(got.lam_c, number(&expected["lam_c"]), "{}", at("lam_c"));
-    assert_eq!(got.contact_after[0], number(&expected["contact_velocity"]["after"]["n"]), "{}", at("u_n after"));
-    assert_eq!(got.contact_after[1], number(&expected["contact_velocity"]["after"]["t"]), "{}", at("u_t after"));
+    assert_eq!(
+        got.contact_after[0],
+        number(&expected["contact_velocity"]["after"]["n"]),
+        "{}",
+        at("u_n after")
+    );
+    assert_eq!(
+        got.contact_after[1],
+        number(&expected["contact_velocity"]["after"]["t"]),
+        "{}",
+        at("u_t after")
+    );
     let work = &expected["work"];
-    assert_eq!(got.work, [number(&work["normal_compression"]), number(&work["normal_restitution"]), number(&work["friction"])], "{}", at("work"));
+    assert_eq!(
+        got.work,
+        [
+            number(&work["normal_compression"]),
+            number(&work["normal_restitution"]),
+            number(&work["friction"])
+        ],
+        "{}",
+        at("work")
+    );
     let energy = &expected["energy"];
-    assert_eq!(got.energy.before, number(&energy["before"]), "{}", at("energy before"));
-    assert_eq!(got.energy.after, number(&energy["after"]), "{}", at("energy after"));
-    assert_eq!(got.energy.change, number(&energy["change"]), "{}", at("energy change"));
-    assert_eq!(Value::Bool(got.energy_gain), expected["energy_gain"], "{}", at("energy_gain"));
+    assert_eq!(
+        got.energy.before,
+        number(&energy["before"]),
+        "{}",
+        at("energy before")
+    );
+    assert_eq!(
+        got.energy.after,
+        number(&energy["after"]),
+        "{}",
+        at("energy after")
+    );
+    assert_eq!(
+        got.energy.change,
+        number(&energy["change"]),
+        "{}",
+        at("energy change")
+    );
+    assert_eq!(
+        Value::Bool(got.energy_gain),
+        expected["energy_gain"],
+        "{}",
+        at("energy_gain")
+    );
     if !system.contacts[0].mu.eq(&Q::from_integer(0.into())) {
         let phases: Vec<(String, QSqrt, QSqrt)> = expected["phases"]
             .as_array()
             .unwrap()
             .iter()
-            .map(|p| (p["mode"].as_str().unwrap().to_string(), number(&p["from"]), number(&p["to"])))
+            .map(|p| {
+                (
+                    p["mode"].as_str().unwrap().to_string(),
+                    number(&p["from"]),
+                    number(&p["to"]),
+                )
+            })
             .collect();
         let got_phases: Vec<(String, QSqrt, QSqrt)> = got
             .phases
@@ -98,7 +169,8 @@ fn every_one_contact_scene_is_the_oracles_under_every_law() {
         let laws = fixture["laws"].as_array().unwrap();
         for law in Law::ALL {
             let expected = laws.iter().find(|l| l["law"] == law.name()).unwrap();
-            let got = solve_contact::<QSqrt>(system, law).unwrap_or_else(|e| panic!("{name}, {law}: {e}"));
+            let got = solve_contact::<QSqrt>(system, law)
+                .unwrap_or_else(|e| panic!("{name}, {law}: {e}"));
             check(name, system, expected, &got);
         }
     }

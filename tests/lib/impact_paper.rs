@@ -20,7 +20,11 @@ fn exact(x: &Q) -> QSqrt {
 fn agrees(scene: &Scene) -> Result<(), TestCaseError> {
     let system = paper_system(scene);
     let (w, _) = contact_matrix::<Q>(&system);
-    prop_assert_eq!(w.nt, Q::from_integer(0.into()), "W is diagonal in the paper's family");
+    prop_assert_eq!(
+        w.nt,
+        Q::from_integer(0.into()),
+        "W is diagonal in the paper's family"
+    );
     let answer = Answer::of(scene);
     let paper = &answer.impact;
     // The paper's values: both axes (an oblique scene's completion, or the plain scene's).
@@ -37,7 +41,15 @@ fn agrees(scene: &Scene) -> Result<(), TestCaseError> {
         None => {
             let a = &paper.outcome.after;
             let zero = Q::from_integer(0.into());
-            (a.v.clone(), zero.clone(), None, a.rod_v.clone(), zero.clone(), a.omega.clone(), zero)
+            (
+                a.v.clone(),
+                zero.clone(),
+                None,
+                a.rod_v.clone(),
+                zero.clone(),
+                a.omega.clone(),
+                zero,
+            )
         }
     };
     let lost = match &paper.oblique {
@@ -58,9 +70,17 @@ fn agrees(scene: &Scene) -> Result<(), TestCaseError> {
         // The impulse on the rod is (lam, tau): the normal is (-1, 0) into the projectile.
         prop_assert_eq!(&general.lam, &exact(&answer.impulse), "{} J", law);
         prop_assert_eq!(&general.tau, &exact(&jt), "{} Jt", law);
-        prop_assert_eq!(&general.energy.change, &exact(&-lost.clone()), "{} energy", law);
+        prop_assert_eq!(
+            &general.energy.change,
+            &exact(&-lost.clone()),
+            "{} energy",
+            law
+        );
         if let Support::Pivot(_) = scene.support() {
-            let pin = rod.pin_impulse.as_ref().expect("a pinned rod's pin impulse");
+            let pin = rod
+                .pin_impulse
+                .as_ref()
+                .expect("a pinned rod's pin impulse");
             let across = match &paper.oblique {
                 Some(o) => o.pivot_impulse.clone().expect("pivot").0,
                 None => paper.outcome.pivot_impulse.clone().expect("pivot"),

@@ -32,11 +32,7 @@ impl<F: Field> Response<F> {
         let lift = |x: &crate::field::Q| F::from_rational(x);
         let centre = Vec2::new(lift(&body.position.x), lift(&body.position.y));
         let invert = |x: &F| {
-            if x.is_zero() {
-                F::zero()
-            } else {
-                F::one() / x
-            }
+            if x.is_zero() { F::zero() } else { F::one() / x }
         };
         match &body.mobility {
             Mobility::Fixed => None,
@@ -74,7 +70,12 @@ impl<F: Field> Response<F> {
     /// The change of the velocity of the body's centre `centre` under `impulse` at `p`: the
     /// impulse over the mass (free), or the new spin about the pin carried to the centre
     /// (pinned).
-    pub(crate) fn centre_change(&self, centre: &Vec2<F>, p: &Vec2<F>, impulse: &Vec2<F>) -> Vec2<F> {
+    pub(crate) fn centre_change(
+        &self,
+        centre: &Vec2<F>,
+        p: &Vec2<F>,
+        impulse: &Vec2<F>,
+    ) -> Vec2<F> {
         if self.inverse_mass.is_zero() {
             centre
                 .sub(&self.about)
@@ -113,9 +114,8 @@ pub struct ContactMatrix<F> {
 impl<F: Field> Lifted<F> {
     /// Contact `c` of `system` in the field `F`.
     pub(crate) fn of(system: &System, c: &Contact) -> Lifted<F> {
-        let lift = |v: &Vec2<crate::field::Q>| {
-            Vec2::new(F::from_rational(&v.x), F::from_rational(&v.y))
-        };
+        let lift =
+            |v: &Vec2<crate::field::Q>| Vec2::new(F::from_rational(&v.x), F::from_rational(&v.y));
         let normal = lift(&c.normal);
         Lifted {
             point: lift(&c.point),

@@ -131,7 +131,9 @@ pub struct LawAnswer<F> {
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum ImpactError {
     /// This solver takes one contact; the system has more.
-    #[error("{0} contacts: this solves one contact (several are answered by the simultaneous models)")]
+    #[error(
+        "{0} contacts: this solves one contact (several are answered by the simultaneous models)"
+    )]
     SeveralContacts(usize),
     /// The impact has no end under a law.
     #[error("{0}")]
@@ -192,10 +194,7 @@ pub fn solve_contact<F: Roots>(system: &System, law: Law) -> Result<LawAnswer<F>
     let lam_c = compression_end(&segments).map_err(ImpactError::Jam)?;
     let lam = end(&segments, &lam_c, &u0[0], &lifted.e, law).map_err(ImpactError::Jam)?;
     let [_, _, tau] = segment_at(&segments, &lam).at(&lam);
-    let impulse = lifted
-        .normal
-        .scale(&lam)
-        .add(&lifted.tangent.scale(&tau));
+    let impulse = lifted.normal.scale(&lam).add(&lifted.tangent.scale(&tau));
     let bodies = after(system, c.a, c.b, &lifted, &impulse);
     let before: Vec<PlanarBody<F>> = moving(system).map(|i| lift_body(system, i)).collect();
     let after_bodies: Vec<PlanarBody<F>> = moving(system)
@@ -216,7 +215,9 @@ pub fn solve_contact<F: Roots>(system: &System, law: Law) -> Result<LawAnswer<F>
         friction_work(&segments, &lam),
     ];
     let laws_hold = LawsHold {
-        momentum: bodies.iter().all(|b| momentum_holds(system, b, c, &lifted, &impulse)),
+        momentum: bodies
+            .iter()
+            .all(|b| momentum_holds(system, b, c, &lifted, &impulse)),
         angular_momentum: bodies
             .iter()
             .all(|b| spin_holds(system, b, c, &lifted, &impulse)),
@@ -321,7 +322,11 @@ fn after<F: Field>(
 }
 
 /// (u_n, u_t) after, from the bodies' velocities after (not from the path).
-fn relative_after<F: Field>(system: &System, lifted: &Lifted<F>, bodies: &[BodyAfter<F>]) -> [F; 2] {
+fn relative_after<F: Field>(
+    system: &System,
+    lifted: &Lifted<F>,
+    bodies: &[BodyAfter<F>],
+) -> [F; 2] {
     let c = &system.contacts[0];
     let point_velocity = |index: usize| -> Vec2<F> {
         match bodies.iter().find(|b| b.index == index) {

@@ -166,7 +166,11 @@ fn sign<F: Field>(x: &F) -> Result<Ordering, Jam> {
 }
 
 /// The path of the impact from `lam = 0`: its phases, in order, the last open-ended.
-pub(crate) fn path<F: Field>(w: &ContactMatrix<F>, u0: [F; 2], mu: &F) -> Result<Vec<Segment<F>>, Jam> {
+pub(crate) fn path<F: Field>(
+    w: &ContactMatrix<F>,
+    u0: [F; 2],
+    mu: &F,
+) -> Result<Vec<Segment<F>>, Jam> {
     let stick_allowed = || -> Result<bool, Jam> {
         let limit = mu.clone() * &w.tt;
         let nt = if sign(&w.nt)? == Ordering::Less {
@@ -254,8 +258,7 @@ pub(crate) fn path<F: Field>(w: &ContactMatrix<F>, u0: [F; 2], mu: &F) -> Result
 pub(crate) fn segment_at<'a, F: Field>(path: &'a [Segment<F>], lam: &F) -> &'a Segment<F> {
     path.iter()
         .find(|s| {
-            s.to
-                .as_ref()
+            s.to.as_ref()
                 .is_none_or(|to| (lam.clone() - to).sign() == Some(Ordering::Less))
         })
         .unwrap_or_else(|| path.last().expect("a path has a phase"))
@@ -436,7 +439,13 @@ mod tests {
         assert_eq!(compression_end(&p).unwrap(), qs(25, 64));
         // Newton's end: u_n = 1 at lam = 725/724 (the oracle's).
         let lam_c = compression_end(&p).unwrap();
-        assert_eq!(end(&p, &lam_c, &qs(-1, 1), &qs(1, 1), Law::Newton).unwrap(), qs(725, 724));
-        assert_eq!(end(&p, &lam_c, &qs(-1, 1), &qs(1, 1), Law::Poisson).unwrap(), qs(25, 32));
+        assert_eq!(
+            end(&p, &lam_c, &qs(-1, 1), &qs(1, 1), Law::Newton).unwrap(),
+            qs(725, 724)
+        );
+        assert_eq!(
+            end(&p, &lam_c, &qs(-1, 1), &qs(1, 1), Law::Poisson).unwrap(),
+            qs(25, 32)
+        );
     }
 }
