@@ -31,7 +31,7 @@
 //! ```
 
 use super::shape::{Shape, is_convex};
-use super::system::{Body, Contact, MAX_BODIES, Mobility, System};
+use super::system::{Body, Contact, MAX_BODIES, Mobility, System, check_names};
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::mechanics::planar::Vec2;
@@ -154,6 +154,7 @@ pub fn from_value(value: &Value) -> Result<System, Error> {
         .enumerate()
         .map(|(i, v)| body(&format!("body[{}]", i + 1), v))
         .collect::<Result<Vec<_>, _>>()?;
+    check_names(&bodies)?;
     let names: Vec<String> = bodies.iter().map(|b| b.name.clone()).collect();
     let index_of = |field: &str, name: &Value| -> Result<usize, Error> {
         let Value::String(name) = name else {

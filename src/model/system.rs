@@ -150,8 +150,9 @@ impl System {
                 format!("more than {MAX_CONTACTS} contacts (limit)"),
             ));
         }
+        check_names(&bodies)?;
         for (i, b) in bodies.iter().enumerate() {
-            check_body(i, b, &bodies)?;
+            check_body(i, b)?;
         }
         let system = System {
             title,
@@ -266,14 +267,21 @@ fn lies_on(body: &Body, point: &Vec2<Q>) -> bool {
     }
 }
 
-fn check_body(i: usize, b: &Body, all: &[Body]) -> Result<(), Error> {
-    let field = |what: &str| format!("body[{}].{what}", i + 1);
-    if all[..i].iter().any(|other| other.name == b.name) {
-        return Err(invalid(
-            &field("name"),
-            format!("'{}' names two bodies", crate::echo::echo(&b.name)),
-        ));
+/// Every body's name is its own.
+pub(super) fn check_names(bodies: &[Body]) -> Result<(), Error> {
+    for (i, b) in bodies.iter().enumerate() {
+        if bodies[..i].iter().any(|other| other.name == b.name) {
+            return Err(invalid(
+                &format!("body[{}].name", i + 1),
+                format!("'{}' names two bodies", crate::echo::echo(&b.name)),
+            ));
+        }
     }
+    Ok(())
+}
+
+fn check_body(i: usize, b: &Body) -> Result<(), Error> {
+    let field = |what: &str| format!("body[{}].{what}", i + 1);
     if !b.moves() {
         return Ok(());
     }

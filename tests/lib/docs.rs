@@ -147,6 +147,14 @@ fn every_backticked_repository_path_exists() {
     );
 }
 
+/// The README is an entry point, not the manual: at most 350 lines (the rest is in docs/).
+#[test]
+fn the_readme_stays_short() {
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let lines = readme.lines().count();
+    assert!(lines <= 350, "README.md has {lines} lines");
+}
+
 #[test]
 fn nothing_in_the_repository_refers_to_files_beside_it() {
     // The directory that held them, built from parts so that this file does not name it.
