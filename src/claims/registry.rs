@@ -104,6 +104,9 @@ registry! {
     "beyond/x29.rs" => x29,
     "beyond/x30.rs" => x30,
     "beyond/x31.rs" => x31,
+    "beyond/x32.rs" => x32,
+    "beyond/x33.rs" => x33,
+    "beyond/x34.rs" => x34,
 }
 
 /// Every claim, in the order of `docs/claims.md`: the paper's, then the results beyond it.

@@ -233,8 +233,20 @@ pub fn summary_line(all: &[Decided]) -> String {
             .count()
     };
     let failed = all.iter().filter(|d| d.verdict.is_err()).count();
+    // A refuted claim is named: beyond the paper it is a finding (Newton's law gaining energy),
+    // not a fault of the paper.
+    let refuted: Vec<&str> = all
+        .iter()
+        .filter(|d| d.verdict == Ok(Verdict::Refuted) && !refutes_intuition_as_paper(d))
+        .map(|d| d.claim.id)
+        .collect();
+    let named = if refuted.is_empty() {
+        String::new()
+    } else {
+        format!(" ({})", refuted.join(", "))
+    };
     let mut line = format!(
-        "{} claim{}: {} PROVED, {} REFUTED, {} QUALIFIED",
+        "{} claim{}: {} PROVED, {} REFUTED{named}, {} QUALIFIED",
         all.len(),
         if all.len() == 1 { "" } else { "s" },
         count(Verdict::Proved),

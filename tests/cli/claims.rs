@@ -27,6 +27,9 @@ const NOT_PLAINLY_PROVED: &[(&str, &str)] = &[
     ("X19", "PROVED †"),
     ("X22", "QUALIFIED"),
     ("X26", "PROVED †"),
+    ("X32", "PROVED †"),
+    ("X33", "PROVED †"),
+    ("X34", "REFUTED"),
 ];
 
 /// The verdict, as printed, that the table expects for claim `id`.
@@ -84,9 +87,10 @@ fn headline() -> (String, String) {
     let proved = total - intuitions.len() - refuted - qualified;
     let by_hand = listed("PROVED †");
     assert_eq!(intuitions, ["C3"], "the wording below is for one intuition");
+    let named = listed("REFUTED").join(", ");
     let summary = format!(
-        "{total} claims: {proved} PROVED, {refuted} REFUTED, {qualified} QUALIFIED, and 1 intuition \
-         REFUTED as the paper argues (C3)."
+        "{total} claims: {proved} PROVED, {refuted} REFUTED ({named}), {qualified} QUALIFIED, and 1 \
+         intuition REFUTED as the paper argues (C3)."
     );
     let hand = format!(
         "† {} verdicts ({}) also rest on a step argued by hand, not machine-checked; each \
