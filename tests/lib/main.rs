@@ -12,6 +12,7 @@ mod fraction_free;
 mod golden;
 mod impact_oracle;
 mod impact_paper;
+mod impact_several;
 mod msrv;
 mod mutation;
 mod simulate;

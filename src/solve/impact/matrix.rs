@@ -56,10 +56,17 @@ impl<F: Field> Response<F> {
 
     /// The change of the velocity of the body's point `p` under the impulse `impulse` there.
     pub(crate) fn point_change(&self, p: &Vec2<F>, impulse: &Vec2<F>) -> Vec2<F> {
-        let arm = p.sub(&self.about).perp();
+        self.point_change_at(p, p, impulse)
+    }
+
+    /// The change of the velocity of the body's point `p` under the impulse `impulse` applied at
+    /// another point `at`.
+    pub(crate) fn point_change_at(&self, p: &Vec2<F>, at: &Vec2<F>, impulse: &Vec2<F>) -> Vec2<F> {
+        let arm_p = p.sub(&self.about).perp();
+        let arm_at = at.sub(&self.about).perp();
         impulse
             .scale(&self.inverse_mass)
-            .add(&arm.scale(&(arm.dot(impulse) * &self.inverse_inertia)))
+            .add(&arm_p.scale(&(arm_at.dot(impulse) * &self.inverse_inertia)))
     }
 
     /// The change of the body's spin (counterclockwise) under `impulse` at `p`.

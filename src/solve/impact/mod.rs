@@ -13,12 +13,18 @@
 //! |---|---|
 //! | `matrix.rs` | each body's response to an impulse, the contact matrix W |
 //! | `routh.rs` | the path in the normal impulse (Routh's construction) and each law's end |
+//! | `several.rs` | several frictionless contacts under each model: simultaneous Newton and Poisson (exact LCPs), sequential, projected Gauss-Seidel |
 
 mod matrix;
 mod routh;
+mod several;
 
 pub use matrix::ContactMatrix;
 pub use routh::{Jam, Law, Mode, Roots};
+pub use several::{
+    Ledger, MAX_ORDERED, MAX_SEQUENTIAL_IMPACTS, MAX_SIMULTANEOUS, MAX_SWEEPS, Model, ModelAnswer,
+    ModelOutcome, orders, solve_several,
+};
 
 use crate::field::Field;
 use crate::mechanics::planar::{PlanarBody, Vec2, angular_momentum, kinetic_energy};

@@ -1,0 +1,788 @@
+//! Several frictionless contacts at once, under each named model, exactly.
+//!
+//! With `u = u0 + W lam` the normal relative velocities after normal impulses `lam` (W, the
+//! Delassus matrix, symmetric and positive semidefinite; `u0^- = min(u0, 0)`):
+//!
+//! - **simultaneous-newton**: `lam >= 0`, `w = u0 + W lam + e u0^- >= 0`, `lam . w = 0` (an
+//!   approaching contact that pushes leaves at `-e u0`; a touching one at 0 or more);
+//! - **simultaneous-poisson** (Pfeiffer and Glocker): compression `lam_c >= 0`,
+//!   `u_c = u0 + W lam_c >= 0`, `lam_c . u_c = 0`; expansion `lam_e = e lam_c + x`, `x >= 0`,
+//!   `u = u_c + W lam_e >= 0`, `x . u = 0`; `lam = lam_c + lam_e`;
+//! - **sequential** in an order: passes over the contacts in that order, each approaching
+//!   contact (`u_i < 0`) taking the single-contact Newton impulse `-(1 + e_i) u_i / W_ii`, until a
+//!   pass fires nothing; every order, or one given;
+//! - **pgs:K**: K sweeps of projected Gauss-Seidel from zero impulses, in the contacts' order,
+//!   `lam_i <- max(0, lam_i - (u_i + e_i u0_i^-)/W_ii)`, as engines run it.
+//!
+//! The linear complementarity problems are solved exactly by enumerating the active sets (every
+//! subset of the contacts, so at most [`MAX_SIMULTANEOUS`] contacts), and every solution is
+//! reported: a model may have one answer, several or none.
+
+use super::matrix::Response;
+use crate::field::Field;
+use crate::mechanics::planar::{
+    PlanarBody, Vec2, angular_momentum, kinetic_energy, linear_momentum,
+};
+use crate::model::System;
+use crate::solve::linear::solve_linear;
+use std::cmp::Ordering;
+use std::fmt;
+
+/// The most contacts the simultaneous models enumerate the active sets of.
+pub const MAX_SIMULTANEOUS: usize = 10;
+/// The most impacts a sequential model runs before it is reported as not stopping.
+pub const MAX_SEQUENTIAL_IMPACTS: usize = 10_000;
+/// The most sweeps `pgs:K` runs.
+pub const MAX_SWEEPS: u32 = 10_000;
+/// The most contacts whose every order the sequential model runs (n! orders).
+pub const MAX_ORDERED: usize = 6;
+
+/// How several simultaneous contacts act together.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Model {
+    /// The simultaneous Newton law (a linear complementarity problem).
+    SimultaneousNewton,
+    /// The simultaneous Poisson law (compression, then expansion).
+    SimultaneousPoisson,
+    /// Single-contact impacts one at a time, in this order of the contacts (0-based), in passes
+    /// until one fires nothing.
+    Sequential(Vec<usize>),
+    /// K sweeps of projected Gauss-Seidel from zero impulses.
+    Pgs(u32),
+}
+
+impl fmt::Display for Model {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Model::SimultaneousNewton => f.write_str("simultaneous-newton"),
+            Model::SimultaneousPoisson => f.write_str("simultaneous-poisson"),
+            Model::Sequential(order) => {
+                let order: Vec<String> = order.iter().map(|i| (i + 1).to_string()).collect();
+                write!(f, "sequential:{}", order.join(","))
+            }
+            Model::Pgs(k) => write!(f, "pgs:{k}"),
+        }
+    }
+}
+
+/// What a model says of a system.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ModelOutcome<F> {
+    /// The answers: one, or several (a simultaneous model with more than one solution).
+    Answered(Vec<ModelAnswer<F>>),
+    /// No impulses satisfy the model.
+    NoSolution,
+    /// A sequential model still firing after [`MAX_SEQUENTIAL_IMPACTS`] impacts.
+    DoesNotStop,
+    /// The model is frictionless here (sequential impacts, projected Gauss-Seidel), and the
+    /// scene has friction.
+    FrictionlessOnly,
+}
+
+/// Total momentum, angular momentum about the origin and kinetic energy of the moving bodies,
+/// before and after, and the normal velocity after at every contact.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ledger<F> {
+    /// Linear momentum before.
+    pub momentum_before: Vec2<F>,
+    /// ... after.
+    pub momentum_after: Vec2<F>,
+    /// Angular momentum about the origin, counterclockwise, before.
+    pub angular_before: F,
+    /// ... after.
+    pub angular_after: F,
+    /// Kinetic energy before.
+    pub energy_before: F,
+    /// ... after.
+    pub energy_after: F,
+    /// after - before.
+    pub energy_change: F,
+    /// The model creates kinetic energy.
+    pub energy_gain: bool,
+    /// The normal relative velocity after at every contact (negative: the model lets the
+    /// bodies sink into each other there).
+    pub normal_after: Vec<F>,
+}
+
+impl<F: Field> Ledger<F> {
+    /// The contacts (0-based) whose bodies sink into each other after the impact.
+    pub fn sinking(&self) -> Vec<usize> {
+        (0..self.normal_after.len())
+            .filter(|&i| self.normal_after[i].sign() == Some(Ordering::Less))
+            .collect()
+    }
+}
+
+/// One answer of a model.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelAnswer<F> {
+    /// The model.
+    pub model: Model,
+    /// The normal impulse coefficient at each contact (P_i = lam_i n_i + tau_i t_i on A).
+    pub impulses: Vec<F>,
+    /// The tangential impulse coefficient at each contact (zero without friction).
+    pub tangential: Vec<F>,
+    /// Friction at contacts that stick along one line leaves only the sum of their tangential
+    /// impulses determined: these are one split of it (the velocities are the same for all).
+    pub split_indeterminate: bool,
+    /// Every moving body after: (index, velocity, spin).
+    pub bodies: Vec<(usize, Vec2<F>, F)>,
+    /// What the model conserves and what it does not.
+    pub ledger: Ledger<F>,
+    /// The single-contact impacts a sequential model fired, in order: (contact, impulse).
+    pub impacts: Vec<(usize, F)>,
+}
+
+/// The system's contacts in a field: points, normals, e, and every moving body's response.
+struct Contacts<F> {
+    points: Vec<Vec2<F>>,
+    normals: Vec<Vec2<F>>,
+    e: Vec<F>,
+    /// For each contact, its two bodies (index, sign +1 for A, -1 for B), moving ones only.
+    ends: Vec<Vec<(usize, F)>>,
+    responses: Vec<Option<Response<F>>>,
+}
+
+impl<F: Field> Contacts<F> {
+    fn of(system: &System) -> Contacts<F> {
+        let lift =
+            |v: &Vec2<crate::field::Q>| Vec2::new(F::from_rational(&v.x), F::from_rational(&v.y));
+        let responses: Vec<Option<Response<F>>> = system.bodies.iter().map(Response::of).collect();
+        Contacts {
+            points: system.contacts.iter().map(|c| lift(&c.point)).collect(),
+            normals: system.contacts.iter().map(|c| lift(&c.normal)).collect(),
+            e: system
+                .contacts
+                .iter()
+                .map(|c| F::from_rational(&c.e))
+                .collect(),
+            ends: system
+                .contacts
+                .iter()
+                .map(|c| {
+                    [(c.a, F::one()), (c.b, -F::one())]
+                        .into_iter()
+                        .filter(|(b, _)| responses[*b].is_some())
+                        .collect()
+                })
+                .collect(),
+            responses,
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.points.len()
+    }
+
+    /// The Delassus matrix: W_ij, the change of u_i per unit impulse lam_j.
+    fn delassus(&self) -> Vec<Vec<F>> {
+        self.coupling(&self.normals, &self.normals)
+    }
+
+    /// The change of the relative velocity at contact i along `along[i]` per unit impulse along
+    /// `by[j]` at contact j (the Delassus matrix when both are the normals).
+    fn coupling(&self, along: &[Vec2<F>], by: &[Vec2<F>]) -> Vec<Vec<F>> {
+        let n = self.len();
+        (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| {
+                        let mut w = F::zero();
+                        for (bi, si) in &self.ends[i] {
+                            for (bj, sj) in &self.ends[j] {
+                                if bi != bj {
+                                    continue;
+                                }
+                                let r = self.responses[*bi].as_ref().expect("moving");
+                                let push = by[j].scale(sj);
+                                let change =
+                                    r.point_change_at(&self.points[i], &self.points[j], &push);
+                                w = w + &(change.dot(&along[i]) * si);
+                            }
+                        }
+                        w
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+}
+
+/// The bodies before the impact, as planar bodies in the field.
+fn bodies_before<F: Field>(system: &System) -> Vec<(usize, PlanarBody<F>)> {
+    let lift =
+        |v: &Vec2<crate::field::Q>| Vec2::new(F::from_rational(&v.x), F::from_rational(&v.y));
+    system
+        .bodies
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| b.moves())
+        .map(|(i, b)| {
+            (
+                i,
+                PlanarBody {
+                    mass: F::from_rational(&b.mass),
+                    inertia: F::from_rational(&b.inertia),
+                    centre: lift(&b.position),
+                    velocity: lift(&b.velocity),
+                    omega: F::from_rational(&b.omega),
+                },
+            )
+        })
+        .collect()
+}
+
+/// The normal relative velocity before, at every contact.
+fn normal_before<F: Field>(system: &System, contacts: &Contacts<F>) -> Vec<F> {
+    system
+        .contacts
+        .iter()
+        .zip(&contacts.normals)
+        .map(|(c, n)| {
+            let rel = system.relative_velocity(c);
+            Vec2::new(F::from_rational(&rel.x), F::from_rational(&rel.y)).dot(n)
+        })
+        .collect()
+}
+
+fn negative_part<F: Field>(x: &F) -> F {
+    if x.sign() == Some(Ordering::Less) {
+        x.clone()
+    } else {
+        F::zero()
+    }
+}
+
+fn nonnegative<F: Field>(x: &F) -> bool {
+    x.sign() != Some(Ordering::Less)
+}
+
+/// `u0 + W lam`.
+fn velocities<F: Field>(u0: &[F], w: &[Vec<F>], lam: &[F]) -> Vec<F> {
+    (0..u0.len())
+        .map(|i| (0..lam.len()).fold(u0[i].clone(), |acc, j| acc + &(w[i][j].clone() * &lam[j])))
+        .collect()
+}
+
+/// Every solution of the LCP `lam >= 0, q + W lam >= 0, lam . (q + W lam) = 0`, by active sets;
+/// solutions that differ only where W leaves them open are one (the first found).
+fn lcp<F: Field>(w: &[Vec<F>], q: &[F]) -> Vec<Vec<F>> {
+    let n = q.len();
+    let mut found: Vec<Vec<F>> = Vec::new();
+    for mask in 0u32..(1 << n) {
+        let active: Vec<usize> = (0..n).filter(|i| mask & (1 << i) != 0).collect();
+        let a: Vec<Vec<F>> = active
+            .iter()
+            .map(|&i| active.iter().map(|&j| w[i][j].clone()).collect())
+            .collect();
+        let b: Vec<F> = active.iter().map(|&i| -q[i].clone()).collect();
+        let Some(x) = solve_linear(a, b) else {
+            continue;
+        };
+        let mut lam = vec![F::zero(); n];
+        for (k, &i) in active.iter().enumerate() {
+            lam[i] = x[k].clone();
+        }
+        if !lam.iter().all(nonnegative) {
+            continue;
+        }
+        let w_lam = velocities(q, w, &lam);
+        if !w_lam.iter().all(nonnegative) {
+            continue;
+        }
+        // The same velocities as a solution already found (W singular): one answer.
+        let same = found.iter().any(|other| {
+            velocities(
+                &vec![F::zero(); n],
+                w,
+                &(0..n)
+                    .map(|i| other[i].clone() - &lam[i])
+                    .collect::<Vec<_>>(),
+            )
+            .iter()
+            .all(F::is_zero)
+        });
+        if !same {
+            found.push(lam);
+        }
+    }
+    found
+}
+
+/// Answers the system's contacts under `model`.
+///
+/// # Examples
+/// Newton's cradle of three equal balls struck at 1: the simultaneous Newton answer keeps the
+/// energy and momentum, yet the first ball rebounds (-1/3) and the other two leave together
+/// (2/3); sequential impacts leave only the last ball moving.
+/// ```
+/// use rodimpact::{field::{q, Q}, model::parse_toml};
+/// use rodimpact::solve::impact::{Model, ModelOutcome, solve_several};
+/// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/cradle-3.toml")).unwrap();
+/// let system = parse_toml("cradle-3", &text)?;
+/// let ModelOutcome::Answered(answers) = solve_several::<Q>(&system, &Model::SimultaneousNewton) else { panic!() };
+/// let v: Vec<Q> = answers[0].bodies.iter().map(|(_, v, _)| v.x.clone()).collect();
+/// assert_eq!(v, [q(-1, 3), q(2, 3), q(2, 3)]);
+/// assert_eq!(answers[0].ledger.energy_change, q(0, 1));
+/// let ModelOutcome::Answered(seq) = solve_several::<Q>(&system, &Model::Sequential(vec![0, 1])) else { panic!() };
+/// assert_eq!(seq[0].bodies[2].1.x, q(1, 1));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F> {
+    let contacts: Contacts<F> = Contacts::of(system);
+    let w = contacts.delassus();
+    let u0 = normal_before(system, &contacts);
+    let n = contacts.len();
+    if system
+        .contacts
+        .iter()
+        .any(|c| c.mu.sign() == Some(Ordering::Greater))
+    {
+        return with_friction(system, &contacts, &w, &u0, model);
+    }
+    let answer = |impulses: Vec<F>, impacts: Vec<(usize, F)>| {
+        let tangential = vec![F::zero(); impulses.len()];
+        finish(
+            system,
+            &contacts,
+            &w,
+            &u0,
+            model.clone(),
+            (impulses, tangential, false),
+            impacts,
+        )
+    };
+    match model {
+        Model::SimultaneousNewton => {
+            let q: Vec<F> = (0..n)
+                .map(|i| u0[i].clone() + &(contacts.e[i].clone() * &negative_part(&u0[i])))
+                .collect();
+            let all = lcp(&w, &q);
+            if all.is_empty() {
+                ModelOutcome::NoSolution
+            } else {
+                ModelOutcome::Answered(all.into_iter().map(|lam| answer(lam, Vec::new())).collect())
+            }
+        }
+        Model::SimultaneousPoisson => {
+            let mut answers = Vec::new();
+            for compression in lcp(&w, &u0) {
+                let u_c = velocities(&u0, &w, &compression);
+                let pushed: Vec<F> = (0..n)
+                    .map(|i| contacts.e[i].clone() * &compression[i])
+                    .collect();
+                let q = velocities(&u_c, &w, &pushed);
+                for extra in lcp(&w, &q) {
+                    let lam: Vec<F> = (0..n)
+                        .map(|i| compression[i].clone() + &pushed[i] + &extra[i])
+                        .collect();
+                    answers.push(answer(lam, Vec::new()));
+                }
+            }
+            if answers.is_empty() {
+                ModelOutcome::NoSolution
+            } else {
+                ModelOutcome::Answered(answers)
+            }
+        }
+        Model::Sequential(order) => {
+            let mut lam = vec![F::zero(); n];
+            let mut impacts = Vec::new();
+            loop {
+                let mut fired = false;
+                for &i in order {
+                    let u = velocities(&u0, &w, &lam);
+                    if u[i].sign() != Some(Ordering::Less) || w[i][i].is_zero() {
+                        continue;
+                    }
+                    let impulse = -((F::one() + &contacts.e[i]) * &u[i]) / &w[i][i];
+                    lam[i] = lam[i].clone() + &impulse;
+                    impacts.push((i, impulse));
+                    fired = true;
+                    if impacts.len() >= MAX_SEQUENTIAL_IMPACTS {
+                        return ModelOutcome::DoesNotStop;
+                    }
+                }
+                if !fired {
+                    return ModelOutcome::Answered(vec![answer(lam, impacts)]);
+                }
+            }
+        }
+        Model::Pgs(sweeps) => {
+            let mut lam = vec![F::zero(); n];
+            for _ in 0..*sweeps {
+                for i in 0..n {
+                    if w[i][i].is_zero() {
+                        continue;
+                    }
+                    let u = velocities(&u0, &w, &lam);
+                    let target = u[i].clone() + &(contacts.e[i].clone() * &negative_part(&u0[i]));
+                    let next = lam[i].clone() - &(target / &w[i][i]);
+                    lam[i] = if nonnegative(&next) { next } else { F::zero() };
+                }
+            }
+            ModelOutcome::Answered(vec![answer(lam, Vec::new())])
+        }
+    }
+}
+
+/// The bodies after the impulses `lam` and the ledger.
+fn finish<F: Field>(
+    system: &System,
+    contacts: &Contacts<F>,
+    w: &[Vec<F>],
+    u0: &[F],
+    model: Model,
+    (impulses, tangential, split_indeterminate): (Vec<F>, Vec<F>, bool),
+    impacts: Vec<(usize, F)>,
+) -> ModelAnswer<F> {
+    let _ = (w, u0);
+    let before = bodies_before::<F>(system);
+    let after: Vec<(usize, PlanarBody<F>)> = before
+        .iter()
+        .map(|(index, body)| {
+            let response = contacts.responses[*index].as_ref().expect("moving");
+            let (mut dv, mut dw) = (Vec2::zero(), F::zero());
+            for (k, ends) in contacts.ends.iter().enumerate() {
+                for (b, sign) in ends {
+                    if b != index {
+                        continue;
+                    }
+                    let push = contacts.normals[k]
+                        .scale(&impulses[k])
+                        .add(&contacts.normals[k].perp().scale(&tangential[k]))
+                        .scale(sign);
+                    dv = dv.add(&response.centre_change(&body.centre, &contacts.points[k], &push));
+                    dw = dw + &response.spin_change(&contacts.points[k], &push);
+                }
+            }
+            (
+                *index,
+                PlanarBody {
+                    velocity: body.velocity.add(&dv),
+                    omega: body.omega.clone() + &dw,
+                    ..body.clone()
+                },
+            )
+        })
+        .collect();
+    let planar = |list: &[(usize, PlanarBody<F>)]| -> Vec<PlanarBody<F>> {
+        list.iter().map(|(_, b)| b.clone()).collect()
+    };
+    let (b0, b1) = (planar(&before), planar(&after));
+    let energy_before = kinetic_energy(&b0);
+    let energy_after = kinetic_energy(&b1);
+    let energy_change = energy_after.clone() - &energy_before;
+    let origin = Vec2::zero();
+    ModelAnswer {
+        model,
+        bodies: after
+            .iter()
+            .map(|(i, b)| (*i, b.velocity.clone(), b.omega.clone()))
+            .collect(),
+        ledger: Ledger {
+            momentum_before: linear_momentum(&b0),
+            momentum_after: linear_momentum(&b1),
+            angular_before: angular_momentum(&b0, &origin),
+            angular_after: angular_momentum(&b1, &origin),
+            energy_gain: energy_change.sign() == Some(Ordering::Greater),
+            energy_before,
+            energy_after,
+            energy_change,
+            normal_after: (0..contacts.len())
+                .map(|k| {
+                    let velocity = |index: usize| -> Vec2<F> {
+                        after
+                            .iter()
+                            .find(|(i, _)| *i == index)
+                            .map_or_else(Vec2::zero, |(_, b)| b.point_velocity(&contacts.points[k]))
+                    };
+                    let c = &system.contacts[k];
+                    velocity(c.a).sub(&velocity(c.b)).dot(&contacts.normals[k])
+                })
+                .collect(),
+        },
+        impulses,
+        tangential,
+        split_indeterminate,
+        impacts,
+    }
+}
+
+/// Every order of the contacts `0..n` (n! of them, n at most [`MAX_ORDERED`]), in
+/// lexicographic order.
+///
+/// # Examples
+/// ```
+/// use rodimpact::solve::impact::orders;
+/// assert_eq!(orders(3).len(), 6);
+/// assert_eq!(orders(2), [vec![0, 1], vec![1, 0]]);
+/// ```
+pub fn orders(n: usize) -> Vec<Vec<usize>> {
+    if n == 0 {
+        return vec![Vec::new()];
+    }
+    let mut out = Vec::new();
+    for first in 0..n {
+        for rest in orders(n - 1) {
+            let mut order = vec![first];
+            order.extend(rest.into_iter().map(|i| if i >= first { i + 1 } else { i }));
+            out.push(order);
+        }
+    }
+    out
+}
+
+/// What friction does at a contact during a phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Grip {
+    Stick,
+    /// Sliding with the slip at the phase's end positive (friction -mu lam).
+    Forward,
+    /// Sliding with the slip negative (friction +mu lam).
+    Backward,
+}
+
+/// The couplings of normal and tangential impulses: (nn, nt, tn, tt).
+type Blocks<F> = [Vec<Vec<F>>; 4];
+
+/// One phase with Coulomb friction (the oracle's formulation, `tests/oracles/several-contacts.md`
+/// section 6): from the velocities `(un, ut)`, the normal impulses `ln >= base` with
+/// `un' + off >= 0` complementary to `ln - base`, and `|lt| <= mu ln` with
+/// `lt = -mu ln sign(ut')` where the slip at the phase's end is not zero. Every normal and
+/// tangential mode of every contact is tried: each solution (ln, lt, split indeterminate).
+fn friction_phase<F: Field>(
+    blocks: &Blocks<F>,
+    (un, ut): (&[F], &[F]),
+    mu: &[F],
+    (base, off): (&[F], &[F]),
+) -> Vec<(Vec<F>, Vec<F>, bool)> {
+    let n = un.len();
+    let [nn, nt, tn, tt] = blocks;
+    let grips = [Grip::Stick, Grip::Forward, Grip::Backward];
+    let mut found: Vec<(Vec<F>, Vec<F>, bool)> = Vec::new();
+    for code in 0..6usize.pow(n as u32) {
+        let modes: Vec<(bool, Grip)> = (0..n)
+            .map(|i| {
+                let digit = code / 6usize.pow(i as u32) % 6;
+                (digit >= 3, grips[digit % 3])
+            })
+            .collect();
+        // Rows over the unknowns [ln_1..ln_n, lt_1..lt_n], right-hand sides.
+        let mut a = Vec::with_capacity(2 * n);
+        let mut b = Vec::with_capacity(2 * n);
+        for (i, (closed, grip)) in modes.iter().enumerate() {
+            let mut row = vec![F::zero(); 2 * n];
+            if *closed {
+                row[..n].clone_from_slice(&nn[i]);
+                row[n..].clone_from_slice(&nt[i]);
+                b.push(-(un[i].clone() + &off[i]));
+            } else {
+                row[i] = F::one();
+                b.push(base[i].clone());
+            }
+            a.push(row);
+            let mut row = vec![F::zero(); 2 * n];
+            match grip {
+                Grip::Stick => {
+                    row[..n].clone_from_slice(&tn[i]);
+                    row[n..].clone_from_slice(&tt[i]);
+                    b.push(-ut[i].clone());
+                }
+                Grip::Forward | Grip::Backward => {
+                    row[n + i] = F::one();
+                    row[i] = if *grip == Grip::Forward {
+                        mu[i].clone()
+                    } else {
+                        -mu[i].clone()
+                    };
+                    b.push(F::zero());
+                }
+            }
+            a.push(row);
+        }
+        let Some((x, free)) = solve_consistent(a, b) else {
+            continue;
+        };
+        let (ln, lt) = (x[..n].to_vec(), x[n..].to_vec());
+        let end = |block_n: &[Vec<F>], block_t: &[Vec<F>], start: &[F]| -> Vec<F> {
+            (0..n)
+                .map(|i| {
+                    (0..n).fold(start[i].clone(), |acc, j| {
+                        acc + &(block_n[i][j].clone() * &ln[j]) + &(block_t[i][j].clone() * &lt[j])
+                    })
+                })
+                .collect()
+        };
+        let (un_end, ut_end) = (end(nn, nt, un), end(tn, tt, ut));
+        let holds = modes.iter().enumerate().all(|(i, (closed, grip))| {
+            let normal = if *closed {
+                nonnegative(&(ln[i].clone() - &base[i]))
+            } else {
+                nonnegative(&(un_end[i].clone() + &off[i]))
+            };
+            let bound = mu[i].clone() * &ln[i];
+            let tangential = match grip {
+                Grip::Stick => {
+                    nonnegative(&(bound.clone() - &lt[i])) && nonnegative(&(bound + &lt[i]))
+                }
+                Grip::Forward => nonnegative(&ut_end[i]),
+                Grip::Backward => nonnegative(&-ut_end[i].clone()),
+            };
+            normal && tangential && nonnegative(&ln[i])
+        });
+        let same = |other: &(Vec<F>, Vec<F>, bool)| {
+            (0..n).all(|i| (other.0[i].clone() - &ln[i]).is_zero())
+                && (free || other.2 || (0..n).all(|i| (other.1[i].clone() - &lt[i]).is_zero()))
+        };
+        if holds && !found.iter().any(same) {
+            found.push((ln, lt, free));
+        }
+    }
+    found
+}
+
+/// A solution of `a x = b` when the system is consistent: the unique one, or one with the free
+/// unknowns at zero (`true`: the system was singular).
+fn solve_consistent<F: Field>(mut a: Vec<Vec<F>>, mut b: Vec<F>) -> Option<(Vec<F>, bool)> {
+    let (rows, cols) = (a.len(), a.first().map_or(0, Vec::len));
+    let mut pivots = Vec::new();
+    let mut row = 0;
+    for col in 0..cols {
+        let Some(p) = (row..rows).find(|&r| !a[r][col].is_zero()) else {
+            continue;
+        };
+        a.swap(row, p);
+        b.swap(row, p);
+        let inv = F::one() / &a[row][col];
+        for c in 0..cols {
+            a[row][c] = a[row][c].clone() * &inv;
+        }
+        b[row] = b[row].clone() * &inv;
+        for r in 0..rows {
+            if r != row && !a[r][col].is_zero() {
+                let factor = a[r][col].clone();
+                for c in 0..cols {
+                    let sub = a[row][c].clone() * &factor;
+                    a[r][c] = a[r][c].clone() - &sub;
+                }
+                b[r] = b[r].clone() - &(b[row].clone() * &factor);
+            }
+        }
+        pivots.push(col);
+        row += 1;
+    }
+    if (row..rows).any(|r| !b[r].is_zero()) {
+        return None;
+    }
+    let mut x = vec![F::zero(); cols];
+    for (r, &col) in pivots.iter().enumerate() {
+        x[col] = b[r].clone();
+    }
+    Some((x, pivots.len() < cols))
+}
+
+/// The simultaneous models with Coulomb friction at the contacts.
+fn with_friction<F: Field>(
+    system: &System,
+    contacts: &Contacts<F>,
+    w: &[Vec<F>],
+    u0: &[F],
+    model: &Model,
+) -> ModelOutcome<F> {
+    let n = contacts.len();
+    let tangents: Vec<Vec2<F>> = contacts.normals.iter().map(Vec2::perp).collect();
+    let blocks: Blocks<F> = [
+        contacts.coupling(&contacts.normals, &contacts.normals),
+        contacts.coupling(&contacts.normals, &tangents),
+        contacts.coupling(&tangents, &contacts.normals),
+        contacts.coupling(&tangents, &tangents),
+    ];
+    let mu: Vec<F> = system
+        .contacts
+        .iter()
+        .map(|c| F::from_rational(&c.mu))
+        .collect();
+    let ut0: Vec<F> = system
+        .contacts
+        .iter()
+        .zip(&tangents)
+        .map(|(c, t)| {
+            let rel = system.relative_velocity(c);
+            Vec2::new(F::from_rational(&rel.x), F::from_rational(&rel.y)).dot(t)
+        })
+        .collect();
+    let zero = vec![F::zero(); n];
+    let finish_one = |(ln, lt, free): (Vec<F>, Vec<F>, bool)| {
+        finish(
+            system,
+            contacts,
+            w,
+            u0,
+            model.clone(),
+            (ln, lt, free),
+            Vec::new(),
+        )
+    };
+    let answers: Vec<ModelAnswer<F>> = match model {
+        Model::SimultaneousNewton => {
+            let off: Vec<F> = (0..n)
+                .map(|i| contacts.e[i].clone() * &negative_part(&u0[i]))
+                .collect();
+            friction_phase(&blocks, (u0, &ut0), &mu, (&zero, &off))
+                .into_iter()
+                .map(finish_one)
+                .collect()
+        }
+        Model::SimultaneousPoisson => {
+            let mut all = Vec::new();
+            for (lc, tc, free_c) in friction_phase(&blocks, (u0, &ut0), &mu, (&zero, &zero)) {
+                let after = |start: &[F], bn: &[Vec<F>], bt: &[Vec<F>]| -> Vec<F> {
+                    (0..n)
+                        .map(|i| {
+                            (0..n).fold(start[i].clone(), |acc, j| {
+                                acc + &(bn[i][j].clone() * &lc[j]) + &(bt[i][j].clone() * &tc[j])
+                            })
+                        })
+                        .collect()
+                };
+                let un_c = after(u0, &blocks[0], &blocks[1]);
+                let ut_c = after(&ut0, &blocks[2], &blocks[3]);
+                let base: Vec<F> = (0..n).map(|i| contacts.e[i].clone() * &lc[i]).collect();
+                for (le, te, free_e) in friction_phase(&blocks, (&un_c, &ut_c), &mu, (&base, &zero))
+                {
+                    let ln = (0..n).map(|i| lc[i].clone() + &le[i]).collect();
+                    let lt = (0..n).map(|i| tc[i].clone() + &te[i]).collect();
+                    all.push(finish_one((ln, lt, free_c || free_e)));
+                }
+            }
+            all
+        }
+        Model::Sequential(_) | Model::Pgs(_) => return ModelOutcome::FrictionlessOnly,
+    };
+    // Answers that differ only in how an indeterminate friction split is shared are one.
+    let mut distinct: Vec<ModelAnswer<F>> = Vec::new();
+    for a in answers {
+        let same_motion = |b: &ModelAnswer<F>| {
+            a.bodies.iter().zip(&b.bodies).all(|(x, y)| {
+                (x.1.x.clone() - &y.1.x).is_zero()
+                    && (x.1.y.clone() - &y.1.y).is_zero()
+                    && (x.2.clone() - &y.2).is_zero()
+            })
+        };
+        match distinct.iter_mut().find(|b| same_motion(b)) {
+            // The same motion from other tangential impulses: only their sum is determined.
+            Some(b) => {
+                if (0..n).any(|i| !(b.tangential[i].clone() - &a.tangential[i]).is_zero()) {
+                    b.split_indeterminate = true;
+                }
+            }
+            None => distinct.push(a),
+        }
+    }
+    if distinct.is_empty() {
+        ModelOutcome::NoSolution
+    } else {
+        ModelOutcome::Answered(distinct)
+    }
+}
