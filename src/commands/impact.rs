@@ -2,12 +2,20 @@
 
 use super::{Failure, parse_digits, print_out};
 use clap::{Args, ValueEnum};
+use rodimpact::field::Q;
 use rodimpact::field::QSqrt;
-use rodimpact::model::{MAX_SCENE_BYTES, from_value, toml_value};
-use rodimpact::report::{check_json, check_summary, check_table, impact_json, impact_text};
+use rodimpact::model::{MAX_SCENE_BYTES, System, from_value, toml_value};
+use rodimpact::report::{
+    check_json, check_summary, check_table, impact_json, impact_text, models_json, models_text,
+};
 use rodimpact::solve::impact::{Law, solve_contact};
+use rodimpact::solve::impact::{
+    MAX_ORDERED, MAX_SIMULTANEOUS, Model, ModelOutcome, orders, solve_several,
+};
 use rodimpact::textbook::SceneCheck;
-use rodimpact::textbook::impact::{check_impact_claims, read_impact_claims};
+use rodimpact::textbook::impact::{
+    ImpactClaim, check_impact_claims, check_model_claims, read_impact_claims,
+};
 use rodimpact::{Error, ErrorKind};
 use std::io::Read;
 use std::path::PathBuf;
@@ -21,6 +29,12 @@ pub(crate) struct ImpactArgs {
     /// three side by side.
     #[arg(long, value_enum, default_value = "all")]
     pub(crate) law: LawChoice,
+    /// How several contacts act together: simultaneous-newton, simultaneous-poisson,
+    /// sequential (every order), sequential:2,1,3 (one order), pgs:K (K sweeps of projected
+    /// Gauss-Seidel), or all (the simultaneous models, sequential in every order, pgs:1 and
+    /// pgs:10). For a scene with several contacts only.
+    #[arg(long, value_name = "MODEL")]
+    pub(crate) model: Option<String>,
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]
     pub(crate) format: ImpactFormat,
@@ -54,6 +68,20 @@ pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
     let value = toml_value(&label, &text)?;
     let at_file = |e: Error| Error::new(format!("{label}: {}", e.field), e.kind);
     let system = from_value(&value).map_err(at_file)?;
+    if system.contacts.len() > 1 {
+        let claims = read_impact_claims(&value, &system).map_err(at_file)?;
+        return run_models(args, &system, &label, &claims);
+    }
+    if args.model.is_some() {
+        return Err(Error::new(
+            "model",
+            ErrorKind::Conflict(
+                "one contact: the models of several contacts do not apply (the laws do: --law)"
+                    .into(),
+            ),
+        )
+        .into());
+    }
     let claims = read_impact_claims(&value, &system).map_err(at_file)?;
     // A file's published answers need their laws answered whatever --law says.
     let laws: &[Law] = match args.law {
@@ -104,4 +132,115 @@ pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
     } else {
         Err(Failure::Check)
     }
+}
+
+/// A scene with several contacts: every model asked for, side by side.
+fn run_models(
+    args: &ImpactArgs,
+    system: &System,
+    label: &str,
+    claims: &[ImpactClaim],
+) -> Result<(), Failure> {
+    if args.law != LawChoice::All {
+        return Err(Error::new(
+            "law",
+            ErrorKind::Conflict(
+                "several contacts: their models (--model) say how the contacts act together".into(),
+            ),
+        )
+        .into());
+    }
+    if system.contacts.len() > MAX_SIMULTANEOUS {
+        return Err(Error::out_of_range(
+            label,
+            format!(
+                "{} contacts: the models are enumerated for at most {MAX_SIMULTANEOUS} (limit)",
+                system.contacts.len()
+            ),
+        )
+        .into());
+    }
+    let models = parse_models(
+        args.model.as_deref().unwrap_or("all"),
+        system.contacts.len(),
+    )?;
+    let outcomes: Vec<(Model, ModelOutcome<Q>)> = models
+        .into_iter()
+        .map(|m| {
+            let outcome = solve_several::<Q>(system, &m);
+            (m, outcome)
+        })
+        .collect();
+    let at_file = |e: Error| Error::new(format!("{label}: {}", e.field), e.kind);
+    let checked = SceneCheck {
+        symbolic: None,
+        answers: check_model_claims(claims, system).map_err(at_file)?,
+    };
+    match args.format {
+        ImpactFormat::Json => {
+            let digits = parse_digits(args.digits.as_deref(), 30)?;
+            let mut json = models_json(system, &outcomes, digits);
+            if !claims.is_empty() {
+                json["claims"] = check_json(&checked);
+            }
+            print_out(&format!(
+                "{}\n",
+                serde_json::to_string_pretty(&json).expect("JSON of strings and bools")
+            ));
+        }
+        ImpactFormat::Text => {
+            let digits = parse_digits(args.digits.as_deref(), 6)?;
+            let mut text = models_text(system, &outcomes, digits);
+            if !claims.is_empty() {
+                text.push_str(&format!(
+                    "\nPublished answers (the file's claims, each under its source's model)\n{}  {}\n",
+                    check_table(&checked),
+                    check_summary(&checked)
+                ));
+            }
+            print_out(&text);
+        }
+    }
+    if checked.all_agree() {
+        Ok(())
+    } else {
+        Err(Failure::Check)
+    }
+}
+
+/// The models `--model` names, for `n` contacts.
+fn parse_models(text: &str, n: usize) -> Result<Vec<Model>, Error> {
+    let bad = |why: String| Error::new("model", ErrorKind::Invalid(why));
+    let every_order = || -> Result<Vec<Model>, Error> {
+        if n > MAX_ORDERED {
+            return Err(Error::out_of_range(
+                "model",
+                format!(
+                    "sequential in every order takes at most {MAX_ORDERED} contacts ({n}! orders); give one order, sequential:1,2,..."
+                ),
+            ));
+        }
+        Ok(orders(n).into_iter().map(Model::Sequential).collect())
+    };
+    Ok(match text.trim() {
+        "all" => {
+            let mut all = vec![Model::SimultaneousNewton, Model::SimultaneousPoisson];
+            if n <= MAX_ORDERED {
+                all.extend(every_order()?);
+            }
+            all.extend([Model::Pgs(1), Model::Pgs(10)]);
+            all
+        }
+        "sequential" => every_order()?,
+        other => vec![Model::parse(other, n).map_err(|why| {
+            bad(if other.contains(':') {
+                why
+            } else {
+                format!(
+                    "expected simultaneous-newton, simultaneous-poisson, sequential, sequential:ORDER, pgs:K or all, got '{}'",
+                    rodimpact::echo::echo(other)
+                )
+            })
+        })?],
+    })
 }

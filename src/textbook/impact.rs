@@ -17,9 +17,10 @@ use super::claim::{ClaimedValue, read_claimed};
 use super::exact::Exact;
 use super::numeric::decide_value;
 use crate::error::{Error, ErrorKind};
+use crate::field::Q;
 use crate::field::{QSqrt, TrySqrt};
 use crate::model::System;
-use crate::solve::impact::{Law, LawAnswer};
+use crate::solve::impact::{Law, LawAnswer, Model, ModelAnswer, ModelOutcome, solve_several};
 use crate::units::Dimension;
 use num_traits::Zero;
 use serde_json::Value;
@@ -32,6 +33,8 @@ pub const MAX_IMPACT_CLAIMS: usize = 100;
 pub struct ImpactClaim {
     /// The law the source used.
     pub law: Law,
+    /// With several contacts: how they act together, as the source took it.
+    pub model: Option<Model>,
     /// What is claimed, as written (`bar.omega`).
     pub quantity: String,
     /// The value as printed.
@@ -107,12 +110,22 @@ pub fn read_impact_claims(scene: &Value, system: &System) -> Result<Vec<ImpactCl
                     "unknown key (expected law, model, quantity, value)",
                 ));
             }
-            if c.get("model").is_some() && system.contacts.len() == 1 {
-                return Err(invalid(
-                    &format!("{field}.model"),
-                    "a model names how several contacts act together: this scene has one contact",
-                ));
-            }
+            let model = match (c.get("model"), system.contacts.len()) {
+                (Some(_), 1) => {
+                    return Err(invalid(
+                        &format!("{field}.model"),
+                        "a model names how several contacts act together: this scene has one contact",
+                    ));
+                }
+                (None, 1) => None,
+                (None, _) => {
+                    return Err(Error::new(format!("{field}.model"), ErrorKind::Missing));
+                }
+                (Some(Value::String(m)), n) => Some(
+                    Model::parse(m, n).map_err(|why| invalid(&format!("{field}.model"), &why))?,
+                ),
+                (Some(_), _) => return Err(invalid(&format!("{field}.model"), "expected a string")),
+            };
             let law = match text("law")?.as_str() {
                 "newton" => Law::Newton,
                 "poisson" => Law::Poisson,
@@ -140,6 +153,7 @@ pub fn read_impact_claims(scene: &Value, system: &System) -> Result<Vec<ImpactCl
             let value = read_claimed(&format!("{field}.value"), &written, dimension)?;
             Ok(ImpactClaim {
                 law,
+                model,
                 quantity,
                 text: written,
                 value,
@@ -223,6 +237,65 @@ pub fn check_impact_claims(
                 false,
                 None,
             ))
+        })
+        .collect()
+}
+
+/// Decides every claim of a scene with several contacts against its model's answer (the model
+/// is solved here; a model with no single answer cannot confirm a claim).
+///
+/// # Errors
+/// A claim about a fixed body, about `impulse.*` (several contacts have several impulses), or
+/// a model without a single answer.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{model::parse_toml, textbook::{AnswerAgreement, impact::{check_model_claims, read_impact_claims}}};
+/// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/cradle-3.toml")).unwrap();
+/// let system = parse_toml("cradle-3", &text)?;
+/// let claims = read_impact_claims(&serde_json::json!({"claim": [
+///     {"law": "newton", "model": "simultaneous-newton", "quantity": "ball1.velocity.x", "value": "-1/3"}]}), &system)?;
+/// assert_eq!(check_model_claims(&claims, &system)?[0].agreement, AnswerAgreement::Agrees);
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn check_model_claims(
+    claims: &[ImpactClaim],
+    system: &System,
+) -> Result<Vec<CheckedAnswer>, Error> {
+    claims
+        .iter()
+        .map(|claim| {
+            let model = claim.model.clone().ok_or_else(|| {
+                Error::new(format!("{} (model)", claim.quantity), ErrorKind::Missing)
+            })?;
+            let answer: ModelAnswer<Q> = match solve_several::<Q>(system, &model) {
+                ModelOutcome::Answered(mut answers) if answers.len() == 1 => answers.remove(0),
+                _ => {
+                    return Err(invalid(
+                        &claim.quantity,
+                        &format!("{model} has no single answer here, so it cannot confirm a claim"),
+                    ));
+                }
+            };
+            let body = |index: usize| {
+                answer
+                    .bodies
+                    .iter()
+                    .find(|(i, _, _)| *i == index)
+                    .ok_or_else(|| format!("'{}' is fixed: it does not move", system.bodies[index].name))
+            };
+            let value: Result<Q, String> = match &claim.what {
+                What::Omega(i) => body(*i).map(|b| b.2.clone()),
+                What::Velocity(i, false) => body(*i).map(|b| b.1.x.clone()),
+                What::Velocity(i, true) => body(*i).map(|b| b.1.y.clone()),
+                What::Energy(0) => Ok(answer.ledger.energy_before.clone()),
+                What::Energy(1) => Ok(answer.ledger.energy_after.clone()),
+                What::Energy(_) => Ok(answer.ledger.energy_change.clone()),
+                What::Impulse(_) => Err("several contacts have several impulses: claim the bodies' motion or the energy".into()),
+            };
+            let exact = Exact::Rational(value.map_err(|why| invalid(&claim.quantity, &why))?);
+            let name = format!("{} ({model})", claim.quantity);
+            Ok(decide_value(&name, &claim.text, &claim.value, &exact, false, None))
         })
         .collect()
 }

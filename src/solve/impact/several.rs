@@ -51,6 +51,69 @@ pub enum Model {
     Pgs(u32),
 }
 
+impl Model {
+    /// One model by name, for `n` contacts: `simultaneous-newton`, `simultaneous-poisson`,
+    /// `sequential:2,1,3` (an order of the contacts, 1-based) or `pgs:K`.
+    ///
+    /// # Errors
+    /// What is wrong with the name, in words.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::solve::impact::Model;
+    /// assert_eq!(Model::parse("sequential:2,1", 2), Ok(Model::Sequential(vec![1, 0])));
+    /// assert_eq!(Model::parse("pgs:3", 2), Ok(Model::Pgs(3)));
+    /// assert!(Model::parse("sequential:1,1", 2).is_err());
+    /// ```
+    pub fn parse(text: &str, n: usize) -> Result<Model, String> {
+        let text = text.trim();
+        match text {
+            "simultaneous-newton" => return Ok(Model::SimultaneousNewton),
+            "simultaneous-poisson" => return Ok(Model::SimultaneousPoisson),
+            _ => {}
+        }
+        if let Some(order) = text.strip_prefix("sequential:") {
+            let parsed: Option<Vec<usize>> = order
+                .split(',')
+                .map(|k| {
+                    k.trim()
+                        .parse::<usize>()
+                        .ok()
+                        .filter(|k| (1..=n).contains(k))
+                        .map(|k| k - 1)
+                })
+                .collect();
+            let order = parsed.ok_or_else(|| {
+                format!(
+                    "sequential:ORDER lists contacts 1 to {n}, got '{}'",
+                    crate::echo::echo(order)
+                )
+            })?;
+            let mut sorted = order.clone();
+            sorted.sort_unstable();
+            if sorted != (0..n).collect::<Vec<_>>() {
+                return Err(format!(
+                    "sequential:ORDER names each of the {n} contacts once"
+                ));
+            }
+            return Ok(Model::Sequential(order));
+        }
+        if let Some(k) = text.strip_prefix("pgs:") {
+            return k
+                .trim()
+                .parse::<u32>()
+                .ok()
+                .filter(|k| (1..=MAX_SWEEPS).contains(k))
+                .map(Model::Pgs)
+                .ok_or_else(|| format!("pgs:K takes K from 1 to {MAX_SWEEPS}"));
+        }
+        Err(format!(
+            "expected simultaneous-newton, simultaneous-poisson, sequential:ORDER or pgs:K, got '{}'",
+            crate::echo::echo(text)
+        ))
+    }
+}
+
 impl fmt::Display for Model {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
