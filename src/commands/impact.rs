@@ -2,11 +2,13 @@
 
 use super::{Failure, parse_digits, print_out};
 use clap::{Args, ValueEnum};
+use rodimpact::batch::audit_impact;
 use rodimpact::field::Q;
 use rodimpact::field::QSqrt;
 use rodimpact::model::{MAX_SCENE_BYTES, System, from_value, toml_value};
 use rodimpact::report::{
-    check_json, check_summary, check_table, impact_json, impact_text, models_json, models_text,
+    check_json, check_summary, check_table, impact_audit_json, impact_json, impact_text,
+    models_json, models_text,
 };
 use rodimpact::solve::impact::{Law, solve_contact};
 use rodimpact::solve::impact::{
@@ -23,8 +25,22 @@ use std::path::PathBuf;
 #[derive(Args, Debug)]
 pub(crate) struct ImpactArgs {
     /// The scene: bodies, contacts and pins in TOML (docs/impacts.md; examples/impacts/).
-    #[arg(value_name = "FILE.toml")]
-    pub(crate) file: PathBuf,
+    #[arg(
+        value_name = "FILE.toml",
+        required_unless_present = "batch",
+        conflicts_with = "batch"
+    )]
+    pub(crate) file: Option<PathBuf>,
+    /// Audit many scenes instead: one scene per line in JSON (a scene file's structure) with an
+    /// engine's "claimed" bodies; one JSON line out per scene: the exact answers, the claim's
+    /// relative errors, which law or model it matches, and a diagnosis. Exit 1 when a claim
+    /// matches none.
+    #[arg(long, value_name = "FILE.jsonl")]
+    pub(crate) batch: Option<PathBuf>,
+    /// With --batch: a claim matches an exact answer when every component is within this
+    /// relative error [default: 1e-9].
+    #[arg(long, value_name = "R", requires = "batch")]
+    pub(crate) rtol: Option<String>,
     /// The restitution law: newton (kinematic), poisson (kinetic), energetic (Stronge), or all
     /// three side by side.
     #[arg(long, value_enum, default_value = "all")]
@@ -58,9 +74,13 @@ pub(crate) enum ImpactFormat {
 }
 
 pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
-    let label = rodimpact::echo::echo_path(&args.file);
+    if let Some(batch) = &args.batch {
+        return run_batch(args, batch);
+    }
+    let file = args.file.as_ref().expect("clap requires FILE or --batch");
+    let label = rodimpact::echo::echo_path(file);
     let mut bytes = Vec::new();
-    std::fs::File::open(&args.file)
+    std::fs::File::open(file)
         .and_then(|f| f.take(MAX_SCENE_BYTES as u64 + 1).read_to_end(&mut bytes))
         .map_err(|e| Error::io(label.clone(), "cannot read", e))?;
     let text = String::from_utf8(bytes)
@@ -243,4 +263,106 @@ fn parse_models(text: &str, n: usize) -> Result<Vec<Model>, Error> {
             })
         })?],
     })
+}
+
+/// `impact --batch FILE.jsonl`: every line audited, one JSON line out each, a summary on stderr.
+fn run_batch(args: &ImpactArgs, path: &std::path::Path) -> Result<(), Failure> {
+    use std::io::{BufRead, Write};
+    let label = rodimpact::echo::echo_path(path);
+    let rtol = match &args.rtol {
+        None => Q::new(1.into(), 1_000_000_000.into()),
+        Some(text) => {
+            let r = rodimpact::number::parse(text).map_err(|kind| Error::new("rtol", kind))?;
+            if r < Q::from_integer(0.into()) {
+                return Err(
+                    Error::out_of_range("rtol", format!("must be >= 0, got {text}")).into(),
+                );
+            }
+            r
+        }
+    };
+    let file = std::fs::File::open(path).map_err(|e| Error::io(label.clone(), "cannot read", e))?;
+    let mut reader = std::io::BufReader::new(file);
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let (mut scenes, mut claimed) = (0usize, 0usize);
+    let mut findings: std::collections::BTreeMap<String, Vec<String>> = Default::default();
+    let mut matched: std::collections::BTreeMap<String, usize> = Default::default();
+    let mut line = String::new();
+    let mut number = 0;
+    loop {
+        line.clear();
+        let read = (&mut reader)
+            .take(MAX_SCENE_BYTES as u64 + 1)
+            .read_line(&mut line)
+            .map_err(|e| Error::io(label.clone(), "cannot read", e))?;
+        if read == 0 {
+            break;
+        }
+        number += 1;
+        if line.len() > MAX_SCENE_BYTES {
+            return Err(Error::out_of_range(
+                format!("{label}: line {number}"),
+                format!("longer than {MAX_SCENE_BYTES} bytes (limit)"),
+            )
+            .into());
+        }
+        if line.trim().is_empty() {
+            continue;
+        }
+        let audit = audit_impact(line.trim_end(), number, &rtol)
+            .map_err(|e| Error::new(format!("{label}: {}", e.field), e.kind))?;
+        scenes += 1;
+        if audit.claimed.is_some() {
+            claimed += 1;
+            for m in &audit.matches {
+                *matched.entry(m.clone()).or_default() += 1;
+            }
+            for f in &audit.findings {
+                findings
+                    .entry((*f).into())
+                    .or_default()
+                    .push(audit.id.clone());
+            }
+        }
+        let json = serde_json::to_string(&impact_audit_json(&audit)).expect("JSON of strings");
+        if writeln!(out, "{json}").is_err() {
+            return Err(Error::new(
+                "stdout",
+                ErrorKind::Invalid("cannot write standard output".into()),
+            )
+            .into());
+        }
+    }
+    let mut summary = format!(
+        "{scenes} scene{}, {claimed} with a claimed state\n",
+        if scenes == 1 { "" } else { "s" }
+    );
+    if !matched.is_empty() {
+        let list: Vec<String> = matched.iter().map(|(k, v)| format!("{k} {v}")).collect();
+        summary.push_str(&format!(
+            "claims matching each exact answer: {}\n",
+            list.join(", ")
+        ));
+    }
+    if findings.is_empty() {
+        summary.push_str("every claim matches an exact answer\n");
+    } else {
+        summary.push_str("findings:\n");
+        for (finding, ids) in &findings {
+            let shown: Vec<&str> = ids.iter().take(5).map(String::as_str).collect();
+            summary.push_str(&format!(
+                "  {finding}: {} ({}{})\n",
+                ids.len(),
+                shown.join(", "),
+                if ids.len() > 5 { ", ..." } else { "" }
+            ));
+        }
+    }
+    eprint!("{summary}");
+    if findings.is_empty() {
+        Ok(())
+    } else {
+        Err(Failure::Check)
+    }
 }

@@ -612,3 +612,71 @@ fn model_meaning(model: &Model) -> &'static str {
         Model::Pgs(_) => "sweeps of projected Gauss-Seidel from zero impulses, as engines run them",
     }
 }
+
+/// One line of `impact --batch`'s output for an audited scene: `id`, `engine`, `contacts`,
+/// `exact` (every law's or model's bodies, exact strings), `rel_error` (the claim's largest
+/// relative error against each, three digits, `inf` for a claimed non-zero where the exact
+/// value is zero), `matches` (those within the tolerance), `closest`, and `diagnosis` (`ok`,
+/// or `;`-joined findings).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{batch::audit_impact, field::q, report::impact_audit_json};
+/// let line = r#"{"id": "p", "body": [{"name": "p", "mass": "1", "velocity": ["1", "0"]},
+///   {"name": "wall", "fixed": true}], "contact": [{"bodies": ["p", "wall"], "point": ["0", "0"], "normal": ["-1", "0"]}],
+///   "claimed": {"bodies": {"p": {"velocity": ["-1", "0"], "omega": "0"}}}}"#;
+/// let json = impact_audit_json(&audit_impact(line, 1, &q(1, 1000))?);
+/// assert_eq!(json["diagnosis"], "ok");
+/// assert_eq!(json["exact"]["newton"]["p"]["velocity"][0], "-1");
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn impact_audit_json(audit: &crate::batch::ImpactAudit) -> Value {
+    let system = &audit.system;
+    let mut exact = Map::new();
+    for r in &audit.references {
+        let mut bodies = Map::new();
+        for (index, v, w) in &r.bodies {
+            bodies.insert(
+                system.bodies[*index].name.clone(),
+                json!({"velocity": [v.x.to_string(), v.y.to_string()], "omega": w.to_string()}),
+            );
+        }
+        exact.insert(r.name.clone(), Value::Object(bodies));
+    }
+    let mut out = Map::new();
+    out.insert("id".into(), json!(audit.id));
+    if let Some(engine) = &audit.engine {
+        out.insert("engine".into(), json!(engine));
+    }
+    out.insert("contacts".into(), json!(system.contacts.len()));
+    out.insert("exact".into(), Value::Object(exact));
+    if audit.claimed.is_some() {
+        let mut errors = Map::new();
+        for (r, e) in audit.references.iter().zip(&audit.errors) {
+            errors.insert(
+                r.name.clone(),
+                json!(
+                    e.as_ref()
+                        .map_or_else(|| "inf".to_string(), |e| decimal::decimal(e, 3))
+                ),
+            );
+        }
+        out.insert("rel_error".into(), Value::Object(errors));
+        out.insert("matches".into(), json!(audit.matches));
+        let closest = audit
+            .references
+            .iter()
+            .zip(&audit.errors)
+            .filter_map(|(r, e)| e.as_ref().map(|e| (r, e)))
+            .min_by(|a, b| a.1.cmp(b.1))
+            .map(|(r, _)| r.name.clone());
+        out.insert("closest".into(), json!(closest));
+        let diagnosis = if audit.findings.is_empty() {
+            "ok".to_string()
+        } else {
+            audit.findings.join(";")
+        };
+        out.insert("diagnosis".into(), json!(diagnosis));
+    }
+    Value::Object(out)
+}

@@ -6,6 +6,8 @@ use crate::common::{rodimpact, scratch};
 use serde_json::Value;
 
 const GAIN: &str = "examples/impacts/newton-gains-energy.toml";
+/// The same scene by name, for the batch lines.
+const GAIN_NAME: &str = "newton-gains-energy";
 
 #[test]
 fn newtons_gain_is_said_plainly_and_the_others_lose() {
@@ -246,5 +248,77 @@ fn bad_inputs_are_refused_naming_the_field() {
         stderr.contains("larger than 1048576 bytes (limit)"),
         "{stderr}"
     );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `impact --batch`: each line a scene and an engine's claimed bodies, audited exactly: which
+/// law or model the claim matches, the closest, and a diagnosis; exit 1 when one matches none.
+#[test]
+fn batch_audits_engine_claims() {
+    let dir = scratch("impact-batch");
+    let scene = |file: &str| -> serde_json::Map<String, Value> {
+        let text = std::fs::read_to_string(format!("examples/impacts/{file}.toml")).unwrap();
+        let table: toml::Table = toml::from_str(&text).unwrap();
+        serde_json::to_value(table)
+            .unwrap()
+            .as_object()
+            .unwrap()
+            .clone()
+    };
+    let line = |file: &str, id: &str, claimed: Value| {
+        let mut s = scene(file);
+        s.insert("id".into(), Value::String(id.into()));
+        if !claimed.is_null() {
+            s.insert("claimed".into(), claimed);
+        }
+        serde_json::to_string(&s).unwrap()
+    };
+    let rod = |vx: &str, vy: &str, w: &str| serde_json::json!({"engine": "test 1.0", "bodies": {"rod": {"velocity": [vx, vy], "omega": w}}});
+    let lines = [
+        line(GAIN_NAME, "newton-exact", rod("1.2", "0.1", "-1.5")),
+        line(
+            GAIN_NAME,
+            "poisson-exact",
+            rod("1866/1825", "-13/50", "-933/730"),
+        ),
+        line(GAIN_NAME, "no-contact", rod("1", "-1", "0")),
+        line(GAIN_NAME, "nan", rod("nan", "0", "0")),
+        line(
+            "cradle-3",
+            "cradle-one-sweep",
+            serde_json::json!({"bodies": {
+            "ball1": {"velocity": ["0", "0"], "omega": "0"},
+            "ball2": {"velocity": ["0.5", "0"], "omega": "0"},
+            "ball3": {"velocity": ["0.5", "0"], "omega": "0"}}}),
+        ),
+        line("box-corner", "unclaimed", Value::Null),
+    ];
+    let path = dir.join("log.jsonl");
+    std::fs::write(&path, lines.join("\n") + "\n").unwrap();
+    let (code, out, err) = rodimpact(&["impact", "--batch", path.to_str().unwrap()]);
+    assert_eq!(code, 1, "{err}");
+    let rows: Vec<Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(rows.len(), 6);
+    assert_eq!(rows[0]["matches"], serde_json::json!(["newton"]));
+    assert_eq!(rows[0]["diagnosis"], "ok");
+    assert_eq!(rows[1]["matches"], serde_json::json!(["poisson"]));
+    assert_eq!(rows[2]["diagnosis"], "no-contact");
+    assert_eq!(rows[3]["diagnosis"], "off");
+    assert_eq!(rows[4]["matches"], serde_json::json!(["pgs:1"]));
+    assert_eq!(
+        rows[4]["exact"]["simultaneous-newton"]["ball1"]["velocity"][0],
+        "-1/3"
+    );
+    assert!(rows[5].get("diagnosis").is_none());
+    assert!(err.contains("6 scenes, 5 with a claimed state"), "{err}");
+    assert!(err.contains("no-contact: 1 (no-contact)"), "{err}");
+    // Bad input names the line.
+    std::fs::write(&path, "{\"body\": []}\n").unwrap();
+    let (code, _, err) = rodimpact(&["impact", "--batch", path.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("line 1: body"), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
