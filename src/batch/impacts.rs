@@ -103,11 +103,11 @@ fn answers(system: &System) -> Result<Vec<Reference>, Error> {
     Ok(out)
 }
 
-/// The claimed state of `value["claimed"]`, exactly.
-fn claimed(
-    value: &Value,
-    system: &System,
-) -> Result<(Option<String>, Option<Vec<(usize, Vec2<Q>, Q)>>), Error> {
+/// Every moving body's (index, velocity, spin), as claimed.
+type Bodies = Vec<(usize, Vec2<Q>, Q)>;
+
+/// The engine named and the claimed state of `value["claimed"]`, exactly.
+fn claimed(value: &Value, system: &System) -> Result<(Option<String>, Option<Bodies>), Error> {
     let Some(c) = value.get("claimed") else {
         return Ok((None, None));
     };

@@ -107,6 +107,8 @@ registry! {
     "beyond/x32.rs" => x32,
     "beyond/x33.rs" => x33,
     "beyond/x34.rs" => x34,
+    "beyond/x35.rs" => x35,
+    "beyond/x36.rs" => x36,
 }
 
 /// Every claim, in the order of `docs/claims.md`: the paper's, then the results beyond it.

@@ -469,7 +469,7 @@ pub fn models_json(system: &System, outcomes: &[(Model, ModelOutcome<Q>)], digit
 /// let system = parse_toml("cradle-3", &text)?;
 /// let model = Model::Pgs(1);
 /// let report = models_text(&system, &[(model.clone(), solve_several::<Q>(&system, &model))], 6);
-/// assert!(report.contains("energy 1/2 -> 1/4 J, change -1/4 J"));
+/// assert!(report.contains("energy 1/2 = 0.5 -> 1/4 = 0.25 J, change -1/4 = -0.25 J"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn models_text(

@@ -14,7 +14,9 @@
 //! | `matrix.rs` | each body's response to an impulse, the contact matrix W |
 //! | `routh.rs` | the path in the normal impulse (Routh's construction) and each law's end |
 //! | `several.rs` | several frictionless contacts under each model: simultaneous Newton and Poisson (exact LCPs), sequential, projected Gauss-Seidel |
+//! | `friction.rs` | several frictional contacts under the simultaneous models, every mode tried |
 
+mod friction;
 mod matrix;
 mod routh;
 mod several;
@@ -23,7 +25,7 @@ pub use matrix::ContactMatrix;
 pub use routh::{Jam, Law, Mode, Roots};
 pub use several::{
     Ledger, MAX_ORDERED, MAX_SEQUENTIAL_IMPACTS, MAX_SIMULTANEOUS, MAX_SWEEPS, Model, ModelAnswer,
-    ModelOutcome, orders, solve_several,
+    ModelOutcome, orders,
 };
 
 use crate::field::Field;
@@ -32,6 +34,40 @@ use crate::model::{Mobility, System};
 use matrix::Lifted;
 use routh::{Segment, compression_end, end, friction_work, normal_work, path, segment_at};
 use std::cmp::Ordering;
+
+/// Answers the system's contacts under `model`.
+///
+/// # Examples
+/// Newton's cradle of three equal balls struck at 1: the simultaneous Newton answer keeps the
+/// energy and momentum, yet the first ball rebounds (-1/3) and the other two leave together
+/// (2/3); sequential impacts leave only the last ball moving.
+/// ```
+/// use rodimpact::{field::{q, Q}, model::parse_toml};
+/// use rodimpact::solve::impact::{Model, ModelOutcome, solve_several};
+/// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/cradle-3.toml")).unwrap();
+/// let system = parse_toml("cradle-3", &text)?;
+/// let ModelOutcome::Answered(answers) = solve_several::<Q>(&system, &Model::SimultaneousNewton) else { panic!() };
+/// let v: Vec<Q> = answers[0].bodies.iter().map(|(_, v, _)| v.x.clone()).collect();
+/// assert_eq!(v, [q(-1, 3), q(2, 3), q(2, 3)]);
+/// assert_eq!(answers[0].ledger.energy_change, q(0, 1));
+/// let ModelOutcome::Answered(seq) = solve_several::<Q>(&system, &Model::Sequential(vec![0, 1])) else { panic!() };
+/// assert_eq!(seq[0].bodies[2].1.x, q(1, 1));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F> {
+    let contacts: several::Contacts<F> = several::Contacts::of(system);
+    let w = contacts.delassus();
+    let u0 = several::normal_before(system, &contacts);
+    if system
+        .contacts
+        .iter()
+        .any(|c| c.mu.sign() == Some(Ordering::Greater))
+    {
+        friction::with_friction(system, &contacts, &w, &u0, model)
+    } else {
+        several::frictionless(system, &contacts, &w, &u0, model)
+    }
+}
 
 /// A phase of the impact as reported: its mode between two values of the normal impulse.
 #[derive(Debug, Clone, PartialEq)]

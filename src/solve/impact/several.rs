@@ -197,17 +197,17 @@ pub struct ModelAnswer<F> {
 }
 
 /// The system's contacts in a field: points, normals, e, and every moving body's response.
-struct Contacts<F> {
-    points: Vec<Vec2<F>>,
-    normals: Vec<Vec2<F>>,
-    e: Vec<F>,
+pub(super) struct Contacts<F> {
+    pub(super) points: Vec<Vec2<F>>,
+    pub(super) normals: Vec<Vec2<F>>,
+    pub(super) e: Vec<F>,
     /// For each contact, its two bodies (index, sign +1 for A, -1 for B), moving ones only.
     ends: Vec<Vec<(usize, F)>>,
     responses: Vec<Option<Response<F>>>,
 }
 
 impl<F: Field> Contacts<F> {
-    fn of(system: &System) -> Contacts<F> {
+    pub(super) fn of(system: &System) -> Contacts<F> {
         let lift =
             |v: &Vec2<crate::field::Q>| Vec2::new(F::from_rational(&v.x), F::from_rational(&v.y));
         let responses: Vec<Option<Response<F>>> = system.bodies.iter().map(Response::of).collect();
@@ -233,18 +233,18 @@ impl<F: Field> Contacts<F> {
         }
     }
 
-    fn len(&self) -> usize {
+    pub(super) fn len(&self) -> usize {
         self.points.len()
     }
 
     /// The Delassus matrix: W_ij, the change of u_i per unit impulse lam_j.
-    fn delassus(&self) -> Vec<Vec<F>> {
+    pub(super) fn delassus(&self) -> Vec<Vec<F>> {
         self.coupling(&self.normals, &self.normals)
     }
 
     /// The change of the relative velocity at contact i along `along[i]` per unit impulse along
     /// `by[j]` at contact j (the Delassus matrix when both are the normals).
-    fn coupling(&self, along: &[Vec2<F>], by: &[Vec2<F>]) -> Vec<Vec<F>> {
+    pub(super) fn coupling(&self, along: &[Vec2<F>], by: &[Vec2<F>]) -> Vec<Vec<F>> {
         let n = self.len();
         (0..n)
             .map(|i| {
@@ -296,7 +296,7 @@ fn bodies_before<F: Field>(system: &System) -> Vec<(usize, PlanarBody<F>)> {
 }
 
 /// The normal relative velocity before, at every contact.
-fn normal_before<F: Field>(system: &System, contacts: &Contacts<F>) -> Vec<F> {
+pub(super) fn normal_before<F: Field>(system: &System, contacts: &Contacts<F>) -> Vec<F> {
     system
         .contacts
         .iter()
@@ -308,7 +308,7 @@ fn normal_before<F: Field>(system: &System, contacts: &Contacts<F>) -> Vec<F> {
         .collect()
 }
 
-fn negative_part<F: Field>(x: &F) -> F {
+pub(super) fn negative_part<F: Field>(x: &F) -> F {
     if x.sign() == Some(Ordering::Less) {
         x.clone()
     } else {
@@ -316,7 +316,7 @@ fn negative_part<F: Field>(x: &F) -> F {
     }
 }
 
-fn nonnegative<F: Field>(x: &F) -> bool {
+pub(super) fn nonnegative<F: Field>(x: &F) -> bool {
     x.sign() != Some(Ordering::Less)
 }
 
@@ -372,44 +372,23 @@ fn lcp<F: Field>(w: &[Vec<F>], q: &[F]) -> Vec<Vec<F>> {
     found
 }
 
-/// Answers the system's contacts under `model`.
-///
-/// # Examples
-/// Newton's cradle of three equal balls struck at 1: the simultaneous Newton answer keeps the
-/// energy and momentum, yet the first ball rebounds (-1/3) and the other two leave together
-/// (2/3); sequential impacts leave only the last ball moving.
-/// ```
-/// use rodimpact::{field::{q, Q}, model::parse_toml};
-/// use rodimpact::solve::impact::{Model, ModelOutcome, solve_several};
-/// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/cradle-3.toml")).unwrap();
-/// let system = parse_toml("cradle-3", &text)?;
-/// let ModelOutcome::Answered(answers) = solve_several::<Q>(&system, &Model::SimultaneousNewton) else { panic!() };
-/// let v: Vec<Q> = answers[0].bodies.iter().map(|(_, v, _)| v.x.clone()).collect();
-/// assert_eq!(v, [q(-1, 3), q(2, 3), q(2, 3)]);
-/// assert_eq!(answers[0].ledger.energy_change, q(0, 1));
-/// let ModelOutcome::Answered(seq) = solve_several::<Q>(&system, &Model::Sequential(vec![0, 1])) else { panic!() };
-/// assert_eq!(seq[0].bodies[2].1.x, q(1, 1));
-/// # Ok::<(), rodimpact::Error>(())
-/// ```
-pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F> {
-    let contacts: Contacts<F> = Contacts::of(system);
-    let w = contacts.delassus();
-    let u0 = normal_before(system, &contacts);
+/// The frictionless contacts of `system` under `model` ([`super::solve_several`] sends
+/// frictional ones to `friction.rs`).
+pub(super) fn frictionless<F: Field>(
+    system: &System,
+    contacts: &Contacts<F>,
+    w: &[Vec<F>],
+    u0: &[F],
+    model: &Model,
+) -> ModelOutcome<F> {
     let n = contacts.len();
-    if system
-        .contacts
-        .iter()
-        .any(|c| c.mu.sign() == Some(Ordering::Greater))
-    {
-        return with_friction(system, &contacts, &w, &u0, model);
-    }
     let answer = |impulses: Vec<F>, impacts: Vec<(usize, F)>| {
         let tangential = vec![F::zero(); impulses.len()];
         finish(
             system,
-            &contacts,
-            &w,
-            &u0,
+            contacts,
+            w,
+            u0,
             model.clone(),
             (impulses, tangential, false),
             impacts,
@@ -420,7 +399,7 @@ pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F
             let q: Vec<F> = (0..n)
                 .map(|i| u0[i].clone() + &(contacts.e[i].clone() * &negative_part(&u0[i])))
                 .collect();
-            let all = lcp(&w, &q);
+            let all = lcp(w, &q);
             if all.is_empty() {
                 ModelOutcome::NoSolution
             } else {
@@ -429,13 +408,13 @@ pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F
         }
         Model::SimultaneousPoisson => {
             let mut answers = Vec::new();
-            for compression in lcp(&w, &u0) {
-                let u_c = velocities(&u0, &w, &compression);
+            for compression in lcp(w, u0) {
+                let u_c = velocities(u0, w, &compression);
                 let pushed: Vec<F> = (0..n)
                     .map(|i| contacts.e[i].clone() * &compression[i])
                     .collect();
-                let q = velocities(&u_c, &w, &pushed);
-                for extra in lcp(&w, &q) {
+                let q = velocities(&u_c, w, &pushed);
+                for extra in lcp(w, &q) {
                     let lam: Vec<F> = (0..n)
                         .map(|i| compression[i].clone() + &pushed[i] + &extra[i])
                         .collect();
@@ -454,7 +433,7 @@ pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F
             loop {
                 let mut fired = false;
                 for &i in order {
-                    let u = velocities(&u0, &w, &lam);
+                    let u = velocities(u0, w, &lam);
                     if u[i].sign() != Some(Ordering::Less) || w[i][i].is_zero() {
                         continue;
                     }
@@ -478,7 +457,7 @@ pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F
                     if w[i][i].is_zero() {
                         continue;
                     }
-                    let u = velocities(&u0, &w, &lam);
+                    let u = velocities(u0, w, &lam);
                     let target = u[i].clone() + &(contacts.e[i].clone() * &negative_part(&u0[i]));
                     let next = lam[i].clone() - &(target / &w[i][i]);
                     lam[i] = if nonnegative(&next) { next } else { F::zero() };
@@ -490,7 +469,7 @@ pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F
 }
 
 /// The bodies after the impulses `lam` and the ledger.
-fn finish<F: Field>(
+pub(super) fn finish<F: Field>(
     system: &System,
     contacts: &Contacts<F>,
     w: &[Vec<F>],
@@ -594,258 +573,4 @@ pub fn orders(n: usize) -> Vec<Vec<usize>> {
         }
     }
     out
-}
-
-/// What friction does at a contact during a phase.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Grip {
-    Stick,
-    /// Sliding with the slip at the phase's end positive (friction -mu lam).
-    Forward,
-    /// Sliding with the slip negative (friction +mu lam).
-    Backward,
-}
-
-/// The couplings of normal and tangential impulses: (nn, nt, tn, tt).
-type Blocks<F> = [Vec<Vec<F>>; 4];
-
-/// One phase with Coulomb friction (the oracle's formulation, `tests/oracles/several-contacts.md`
-/// section 6): from the velocities `(un, ut)`, the normal impulses `ln >= base` with
-/// `un' + off >= 0` complementary to `ln - base`, and `|lt| <= mu ln` with
-/// `lt = -mu ln sign(ut')` where the slip at the phase's end is not zero. Every normal and
-/// tangential mode of every contact is tried: each solution (ln, lt, split indeterminate).
-fn friction_phase<F: Field>(
-    blocks: &Blocks<F>,
-    (un, ut): (&[F], &[F]),
-    mu: &[F],
-    (base, off): (&[F], &[F]),
-) -> Vec<(Vec<F>, Vec<F>, bool)> {
-    let n = un.len();
-    let [nn, nt, tn, tt] = blocks;
-    let grips = [Grip::Stick, Grip::Forward, Grip::Backward];
-    let mut found: Vec<(Vec<F>, Vec<F>, bool)> = Vec::new();
-    for code in 0..6usize.pow(n as u32) {
-        let modes: Vec<(bool, Grip)> = (0..n)
-            .map(|i| {
-                let digit = code / 6usize.pow(i as u32) % 6;
-                (digit >= 3, grips[digit % 3])
-            })
-            .collect();
-        // Rows over the unknowns [ln_1..ln_n, lt_1..lt_n], right-hand sides.
-        let mut a = Vec::with_capacity(2 * n);
-        let mut b = Vec::with_capacity(2 * n);
-        for (i, (closed, grip)) in modes.iter().enumerate() {
-            let mut row = vec![F::zero(); 2 * n];
-            if *closed {
-                row[..n].clone_from_slice(&nn[i]);
-                row[n..].clone_from_slice(&nt[i]);
-                b.push(-(un[i].clone() + &off[i]));
-            } else {
-                row[i] = F::one();
-                b.push(base[i].clone());
-            }
-            a.push(row);
-            let mut row = vec![F::zero(); 2 * n];
-            match grip {
-                Grip::Stick => {
-                    row[..n].clone_from_slice(&tn[i]);
-                    row[n..].clone_from_slice(&tt[i]);
-                    b.push(-ut[i].clone());
-                }
-                Grip::Forward | Grip::Backward => {
-                    row[n + i] = F::one();
-                    row[i] = if *grip == Grip::Forward {
-                        mu[i].clone()
-                    } else {
-                        -mu[i].clone()
-                    };
-                    b.push(F::zero());
-                }
-            }
-            a.push(row);
-        }
-        let Some((x, free)) = solve_consistent(a, b) else {
-            continue;
-        };
-        let (ln, lt) = (x[..n].to_vec(), x[n..].to_vec());
-        let end = |block_n: &[Vec<F>], block_t: &[Vec<F>], start: &[F]| -> Vec<F> {
-            (0..n)
-                .map(|i| {
-                    (0..n).fold(start[i].clone(), |acc, j| {
-                        acc + &(block_n[i][j].clone() * &ln[j]) + &(block_t[i][j].clone() * &lt[j])
-                    })
-                })
-                .collect()
-        };
-        let (un_end, ut_end) = (end(nn, nt, un), end(tn, tt, ut));
-        let holds = modes.iter().enumerate().all(|(i, (closed, grip))| {
-            let normal = if *closed {
-                nonnegative(&(ln[i].clone() - &base[i]))
-            } else {
-                nonnegative(&(un_end[i].clone() + &off[i]))
-            };
-            let bound = mu[i].clone() * &ln[i];
-            let tangential = match grip {
-                Grip::Stick => {
-                    nonnegative(&(bound.clone() - &lt[i])) && nonnegative(&(bound + &lt[i]))
-                }
-                Grip::Forward => nonnegative(&ut_end[i]),
-                Grip::Backward => nonnegative(&-ut_end[i].clone()),
-            };
-            normal && tangential && nonnegative(&ln[i])
-        });
-        let same = |other: &(Vec<F>, Vec<F>, bool)| {
-            (0..n).all(|i| (other.0[i].clone() - &ln[i]).is_zero())
-                && (free || other.2 || (0..n).all(|i| (other.1[i].clone() - &lt[i]).is_zero()))
-        };
-        if holds && !found.iter().any(same) {
-            found.push((ln, lt, free));
-        }
-    }
-    found
-}
-
-/// A solution of `a x = b` when the system is consistent: the unique one, or one with the free
-/// unknowns at zero (`true`: the system was singular).
-fn solve_consistent<F: Field>(mut a: Vec<Vec<F>>, mut b: Vec<F>) -> Option<(Vec<F>, bool)> {
-    let (rows, cols) = (a.len(), a.first().map_or(0, Vec::len));
-    let mut pivots = Vec::new();
-    let mut row = 0;
-    for col in 0..cols {
-        let Some(p) = (row..rows).find(|&r| !a[r][col].is_zero()) else {
-            continue;
-        };
-        a.swap(row, p);
-        b.swap(row, p);
-        let inv = F::one() / &a[row][col];
-        for c in 0..cols {
-            a[row][c] = a[row][c].clone() * &inv;
-        }
-        b[row] = b[row].clone() * &inv;
-        for r in 0..rows {
-            if r != row && !a[r][col].is_zero() {
-                let factor = a[r][col].clone();
-                for c in 0..cols {
-                    let sub = a[row][c].clone() * &factor;
-                    a[r][c] = a[r][c].clone() - &sub;
-                }
-                b[r] = b[r].clone() - &(b[row].clone() * &factor);
-            }
-        }
-        pivots.push(col);
-        row += 1;
-    }
-    if (row..rows).any(|r| !b[r].is_zero()) {
-        return None;
-    }
-    let mut x = vec![F::zero(); cols];
-    for (r, &col) in pivots.iter().enumerate() {
-        x[col] = b[r].clone();
-    }
-    Some((x, pivots.len() < cols))
-}
-
-/// The simultaneous models with Coulomb friction at the contacts.
-fn with_friction<F: Field>(
-    system: &System,
-    contacts: &Contacts<F>,
-    w: &[Vec<F>],
-    u0: &[F],
-    model: &Model,
-) -> ModelOutcome<F> {
-    let n = contacts.len();
-    let tangents: Vec<Vec2<F>> = contacts.normals.iter().map(Vec2::perp).collect();
-    let blocks: Blocks<F> = [
-        contacts.coupling(&contacts.normals, &contacts.normals),
-        contacts.coupling(&contacts.normals, &tangents),
-        contacts.coupling(&tangents, &contacts.normals),
-        contacts.coupling(&tangents, &tangents),
-    ];
-    let mu: Vec<F> = system
-        .contacts
-        .iter()
-        .map(|c| F::from_rational(&c.mu))
-        .collect();
-    let ut0: Vec<F> = system
-        .contacts
-        .iter()
-        .zip(&tangents)
-        .map(|(c, t)| {
-            let rel = system.relative_velocity(c);
-            Vec2::new(F::from_rational(&rel.x), F::from_rational(&rel.y)).dot(t)
-        })
-        .collect();
-    let zero = vec![F::zero(); n];
-    let finish_one = |(ln, lt, free): (Vec<F>, Vec<F>, bool)| {
-        finish(
-            system,
-            contacts,
-            w,
-            u0,
-            model.clone(),
-            (ln, lt, free),
-            Vec::new(),
-        )
-    };
-    let answers: Vec<ModelAnswer<F>> = match model {
-        Model::SimultaneousNewton => {
-            let off: Vec<F> = (0..n)
-                .map(|i| contacts.e[i].clone() * &negative_part(&u0[i]))
-                .collect();
-            friction_phase(&blocks, (u0, &ut0), &mu, (&zero, &off))
-                .into_iter()
-                .map(finish_one)
-                .collect()
-        }
-        Model::SimultaneousPoisson => {
-            let mut all = Vec::new();
-            for (lc, tc, free_c) in friction_phase(&blocks, (u0, &ut0), &mu, (&zero, &zero)) {
-                let after = |start: &[F], bn: &[Vec<F>], bt: &[Vec<F>]| -> Vec<F> {
-                    (0..n)
-                        .map(|i| {
-                            (0..n).fold(start[i].clone(), |acc, j| {
-                                acc + &(bn[i][j].clone() * &lc[j]) + &(bt[i][j].clone() * &tc[j])
-                            })
-                        })
-                        .collect()
-                };
-                let un_c = after(u0, &blocks[0], &blocks[1]);
-                let ut_c = after(&ut0, &blocks[2], &blocks[3]);
-                let base: Vec<F> = (0..n).map(|i| contacts.e[i].clone() * &lc[i]).collect();
-                for (le, te, free_e) in friction_phase(&blocks, (&un_c, &ut_c), &mu, (&base, &zero))
-                {
-                    let ln = (0..n).map(|i| lc[i].clone() + &le[i]).collect();
-                    let lt = (0..n).map(|i| tc[i].clone() + &te[i]).collect();
-                    all.push(finish_one((ln, lt, free_c || free_e)));
-                }
-            }
-            all
-        }
-        Model::Sequential(_) | Model::Pgs(_) => return ModelOutcome::FrictionlessOnly,
-    };
-    // Answers that differ only in how an indeterminate friction split is shared are one.
-    let mut distinct: Vec<ModelAnswer<F>> = Vec::new();
-    for a in answers {
-        let same_motion = |b: &ModelAnswer<F>| {
-            a.bodies.iter().zip(&b.bodies).all(|(x, y)| {
-                (x.1.x.clone() - &y.1.x).is_zero()
-                    && (x.1.y.clone() - &y.1.y).is_zero()
-                    && (x.2.clone() - &y.2).is_zero()
-            })
-        };
-        match distinct.iter_mut().find(|b| same_motion(b)) {
-            // The same motion from other tangential impulses: only their sum is determined.
-            Some(b) => {
-                if (0..n).any(|i| !(b.tangential[i].clone() - &a.tangential[i]).is_zero()) {
-                    b.split_indeterminate = true;
-                }
-            }
-            None => distinct.push(a),
-        }
-    }
-    if distinct.is_empty() {
-        ModelOutcome::NoSolution
-    } else {
-        ModelOutcome::Answered(distinct)
-    }
 }
