@@ -5,7 +5,8 @@
 //! and renamed over it when complete. The temporary file is created exclusively (`O_EXCL`,
 //! never through an existing name or link) under an unpredictable name, `.<name>.<random>.tmp`
 //! with at most 32 bytes of the target's name, so a legal 255-byte name still fits. A final
-//! symbolic link is resolved first and its target replaced, so the link stays a link. The
+//! symbolic link is resolved first and its target replaced, so the link stays a link, unless it
+//! was planted in a shared sticky directory by another user ([`may_follow_link`]). The
 //! replaced file keeps its permission bits (and, where the system allows, its owner and group).
 //!
 //! A target that is not a regular file (a character device such as `/dev/null`, a FIFO, a
@@ -267,7 +268,8 @@ fn resolve(path: &Path) -> io::Result<Target> {
 /// assert!(may_follow_link(tmp, 0, 0, 1000)); // the directory owner's link
 /// assert!(!may_follow_link(tmp, 0, 65534, 1000)); // planted by another user
 /// assert!(!may_follow_link(tmp, 0, 65534, 0)); // not even for root
-/// assert!(may_follow_link(0o40755, 0, 65534, 1000)); // not sticky and world-writable
+/// assert!(may_follow_link(0o40777, 0, 65534, 1000)); // world-writable, not sticky
+/// assert!(may_follow_link(0o41775, 0, 65534, 1000)); // sticky, not world-writable
 /// ```
 pub fn may_follow_link(dir_mode: u32, dir_owner: u32, link_owner: u32, follower: u32) -> bool {
     let shared = dir_mode & 0o1002 == 0o1002;

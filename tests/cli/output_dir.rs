@@ -286,3 +286,85 @@ fn a_signal_while_staged_leaves_dir_as_it_was() {
     );
     std::fs::remove_dir_all(&root).unwrap();
 }
+
+/// Regression (G10): a symbolic link planted in a shared sticky directory (`/tmp`) by another
+/// user was followed, and the file it points at replaced (the classic /tmp link attack; the
+/// kernel's `fs.protected_symlinks` never sees a link rodimpact resolves itself). Now such a
+/// link is refused with exit 2, naming the path and the rule, for a single `--out FILE` and for
+/// a directory output; a link of the caller's own, or of the directory's owner, is followed as
+/// before. Creating a link owned by another user needs root: otherwise the CLI part is skipped
+/// (the rule itself, `rodimpact::io::may_follow_link`, is tested in its documentation).
+#[test]
+fn a_link_planted_in_a_sticky_shared_directory_is_refused() {
+    use std::os::unix::fs::{lchown, symlink};
+    if !rustix::process::geteuid().is_root() {
+        eprintln!("not root: cannot plant a link owned by another user; not tested");
+        return;
+    }
+    let root = scratch("g10-planted");
+    let shared = root.join("shared");
+    std::fs::create_dir(&shared).unwrap();
+    std::fs::set_permissions(&shared, std::fs::Permissions::from_mode(0o1777)).unwrap();
+    let secret = root.join("secret");
+    std::fs::write(&secret, "secret\n").unwrap();
+    let victim = root.join("victim");
+    std::fs::create_dir(&victim).unwrap();
+    let (file_link, dir_link) = (shared.join("out.csv"), shared.join("certs"));
+    symlink(&secret, &file_link).unwrap();
+    symlink(&victim, &dir_link).unwrap();
+    for link in [&file_link, &dir_link] {
+        lchown(link, Some(65534), Some(65534)).unwrap();
+    }
+
+    let runs: [(&Path, &[&str]); 2] = [
+        (&file_link, &["scenes", "--suite", "engines", "--out"]),
+        (&dir_link, &["prove", "C1", "--write"]),
+    ];
+    for (link, run) in runs {
+        let mut args = run.to_vec();
+        args.push(link.to_str().unwrap());
+        let (code, stdout, stderr) = rodimpact(&args);
+        let field = if run[0] == "scenes" { "out" } else { "write" };
+        assert_eq!(code, 2, "{args:?}: {stdout}{stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert!(
+            stderr.starts_with(&format!(
+                "error: {field}: cannot write {}: ",
+                link.display()
+            )),
+            "{stderr}"
+        );
+        assert!(
+            stderr.contains("sticky world-writable directory, owned by uid 65534")
+                && stderr.contains("fs.protected_symlinks"),
+            "{stderr}"
+        );
+    }
+    assert_eq!(std::fs::read_to_string(&secret).unwrap(), "secret\n");
+    assert!(names(&victim).is_empty());
+    assert_eq!(names(&shared), ["certs", "out.csv"]);
+
+    // The directory's owner's link is followed (the kernel's rule), and so is the caller's own.
+    std::os::unix::fs::chown(&shared, Some(65534), Some(65534)).unwrap();
+    let (code, _, stderr) = rodimpact(&["prove", "C1", "--write", dir_link.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(names(&victim), ["C1.md"]);
+    std::os::unix::fs::chown(&shared, Some(0), Some(0)).unwrap();
+    lchown(&file_link, Some(0), Some(0)).unwrap();
+    let (code, _, stderr) = rodimpact(&[
+        "scenes",
+        "--suite",
+        "engines",
+        "--out",
+        file_link.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(std::fs::read_to_string(&secret).unwrap().starts_with("id,"));
+    assert!(
+        std::fs::symlink_metadata(&file_link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    std::fs::remove_dir_all(&root).unwrap();
+}
