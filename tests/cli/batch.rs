@@ -190,3 +190,34 @@ fn mixed_scenes_and_the_f64_backend() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Regression (G6): an engine log with its own `v_exact`, `v_ok`, `laws_held` columns had them
+/// passed through beside rodimpact's, and the forged `v_ok = true` of a wrong row came first.
+/// Now the header is refused (exit 2, one line naming the column) and nothing is written, to
+/// standard output or to `--out`.
+#[test]
+fn a_log_that_names_rodimpacts_own_columns_is_refused() {
+    let dir = scratch("g6");
+    let file = dir.join("in.csv");
+    let out = dir.join("out.csv");
+    std::fs::write(
+        &file,
+        "m,M,v,v_exact,v_ok,laws_held\n1,1,3/5,3/5,true,true\n1,1,1/2,3/5,true,true\n",
+    )
+    .unwrap();
+    let path = file.to_str().unwrap();
+    for args in [
+        vec!["batch", path],
+        vec!["batch", path, "--out", out.to_str().unwrap()],
+    ] {
+        let (code, stdout, stderr) = rodimpact(&args);
+        assert_eq!((code, stdout.as_str()), (2, ""), "{stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert!(
+            stderr.starts_with("error: header: column 'v_exact' is a name rodimpact writes"),
+            "{stderr}"
+        );
+    }
+    assert_eq!(leftovers(&dir), ["in.csv"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
