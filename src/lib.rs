@@ -37,7 +37,7 @@
 //! | 2 model | [`scene`], [`mechanics`], [`model`] | a validated scene over any field; momentum, angular momentum, energy, the paper's groups; planar bodies and contacts as data |
 //! | 3 solve | [`solve`] | the whole answer to any scene ([`solve::Answer`]); every route to (v, V, omega) by name behind [`solve::with`]; a* and omega_max ([`solve::optimum`]) |
 //! | 4 decide | [`claims`], [`textbook`], [`stability`], [`contact`], [`batch`], [`suite`], [`samples`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes; the designed suites of scenes (engines) |
-//! | 5 output | [`report`], [`io`] | every rendering (text, JSON, Markdown, LaTeX, CSV, SVG); atomic files and staged directories |
+//! | 5 output | [`report`], [`io`] | every rendering (text, JSON, Markdown, LaTeX, CSV, SVG); atomic files and directories written all or nothing |
 //!
 //! The command-line tool (`src/main.rs`, `src/commands/`, one file per subcommand) sits on top
 //! and only parses flags, calls one library function and prints what [`report`] renders.

@@ -41,6 +41,23 @@ pub enum Agreement {
     Ulps(u64, FloatFormat),
 }
 
+/// `r` exactly, as briefly as possible: the f64's own text where it is exactly `r` (`0.000001`),
+/// else [`compact`](crate::field::decimal::compact) (`1/3`, `1e-10000`) where that is exact, else
+/// the fraction in full (an input has at most 10,000 digits).
+fn exact_text(r: &Q) -> String {
+    let float = crate::field::Field::nearest_f64(r);
+    let text = float.to_string();
+    if float.is_finite() && crate::number::parse(&text).is_ok_and(|back| &back == r) {
+        return text;
+    }
+    let compact = crate::field::decimal::compact(r);
+    if compact.starts_with('≈') {
+        r.to_string()
+    } else {
+        compact
+    }
+}
+
 impl Agreement {
     /// `--rtol R`: an exact number from 0 to 1.
     ///
@@ -81,14 +98,16 @@ impl Agreement {
     /// use rodimpact::field::q;
     /// assert_eq!(Agreement::Ulps(16, FloatFormat::F32).describe(), "within 16 f32 ulps of the exact value");
     /// assert_eq!(Agreement::Relative(q(1, 1_000_000)).describe(), "within a relative 0.000001");
+    /// // Exact, beyond the range of f64 too (it used to underflow to 0).
+    /// let tiny = Agreement::parse_rtol("1e-10000").unwrap();
+    /// assert_eq!(tiny.describe(), "within a relative 1e-10000");
+    /// assert_eq!(Agreement::Relative(q(1, 3)).describe(), "within a relative 1/3");
     /// assert_eq!(Agreement::Exact.describe(), "exactly");
     /// ```
     pub fn describe(&self) -> String {
         match self {
             Agreement::Exact => "exactly".to_string(),
-            Agreement::Relative(r) => {
-                format!("within a relative {}", crate::field::Field::nearest_f64(r))
-            }
+            Agreement::Relative(r) => format!("within a relative {}", exact_text(r)),
             Agreement::Ulps(n, format) => {
                 format!("within {n} {} ulps of the exact value", format.name())
             }

@@ -44,7 +44,9 @@ impl Batch {
     /// through unchanged (see [`Batch::passed_through`]).
     ///
     /// # Errors
-    /// `header: ...` for a repeated scene or claim column, or when m or M is missing.
+    /// `header: ...` for a repeated column, a passed-through column named like a column
+    /// rodimpact writes (`v_ok`, `laws_held`, ...: no output header holds a name twice), or
+    /// when m or M is missing.
     ///
     /// # Examples
     /// ```
@@ -55,6 +57,9 @@ impl Batch {
     /// assert_eq!(tagged.passed_through(), ["id", "dt"]);
     /// assert_eq!(Batch::new("m,M,m", Arithmetic::Exact).unwrap_err().to_string(),
     ///            "header: column 'm' given twice");
+    /// // An engine log may not forge rodimpact's own verdict columns.
+    /// let forged = Batch::new("m,M,v,v_ok", Arithmetic::Exact).unwrap_err().to_string();
+    /// assert!(forged.starts_with("header: column 'v_ok' is a name rodimpact writes"), "{forged}");
     /// ```
     pub fn new(header: &str, arithmetic: Arithmetic) -> Result<Batch, Error> {
         let header = header.trim_start_matches('\u{feff}').trim_end();
@@ -109,7 +114,7 @@ impl Batch {
             }
         }
         let word_plan = word_plan(&columns);
-        Ok(Batch {
+        let batch = Batch {
             arithmetic,
             agreement: Agreement::Exact,
             columns,
@@ -117,7 +122,38 @@ impl Batch {
             id_column,
             word_plan,
             header: header.to_string(),
-        })
+        };
+        batch.names_each_column_once()?;
+        Ok(batch)
+    }
+
+    /// Refuses a header whose output would hold a name twice: a passed-through column named
+    /// like a column rodimpact writes (`v_ok`, `laws_held`, `v_exact`, `diagnosis`, ...), or a
+    /// passed-through name given twice. Refused rather than renamed: an engine log that names
+    /// its own `v_ok` would otherwise shadow rodimpact's audit for any reader that takes the
+    /// first column of a name (and a renamed copy can still be mistaken for it), so the forger
+    /// and the honest author alike are told, and no output ever needs a second look.
+    fn names_each_column_once(&self) -> Result<(), Error> {
+        let output = self.output_header();
+        let names: Vec<&str> = output.trim_end().split(',').map(str::trim).collect();
+        let inputs = self.columns.len();
+        for (i, name) in names.iter().enumerate() {
+            let Some(j) = names[..i].iter().position(|n| n == name) else {
+                continue;
+            };
+            let why = if i < inputs {
+                format!("column '{}' given twice", crate::echo::echo(name))
+            } else {
+                debug_assert!(j < inputs, "rodimpact's own columns are distinct");
+                format!(
+                    "column '{}' is a name rodimpact writes in this output, so it would appear \
+                     twice (a passed-through '{0}' would shadow the computed one): rename it",
+                    crate::echo::echo(name)
+                )
+            };
+            return Err(Error::new("header", ErrorKind::Invalid(why)));
+        }
+        Ok(())
     }
 
     /// Sets when a claim agrees (`--rtol`, `--ulps`); the default is exact equality (within
@@ -125,7 +161,8 @@ impl Batch {
     ///
     /// # Errors
     /// `ulps: ...` with the f64 arithmetic: the ulp distance is measured to the correctly
-    /// rounded exact value, which f64 does not compute.
+    /// rounded exact value, which f64 does not compute; `header: ...` when a passed-through
+    /// column is named like an `<claim>_ulps` column the agreement adds.
     ///
     /// # Examples
     /// ```
@@ -148,6 +185,8 @@ impl Batch {
             ));
         }
         self.agreement = agreement;
+        // `--ulps` adds `<claim>_ulps` columns, which an input column may already hold.
+        self.names_each_column_once()?;
         Ok(self)
     }
 

@@ -17,8 +17,8 @@ pub(crate) struct ProveArgs {
     #[arg(value_name = "ID", help = ids_help())]
     pub(crate) ids: Vec<String>,
     /// Write one Markdown certificate per claim into DIR (and the index README.md when all
-    /// claims are decided). All or nothing: the files are written beside DIR, then moved in;
-    /// DIR's other files are kept.
+    /// claims are decided). All or nothing: every file is staged in DIR, then all are renamed
+    /// in; DIR's other files, mode and owner are kept.
     #[arg(long, value_name = "DIR")]
     pub(crate) write: Option<PathBuf>,
     /// Also export the claims for independent checkers into DIR: FORMAT `smt2` (one SMT-LIB 2
@@ -76,8 +76,8 @@ fn out_help() -> String {
         "With --format text, also write into DIR: README.md (what each file holds), report.md \
          (the report with the tables and figures), one certificate per claim ({}.md ... {}.md, \
          {}.md ... {}.md), tables.md, tables.tex, T1.csv ... T5.csv, omega.svg, optimum.svg and \
-         figure1.svg. All or nothing: the files are written beside DIR, then moved in; DIR's \
-         other files are kept. With --format html, the page FILE.html, written whole or not at all",
+         figure1.svg. All or nothing: every file is staged in DIR, then all are renamed in; \
+         DIR's other files, mode and owner are kept. With --format html, the page FILE.html, written whole or not at all",
         paper.first, paper.last, beyond.first, beyond.last
     )
 }

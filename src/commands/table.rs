@@ -121,9 +121,69 @@ fn parse_format(text: &str) -> Result<Format, Error> {
     })
 }
 
+/// Which tables each table-specific flag changes (the `--help` of each flag says the same).
+const USES: [(&str, &[&str]); 9] = [
+    ("ratios", &["T1", "T5"]),
+    ("ratio", &["T2", "T3", "T6"]),
+    ("rod", &["T1", "T2", "T3", "T5", "T6"]),
+    ("e", &["T1", "T2", "T5", "T6"]),
+    ("pivot", &["T1"]),
+    ("v0t", &["T6"]),
+    ("a", &["T6"]),
+    ("radius", &["T6"]),
+    ("spin", &["T6"]),
+];
+
+/// Refuses, by name, a flag that changes none of the tables asked for (`--only T6 --pivot 0`
+/// printed T6 unchanged, as `plot` refuses flags that change nothing in its figure). Ids that
+/// are not tables are left to `report::tables`, which names them.
+fn refuse_unused(args: &TableArgs) -> Result<(), Error> {
+    let given = [
+        args.ratios.is_some(),
+        args.ratio.is_some(),
+        args.rod.is_some(),
+        args.e.is_some(),
+        args.pivot.is_some(),
+        args.v0t.is_some(),
+        args.a.is_some(),
+        args.radius.is_some(),
+        args.spin.is_some(),
+    ];
+    let wanted: Vec<String> = match &args.only {
+        Some(only) => only
+            .split(',')
+            .map(|t| t.trim().to_ascii_uppercase())
+            .collect(),
+        None => report::TABLE_IDS.iter().map(|t| t.to_string()).collect(),
+    };
+    if wanted
+        .iter()
+        .any(|w| !report::ALL_TABLE_IDS.contains(&w.as_str()))
+    {
+        return Ok(());
+    }
+    for ((flag, uses), given) in USES.iter().zip(given) {
+        if given && !uses.iter().any(|t| wanted.iter().any(|w| w == t)) {
+            let asked = match &args.only {
+                Some(only) => format!("--only {}", rodimpact::echo::echo(only)),
+                None => "the default T1-T5".to_string(),
+            };
+            return Err(Error::new(
+                *flag,
+                ErrorKind::Conflict(format!(
+                    "changes only {}, which {asked} leaves out; leave --{flag} out",
+                    uses.join(", ")
+                )),
+            ));
+        }
+    }
+    Ok(())
+}
+
 pub(crate) fn run_table(args: &TableArgs) -> Result<(), Failure> {
     let format = parse_format(&args.format)?;
     let opts = table_options(args)?;
+    refuse_unused(args)?;
     let tables = match &args.only {
         Some(only) => report::tables(&only.split(',').collect::<Vec<_>>(), &opts)?,
         None => report::all_tables(&opts)?,

@@ -5,7 +5,8 @@
 //! and renamed over it when complete. The temporary file is created exclusively (`O_EXCL`,
 //! never through an existing name or link) under an unpredictable name, `.<name>.<random>.tmp`
 //! with at most 32 bytes of the target's name, so a legal 255-byte name still fits. A final
-//! symbolic link is resolved first and its target replaced, so the link stays a link. The
+//! symbolic link is resolved first and its target replaced, so the link stays a link, unless it
+//! was planted in a shared sticky directory by another user ([`may_follow_link`]). The
 //! replaced file keeps its permission bits (and, where the system allows, its owner and group).
 //!
 //! A target that is not a regular file (a character device such as `/dev/null`, a FIFO, a
@@ -230,6 +231,7 @@ fn resolve(path: &Path) -> io::Result<Target> {
             if is_descriptor_link(&current) {
                 return Ok(Target::InPlace(fs::metadata(path)?));
             }
+            refuse_planted_link(path, &current, &meta)?;
             let link = fs::read_link(&current)?;
             current = directory_of(&current).join(link);
         } else if kind.is_dir() {
@@ -241,6 +243,79 @@ fn resolve(path: &Path) -> io::Result<Target> {
             });
         } else {
             return Ok(Target::InPlace(meta));
+        }
+    }
+    Err(io::Error::other(format!(
+        "more than {MAX_LINKS} symbolic links"
+    )))
+}
+
+/// Whether the kernel's `fs.protected_symlinks` rule lets `follower` follow a link owned by
+/// `link_owner` in a directory of mode `dir_mode` owned by `dir_owner`: a link in a sticky,
+/// world-writable directory (`/tmp`) is followed only by its owner or when the directory's owner
+/// owns it too. Anyone else following it is the classic planted-link attack: the link makes the
+/// victim's write land on a file of the attacker's choosing.
+///
+/// rodimpact follows an output path's final links itself (to replace the target and keep the
+/// link), which the kernel's own check never sees, so it applies the same rule whatever the
+/// sysctl says.
+///
+/// # Examples
+/// ```
+/// use rodimpact::io::may_follow_link;
+/// let tmp = 0o41777; // a sticky, world-writable directory (as /tmp), owned by root (0)
+/// assert!(may_follow_link(tmp, 0, 1000, 1000)); // my own link
+/// assert!(may_follow_link(tmp, 0, 0, 1000)); // the directory owner's link
+/// assert!(!may_follow_link(tmp, 0, 65534, 1000)); // planted by another user
+/// assert!(!may_follow_link(tmp, 0, 65534, 0)); // not even for root
+/// assert!(may_follow_link(0o40777, 0, 65534, 1000)); // world-writable, not sticky
+/// assert!(may_follow_link(0o41775, 0, 65534, 1000)); // sticky, not world-writable
+/// ```
+pub fn may_follow_link(dir_mode: u32, dir_owner: u32, link_owner: u32, follower: u32) -> bool {
+    let shared = dir_mode & 0o1002 == 0o1002;
+    !shared || link_owner == follower || link_owner == dir_owner
+}
+
+/// Refuses to follow the link at `link` (met while resolving the output path `path`) when
+/// [`may_follow_link`] forbids it.
+#[cfg(unix)]
+fn refuse_planted_link(path: &Path, link: &Path, meta: &fs::Metadata) -> io::Result<()> {
+    use std::os::unix::fs::MetadataExt;
+    let dir = fs::metadata(directory_of(link))?;
+    let me = rustix::process::geteuid().as_raw();
+    if may_follow_link(dir.mode(), dir.uid(), meta.uid(), me) {
+        return Ok(());
+    }
+    let which = if link == path {
+        String::from("it is a symbolic link")
+    } else {
+        format!("{} is a symbolic link", echo_path(link))
+    };
+    Err(io::Error::other(format!(
+        "{which} in a sticky world-writable directory, owned by uid {}, neither yours nor the \
+         directory's owner's: not followed (the rule of the kernel's fs.protected_symlinks)",
+        meta.uid()
+    )))
+}
+
+#[cfg(not(unix))]
+fn refuse_planted_link(_: &Path, _: &Path, _: &fs::Metadata) -> io::Result<()> {
+    Ok(())
+}
+
+/// Follows `path`'s final symbolic links (as [`resolve`] does, at most [`MAX_LINKS`]) only to
+/// refuse a planted one; the caller then lets the kernel follow them. Used for the directory of
+/// `paper --out DIR`.
+pub(super) fn check_links(path: &Path) -> io::Result<()> {
+    let mut current = path.to_path_buf();
+    for _ in 0..MAX_LINKS {
+        match fs::symlink_metadata(&current) {
+            Ok(meta) if meta.file_type().is_symlink() => {
+                refuse_planted_link(path, &current, &meta)?;
+                let link = fs::read_link(&current)?;
+                current = directory_of(&current).join(link);
+            }
+            _ => return Ok(()),
         }
     }
     Err(io::Error::other(format!(
@@ -306,6 +381,12 @@ fn persist(
     let mut live = temporaries();
     live.retain(|p| *p != path);
     let file = writer.into_inner().map_err(|e| e.into_error())?;
+    finish(&file, previous)?;
+    file.persist(target).map(drop).map_err(|e| e.error)
+}
+
+/// Gives the complete temporary file the previous target's owner and mode, and syncs it.
+fn finish(file: &tempfile::NamedTempFile, previous: Option<&fs::Metadata>) -> io::Result<()> {
     #[cfg(unix)]
     if let Some(previous) = previous {
         use std::os::unix::fs::{MetadataExt, PermissionsExt};
@@ -319,8 +400,183 @@ fn persist(
     }
     #[cfg(not(unix))]
     let _ = previous;
-    file.as_file().sync_all()?;
-    file.persist(target).map(drop).map_err(|e| e.error)
+    file.as_file().sync_all()
+}
+
+/// One file of a set (`paper --out DIR`), complete and synced in its registered temporary beside
+/// its target, not yet in place: [`install`] renames the whole set in. Dropped uninstalled, the
+/// temporary file is removed.
+pub(super) struct Staged {
+    target: PathBuf,
+    /// `None` once installed (or given back by a failed install, which removes it).
+    temporary: Option<tempfile::TempPath>,
+}
+
+impl Staged {
+    /// Writes `contents` into a new temporary beside `target` (exclusively created, registered
+    /// for removal on a signal), with the mode and, where allowed, the owner of `previous` (the
+    /// regular file it will replace), and syncs it.
+    pub(super) fn write(
+        target: &Path,
+        previous: Option<&fs::Metadata>,
+        contents: &[u8],
+    ) -> io::Result<Staged> {
+        let mut file = create_temporary(target, previous)?;
+        let written = file
+            .write_all(contents)
+            .and_then(|()| finish(&file, previous));
+        if let Err(why) = written {
+            let path = file.path().to_path_buf();
+            let mut live = temporaries();
+            drop(file);
+            live.retain(|p| *p != path);
+            return Err(why);
+        }
+        Ok(Staged {
+            target: target.to_path_buf(),
+            temporary: Some(file.into_temp_path()),
+        })
+    }
+}
+
+impl Drop for Staged {
+    fn drop(&mut self) {
+        if let Some(temporary) = self.temporary.take() {
+            let path = temporary.to_path_buf();
+            let mut live = temporaries();
+            drop(temporary);
+            live.retain(|p| *p != path);
+        }
+    }
+}
+
+/// How one staged file was put in place, so that a later failure can undo it.
+enum Placed {
+    /// The target did not exist: renamed in; undone by removing it.
+    New,
+    /// The previous entry was exchanged with the new file and now sits at the temporary name;
+    /// undone by exchanging back.
+    Exchanged,
+    /// The previous file was replaced by a plain rename (a system without an atomic exchange):
+    /// cannot be undone.
+    Replaced,
+}
+
+/// Puts every staged file in place, all or nothing as far as the system allows: a previous
+/// target is atomically exchanged with its new file (Linux `renameat2(RENAME_EXCHANGE)`), so
+/// that if a later file fails, every earlier one is exchanged back and the directory is as it
+/// was. The old contents are removed only once all are in. Where the exchange is not supported,
+/// a plain rename replaces the target, and that file cannot be undone.
+///
+/// The registry of temporaries is held throughout: a signal waits until the set is in place (or
+/// undone), then removes what is left, so it never leaves half a set.
+///
+/// # Errors
+/// The target that failed, and why.
+pub(super) fn install(staged: &mut [Staged]) -> Result<(), (PathBuf, io::Error)> {
+    let mut live = temporaries();
+    let mut placed: Vec<(usize, Placed)> = Vec::new();
+    let mut failure = None;
+    for (i, file) in staged.iter().enumerate() {
+        let temporary = file.temporary.as_deref().expect("staged until installed");
+        match place(temporary, &file.target) {
+            Ok(how) => placed.push((i, how)),
+            Err(why) => {
+                failure = Some((file.target.clone(), why));
+                break;
+            }
+        }
+    }
+    if failure.is_some() {
+        for (i, how) in placed.iter().rev() {
+            let file = &staged[*i];
+            let temporary = file.temporary.as_deref().expect("staged until installed");
+            let _ = match how {
+                Placed::New => fs::remove_file(&file.target),
+                Placed::Exchanged => exchange(temporary, &file.target),
+                Placed::Replaced => Ok(()),
+            };
+        }
+    }
+    for (i, file) in staged.iter_mut().enumerate() {
+        let temporary = file.temporary.take().expect("staged until installed");
+        let path = temporary.to_path_buf();
+        // Renamed into place: its temporary name no longer exists.
+        let kept = failure.is_none() && !matches!(placed[i].1, Placed::Exchanged);
+        if kept {
+            let _ = temporary.keep();
+        } else {
+            // The old contents after an exchange, or a file never placed (or undone).
+            drop(temporary);
+        }
+        live.retain(|p| *p != path);
+    }
+    match failure {
+        Some(failure) => Err(failure),
+        None => Ok(()),
+    }
+}
+
+/// Puts the complete `temporary` at `target`.
+fn place(temporary: &Path, target: &Path) -> io::Result<Placed> {
+    let Ok(before) = fs::symlink_metadata(target) else {
+        fs::rename(temporary, target)?;
+        return Ok(Placed::New);
+    };
+    if before.is_dir() {
+        return Err(io::Error::from(io::ErrorKind::IsADirectory));
+    }
+    match exchange(temporary, target) {
+        Ok(()) => {
+            // A directory that appeared at the name since the check goes back where it was.
+            if fs::symlink_metadata(temporary).is_ok_and(|m| m.is_dir()) {
+                exchange(temporary, target)?;
+                return Err(io::Error::from(io::ErrorKind::IsADirectory));
+            }
+            Ok(Placed::Exchanged)
+        }
+        Err(why) if why.kind() == io::ErrorKind::Unsupported => {
+            fs::rename(temporary, target)?;
+            Ok(Placed::Replaced)
+        }
+        Err(why) => Err(why),
+    }
+}
+
+/// Atomically exchanges the entries at `a` and `b` (both must exist); `Unsupported` where the
+/// system or file system cannot.
+#[cfg(any(target_os = "linux", target_os = "android"))]
+fn exchange(a: &Path, b: &Path) -> io::Result<()> {
+    use rustix::fs::{CWD, RenameFlags, renameat_with};
+    match renameat_with(CWD, a, CWD, b, RenameFlags::EXCHANGE) {
+        Ok(()) => Ok(()),
+        Err(rustix::io::Errno::NOSYS | rustix::io::Errno::INVAL | rustix::io::Errno::OPNOTSUPP) => {
+            Err(io::Error::from(io::ErrorKind::Unsupported))
+        }
+        Err(why) => Err(why.into()),
+    }
+}
+
+#[cfg(not(any(target_os = "linux", target_os = "android")))]
+fn exchange(_: &Path, _: &Path) -> io::Result<()> {
+    Err(io::Error::from(io::ErrorKind::Unsupported))
+}
+
+/// Registers `path`, a directory this run created for its outputs, for removal on a signal
+/// (only while it is empty: the handler never removes what it holds).
+pub(super) fn register_directory(path: &Path) {
+    temporaries().insert(0, path.to_path_buf());
+}
+
+/// Whether `path` is registered for removal on a signal (for tests).
+#[cfg(test)]
+pub(super) fn is_registered(path: &Path) -> bool {
+    temporaries().iter().any(|p| p == path)
+}
+
+/// Forgets a path registered with [`register_directory`].
+pub(super) fn forget_directory(path: &Path) {
+    temporaries().retain(|p| p != path);
 }
 
 /// The temporary files that exist now.
@@ -366,8 +622,10 @@ pub fn remove_temporaries_on_signals() -> Result<(), Error> {
                     if let Some(signal) = signals.forever().next() {
                         // Held until the end: no temporary file appears after the clean-up.
                         let live = temporaries();
-                        for path in live.iter() {
-                            let _ = fs::remove_file(path);
+                        // Newest first: temporary files, then a directory the run created
+                        // for them, removed only if empty (never anything else in it).
+                        for path in live.iter().rev() {
+                            let _ = fs::remove_file(path).or_else(|_| fs::remove_dir(path));
                         }
                         let _ = signal_hook::low_level::emulate_default_handler(signal);
                         std::process::exit(128 + signal);

@@ -1,52 +1,56 @@
-//! Writing a directory of outputs all-or-nothing (`paper --out DIR`, `prove --write DIR`).
+//! Writing a set of files into a directory all-or-nothing (`paper --out DIR`, `prove --write
+//! DIR`, `prove --export FORMAT DIR`).
 //!
-//! Every file is first written into a fresh, exclusively created staging directory beside
-//! `DIR` (hidden: `.DIR.tmp-XXXXXX`). Only when all of them are complete is the staging
-//! directory renamed into place:
+//! `DIR` itself is never replaced, moved or re-created: it keeps its inode, mode, owner and
+//! group, and every entry this run does not write stays exactly where it is (a user's notes,
+//! the certificates of other claims, files another process writes into `DIR` meanwhile). A
+//! missing `DIR` is created.
 //!
-//! - `DIR` does not exist: one rename, atomic.
-//! - `DIR` exists: the entries of `DIR` that this run does not write (a user's notes, the
-//!   certificates of other claims) are moved into the staging directory, `DIR` is renamed aside
-//!   (`.DIR.old-XXXXXX`), the staging directory takes its name, and the old one is removed.
-//!   Every step that fails is undone, so a failing run leaves `DIR` as it was.
+//! 1. **Check.** A target name that exists in `DIR` as a directory (or another non-file) is
+//!    refused before anything is written, since replacing it would delete what it holds. A
+//!    final symbolic link of `DIR` planted in a shared sticky directory is refused
+//!    (`may_follow_link`).
+//! 2. **Stage.** Every file is written into its own temporary beside its target, in `DIR`
+//!    (`.NAME.RANDOM.tmp`, created exclusively, registered for removal on SIGINT, SIGTERM and
+//!    SIGHUP), with the mode and (where allowed) owner of the file it will replace, and synced.
+//!    An error here removes the temporaries: `DIR` is as it was.
+//! 3. **Lock.** An exclusive advisory lock (`flock`) on `DIR` itself: a second rodimpact run
+//!    writing into the same `DIR` waits until the first is done, so the two sets never
+//!    interleave (the last run's set wins, whole). Other programs are not stopped by it. On a
+//!    file system without `flock` on directories the run goes on unlocked.
+//! 4. **Install.** Each temporary is renamed over its target (a previous target is exchanged
+//!    atomically with it, so a failure part-way exchanges the earlier ones back), and only then
+//!    are the previous contents removed. A catchable signal waits for this step to end.
 //!
-//! Before anything is written, a target name that exists in `DIR` as a directory (or another
-//! non-file) is refused, since replacing it would delete what it holds, and so is a `DIR` that
-//! holds the current directory (`--out .`). A run killed between
-//! the two renames leaves `DIR` missing and both hidden directories beside it; nothing is lost.
+//! A target that is a symbolic link is replaced by the file (the link is not followed, unlike a
+//! single `--out FILE`). SIGKILL during step 2 or 4 can leave hidden `.NAME.RANDOM.tmp` files
+//! in `DIR`; it never leaves a half-written visible file.
 
+use super::atomic::{self, Staged};
+use crate::echo::echo_path;
 use crate::error::{Error, ErrorKind};
 use std::fs;
-use std::io::Write as _;
-use std::path::{Path, PathBuf};
-
-/// `why` without the staging path that `tempfile` appends to its errors (the user named `DIR`).
-fn plain(why: std::io::Error) -> std::io::Error {
-    match why.raw_os_error() {
-        Some(code) => std::io::Error::from_raw_os_error(code),
-        None => why,
-    }
-}
+use std::path::Path;
 
 fn io_error(field: &str, path: &Path, why: std::io::Error) -> Error {
-    Error::io(field, format!("cannot write {}", path.display()), why)
+    Error::io(field, format!("cannot write {}", echo_path(path)), why)
 }
 
 /// A directory this module will not write, and why (not an operating-system error).
 fn refused(field: &str, path: &Path, why: &str) -> Error {
     Error::new(
         field,
-        ErrorKind::Invalid(format!("cannot write {}: {why}", path.display())),
+        ErrorKind::Invalid(format!("cannot write {}: {why}", echo_path(path))),
     )
 }
 
 /// Writes `files` (name, contents) into `dir` all-or-nothing: either every file is in place, or
-/// `dir` is left exactly as it was (see the module documentation). Other entries of `dir` are
-/// kept.
+/// `dir` is left as it was. `dir` itself and every entry of it that `files` does not name are
+/// never touched; see the module documentation for the steps, the lock and signals.
 ///
 /// # Errors
 /// `field: cannot write <path>: <reason>`: `dir` is not a directory, a target name is a
-/// directory in it, or a file or directory cannot be written.
+/// directory in it, `dir` is a planted link, or a file cannot be written.
 ///
 /// # Examples
 /// ```
@@ -55,8 +59,9 @@ fn refused(field: &str, path: &Path, why: &str) -> Error {
 /// rodimpact::io::write_directory("out", &dir, &files).unwrap();
 /// std::fs::write(dir.join("notes.txt"), "mine").unwrap();
 /// std::fs::create_dir(dir.join("b.md")).unwrap(); // in the way of the next run
-/// let more = [files[0].clone(), ("b.md".to_string(), "b\n".to_string())];
+/// let more = [("a.md".to_string(), "newer\n".to_string()), ("b.md".to_string(), "b\n".to_string())];
 /// assert!(rodimpact::io::write_directory("out", &dir, &more).is_err());
+/// assert_eq!(std::fs::read_to_string(dir.join("a.md")).unwrap(), "new\n"); // untouched
 /// std::fs::remove_dir(dir.join("b.md")).unwrap();
 /// rodimpact::io::write_directory("out", &dir, &more).unwrap();
 /// assert_eq!(std::fs::read_to_string(dir.join("b.md")).unwrap(), "b\n");
@@ -65,126 +70,198 @@ fn refused(field: &str, path: &Path, why: &str) -> Error {
 /// ```
 pub fn write_directory(field: &str, dir: &Path, files: &[(String, String)]) -> Result<(), Error> {
     let fail = |path: &Path, why: std::io::Error| io_error(field, path, why);
-    let exists = dir.exists();
-    // Resolve `.`, `..` and a symlink to the directory itself, whose name the swap needs.
-    let dir = if exists {
-        fs::canonicalize(dir).map_err(|why| fail(dir, why))?
-    } else {
-        dir.to_path_buf()
+    atomic::check_links(dir).map_err(|why| fail(dir, why))?;
+    let created = match fs::metadata(dir) {
+        Ok(meta) if meta.is_dir() => false,
+        Ok(_) => return Err(refused(field, dir, "not a directory")),
+        Err(why) if why.kind() == std::io::ErrorKind::NotFound => {
+            fs::create_dir_all(dir).map_err(|why| fail(dir, why))?;
+            atomic::register_directory(dir);
+            true
+        }
+        Err(why) => return Err(fail(dir, why)),
     };
-    if exists && !dir.is_dir() {
-        return Err(refused(field, &dir, "not a directory"));
+    let written = write_into(field, dir, files);
+    if created {
+        atomic::forget_directory(dir);
+        if written.is_err() {
+            // Only if still empty: another process may have written into it meanwhile.
+            let _ = fs::remove_dir(dir);
+        }
     }
-    // The directory is replaced as a whole: a shell inside it would be left in a removed one.
-    let cwd = std::env::current_dir().and_then(fs::canonicalize);
-    if exists && cwd.is_ok_and(|cwd| cwd.starts_with(&dir)) {
-        return Err(refused(
-            field,
-            &dir,
-            "it holds the current directory, and is replaced as a whole: name a subdirectory",
-        ));
-    }
-    let name = dir
-        .file_name()
-        .ok_or_else(|| refused(field, &dir, "no directory name"))?
-        .to_string_lossy()
-        .into_owned();
-    let parent = match dir.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    if exists {
-        for (file, _) in files {
-            let target = dir.join(file);
-            if let Ok(meta) = fs::symlink_metadata(&target) {
-                let kind = meta.file_type();
-                if !kind.is_file() && !kind.is_symlink() {
-                    return Err(refused(
-                        field,
-                        &target,
-                        "it exists and is not a regular file (left untouched)",
-                    ));
-                }
+    written
+}
+
+/// Steps 1-4 of the module documentation, into the existing directory `dir`.
+fn write_into(field: &str, dir: &Path, files: &[(String, String)]) -> Result<(), Error> {
+    check_targets(field, dir, files)?;
+    let mut staged = stage(field, dir, files)?;
+    let _lock = lock(dir).map_err(|why| io_error(field, dir, why))?;
+    check_targets(field, dir, files)?;
+    atomic::install(&mut staged).map_err(|(target, why)| io_error(field, &target, why))
+}
+
+/// Refuses a target name that exists in `dir` as anything but a regular file or a link.
+fn check_targets(field: &str, dir: &Path, files: &[(String, String)]) -> Result<(), Error> {
+    for (file, _) in files {
+        let target = dir.join(file);
+        if let Ok(meta) = fs::symlink_metadata(&target) {
+            let kind = meta.file_type();
+            if !kind.is_file() && !kind.is_symlink() {
+                return Err(refused(
+                    field,
+                    &target,
+                    "it exists and is not a regular file (left untouched)",
+                ));
             }
         }
     }
-    fs::create_dir_all(&parent).map_err(|why| fail(&parent, why))?;
-    let staging = tempfile::Builder::new()
-        .prefix(&format!(".{name}.tmp-"))
-        .tempdir_in(&parent)
-        .map_err(|why| fail(&dir, plain(why)))?;
-    for (file, contents) in files {
-        let path = staging.path().join(file);
-        let written = fs::File::create_new(&path).and_then(|mut f| {
-            f.write_all(contents.as_bytes())?;
-            f.sync_all()
-        });
-        written.map_err(|why| fail(&dir.join(file), why))?;
-    }
-    if !exists {
-        fs::rename(staging.path(), &dir).map_err(|why| fail(&dir, why))?;
-        let _ = staging.keep();
-        return Ok(());
-    }
-    swap_in(field, &dir, &name, &parent, staging, files)
+    Ok(())
 }
 
-/// Replaces the existing `dir` by the complete `staging` directory, carrying over the entries
-/// of `dir` that `files` does not name; undoes every step on failure.
-fn swap_in(
-    field: &str,
-    dir: &Path,
-    name: &str,
-    parent: &Path,
-    staging: tempfile::TempDir,
-    files: &[(String, String)],
-) -> Result<(), Error> {
-    let fail = |path: &Path, why: std::io::Error| io_error(field, path, why);
-    let ours = |entry: &str| files.iter().any(|(f, _)| f == entry);
-    let mut carried: Vec<std::ffi::OsString> = Vec::new();
-    let carry_back = |carried: &[std::ffi::OsString]| {
-        for entry in carried {
-            let _ = fs::rename(staging.path().join(entry), dir.join(entry));
-        }
-    };
-    let entries = fs::read_dir(dir).map_err(|why| fail(dir, why))?;
-    for entry in entries {
-        let entry = entry.map_err(|why| fail(dir, why))?;
-        let entry_name = entry.file_name();
-        if ours(&entry_name.to_string_lossy()) {
-            continue;
-        }
-        if let Err(why) = fs::rename(entry.path(), staging.path().join(&entry_name)) {
-            carry_back(&carried);
-            return Err(fail(&entry.path(), why));
-        }
-        carried.push(entry_name);
+/// Writes every file into its temporary beside its target (step 2); on an error the ones
+/// already written are removed as `staged` drops.
+fn stage(field: &str, dir: &Path, files: &[(String, String)]) -> Result<Vec<Staged>, Error> {
+    let mut staged = Vec::with_capacity(files.len());
+    for (file, contents) in files {
+        let target = dir.join(file);
+        let previous = fs::symlink_metadata(&target)
+            .ok()
+            .filter(fs::Metadata::is_file);
+        let one = Staged::write(&target, previous.as_ref(), contents.as_bytes())
+            .map_err(|why| io_error(field, &target, plain(why)))?;
+        staged.push(one);
     }
-    let backup = match tempfile::Builder::new()
-        .prefix(&format!(".{name}.old-"))
-        .tempdir_in(parent)
-    {
-        Ok(b) => b,
-        Err(why) => {
-            carry_back(&carried);
-            return Err(fail(dir, plain(why)));
-        }
-    };
-    // Renaming a directory onto an empty one replaces it (POSIX).
-    if let Err(why) = fs::rename(dir, backup.path()) {
-        carry_back(&carried);
-        return Err(fail(dir, why));
+    Ok(staged)
+}
+
+/// `why` without the temporary path that `tempfile` appends to its errors (the user named the
+/// target, not an internal hidden name).
+fn plain(why: std::io::Error) -> std::io::Error {
+    match why.raw_os_error() {
+        Some(code) => std::io::Error::from_raw_os_error(code),
+        None => why,
     }
-    if let Err(why) = fs::rename(staging.path(), dir) {
-        if fs::rename(backup.path(), dir).is_ok() {
-            carry_back(&carried);
-        } else {
-            let _ = backup.keep(); // the previous directory stays, hidden, rather than being removed
+}
+
+/// Takes the exclusive advisory lock on `dir` (step 3), waiting for another holder; released
+/// when the returned handle drops. `None` where the file system has no `flock` on directories.
+#[cfg(unix)]
+fn lock(dir: &Path) -> std::io::Result<Option<fs::File>> {
+    use rustix::fs::{FlockOperation, flock};
+    use rustix::io::Errno;
+    let handle = fs::File::open(dir)?;
+    loop {
+        match flock(&handle, FlockOperation::LockExclusive) {
+            Ok(()) => return Ok(Some(handle)),
+            Err(Errno::INTR) => continue,
+            Err(Errno::NOLCK | Errno::OPNOTSUPP | Errno::BADF | Errno::INVAL) => return Ok(None),
+            Err(why) => return Err(why.into()),
         }
-        return Err(fail(dir, why));
     }
-    let _ = staging.keep();
-    // `backup` now holds only the previous run's own files; dropping it removes them.
-    drop(backup);
-    Ok(())
+}
+
+#[cfg(not(unix))]
+fn lock(_: &Path) -> std::io::Result<Option<fs::File>> {
+    Ok(None)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::PathBuf;
+
+    fn scratch(tag: &str) -> PathBuf {
+        tempfile::Builder::new()
+            .prefix(&format!("rodimpact-outdir-{tag}-"))
+            .tempdir()
+            .unwrap()
+            .keep()
+    }
+
+    /// Every entry of `dir` with its contents (a directory as `name/`), sorted.
+    fn listing(dir: &Path) -> Vec<(String, String)> {
+        let mut all: Vec<(String, String)> = fs::read_dir(dir)
+            .unwrap()
+            .map(|e| {
+                let path = e.unwrap().path();
+                let name = path.file_name().unwrap().to_string_lossy().into_owned();
+                if path.is_dir() {
+                    (format!("{name}/"), String::new())
+                } else {
+                    (name, fs::read_to_string(&path).unwrap())
+                }
+            })
+            .collect();
+        all.sort();
+        all
+    }
+
+    fn set(pairs: &[(&str, &str)]) -> Vec<(String, String)> {
+        pairs
+            .iter()
+            .map(|(n, c)| (n.to_string(), c.to_string()))
+            .collect()
+    }
+
+    /// The temporaries of a staged set are in the registry the signal handler empties, and only
+    /// while they exist.
+    #[test]
+    fn staged_temporaries_are_registered_for_the_signal_handler() {
+        let dir = scratch("registered");
+        let files = set(&[("a.md", "a"), ("b.md", "b")]);
+        let mut staged = stage("out", &dir, &files).unwrap();
+        let hidden: Vec<PathBuf> = fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .collect();
+        assert_eq!(hidden.len(), 2);
+        for path in &hidden {
+            assert!(atomic::is_registered(path), "{}", path.display());
+        }
+        atomic::install(&mut staged).unwrap();
+        for path in &hidden {
+            assert!(!atomic::is_registered(path), "{}", path.display());
+        }
+        assert_eq!(listing(&dir), set(&[("a.md", "a"), ("b.md", "b")]));
+        fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// A failure part-way through the renames (a directory appeared at the second name after
+    /// the files were staged) puts the first file's previous contents back: the directory is as
+    /// it was, with no temporary left.
+    #[test]
+    fn a_failure_while_installing_undoes_the_files_already_in_place() {
+        let dir = scratch("undo");
+        fs::write(dir.join("a.md"), "old a").unwrap();
+        fs::write(dir.join("notes.txt"), "mine").unwrap();
+        let files = set(&[("a.md", "new a"), ("n.md", "new n"), ("b.md", "new b")]);
+        let mut staged = stage("out", &dir, &files).unwrap();
+        fs::create_dir(dir.join("b.md")).unwrap();
+        fs::write(dir.join("b.md/inside"), "kept").unwrap();
+        let (target, why) = atomic::install(&mut staged).unwrap_err();
+        assert_eq!(target, dir.join("b.md"));
+        assert_eq!(why.kind(), std::io::ErrorKind::IsADirectory);
+        drop(staged);
+        let expected = set(&[("a.md", "old a"), ("b.md/", ""), ("notes.txt", "mine")]);
+        assert_eq!(listing(&dir), expected);
+        assert_eq!(fs::read_to_string(dir.join("b.md/inside")).unwrap(), "kept");
+        fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// A missing directory is created; when the run fails it is removed again, as it was.
+    #[test]
+    fn a_directory_created_for_a_failing_run_is_removed() {
+        let root = scratch("created");
+        let dir = root.join("new");
+        let files = set(&[("a.md", "a"), ("b/c.md", "no such subdirectory")]);
+        let err = write_directory("out", &dir, &files)
+            .unwrap_err()
+            .to_string();
+        assert!(err.starts_with("out: cannot write "), "{err}");
+        assert!(err.contains("b/c.md"), "{err}");
+        assert!(!dir.exists());
+        assert!(!atomic::is_registered(&dir));
+        fs::remove_dir_all(&root).unwrap();
+    }
 }

@@ -190,3 +190,67 @@ fn mixed_scenes_and_the_f64_backend() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Regression (G6): an engine log with its own `v_exact`, `v_ok`, `laws_held` columns had them
+/// passed through beside rodimpact's, and the forged `v_ok = true` of a wrong row came first.
+/// Now the header is refused (exit 2, one line naming the column) and nothing is written, to
+/// standard output or to `--out`.
+#[test]
+fn a_log_that_names_rodimpacts_own_columns_is_refused() {
+    let dir = scratch("g6");
+    let file = dir.join("in.csv");
+    let out = dir.join("out.csv");
+    std::fs::write(
+        &file,
+        "m,M,v,v_exact,v_ok,laws_held\n1,1,3/5,3/5,true,true\n1,1,1/2,3/5,true,true\n",
+    )
+    .unwrap();
+    let path = file.to_str().unwrap();
+    for args in [
+        vec!["batch", path],
+        vec!["batch", path, "--out", out.to_str().unwrap()],
+    ] {
+        let (code, stdout, stderr) = rodimpact(&args);
+        assert_eq!((code, stdout.as_str()), (2, ""), "{stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert!(
+            stderr.starts_with("error: header: column 'v_exact' is a name rodimpact writes"),
+            "{stderr}"
+        );
+    }
+    assert_eq!(leftovers(&dir), ["in.csv"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Regression (G12): `--rtol 1e-10000` (or `1e-400`) was stated as "claims agree within a
+/// relative 0": the summary went through f64, which underflows. The check was always exact
+/// (a claim off by 1.7e-34 is wrong); now the statement is too.
+#[test]
+fn a_tiny_rtol_is_stated_exactly() {
+    let dir = scratch("g12");
+    let file = dir.join("in.csv");
+    std::fs::write(
+        &file,
+        "m,M,v\n1,1,3/5\n1,1,0.6000000000000000000000000000000001\n",
+    )
+    .unwrap();
+    for (rtol, stated) in [
+        ("1e-10000", "1e-10000"),
+        ("1e-400", "1e-400"),
+        ("1/3", "1/3"),
+        ("1e-6", "0.000001"),
+    ] {
+        let (code, _, stderr) = rodimpact(&["batch", file.to_str().unwrap(), "--rtol", rtol]);
+        assert!(
+            stderr.starts_with(&format!("claims agree within a relative {stated}\n")),
+            "{rtol}: {stderr}"
+        );
+        let wrong = code == 1;
+        assert_eq!(
+            wrong,
+            rtol.starts_with("1e-4") || rtol.starts_with("1e-1"),
+            "{rtol}: {stderr}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

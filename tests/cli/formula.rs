@@ -421,3 +421,61 @@ fn oblique_symbols_stay_in_their_flags() {
         "error: mu: friction coefficient must be >= 0, got -1/2\n"
     );
 }
+
+/// Regression (G11): `--mu -mu` and `--radius -rd` were accepted (slide formulas with a negative
+/// friction coefficient, a disc of negative radius), though they are negative in every sample
+/// scene, while `--M -m` and the numbers `--mu -1`, `--radius -1` were refused. Now a formula
+/// positive in no sample scene is refused, naming the flag; one positive somewhere is not.
+#[test]
+fn symbolic_negative_friction_and_radius_are_refused() {
+    for (args, want) in [
+        (
+            &["--v0t", "v0t", "--mu", "-mu"][..],
+            "error: mu: friction coefficient must be >= 0, but mu = -mu is <= 0 in every sample scene of the free symbols\n",
+        ),
+        (
+            &["--v0t", "v0t", "--mu", "-mu^2"][..],
+            "error: mu: friction coefficient must be >= 0, but mu = -mu^2 is <= 0 in every sample scene of the free symbols\n",
+        ),
+        (
+            &["--radius", "-rd", "--spin", "w", "--mu", "mu"][..],
+            "error: radius: must be > 0, but radius = -rd is <= 0 in every sample scene of the free symbols\n",
+        ),
+        (
+            &["--radius", "-l", "--spin", "w"][..],
+            "error: radius: must be > 0, but radius = -l is <= 0 in every sample scene of the free symbols\n",
+        ),
+    ] {
+        let out = run(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(String::from_utf8(out.stderr).unwrap(), want, "{args:?}");
+        assert!(out.stdout.is_empty());
+    }
+    for args in [
+        &["--v0t", "v0t", "--mu", "mu"][..],
+        &["--v0t", "v0t", "--mu", "mu-1/2"][..],
+        &["--v0t", "v0t", "--mu", "m-M"][..],
+        &["--radius", "rd", "--spin", "w"][..],
+        &["--radius", "l/2", "--spin", "w"][..],
+    ] {
+        let out = run(args);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+}
+
+/// Regression (G13): `formula --v0 -v0` said `error: e: circular definitions among e, v0`,
+/// naming the default e, which the user never gave.
+#[test]
+fn a_circular_flag_is_named_itself() {
+    let out = run(&["--v0", "-v0"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8(out.stderr).unwrap(),
+        "error: v0: circular definitions among v0\n"
+    );
+}

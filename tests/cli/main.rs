@@ -19,6 +19,7 @@ mod formula;
 mod impact;
 mod no_half_written;
 mod oblique;
+mod output_dir;
 mod paper_equations;
 mod paper_html;
 mod plot;

@@ -343,3 +343,93 @@ fn velocities_show_the_rest_point() {
     let (svg, _) = plot(&dir, "velocities", &["--pivot", "-1/2"], false);
     assert!(svg.contains("at rest: the pivot"));
 }
+
+/// Whether `svg` holds a number printed from a float that is not finite.
+fn holds_non_finite(svg: &str) -> bool {
+    ["inf", "NaN"].iter().any(|token| {
+        svg.match_indices(token).any(|(i, _)| {
+            let before = svg[..i].chars().next_back();
+            let after = svg[i + token.len()..].chars().next();
+            !before.is_some_and(char::is_alphanumeric) && !after.is_some_and(char::is_alphanumeric)
+        })
+    })
+}
+
+/// Regression (G5): beyond the f64 range `plot` wrote `inf`/`NaN` coordinates into the SVG and
+/// exited 0 (`plot optimum --M 1e400`: `<polygon points="inf,317.73 ...`; `plot velocities` on a
+/// rod of 1e-10000: 13 lines with NaN). Now such a scene is refused, exit 2 and one line, with
+/// nothing written (not the SVG, not the data); scenes that can be drawn are drawn finitely.
+#[test]
+fn no_figure_holds_inf_or_nan() {
+    let dir = common::scratch("g5");
+    let (svg, csv) = (dir.join("f.svg"), dir.join("f.csv"));
+    let beyond: [&[&str]; 8] = [
+        &["optimum", "--m", "1", "--M", "1e400"],
+        &["optimum", "--M", "1e10000"],
+        &["optimum", "--m", "1e-400", "--M", "1"],
+        &["optimum", "--rod", "I=1e-10000"],
+        &[
+            "velocities",
+            "--m",
+            "1",
+            "--M",
+            "1",
+            "--l",
+            "1e-10000",
+            "--a",
+            "1e-10000",
+        ],
+        &[
+            "figure1", "--m", "1", "--M", "1", "--l", "1e-10000", "--a", "1e-10000",
+        ],
+        &["omega", "--m", "1", "--M", "1", "--l", "1e-10000"],
+        &["energy", "--l", "1e-400"],
+    ];
+    for args in beyond {
+        let mut all = vec!["plot"];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--out", svg.to_str().unwrap()]);
+        if !["velocities", "figure1"].contains(&args[0]) {
+            all.extend_from_slice(&["--data", csv.to_str().unwrap()]);
+        }
+        let (code, stderr) = rodimpact(&all);
+        assert_eq!(code, 2, "{args:?}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert!(
+            stderr.starts_with("error: scene: beyond what the figure can draw: "),
+            "{args:?}: {stderr}"
+        );
+        assert!(
+            !svg.exists() && !csv.exists(),
+            "{args:?}: a file was written"
+        );
+    }
+    let drawable: [&[&str]; 5] = [
+        &[
+            "velocities",
+            "--m",
+            "1",
+            "--M",
+            "1",
+            "--l",
+            "1e-300",
+            "--a",
+            "1e-300",
+        ],
+        &["figure1", "--m", "1e-400", "--M", "1"],
+        &["velocities", "--m", "1e400", "--M", "1"],
+        &["quantities", "--v0", "1e-400"],
+        &["omega", "--m", "1e400", "--M", "1e400"],
+    ];
+    for args in drawable {
+        let mut all = vec!["plot"];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--out", svg.to_str().unwrap()]);
+        let (code, stderr) = rodimpact(&all);
+        assert_eq!(code, 0, "{args:?}: {stderr}");
+        let text = std::fs::read_to_string(&svg).unwrap();
+        assert!(!holds_non_finite(&text), "{args:?}");
+        std::fs::remove_file(&svg).unwrap();
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

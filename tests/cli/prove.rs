@@ -149,7 +149,7 @@ fn snapshot(dir: &std::path::Path) -> Vec<(String, String)> {
 /// Regression (RELIABILITY F6): `paper --out DIR` wrote the certificates and README.md one by
 /// one, so when `DIR/report.md` could not be written (here it is a directory) the run failed
 /// after 73 files had already replaced the previous ones: an old report beside new
-/// certificates. Now every file is staged beside DIR and moved in only when all are complete;
+/// certificates. Now every file is staged in DIR and renamed in only when all are complete;
 /// a target in the way is refused before anything is written.
 #[test]
 fn a_failing_paper_out_leaves_the_previous_directory_untouched() {
@@ -276,22 +276,27 @@ fn paper_out_writes_what_its_help_lists_and_keeps_other_files() {
     std::fs::remove_dir_all(&root).unwrap();
 }
 
-/// `paper --out .` would replace the current directory as a whole (moving the user's files
-/// across and back) and leave the shell in a removed directory: refused, nothing written.
+/// `paper --out .` was refused while directory outputs replaced DIR as a whole (a shell inside
+/// would have been left in a removed directory). DIR is now written in place, so the current
+/// directory is an output directory like any other: its own files stay, nothing is left hidden.
 #[test]
-fn the_current_directory_is_not_an_output_directory() {
+fn the_current_directory_is_an_output_directory_like_any_other() {
     let root = scratch("paper-dot");
     std::fs::write(root.join("notes.txt"), "mine\n").unwrap();
-    let before = snapshot(&root);
     let out = Command::new(env!("CARGO_BIN_EXE_rodimpact"))
         .args(["paper", "--out", "."])
         .current_dir(&root)
         .output()
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{stderr}");
-    assert!(stderr.contains("holds the current directory"), "{stderr}");
-    assert_eq!(snapshot(&root), before);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let written = snapshot(&root);
+    assert!(written.contains(&("notes.txt".into(), "mine\n".into())));
+    assert!(written.iter().any(|(name, _)| name == "report.md"));
+    assert!(
+        written.iter().all(|(name, _)| !name.starts_with('.')),
+        "{written:?}"
+    );
     std::fs::remove_dir_all(&root).unwrap();
 }
 

@@ -290,3 +290,40 @@ fn t6_runs_past_the_threshold_and_refuses_what_has_no_friction() {
         );
     }
 }
+
+/// Regression (G14): `table --only T6 --pivot P` printed T6 unchanged (even with `--pivot 7`,
+/// off the rod), though `--pivot` is for T1: a flag that changes none of the tables asked for
+/// is now refused by name, as `plot` refuses flags that change nothing in its figure.
+#[test]
+fn a_flag_that_changes_none_of_the_tables_asked_for_is_refused() {
+    for (args, want) in [
+        (
+            &["--only", "T6", "--pivot", "0"][..],
+            "error: pivot: changes only T1, which --only T6 leaves out; leave --pivot out\n",
+        ),
+        (
+            &["--only", "T6", "--pivot", "7"][..],
+            "error: pivot: changes only T1, which --only T6 leaves out; leave --pivot out\n",
+        ),
+        (
+            &["--v0t", "1"][..],
+            "error: v0t: changes only T6, which the default T1-T5 leaves out; leave --v0t out\n",
+        ),
+        (
+            &["--only", "T4", "--rod", "dumbbell"][..],
+            "error: rod: changes only T1, T2, T3, T5, T6, which --only T4 leaves out; leave --rod out\n",
+        ),
+        (
+            &["--only", "t2,T3", "--ratios", "1,2"][..],
+            "error: ratios: changes only T1, T5, which --only t2,T3 leaves out; leave --ratios out\n",
+        ),
+    ] {
+        let (code, stdout, stderr) = rodimpact(&[&["table"], args].concat());
+        assert_eq!((code, stdout.as_str()), (2, ""), "{args:?}");
+        assert_eq!(stderr, want, "{args:?}");
+    }
+    // A flag that changes one of the tables asked for is honoured as before.
+    let (code, stdout, stderr) = rodimpact(&["table", "--only", "T1,T6", "--pivot", "0"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.contains("### T6."), "{stdout}");
+}

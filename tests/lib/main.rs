@@ -6,6 +6,7 @@
 mod common;
 
 mod architecture;
+mod batch_header;
 mod batch_words;
 mod docs;
 mod fraction_free;

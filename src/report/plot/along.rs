@@ -194,7 +194,7 @@ pub fn quantities_figure(scene: &Scene) -> Result<Figure, Error> {
     }
     mark_optima(&mut chart, scene, range)?;
     Ok(Figure {
-        svg: chart.finish(),
+        svg: chart.finish()?,
         data: Some(data),
     })
 }
@@ -300,7 +300,7 @@ pub fn energy_figure(scene: &Scene) -> Result<Figure, Error> {
     }
     mark_optima(&mut chart, scene, (0.0, 1.0))?;
     Ok(Figure {
-        svg: chart.finish(),
+        svg: chart.finish()?,
         data: Some(data),
     })
 }

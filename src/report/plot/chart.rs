@@ -4,6 +4,7 @@
 
 use super::scale::{Scale, Tick};
 use super::svg::{Anchor, Point, Rect, Shape, Stroke, Svg, Text};
+use crate::error::Error;
 
 /// Sizes of the texts, in px.
 pub(crate) const TITLE: f64 = 20.0;
@@ -450,7 +451,7 @@ impl Chart {
     }
 
     /// The finished SVG (the band captions placed now, where they cover nothing).
-    pub(crate) fn finish(mut self) -> String {
+    pub(crate) fn finish(mut self) -> Result<String, Error> {
         for (caption, at) in std::mem::take(&mut self.captions) {
             self.label_px(&caption, at, GREY);
         }

@@ -283,7 +283,7 @@ pub fn plot_figure1(scene: &Scene) -> Result<String, Error> {
     panel.label(&mass, (0.0, 1.0), ROD);
     draw_axes_glyph(&mut svg, &mut panel);
     panel.place_labels(&mut svg);
-    Ok(svg.finish())
+    svg.finish()
 }
 
 /// The exact state just after the impact, and where the rod is momentarily at rest.
@@ -466,5 +466,5 @@ pub fn velocity_figure(scene: &Scene) -> Result<String, Error> {
         .anchor(Anchor::Middle)
         .color("#555555"),
     );
-    Ok(svg.finish())
+    svg.finish()
 }

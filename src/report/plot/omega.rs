@@ -273,7 +273,7 @@ pub fn omega_figure(scenes: &[Scene]) -> Result<Figure, Error> {
         chart.label(&label, at, "#000000");
     }
     Ok(Figure {
-        svg: chart.finish(),
+        svg: chart.finish()?,
         data: Some(data),
     })
 }

@@ -84,6 +84,11 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
     if mark {
         top = top.max(f(&own).log10().ceil() + 1.0);
     }
+    // The axis runs to 10^top in hundredths of a decade: past the f64 range (M/m = 1e400) it
+    // cannot be drawn (and the count of samples would overflow).
+    if top.is_nan() || top > 310.0 {
+        return Err(super::svg::beyond_drawing());
+    }
     let (first, last) = (-200, (top.max(2.0) as i32) * 100);
     let mut data = PlotData::new(&[
         "M_over_m",
@@ -252,7 +257,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
         chart.label(&markup, at, color);
     }
     Ok(Figure {
-        svg: chart.finish(),
+        svg: chart.finish()?,
         data: Some(data),
     })
 }

@@ -156,5 +156,5 @@ pub fn plot_stability(rows: &[BackendStats]) -> Result<String, Error> {
     for (name, at, c) in labels {
         chart.label_px(&name, at, c);
     }
-    Ok(chart.finish())
+    chart.finish()
 }

@@ -2,6 +2,7 @@
 //! with sub- and superscripts, and text widths estimated from DejaVu Sans's advance widths so
 //! labels can be laid out without a font library.
 
+use crate::error::Error;
 use std::fmt::Write;
 
 /// A point in pixels (y down).
@@ -542,14 +543,44 @@ impl Svg {
     }
 
     /// The finished document.
-    pub(crate) fn finish(self) -> String {
-        format!(
+    ///
+    /// # Errors
+    /// `scene: beyond what the figure can draw ...` when a coordinate or a number in a label is
+    /// not finite: an exact value beyond the f64 range (`M = 1e400`), or a ratio of two values
+    /// that underflowed (`l = a = 1e-10000`). No figure ever holds `inf` or `NaN`.
+    pub(crate) fn finish(self) -> Result<String, Error> {
+        if holds_non_finite(&self.body) {
+            return Err(beyond_drawing());
+        }
+        Ok(format!(
             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">\n{}</svg>\n",
             self.body,
             w = num(self.width),
             h = num(self.height),
-        )
+        ))
     }
+}
+
+/// The refusal of a scene whose figure would need numbers beyond the f64 range.
+pub(crate) fn beyond_drawing() -> Error {
+    Error::out_of_range(
+        "scene",
+        "beyond what the figure can draw: its coordinates leave the f64 range (about \
+         1e-308 to 1e308); `rodimpact solve` answers it exactly",
+    )
+}
+
+/// Whether `text` holds a number Rust printed from a float that is not finite (`inf`, `-inf`,
+/// `NaN`, as a word of its own: `infinite` is a word, not a number).
+fn holds_non_finite(text: &str) -> bool {
+    ["inf", "NaN"].iter().any(|token| {
+        text.match_indices(token).any(|(i, _)| {
+            let before = text[..i].chars().next_back();
+            let after = text[i + token.len()..].chars().next();
+            !before.is_some_and(|c| c.is_alphanumeric())
+                && !after.is_some_and(|c| c.is_alphanumeric())
+        })
+    })
 }
 
 #[cfg(test)]
@@ -596,11 +627,33 @@ mod tests {
         assert_eq!(r.clip((-5.0, -5.0), (-1.0, 20.0)), None);
     }
 
+    /// Regression (G5): figures beyond the f64 range were written with `inf` and `NaN`
+    /// coordinates (and exit 0). A document holding one is refused.
+    #[test]
+    fn a_document_with_a_non_finite_number_is_refused() {
+        for bad in [f64::INFINITY, f64::NEG_INFINITY, f64::NAN] {
+            let mut svg = Svg::new(10.0, 10.0);
+            svg.polyline(&[(0.0, 1.0), (bad, 2.0)], &Stroke::solid("#000000", 1.0));
+            let err = svg.finish().unwrap_err().to_string();
+            assert!(
+                err.starts_with("scene: beyond what the figure can draw"),
+                "{err}"
+            );
+        }
+        let mut svg = Svg::new(10.0, 10.0);
+        svg.text(&Text::new(
+            "infinite NaNs? no: infinity, Inf, info",
+            (1.0, 2.0),
+            10.0,
+        ));
+        assert!(svg.finish().is_ok());
+    }
+
     #[test]
     fn text_escapes_and_scripts() {
         let mut svg = Svg::new(10.0, 10.0);
         svg.text(&Text::new("a < b & ω_{max}", (1.0, 2.0), 10.0));
-        let out = svg.finish();
+        let out = svg.finish().unwrap();
         assert!(out.contains("a &lt; b &amp; ω"));
         assert!(out.contains(r#"<tspan dy="2.5" font-size="7.2">max</tspan>"#));
     }

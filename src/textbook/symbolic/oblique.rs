@@ -34,7 +34,7 @@ pub fn has_oblique(input: &SceneInput) -> bool {
 ///
 /// # Errors
 /// A flag that does not parse, `--spin` without `--radius`, a negative `mu` or a radius that
-/// is not positive (as numbers), a pivoted rod whose centre is given a motion of its own, a rod
+/// is not positive (as numbers, or as formulas positive in no sample scene), a pivoted rod whose centre is given a motion of its own, a rod
 /// moving away from the projectile (no approach at the contact, as a number or in every sample
 /// scene), or a symbol that does not belong in the scene (`p` without a pivot).
 ///
@@ -82,6 +82,26 @@ pub fn oblique_params(
             "radius",
             format!("must be > 0, got {c}"),
         ));
+    }
+    // A formula is refused where it can never be valid, as the scene's own are (`--M -m`):
+    // a friction coefficient positive in no sample scene is negative (or 0 wherever it is
+    // valid, no friction at all); a radius positive in none is never a disc's.
+    for (field, value, text, rule) in [
+        ("mu", &mu, &input.mu, "friction coefficient must be >= 0"),
+        ("radius", &radius, &input.radius, "must be > 0"),
+    ] {
+        if let Some(value) = value
+            && value.as_constant().is_none()
+            && !scene.sign_somewhere(value, Ordering::Greater)
+        {
+            return Err(Error::out_of_range(
+                field,
+                format!(
+                    "{rule}, but {field} = {} is <= 0 in every sample scene of the free symbols",
+                    crate::echo::echo(text.as_deref().unwrap_or_default())
+                ),
+            ));
+        }
     }
     let disc = match (radius, spin) {
         (Some(radius), spin) => Some(Disc {

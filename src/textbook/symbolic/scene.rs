@@ -513,6 +513,7 @@ fn conflict(field: &str, why: &str) -> Error {
 fn resolve(
     mut defs: BTreeMap<&'static str, RatFn>,
 ) -> Result<BTreeMap<&'static str, RatFn>, Error> {
+    let cycle = in_cycles(&defs);
     for _ in 0..=defs.len() {
         let subs: Vec<(Sym, RatFn)> = defs.iter().map(|(k, v)| (sym(k), v.clone())).collect();
         let defined = |v: &RatFn| v.symbols().iter().any(|s| defs.contains_key(s.name()));
@@ -528,11 +529,41 @@ fn resolve(
         }
         defs = next;
     }
-    let names: Vec<&str> = defs.keys().copied().collect();
+    // Named by their flags (the pivot's symbol is p), only those on a cycle: `--v0 -v0` is
+    // about v0, not the defaults beside it.
+    let flag = |key: &str| if key == "p" { "pivot" } else { key }.to_string();
+    let names: Vec<String> = cycle.iter().map(|k| flag(k)).collect();
     Err(conflict(
-        names.first().copied().unwrap_or("scene"),
+        names.first().map_or("scene", String::as_str),
         &format!("circular definitions among {}", names.join(", ")),
     ))
+}
+
+/// The defined symbols that depend on themselves, through any chain of definitions.
+fn in_cycles(defs: &BTreeMap<&'static str, RatFn>) -> Vec<&'static str> {
+    let uses = |key: &str| -> Vec<&'static str> {
+        let symbols = defs[key].symbols();
+        defs.keys()
+            .copied()
+            .filter(|k| symbols.iter().any(|s| s.name() == *k))
+            .collect()
+    };
+    defs.keys()
+        .copied()
+        .filter(|&start| {
+            let (mut seen, mut stack) = (Vec::new(), uses(start));
+            while let Some(k) = stack.pop() {
+                if k == start {
+                    return true;
+                }
+                if !seen.contains(&k) {
+                    seen.push(k);
+                    stack.extend(uses(k));
+                }
+            }
+            false
+        })
+        .collect()
 }
 
 fn check_constant(name: &str, v: &RatFn) -> Result<(), Error> {
@@ -573,6 +604,26 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(err.contains("circular"), "{err}");
+    }
+
+    /// Regression (G13): `formula --v0 -v0` said `e: circular definitions among e, v0`,
+    /// naming a default the user never gave. Now only the symbols on a cycle are named.
+    #[test]
+    fn circular_definitions_name_only_the_symbols_on_a_cycle() {
+        let err = |pairs: &[(&str, &str)]| build(pairs).unwrap_err().to_string();
+        assert_eq!(err(&[("v0", "-v0")]), "v0: circular definitions among v0");
+        assert_eq!(
+            err(&[("a", "v0/2"), ("v0", "2*v0+l")]),
+            "v0: circular definitions among v0"
+        );
+        assert_eq!(
+            err(&[("m", "2*M"), ("M", "m/2+m"), ("l", "1")]),
+            "M: circular definitions among M, m"
+        );
+        assert_eq!(
+            err(&[("pivot", "p/2"), ("a", "l/2")]),
+            "pivot: circular definitions among pivot"
+        );
     }
 
     #[test]
