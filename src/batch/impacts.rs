@@ -5,8 +5,9 @@
 //! {"velocity": ["x", "y"], "omega": "w"}, ...}}`, every number a decimal or fraction string
 //! read exactly (a float's shortest text is its exact value's nearest decimal). The line is
 //! answered exactly under every law (one contact) or model (several contacts), and the claimed
-//! state is compared with each: which answers it matches within a relative tolerance, which it
-//! is closest to, and a diagnosis as `batch` gives (`ok`; or `energy-gain`, `energy-loss`,
+//! state is compared with each: its error in energy, `sqrt(K(claim - exact)/K(before))` (K the
+//! kinetic energy of the velocity differences), which answers it matches within a tolerance,
+//! which it is closest to, and a diagnosis as `batch` gives (`ok`; or `energy-gain`, `energy-loss`,
 //! `restitution-ignored`, `no-contact`, `momentum`, `angular-momentum`, `off`).
 
 use crate::error::{Error, ErrorKind};
@@ -43,9 +44,9 @@ pub struct ImpactAudit {
     pub claimed: Option<Vec<(usize, Vec2<Q>, Q)>>,
     /// The engine's name, as the line gives it.
     pub engine: Option<String>,
-    /// For each reference, the largest relative error of the claim over every component
-    /// (`None`: infinite, a zero exact value claimed non-zero).
-    pub errors: Vec<Option<Q>>,
+    /// For each reference, the square of the claim's error in energy,
+    /// `K(claim - exact)/K(before)` (`None`: a claimed component not finite).
+    pub errors: Vec<Option<QSqrt>>,
     /// The references the claim matches within the tolerance.
     pub matches: Vec<String>,
     /// What is wrong with the claim (empty: it matches).
@@ -53,9 +54,9 @@ pub struct ImpactAudit {
 }
 
 /// The references a system is answered by: the three laws (one contact), or the simultaneous
-/// models, sequential impacts in every order (up to 4 contacts) and 1, 4 and 10 sweeps of
-/// projected Gauss-Seidel (several).
-fn answers(system: &System) -> Result<Vec<Reference>, Error> {
+/// models and, unless `simultaneous_only`, sequential impacts in every order (up to 4 contacts)
+/// and 1, 4 and 10 sweeps of projected Gauss-Seidel (several).
+fn answers(system: &System, simultaneous_only: bool) -> Result<Vec<Reference>, Error> {
     let lift = |v: &Vec2<Q>| Vec2::new(QSqrt::rational(v.x.clone()), QSqrt::rational(v.y.clone()));
     if system.contacts.len() == 1 {
         return Law::ALL
@@ -76,10 +77,12 @@ fn answers(system: &System) -> Result<Vec<Reference>, Error> {
     }
     let n = system.contacts.len();
     let mut models = vec![Model::SimultaneousNewton, Model::SimultaneousPoisson];
-    if n <= 4 {
-        models.extend(orders(n).into_iter().map(Model::Sequential));
+    if !simultaneous_only {
+        if n <= 4 {
+            models.extend(orders(n).into_iter().map(Model::Sequential));
+        }
+        models.extend([Model::Pgs(1), Model::Pgs(4), Model::Pgs(10)]);
     }
-    models.extend([Model::Pgs(1), Model::Pgs(4), Model::Pgs(10)]);
     let mut out = Vec::new();
     for model in models {
         if let ModelOutcome::Answered(answers) = solve_several::<Q>(system, &model) {
@@ -171,43 +174,45 @@ fn claimed(value: &Value, system: &System) -> Result<(Option<String>, Option<Bod
     Ok((engine, Some(out)))
 }
 
-/// |claim - exact| / |exact| for one component (`None`: exact zero, claim not).
-fn relative(claim: &Q, exact: &QSqrt) -> Option<Q> {
-    let diff = QSqrt::rational(claim.clone()) - exact;
-    if exact.sign() == Some(Ordering::Equal) {
-        return diff
-            .sign()
-            .filter(|s| *s == Ordering::Equal)
-            .map(|_| Q::zero());
-    }
-    let ratio = diff / exact;
-    if ratio.y().is_zero() {
-        return Some(ratio.x().abs());
-    }
-    // A surd's magnitude, bounded above by a 40-digit rational.
-    let (low, high) = ratio.bounds(40);
-    Some(if ratio.sign() == Some(Ordering::Less) {
-        -low
-    } else {
-        high
-    })
-}
-
-/// The largest relative error of the claimed bodies against a reference.
-fn error(claimed: &[(usize, Vec2<Q>, Q)], reference: &Reference) -> Option<Q> {
+/// The claim's error against a reference, measured in energy: the square of
+/// `sqrt(K(claim - exact)/K(before))`, K the kinetic energy of the velocity differences (each
+/// body's mass and inertia weighing its own), so every component counts in proportion to the
+/// motion it carries and an exact zero is no special case. `None` when a claimed component is
+/// not finite, or nothing moves before.
+fn error(system: &System, claimed: &[(usize, Vec2<Q>, Q)], reference: &Reference) -> Option<QSqrt> {
     if claimed.is_empty() {
         return None;
     }
-    let mut worst = Q::zero();
-    for ((_, v, w), (_, rv, rw)) in claimed.iter().zip(&reference.bodies) {
-        for (c, e) in [(&v.x, &rv.x), (&v.y, &rv.y), (w, rw)] {
-            let r = relative(c, e)?.abs();
-            if r > worst {
-                worst = r;
-            }
-        }
-    }
-    Some(worst)
+    let lift = |x: &Q| QSqrt::rational(x.clone());
+    let bodies = |pairs: &mut dyn Iterator<Item = (&crate::model::Body, Vec2<QSqrt>, QSqrt)>| {
+        pairs
+            .map(|(b, velocity, omega)| PlanarBody {
+                mass: lift(&b.mass),
+                inertia: lift(&b.inertia),
+                centre: Vec2::new(lift(&b.position.x), lift(&b.position.y)),
+                velocity,
+                omega,
+            })
+            .collect::<Vec<_>>()
+    };
+    let difference = bodies(&mut claimed.iter().zip(&reference.bodies).map(
+        |((i, v, w), (_, rv, rw))| {
+            (
+                &system.bodies[*i],
+                Vec2::new(lift(&v.x) - &rv.x, lift(&v.y) - &rv.y),
+                lift(w) - rw,
+            )
+        },
+    ));
+    let before = bodies(&mut system.bodies.iter().filter(|b| b.moves()).map(|b| {
+        (
+            b,
+            Vec2::new(lift(&b.velocity.x), lift(&b.velocity.y)),
+            lift(&b.omega),
+        )
+    }));
+    let k0 = kinetic_energy(&before);
+    (k0.sign() == Some(Ordering::Greater)).then(|| kinetic_energy(&difference) / &k0)
 }
 
 /// Audits one line of `impact --batch` (the `number`-th), with claims agreeing within the
@@ -251,7 +256,7 @@ pub fn audit_impact(line: &str, number: usize, rtol: &Q) -> Result<ImpactAudit, 
         .get("id")
         .and_then(Value::as_str)
         .map_or_else(|| number.to_string(), String::from);
-    let references = answers(&system).map_err(at)?;
+    let references = answers(&system, false).map_err(at)?;
     let (engine, claimed) = claimed(&value, &system).map_err(at)?;
     let Some(claims) = claimed.clone() else {
         return Ok(ImpactAudit {
@@ -265,11 +270,16 @@ pub fn audit_impact(line: &str, number: usize, rtol: &Q) -> Result<ImpactAudit, 
             findings: Vec::new(),
         });
     };
-    let errors: Vec<Option<Q>> = references.iter().map(|r| error(&claims, r)).collect();
+    let errors: Vec<Option<QSqrt>> = references
+        .iter()
+        .map(|r| error(&system, &claims, r))
+        .collect();
+    let tolerance = QSqrt::rational(rtol * rtol);
+    let within = |e: &QSqrt| e.cmp_exact(&tolerance) != Ordering::Greater;
     let matches: Vec<String> = references
         .iter()
         .zip(&errors)
-        .filter(|(_, e)| e.as_ref().is_some_and(|e| e <= rtol))
+        .filter(|(_, e)| e.as_ref().is_some_and(within))
         .map(|(r, _)| r.name.clone())
         .collect();
     let findings = if matches.is_empty() {
@@ -339,10 +349,11 @@ fn diagnose(
             .collect(),
         ..system.clone()
     };
-    if let Ok(plastic) = answers(&sticking)
-        && plastic
-            .iter()
-            .any(|r| error(claims, r).is_some_and(|e| &e <= rtol))
+    if let Ok(plastic) = answers(&sticking, true)
+        && plastic.iter().any(|r| {
+            error(system, claims, r)
+                .is_some_and(|e| e.cmp_exact(&QSqrt::rational(rtol * rtol)) != Ordering::Greater)
+        })
         && system.contacts.iter().any(|c| c.e.is_positive())
     {
         findings.push("restitution-ignored");

@@ -503,7 +503,7 @@ pub fn models_text(
                 continue;
             }
             ModelOutcome::DoesNotStop => {
-                out.push_str("  the impacts do not stop within 10,000\n");
+                out.push_str("  the impacts do not stop within 1,000 (plastic contacts pass the impulse back and forth without end)\n");
                 continue;
             }
             ModelOutcome::FrictionlessOnly => {
@@ -614,10 +614,10 @@ fn model_meaning(model: &Model) -> &'static str {
 }
 
 /// One line of `impact --batch`'s output for an audited scene: `id`, `engine`, `contacts`,
-/// `exact` (every law's or model's bodies, exact strings), `rel_error` (the claim's largest
-/// relative error against each, three digits, `inf` for a claimed non-zero where the exact
-/// value is zero), `matches` (those within the tolerance), `closest`, and `diagnosis` (`ok`,
-/// or `;`-joined findings).
+/// `exact` (every law's or model's bodies, exact strings), `rel_error` (the claim's error in
+/// energy against each, `sqrt(K(claim - exact)/K(before))`, three digits, `nan` for a claim
+/// that is not finite), `matches` (those within the tolerance), `closest`, and `diagnosis`
+/// (`ok`, or `;`-joined findings).
 ///
 /// # Examples
 /// ```
@@ -655,10 +655,11 @@ pub fn impact_audit_json(audit: &crate::batch::ImpactAudit) -> Value {
         for (r, e) in audit.references.iter().zip(&audit.errors) {
             errors.insert(
                 r.name.clone(),
-                json!(
-                    e.as_ref()
-                        .map_or_else(|| "inf".to_string(), |e| decimal::decimal(e, 3))
-                ),
+                json!(e.as_ref().map_or_else(
+                    || "nan".to_string(),
+                    // The square root of the energy ratio's upper bound: 3 digits.
+                    |e| QSqrt::sqrt_of(&e.bounds(20).1).decimal(3)
+                )),
             );
         }
         out.insert("rel_error".into(), Value::Object(errors));
@@ -668,7 +669,7 @@ pub fn impact_audit_json(audit: &crate::batch::ImpactAudit) -> Value {
             .iter()
             .zip(&audit.errors)
             .filter_map(|(r, e)| e.as_ref().map(|e| (r, e)))
-            .min_by(|a, b| a.1.cmp(b.1))
+            .min_by(|a, b| a.1.cmp_exact(b.1))
             .map(|(r, _)| r.name.clone());
         out.insert("closest".into(), json!(closest));
         let diagnosis = if audit.findings.is_empty() {

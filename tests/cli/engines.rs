@@ -585,3 +585,46 @@ fn chipmunk_applies_coulomb_friction_and_converges_with_dt() {
         "sticks at mu*: {jt_engine} against {exact}"
     );
 }
+
+/// The planar-impact scorecard of docs/engines.md, held: each engine's audited output
+/// (`impact --batch`, tolerance 1 % in energy) gives these findings, so an engine release, or a
+/// change in the audit, that moves them shows.
+#[test]
+fn planar_impact_audits_are_the_scorecards() {
+    for (engine, findings) in [
+        (
+            "pymunk-7.3.1",
+            vec![
+                "energy-gain: 9 (",
+                "off: 2 (ball-on-column, thick-rod-half-reverse)",
+            ],
+        ),
+        (
+            "box2d-2.3.10",
+            vec![
+                "energy-gain: 9 (",
+                "off: 4 (ball-on-column, cradle-5, two-contact-poisson-energy, thick-rod-half-reverse)",
+            ],
+        ),
+        (
+            "rapier2d-0.36.1",
+            vec![
+                "energy-loss: 3 (ball-on-column, paper-pivot-as-bodies, two-contact-poisson-energy)",
+                "momentum: 1 (rod-strikes-two-balls)",
+                "off: 41 (",
+            ],
+        ),
+    ] {
+        let path = crate::common::data_file(&format!("engines/impacts/{engine}.jsonl"));
+        let (code, out, err) = rodimpact(&["impact", "--batch", &path, "--rtol", "1e-2"]);
+        assert_eq!(code, 1, "{engine}: {err}");
+        assert_eq!(out.lines().count(), 60, "{engine}");
+        assert!(
+            err.starts_with("60 scenes, 60 with a claimed state\n"),
+            "{engine}: {err}"
+        );
+        for f in findings {
+            assert!(err.contains(&format!("  {f}")), "{engine}: {f}\n{err}");
+        }
+    }
+}

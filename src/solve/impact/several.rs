@@ -31,7 +31,7 @@ use std::fmt;
 /// The most contacts the simultaneous models enumerate the active sets of.
 pub const MAX_SIMULTANEOUS: usize = 10;
 /// The most impacts a sequential model runs before it is reported as not stopping.
-pub const MAX_SEQUENTIAL_IMPACTS: usize = 10_000;
+pub const MAX_SEQUENTIAL_IMPACTS: usize = 1_000;
 /// The most sweeps `pgs:K` runs.
 pub const MAX_SWEEPS: u32 = 10_000;
 /// The most contacts whose every order the sequential model runs (n! orders).
