@@ -118,7 +118,7 @@ fn every_console_transcript_is_what_the_tool_prints() {
                     assignments.push(command);
                     continue;
                 }
-                let script = format!("{}\n{command} 2>&1", assignments.join("\n"));
+                let script = format!("{}\n( {command} ) 2>&1", assignments.join("\n"));
                 let out = Command::new("sh")
                     .args(["-c", &script])
                     .current_dir(&scratch)
