@@ -16,7 +16,7 @@ use crate::mechanics::planar::{
     PlanarBody, Vec2, angular_momentum, kinetic_energy, linear_momentum,
 };
 use crate::model::{Mobility, System, from_value};
-use crate::solve::impact::{Law, Model, ModelOutcome, orders, solve_contact, solve_several};
+use crate::solve::impact::{Law, Model, ModelOutcome, orders, solve_exact, solve_several};
 use num_traits::{Signed, Zero};
 use serde_json::Value;
 use std::cmp::Ordering;
@@ -62,7 +62,7 @@ fn answers(system: &System, simultaneous_only: bool) -> Result<Vec<Reference>, E
         return Law::ALL
             .iter()
             .map(|&law| {
-                let answer = solve_contact::<QSqrt>(system, law)
+                let answer = solve_exact(system, law)
                     .map_err(|e| Error::new("scene", ErrorKind::Invalid(e.to_string())))?;
                 Ok(Reference {
                     name: law.name().into(),

@@ -4,13 +4,12 @@ use super::{Failure, parse_digits, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::batch::audit_impact;
 use rodimpact::field::Q;
-use rodimpact::field::QSqrt;
 use rodimpact::model::{MAX_SCENE_BYTES, System, from_value, toml_value};
 use rodimpact::report::{
     check_json, check_summary, check_table, impact_audit_json, impact_json, impact_text,
     models_json, models_text,
 };
-use rodimpact::solve::impact::{Law, solve_contact};
+use rodimpact::solve::impact::{Law, solve_exact};
 use rodimpact::solve::impact::{
     MAX_ORDERED, MAX_SIMULTANEOUS, Model, ModelOutcome, orders, solve_several,
 };
@@ -114,7 +113,7 @@ pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
     let answers = laws
         .iter()
         .map(|&law| {
-            solve_contact::<QSqrt>(&system, law)
+            solve_exact(&system, law)
                 .map_err(|e| Error::new(label.clone(), ErrorKind::Invalid(e.to_string())))
         })
         .collect::<Result<Vec<_>, _>>()?;

@@ -15,7 +15,7 @@
 //! is e^2 times minus its work in compression: a root of a quadratic in the last phase.
 
 use super::matrix::ContactMatrix;
-use crate::field::{Field, QSqrt, TrySqrt};
+use crate::field::{Field, Q, QSqrt, TrySqrt};
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -32,6 +32,14 @@ impl Roots for QSqrt {
             (self.d().is_none() && self.sign() != Some(Ordering::Less))
                 .then(|| QSqrt::sqrt_of(self.x()))
         })
+    }
+}
+
+impl Roots for Q {
+    /// A rational's rational root, when it has one: Newton's and Poisson's laws never need a
+    /// root, and the energetic law's end is rational when its discriminant is a square.
+    fn root(&self) -> Option<Self> {
+        self.try_sqrt()
     }
 }
 
