@@ -6,7 +6,7 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use rodimpact::field::{Q, QSqrt, q};
 use rodimpact::model::{paper_system, parse_toml};
 use rodimpact::scene::Scene;
-use rodimpact::solve::impact::{Law, Model, solve_contact, solve_several};
+use rodimpact::solve::impact::{Law, Model, solve_contact, solve_exact, solve_several};
 use rodimpact::solve::{self, Answer, Route};
 use std::hint::black_box;
 
@@ -43,7 +43,7 @@ fn paper_against_general(c: &mut Criterion) {
     ] {
         let system = scene_file(name);
         c.bench_function(&format!("impact/{name}/{}", law.name()), |b| {
-            b.iter(|| solve_contact::<QSqrt>(black_box(&system), law))
+            b.iter(|| solve_exact(black_box(&system), law))
         });
     }
     for (name, model) in [
