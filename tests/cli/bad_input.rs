@@ -6,22 +6,34 @@
 //!
 //! Each case must exit with code 2 and exactly one stderr line that names the field (and the row
 //! and column, or the line, or the problem and key, for files), must not panic, and must end
-//! within a generous bound (killed after [`HANG`], to detect hangs; speed is never asserted)
+//! within a generous bound (killed after [`CPU_SECONDS`] of CPU, to detect runaway computations;
+//! speed is never asserted)
 //! and within [`MEMORY_KIB`] of address space.
 //!
 //! argv holds at most 128 KiB per argument on Linux, so the 10^7-digit numbers and the
 //! 100,000-deep nest go through files (TOML and CSV); the flags get a 100,000-digit number.
 
-use crate::common::scratch;
+use crate::common::{DEADLOCK, scratch};
 use std::ffi::OsString;
 use std::io::Read;
 use std::os::unix::ffi::OsStringExt;
+use std::os::unix::process::ExitStatusExt;
 use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// Far beyond any case's run time: only a hang (or a runaway computation) reaches it.
-const HANG: Duration = Duration::from_secs(20);
+/// The CPU seconds each case may use: far beyond any case's need (the dearest takes about 2 s),
+/// so only a runaway computation reaches it. CPU time, not wall time: load cannot change it.
+const CPU_SECONDS: u32 = 30;
+
+/// Whether the exit `code` (minus the signal's number for a death by signal) is a death by the
+/// CPU bound: SIGXCPU at the soft limit, SIGKILL at the hard one (`ulimit -t` sets both; the
+/// test itself kills only at [`DEADLOCK`], and reports that separately).
+fn past_cpu_bound(code: i32) -> bool {
+    const SIGKILL: i32 = 9;
+    const SIGXCPU: i32 = 24;
+    code == -SIGXCPU || code == -SIGKILL
+}
 
 /// The address space each case may use, in KiB (1 GiB: the 4 GiB sparse files must not be read
 /// into memory).
@@ -34,11 +46,14 @@ fn run(args: &[OsString]) -> Option<(i32, String, String)> {
 
 /// [`run`] with stdout and stderr sent where given (what is not piped reads as "").
 fn run_to(args: &[OsString], stdout: Stdio, stderr: Stdio) -> Option<(i32, String, String)> {
-    // Through `sh` to cap the address space: an input that makes the binary allocate beyond
-    // MEMORY fails (an allocation abort is not exit 2) instead of passing unnoticed.
+    // Through `sh` to cap the address space and the CPU time: an input that makes the binary
+    // allocate beyond MEMORY fails (an allocation abort is not exit 2) instead of passing
+    // unnoticed, and one that computes for ever is killed by SIGXCPU.
     let mut child = Command::new("sh")
         .arg("-c")
-        .arg(format!("ulimit -v {MEMORY_KIB} && exec \"$0\" \"$@\""))
+        .arg(format!(
+            "ulimit -v {MEMORY_KIB} && ulimit -t {CPU_SECONDS} && exec \"$0\" \"$@\""
+        ))
         .arg(env!("CARGO_BIN_EXE_rodimpact"))
         .args(args)
         .stdin(Stdio::null())
@@ -62,7 +77,7 @@ fn run_to(args: &[OsString], stdout: Stdio, stderr: Stdio) -> Option<(i32, Strin
         if let Some(status) = child.try_wait().unwrap() {
             break Some(status);
         }
-        if start.elapsed() > HANG {
+        if start.elapsed() > DEADLOCK {
             child.kill().unwrap();
             child.wait().unwrap();
             break None;
@@ -70,7 +85,14 @@ fn run_to(args: &[OsString], stdout: Stdio, stderr: Stdio) -> Option<(i32, Strin
         std::thread::sleep(Duration::from_millis(5));
     };
     let (out, err) = (out.join().unwrap(), err.join().unwrap());
-    status.map(|s| (s.code().unwrap_or(-1), out, err))
+    // A signal's death reads as minus its number (SIGXCPU: the CPU bound was reached).
+    status.map(|s| {
+        (
+            s.code().unwrap_or_else(|| -s.signal().unwrap_or(0)),
+            out,
+            err,
+        )
+    })
 }
 
 fn os(args: &[&str]) -> Vec<OsString> {
@@ -80,10 +102,14 @@ fn os(args: &[&str]) -> Vec<OsString> {
 /// Checks one case; returns a description of what went wrong, if anything.
 fn verdict(name: &str, args: &[OsString], field: &str) -> Option<String> {
     let Some((code, _, stderr)) = run(args) else {
-        return Some(format!("{name}: still running after {HANG:?} (hang)"));
+        return Some(format!(
+            "{name}: still running after {DEADLOCK:?} (deadlock)"
+        ));
     };
     let lines: Vec<&str> = stderr.lines().collect();
-    let problem = if stderr.contains("panicked") {
+    let problem = if past_cpu_bound(code) {
+        "ran past its CPU bound (a runaway computation)"
+    } else if stderr.contains("panicked") {
         "panicked"
     } else if code != 2 {
         "exit code is not 2"
@@ -974,10 +1000,14 @@ fn control_characters_in_input_never_reach_the_terminal() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// The exit code and stdout of a case that must finish (killed after [`HANG`]: a failure).
+/// The exit code and stdout of a case that must finish (killed past [`CPU_SECONDS`]: a failure).
 fn finished(args: &[&str]) -> (i32, String) {
     let (code, out, err) = run(&os(args)).unwrap_or_else(|| panic!("{args:?}: still running"));
     assert!(!err.contains("panicked"), "{args:?}: {err}");
+    assert!(
+        !past_cpu_bound(code),
+        "{args:?}: ran past {CPU_SECONDS} s of CPU"
+    );
     (code, out)
 }
 
@@ -985,7 +1015,7 @@ fn finished(args: &[&str]) -> (i32, String) {
 /// inside the documented limits (10,000 digits, |exponent| <= 10,000): pulling each square
 /// factor p^2 out of the radicand multiplied a ~33,000-bit rational by p and reduced it by GCD,
 /// 10,000 times for 10^10000. The factor is now built once and reduced once; each case below
-/// must end within the kill timer (20 s; each takes a few seconds of ordinary 33,000-bit
+/// must end within the CPU bound (30 s; each takes a few seconds of ordinary 33,000-bit
 /// arithmetic) with the right a*.
 #[test]
 fn exact_square_roots_at_the_limits() {

@@ -7,15 +7,12 @@
 //! kill (a clean error, a panic or a catchable signal removes it); this is accepted and
 //! documented in the README: it is hidden, named as temporary, and never mistaken for the output.
 
-use crate::common::scratch;
+use crate::common::{DEADLOCK, scratch};
 use std::os::unix::fs::{FileTypeExt, PermissionsExt};
 use std::os::unix::process::ExitStatusExt;
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
-
-/// A bound only a hang reaches; the run is signalled as soon as partial output exists.
-const HANG: Duration = Duration::from_secs(20);
 
 fn write_big_csv(path: &Path, rows: usize) {
     let mut text = String::with_capacity(rows * 24);
@@ -69,9 +66,9 @@ fn batch_midway(dir: &Path) -> (Child, (String, u64)) {
             child.try_wait().unwrap().is_none(),
             "the run ended before it could be interrupted midway: make the input larger"
         );
-        if start.elapsed() > HANG {
+        if start.elapsed() > DEADLOCK {
             child.kill().unwrap();
-            panic!("no partial output after {HANG:?}");
+            panic!("no partial output after {DEADLOCK:?}");
         }
         std::thread::sleep(Duration::from_millis(1));
     }
@@ -248,7 +245,7 @@ fn a_fifo_a_device_and_a_descriptor_are_written_in_place() {
     }
     let (code, _, stderr) = batch_to(&dir, &fifo);
     assert_eq!(code, 0, "{stderr}");
-    let read = received.recv_timeout(HANG);
+    let read = received.recv_timeout(DEADLOCK);
     assert_eq!(read.as_deref(), Ok(ROWS), "the FIFO's reader got no rows");
     assert!(
         std::fs::symlink_metadata(&fifo)

@@ -6,15 +6,12 @@
 //! nothing this run did not write is moved or removed. Several tests hold that lock themselves,
 //! so that a run stops, fully staged, exactly where the test wants it: no timing is involved.
 
-use crate::common::{rodimpact, scratch};
+use crate::common::{DEADLOCK, rodimpact, scratch};
 use std::os::unix::fs::{MetadataExt, PermissionsExt};
 use std::os::unix::process::ExitStatusExt;
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
-
-/// A bound only a hang reaches.
-const HANG: Duration = Duration::from_secs(60);
 
 fn names(dir: &Path) -> Vec<String> {
     let mut names: Vec<String> = std::fs::read_dir(dir)
@@ -71,7 +68,7 @@ fn wait_until_blocked(child: &mut Child) {
         if let Some(status) = child.try_wait().unwrap() {
             panic!("the run ended ({status:?}) without waiting for the directory's lock");
         }
-        if start.elapsed() > HANG {
+        if start.elapsed() > DEADLOCK {
             child.kill().unwrap();
             panic!("the run never waited for the directory's lock");
         }

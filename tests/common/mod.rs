@@ -6,6 +6,12 @@ use proptest::prelude::*;
 use rodimpact::field::Q;
 use rodimpact::scene::{RodInertia, Scene, SceneInput};
 
+/// How long a test waits for something that needs no more than a second of work (a process to
+/// end, a file to appear, a lock to be waited on) before it calls it a deadlock. No test asserts
+/// speed: this is ten minutes so that no load can reach it, and a runaway computation is bounded
+/// by CPU time instead (`ulimit -t`, which load does not change).
+pub const DEADLOCK: std::time::Duration = std::time::Duration::from_secs(600);
+
 /// An exact rational from its string form (test data only).
 pub fn rat(text: &str) -> Q {
     rodimpact::number::parse(text).unwrap_or_else(|e| panic!("bad test number {text}: {e}"))
