@@ -468,9 +468,10 @@ mod tests {
         );
     }
 
+    /// Refused by their length before any arithmetic (that this is quick is bounded by CPU time in
+    /// `tests/cli/bad_input.rs`, never by a clock here).
     #[test]
-    fn huge_inputs_are_refused_fast() {
-        let start = std::time::Instant::now();
+    fn huge_inputs_are_refused() {
         let million = "9".repeat(1_000_000);
         assert_eq!(
             parse(&million),
@@ -485,7 +486,6 @@ mod tests {
         ));
         let zero_padded_exp = format!("1e{}1", "0".repeat(5_000));
         assert_eq!(parse(&zero_padded_exp), Ok(q(10, 1)));
-        assert!(start.elapsed().as_secs_f64() < 2.0);
     }
 
     /// The exact decimal expansion of `p / (2^k 5^j)`, written positionally.
