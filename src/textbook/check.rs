@@ -12,7 +12,7 @@ use super::formula::{OnRod, on_rod};
 use super::numeric::decide;
 use super::quantity::Quantity;
 use super::sigfig;
-use super::symbolic::{GivenScene, SymbolicScene, identity};
+use super::symbolic::{GivenScene, SymbolicScene, heaviest_field, identity};
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, QSqrt, RatFn};
 use crate::scene::{Params, SceneInput, Support};
@@ -77,7 +77,10 @@ pub fn check_scene_within(
                 ),
             ));
         }
-        check_symbolic(&given, claims, sig, budget)
+        let heaviest = heaviest_field(input).unwrap_or("scene");
+        budget.metered(heaviest, |budget| {
+            check_symbolic(&given, claims, sig, budget)
+        })
     } else {
         check_numeric(input, claims, sig)
     }

@@ -108,15 +108,70 @@ impl Budget {
     pub fn charge(&mut self, field: &str, units: u64) -> Result<(), Error> {
         self.spent = self.spent.saturating_add(units);
         if self.spent > self.limit {
-            return Err(Error::out_of_range(
-                field,
-                format!(
-                    "the claims of this run together cost more than {} work units (limit); check them in smaller runs",
-                    self.limit
-                ),
-            ));
+            return Err(self.exhausted(field));
         }
         Ok(())
+    }
+
+    /// Runs the symbolic computation `f` (a solve, a*, omega_max, an identity) on what is left
+    /// of the budget, charging the polynomial work it does (see
+    /// [`metered`](crate::field::poly::metered)) as well as what `f` charges itself; a
+    /// computation that would pass the limit is stopped and refused, naming `field`.
+    ///
+    /// # Errors
+    /// `field: solving in symbols costs more than ... (limit)` when `f` would; `f`'s own errors.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{field::RatFn, textbook::expr::Budget};
+    /// use num_traits::One;
+    /// let x = RatFn::symbol("m") + RatFn::symbol("M");
+    /// let power = |_: &mut Budget| Ok((0..40).fold(RatFn::one(), |p, _| p * x.clone()));
+    /// let mut budget = Budget::run();
+    /// assert!(budget.metered("M", power).is_ok());
+    /// assert!(budget.spent() > 0);
+    /// let err = Budget::new(100).metered("M", power).unwrap_err().to_string();
+    /// assert!(err.starts_with("M: solving in symbols costs more than 100 work units"), "{err}");
+    /// ```
+    pub fn metered<T>(
+        &mut self,
+        field: &str,
+        f: impl FnOnce(&mut Budget) -> Result<T, Error>,
+    ) -> Result<T, Error> {
+        let left = self.limit.saturating_sub(self.spent);
+        match crate::field::poly::metered(left, || f(self)) {
+            Ok((value, spent)) => {
+                self.spent = self.spent.saturating_add(spent);
+                if self.spent > self.limit {
+                    return Err(self.too_costly(field));
+                }
+                value
+            }
+            Err(_) => {
+                self.spent = self.limit.saturating_add(1);
+                Err(self.too_costly(field))
+            }
+        }
+    }
+
+    fn too_costly(&self, field: &str) -> Error {
+        Error::out_of_range(
+            field,
+            format!(
+                "solving in symbols costs more than {} work units (limit); give this quantity a simpler formula or a number",
+                self.limit
+            ),
+        )
+    }
+
+    fn exhausted(&self, field: &str) -> Error {
+        Error::out_of_range(
+            field,
+            format!(
+                "the claims of this run together cost more than {} work units (limit); check them in smaller runs",
+                self.limit
+            ),
+        )
     }
 }
 
@@ -605,9 +660,7 @@ pub fn size_of(f: &RatFn) -> u64 {
 /// assert_eq!(words(RatFn::symbol("m").num()), 2);
 /// ```
 pub fn words(p: &Poly) -> u64 {
-    p.terms()
-        .map(|(_, c)| c.numer().bits() / 64 + c.denom().bits() / 64 + 2)
-        .sum()
+    p.words()
 }
 
 fn neg(x: Radical) -> Radical {

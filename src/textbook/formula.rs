@@ -10,7 +10,7 @@
 
 use super::expr::OBLIQUE_SYMBOLS;
 use super::expr::{Budget, Radical};
-use super::symbolic::{GivenScene, SymbolicScene, oblique_params};
+use super::symbolic::{GivenScene, SymbolicScene, heaviest_field, oblique_params};
 use crate::error::Error;
 use crate::field::poly::Monomial;
 use crate::field::{Field, Poly, RatFn, TrySqrt};
@@ -88,8 +88,18 @@ pub struct ContactCase {
 pub fn formulas(input: &SceneInput) -> Result<Formulas, Error> {
     let mut budget = Budget::run();
     let given = GivenScene::read(input, &mut budget)?;
-    let scene = SymbolicScene::build(&given)?;
-    if let Some(o) = oblique_params(&scene, input, &mut budget)? {
+    let heaviest = heaviest_field(input).unwrap_or("scene");
+    budget.metered(heaviest, |budget| solved_formulas(&given, input, budget))
+}
+
+/// [`formulas`] once the scene is read, on what is left of the run's budget.
+fn solved_formulas(
+    given: &GivenScene,
+    input: &SceneInput,
+    budget: &mut Budget,
+) -> Result<Formulas, Error> {
+    let scene = SymbolicScene::build(given)?;
+    if let Some(o) = oblique_params(&scene, input, budget)? {
         return Ok(oblique_formulas(&scene, &o));
     }
     let p = &scene.params;

@@ -434,6 +434,56 @@ fn expressions_on_the_command_line() {
     matrix(all);
 }
 
+/// Regression (G3): the work budget covered reading the flags but not the symbolic solve, so a
+/// 47-character `--M` ran `formula` for 581 CPU s and `check` for 603 s, and three oblique
+/// formulas over 10 s. The solve now runs on what is left of the run's budget, counted in
+/// polynomial work (deterministic, not a clock), and is refused naming the heaviest flag.
+#[test]
+fn symbolic_solves_are_bounded_by_the_work_budget() {
+    let bomb = "m*(l+123456789012*v0)^16/(l+987654321098*v0)^16";
+    let refusal = "solving in symbols costs more than 40000000 work units (limit)";
+    let cases = [
+        ("formula bomb M", vec!["formula", "--M", bomb], "M: "),
+        (
+            "check bomb M",
+            vec!["check", "--M", bomb, "--claim", "omega=1"],
+            "M: ",
+        ),
+        (
+            "formula bomb oblique",
+            vec![
+                "formula",
+                "--v0t",
+                "v0*(l+123456789*a)^8/(l+98765*a)^8",
+                "--mu",
+                "mu*(l+1234567*v0)^16/(l+7654321*v0)^16",
+                "--radius",
+                "l*(1+12345*a)^8/(1+54321*a)^8",
+            ],
+            "mu: ",
+        ),
+        (
+            "formula constant at the limit",
+            vec!["formula", "--v0t", "1e10000*v0", "--mu", "mu"],
+            "v0t: ",
+        ),
+    ];
+    matrix(
+        cases
+            .iter()
+            .map(|(name, args, field)| (name.to_string(), os(args), format!("{field}{refusal}")))
+            .collect(),
+    );
+    // Within the budget, formulas of the same shape are still answered.
+    let (code, out) = finished(&[
+        "formula",
+        "--M",
+        "m*(l+123456789012*v0)^4/(l+987654321098*v0)^4",
+    ]);
+    assert_eq!(code, 0);
+    assert!(out.contains("omega"), "{out}");
+}
+
 const PROBLEM: &str = r#"[[problem]]
 id = "p1"
 source = "test"

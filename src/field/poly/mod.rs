@@ -19,9 +19,11 @@
 mod gcd;
 mod monomial;
 mod sym;
+mod work;
 
 pub use monomial::Monomial;
 pub use sym::Sym;
+pub use work::{WorkExhausted, metered};
 
 use super::{Field, Q};
 use num_bigint::BigInt;
@@ -155,6 +157,23 @@ impl Poly {
     /// ```
     pub fn terms(&self) -> impl Iterator<Item = (&Monomial, &Q)> {
         self.terms.iter()
+    }
+
+    /// The polynomial's size in 64-bit words: for every coefficient, the words of its numerator
+    /// and denominator, two at least (the measure of [`metered`] work and of the textbook
+    /// parser's budget).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::field::{q, Poly, Sym};
+    /// assert_eq!(Poly::var(Sym::new("m")).words(), 2);
+    /// assert_eq!(Poly::constant(q(i64::MAX, 1) * q(4, 1)).words(), 3); // 65 bits over 1
+    /// ```
+    pub fn words(&self) -> u64 {
+        self.terms
+            .values()
+            .map(|c| c.numer().bits() / 64 + c.denom().bits() / 64 + 2)
+            .sum()
     }
 
     /// The largest term in the monomial order, `None` for the zero polynomial.
@@ -556,6 +575,7 @@ impl<'a> Mul<&'a Poly> for Poly {
 impl<'a> Mul<&'a Poly> for &Poly {
     type Output = Poly;
     fn mul(self, rhs: &'a Poly) -> Poly {
+        work::charge_product(self, rhs);
         let mut terms = BTreeMap::new();
         for (m1, c1) in &self.terms {
             for (m2, c2) in &rhs.terms {

@@ -5,7 +5,7 @@ use crate::error::{Error, ErrorKind};
 use crate::field::{Field, RatFn, Sym};
 use crate::scene::{RodInertia, SceneInput, dimension_of};
 use crate::textbook::claim::{ClaimedValue, read_value};
-use crate::textbook::expr::Budget;
+use crate::textbook::expr::{Budget, size_of};
 use crate::units::Dimension;
 
 /// The paper's numeric scene inputs in the order they are read, (key, text): every scene key
@@ -108,6 +108,46 @@ impl GivenScene {
             .find(|(k, _, _)| *k == key)
             .map(|(_, t, _)| t.as_str())
     }
+}
+
+/// The given field whose value is largest (the words of its coefficients), the one to name when
+/// solving the scene in symbols costs too much; `None` when no field is a formula. Every field
+/// is read again on a budget of its own; a field that does not read counts for nothing (its
+/// error is reported where the scene is read).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::SceneInput, textbook::symbolic::heaviest_field};
+/// let s = SceneInput { rod_mass: Some("m*(l+12345678901234567890*v0)^3".into()), v0: Some("2*l".into()), ..Default::default() };
+/// assert_eq!(heaviest_field(&s), Some("M"));
+/// assert_eq!(heaviest_field(&SceneInput { rod_mass: Some("2".into()), ..Default::default() }), None);
+/// ```
+pub fn heaviest_field(input: &SceneInput) -> Option<&'static str> {
+    input
+        .inputs()
+        .filter_map(|(key, text)| {
+            let text = text.as_deref()?.trim();
+            let (body, dimension) = match key.name {
+                "rod" => text
+                    .strip_prefix("rg=")
+                    .map(|b| (b, Dimension::Length))
+                    .or_else(|| {
+                        text.strip_prefix("I=")
+                            .map(|b| (b, Dimension::MomentOfInertia))
+                    })?,
+                name => (text, dimension_of(name)),
+            };
+            let (value, formula) = value_of(key.name, body, dimension, &mut Budget::run()).ok()?;
+            formula.then(|| (size_of(&value), key.name))
+        })
+        .fold(
+            None,
+            |best: Option<(u64, &'static str)>, (size, name)| match best {
+                Some((b, _)) if b >= size => best,
+                _ => Some((size, name)),
+            },
+        )
+        .map(|(_, name)| name)
 }
 
 /// A field's value, and whether it was a formula; `L` and `d` are expanded to `2*l` and

@@ -23,7 +23,7 @@ mod identity;
 mod oblique;
 mod scene;
 
-pub use given::GivenScene;
+pub use given::{GivenScene, heaviest_field};
 pub(crate) use identity::identity;
 pub use oblique::{has_oblique, oblique_params};
 pub use scene::SymbolicScene;
