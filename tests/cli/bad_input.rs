@@ -484,6 +484,81 @@ fn symbolic_solves_are_bounded_by_the_work_budget() {
     assert!(out.contains("omega"), "{out}");
 }
 
+/// Regression (G4): `plot` sampled its scene exactly at hundreds of points with no bound on the
+/// numbers' size: `plot optimum --rod I=1e-300` took 64.6 CPU s (30,300 axis samples, each an
+/// exact 100th root of a 30,000-digit power of ten), a pivot at 1e-9000 or `--M 1e10000` ran
+/// for minutes. The optimum's axis now has at most 1,000 samples, each a 7-digit root scaled
+/// by a power of ten, and a sampled figure whose numbers hold more than 700 digits is refused
+/// naming the input (each case must end within the CPU bound).
+#[test]
+fn figures_at_the_limits_are_refused_or_drawn() {
+    let dir = scratch("g4");
+    let out = dir.join("f.svg");
+    let out = out.to_str().unwrap();
+    let limit = "more than 700 (limit for figures)";
+    let cases: [(&str, &[&str], &str); 7] = [
+        (
+            "optimum M 1e300",
+            &["optimum", "--m", "1", "--M", "1e300"],
+            "",
+        ),
+        (
+            "optimum pivot 1e-9000",
+            &["optimum", "--pivot", "1e-9000"],
+            "pivot: ",
+        ),
+        ("omega M 1e10000", &["omega", "--M", "1e10000"], "M: "),
+        (
+            "omega ratios 1e-10000,1e10000",
+            &["omega", "--ratios", "1e-10000,1e10000"],
+            "ratios: ",
+        ),
+        (
+            "omega pivot 1e-9000",
+            &["omega", "--m", "1", "--M", "1", "--pivot", "1e-9000"],
+            "pivot: ",
+        ),
+        (
+            "quantities M 1e10000",
+            &["quantities", "--m", "1", "--M", "1e10000"],
+            "M: ",
+        ),
+        (
+            "energy m 1e-10000",
+            &["energy", "--m", "1e-10000", "--M", "1"],
+            "m: ",
+        ),
+    ];
+    let mut refused = Vec::new();
+    for (name, args, field) in cases {
+        let mut all = vec!["plot"];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--out", out]);
+        if field.is_empty() {
+            let (code, _) = finished(&all);
+            assert_eq!(code, 0, "{name}");
+            std::fs::remove_file(out).unwrap();
+        } else {
+            refused.push((
+                name.to_string(),
+                os(&all),
+                format!("{field}the figure solves"),
+            ));
+        }
+    }
+    matrix(refused.clone());
+    for (name, _, _) in &refused {
+        assert!(!Path::new(out).exists(), "{name}: a figure was written");
+    }
+    let (code, _) = finished(&[
+        "plot", "optimum", "--m", "1", "--M", "1", "--rod", "I=1e-300", "--out", out,
+    ]);
+    assert_eq!(code, 0);
+    let (_, _, stderr) = run(&os(&["plot", "omega", "--M", "1e10000", "--out", out])).unwrap();
+    assert!(stderr.contains(limit), "{stderr}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 const PROBLEM: &str = r#"[[problem]]
 id = "p1"
 source = "test"

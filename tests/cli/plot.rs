@@ -395,8 +395,11 @@ fn no_figure_holds_inf_or_nan() {
         let (code, stderr) = rodimpact(&all);
         assert_eq!(code, 2, "{args:?}: {stderr}");
         assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        // Refused as beyond the f64 range, or first, before any sampling, as numbers too large
+        // to sample exactly in seconds (G4).
         assert!(
-            stderr.starts_with("error: scene: beyond what the figure can draw: "),
+            stderr.starts_with("error: scene: beyond what the figure can draw: ")
+                || stderr.contains("more than 700 (limit for figures)"),
             "{args:?}: {stderr}"
         );
         assert!(
@@ -419,7 +422,7 @@ fn no_figure_holds_inf_or_nan() {
         &["figure1", "--m", "1e-400", "--M", "1"],
         &["velocities", "--m", "1e400", "--M", "1"],
         &["quantities", "--v0", "1e-400"],
-        &["omega", "--m", "1e400", "--M", "1e400"],
+        &["omega", "--m", "1e200", "--M", "1e200"],
     ];
     for args in drawable {
         let mut all = vec!["plot"];

@@ -7,7 +7,7 @@
 use super::chart::{Axis, Chart, Swatch};
 use super::data::{PlotData, Value};
 use super::describe::{numbers, pivot_of, scene_line};
-use super::sample::{PER_L, arm_optima, f, point, solve_at};
+use super::sample::{PER_L, arm_optima, check_sampling_cost, f, point, solve_at};
 use super::scale::Scale;
 use super::svg::Stroke;
 use super::{Figure, PALETTE, SIZE};
@@ -92,6 +92,7 @@ fn mark_optima(chart: &mut Chart, scene: &Scene, y: (f64, f64)) -> Result<(), Er
 /// assert!(csv.lines().last().unwrap().starts_with("1,1.0000000000000000,3/5,"));
 /// ```
 pub fn quantities_figure(scene: &Scene) -> Result<Figure, Error> {
+    check_sampling_cost(std::slice::from_ref(scene))?;
     let samples = samples(scene)?;
     let params = scene.params::<Q>();
     let pivot = pivot_of(scene).cloned().unwrap_or_default();
@@ -216,6 +217,7 @@ pub fn quantities_figure(scene: &Scene) -> Result<Figure, Error> {
 /// assert!(!rodimpact::report::energy_figure(&elastic).unwrap().svg.contains("lost"));
 /// ```
 pub fn energy_figure(scene: &Scene) -> Result<Figure, Error> {
+    check_sampling_cost(std::slice::from_ref(scene))?;
     let samples = samples(scene)?;
     let two = Q::from_integer(2.into());
     let (m, big_m, inertia) = (scene.m(), scene.rod_mass(), scene.inertia());

@@ -5,12 +5,40 @@ use crate::field::Q;
 use crate::scene::{RodInertia, Scene, Support};
 use num_traits::{One, Signed, Zero};
 
-/// `q` times the symbol `unit` as a reader writes it: `l`, `−l/2`, `3l/10`, `0`.
+/// The longest exact number a figure's label prints; a longer one is printed to four
+/// significant digits, with `…` when that is not exact (`M = 3.000…m` for a threshold of
+/// 3 + 10^-600 times m, not six hundred digits across the figure).
+const LABEL_DIGITS: usize = 20;
+
+/// `|q|` for a label: exact when short, else four significant digits (`…` if rounded).
+fn magnitude_text(q: &Q) -> (String, bool) {
+    let exact = q.abs().to_string();
+    if exact.len() <= LABEL_DIGITS {
+        return (exact, true);
+    }
+    let rounded = crate::field::decimal::decimal(&q.abs(), 4);
+    let is_exact = crate::number::parse(&rounded).is_ok_and(|back| back == q.abs());
+    (
+        if is_exact {
+            rounded
+        } else {
+            format!("{rounded}…")
+        },
+        false,
+    )
+}
+
+/// `q` times the symbol `unit` as a reader writes it: `l`, `−l/2`, `3l/10`, `0`; a number too
+/// long for a label to four digits, `1.000e-300 l`.
 pub(crate) fn multiple(q: &Q, unit: &str) -> String {
     if q.is_zero() {
         return "0".into();
     }
     let sign = if q.is_negative() { "−" } else { "" };
+    let (text, short) = magnitude_text(q);
+    if !short {
+        return format!("{sign}{text} {unit}");
+    }
     let (n, d) = (q.numer().abs(), q.denom().clone());
     let numerator = if n.is_one() {
         unit.to_string()
@@ -24,9 +52,11 @@ pub(crate) fn multiple(q: &Q, unit: &str) -> String {
     }
 }
 
-/// An exact number with a true minus sign: `−1/2`.
+/// An exact number with a true minus sign: `−1/2`; a number too long for a label to four
+/// digits, `1.000e300`.
 pub(crate) fn signed(q: &Q) -> String {
-    q.to_string().replace('-', "−")
+    let sign = if q.is_negative() { "−" } else { "" };
+    format!("{sign}{}", magnitude_text(q).0)
 }
 
 /// The rod's mass distribution with its moment of inertia, for `scene`'s M and l.
@@ -109,6 +139,12 @@ mod tests {
         assert_eq!(multiple(&q(1, 1), "l"), "l");
         assert_eq!(multiple(&q(0, 1), "l"), "0");
         assert_eq!(multiple(&q(-2, 1), "l"), "−2l");
+        let tiny = Q::new(1.into(), num_bigint::BigInt::from(10).pow(300));
+        assert_eq!(multiple(&tiny, "l"), "1.000e-300 l");
+        let three_and_a_bit = Q::from_integer(3.into()) + &tiny;
+        assert_eq!(multiple(&three_and_a_bit, "m"), "3.000… m");
+        assert_eq!(signed(&-(Q::from_integer(3.into()) / &tiny)), "−3.000e300");
+        assert_eq!(signed(&q(-1, 2)), "−1/2");
     }
 
     #[test]

@@ -5,7 +5,7 @@
 use super::chart::{Axis, Chart, Swatch};
 use super::data::{PlotData, Value};
 use super::describe::{multiple, numbers, pivot_of, scene_line, signed};
-use super::sample::{PER_L, arm_optima, f, point, solve_at};
+use super::sample::{PER_L, arm_optima, check_sampling_cost, f, point, solve_at};
 use super::scale::Scale;
 use super::svg::{Shape, Stroke};
 use super::{Figure, PALETTE, SIZE};
@@ -73,6 +73,7 @@ fn curve(scene: &Scene, data: &mut PlotData) -> Result<Curve, Error> {
 /// assert!(fig.data.unwrap().to_csv().lines().last().unwrap().starts_with("1,1.0000000000000000,1,1.0000000000000000,18/17,"));
 /// ```
 pub fn omega_figure(scenes: &[Scene]) -> Result<Figure, Error> {
+    check_sampling_cost(scenes)?;
     let Some(first) = scenes.first() else {
         return Err(Error::new(
             "ratios",

@@ -6,7 +6,7 @@ use super::chart::{Axis, Chart, Swatch};
 use super::data::{PlotData, Value};
 use super::describe::{multiple, pivot_of, rod, signed};
 use super::omega::mass_ratio_family;
-use super::sample::f;
+use super::sample::{check_sampling_cost, f};
 use super::scale::Scale;
 use super::svg::{Shape, Stroke};
 use super::{Figure, PALETTE, SIZE};
@@ -14,20 +14,28 @@ use crate::error::Error;
 use crate::field::decimal;
 use crate::field::{Q, TrySqrt};
 use crate::scene::{RodInertia, Scene};
-use crate::solve::optimum::{Optimum, optimum};
+use crate::solve::optimum::{Optimum, a_star_squared, optimum};
 use num_bigint::BigInt;
 use num_traits::{One, Signed};
 
-/// 10^(j/100) as an exact rational close to it (the integer 100th root of 10^(j + 600), over
-/// 10^6), for sampling a log axis without floats on the exact path.
+/// 10^(j/100) as an exact rational close to it, to 7 significant digits (10^(j div 100) times
+/// the integer 100th root of 10^(j mod 100 + 600), over 10^6), for sampling a log axis without
+/// floats on the exact path; the root is of a 700-digit number whatever j is.
 fn ten_power_hundredths(j: i32) -> Q {
-    let shift = 600 + 100 * ((-j).max(0) / 100);
-    let scaled = BigInt::from(10).pow((j + shift) as u32);
-    Q::new(
-        num_integer::Roots::nth_root(&scaled, 100),
-        BigInt::from(10).pow((shift / 100) as u32),
-    )
+    let (decades, hundredths) = (j.div_euclid(100), j.rem_euclid(100));
+    let root = num_integer::Roots::nth_root(&BigInt::from(10).pow((hundredths + 600) as u32), 100);
+    let decade = Q::from_integer(BigInt::from(10).pow(decades.unsigned_abs()));
+    let mantissa = Q::new(root, BigInt::from(10).pow(6));
+    if decades >= 0 {
+        mantissa * decade
+    } else {
+        mantissa / decade
+    }
 }
+
+/// The most samples of the mass-ratio axis: every hundredth of a decade up to ten decades,
+/// evenly fewer beyond (an axis of 300 decades is drawn from 1,000 points, not 30,000).
+const MAX_SAMPLES: i32 = 1_000;
 
 /// The scene whose optimum is drawn: on a pivot, struck on the longer arm.
 fn struck(scene: &Scene) -> Result<Scene, Error> {
@@ -71,6 +79,7 @@ fn root_multiple(k: &Q, unit: &str) -> String {
 /// assert!(fig.svg.contains("this scene"));
 /// ```
 pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
+    check_sampling_cost(std::slice::from_ref(base))?;
     let l = base.half_length().clone();
     let pivoted = pivot_of(base).is_some();
     let probe = struck(base)?;
@@ -96,17 +105,21 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
         "best",
     ]);
     let (mut star_curve, mut best_curve) = (Vec::new(), Vec::new());
-    for j in first..=last {
+    let arm_squared = &probe_optimum.arm * &probe_optimum.arm;
+    let l_squared = &l * &l;
+    let step = ((last - first) + MAX_SAMPLES - 1) / MAX_SAMPLES;
+    for j in (first..=last).step_by(step.max(1) as usize) {
         let ratio = ten_power_hundredths(j);
+        // Only a* moves along the axis: the struck arm is the probe's.
         let scene = struck(&mass_ratio_family(base, std::slice::from_ref(&ratio))?[0])?;
-        let o = optimum(&scene).expect("a rod at rest before the impact has an optimum");
-        let best = best_squared(&o);
+        let squared = a_star_squared(&scene.params::<Q>());
+        let best = best_of(&squared, &arm_squared);
         let x = f(&ratio);
-        star_curve.push((x, f(&decimal::sqrt_bounds(&(&o.squared / (&l * &l)), 17).0)));
-        best_curve.push((x, f(&decimal::sqrt_bounds(&(&best / (&l * &l)), 17).0)));
+        star_curve.push((x, f(&decimal::sqrt_bounds(&(&squared / &l_squared), 17).0)));
+        best_curve.push((x, f(&decimal::sqrt_bounds(&(&best / &l_squared), 17).0)));
         data.rows.push(vec![
             Value::Exact(ratio),
-            Value::Root(o.squared),
+            Value::Root(squared),
             Value::Root(best),
         ]);
     }
@@ -264,11 +277,12 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
 
 /// min(a*, arm)^2: where omega is largest on the rod.
 fn best_squared(o: &Optimum) -> Q {
-    if o.within_rod {
-        o.squared.clone()
-    } else {
-        &o.arm * &o.arm
-    }
+    best_of(&o.squared, &(&o.arm * &o.arm))
+}
+
+/// The square of the best point on the rod, min(a*, arm)^2.
+fn best_of(squared: &Q, arm_squared: &Q) -> Q {
+    squared.min(arm_squared).clone()
 }
 
 /// The paper's figure: a*/l against M/m for this rod, free and unmarked.

@@ -12,6 +12,63 @@ use num_traits::{One, ToPrimitive};
 /// Sample points per half-length l.
 pub(crate) const PER_L: i64 = 200;
 
+/// The most decimal digits the exact numbers of a sampled figure may hold together (numerators
+/// and denominators of m, M, l, v0, e, the pivot and the rod's inertia): a figure solves its
+/// scene exactly at hundreds of points, and every operation on numbers of d digits costs about
+/// d^2 in num-bigint's reductions, so 700 digits is about five seconds at worst (a pivot at
+/// 1e-600 took 4.4 s, at 1e-9000 minutes). Several curves share the bound: their squared digit
+/// counts add up. `rodimpact solve` and `table` answer larger scenes exactly.
+pub(crate) const MAX_SAMPLED_DIGITS: u64 = 700;
+
+/// Refuses scenes whose exact samples would cost more than [`MAX_SAMPLED_DIGITS`] allows, naming
+/// the input with the most digits (`ratios` for a family of mass ratios).
+///
+/// # Errors
+/// `field: the figure samples its scene exactly at hundreds of points, and its numbers hold N
+/// digits, more than 700 (limit for figures); ...`.
+pub(crate) fn check_sampling_cost(scenes: &[Scene]) -> Result<(), Error> {
+    let digits = |x: &Q| (x.numer().bits() + x.denom().bits()) * 30_103 / 100_000 + 1;
+    let mut work = 0u64;
+    let mut heaviest = ("scene", 0u64);
+    for scene in scenes {
+        let pivot = match scene.support() {
+            Support::Pivot(p) => Some(p.clone()),
+            Support::Free => None,
+        };
+        let inputs = [
+            ("m", Some(scene.m().clone())),
+            (
+                if scenes.len() > 1 { "ratios" } else { "M" },
+                Some(scene.rod_mass().clone()),
+            ),
+            ("l", Some(scene.half_length().clone())),
+            ("v0", Some(scene.v0().clone())),
+            ("e", Some(scene.e().clone())),
+            ("pivot", pivot),
+            ("rod", Some(scene.inertia())),
+        ];
+        let mut total = 0u64;
+        for (name, value) in inputs {
+            let d = value.as_ref().map_or(0, digits);
+            total += d;
+            if d > heaviest.1 {
+                heaviest = (name, d);
+            }
+        }
+        work = work.saturating_add(total.saturating_mul(total));
+    }
+    if work > MAX_SAMPLED_DIGITS * MAX_SAMPLED_DIGITS {
+        return Err(Error::out_of_range(
+            heaviest.0,
+            format!(
+                "the figure solves its scene exactly at hundreds of points, and its numbers hold {} digits, more than {MAX_SAMPLED_DIGITS} (limit for figures); `rodimpact solve` answers the scene exactly",
+                work.isqrt()
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// The nearest f64 of an exact value (only for drawing).
 pub(crate) fn f(x: &Q) -> f64 {
     x.to_f64().unwrap_or(f64::NAN)
