@@ -333,6 +333,48 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
     })
 }
 
+/// The most decimal digits T6's inputs may hold together (`--ratio`, `--e`, `--a`, `--v0t`,
+/// `--radius`, `--spin` and the rod's): T6 solves seven or eight oblique rows with their
+/// stick-or-slide decisions over Q, whose reductions cost about d^2 for numbers of d digits, so
+/// 6,000 digits is about four seconds at worst (`--ratio 1e10000 --a 1e-10000` took 41 s).
+/// T1-T5 take each input at the number limits.
+pub const MAX_T6_DIGITS: u64 = 6_000;
+
+/// Refuses T6 inputs holding more than [`MAX_T6_DIGITS`] digits together, naming the largest.
+fn check_t6_size(opts: &TableOptions) -> Result<(), Error> {
+    let rod = match &opts.rod {
+        RodInertia::Gyration(x) | RodInertia::Moment(x) => Some(x),
+        _ => None,
+    };
+    let inputs = [
+        ("ratio", Some(&opts.ratio)),
+        ("e", Some(&opts.e)),
+        ("a", Some(&opts.a)),
+        ("v0t", Some(&opts.v0t)),
+        ("radius", opts.disc.as_ref().map(|d| &d.radius)),
+        ("spin", opts.disc.as_ref().map(|d| &d.spin)),
+        ("rod", rod),
+    ];
+    let sized = inputs
+        .iter()
+        .filter_map(|(name, x)| x.map(|x| (*name, crate::field::int::decimal_digits(x))));
+    let total: u64 = sized.clone().map(|(_, d)| d).sum();
+    if total <= MAX_T6_DIGITS {
+        return Ok(());
+    }
+    // The first of the largest: `max_by_key` keeps the last, so it runs backwards.
+    let heaviest = sized
+        .rev()
+        .max_by_key(|(_, d)| *d)
+        .map_or("ratio", |(name, _)| name);
+    Err(Error::out_of_range(
+        heaviest,
+        format!(
+            "T6 solves eight oblique impacts exactly, and its inputs hold {total} digits together, more than {MAX_T6_DIGITS} (limit for T6); T1-T5 and `rodimpact solve` take them"
+        ),
+    ))
+}
+
 /// T6: an oblique impact with friction, as mu grows past the exact threshold mu* at which the
 /// contact stops sliding: the rod of T2 and T3 (`ratio`, `rod`, `e`) struck at `a` (the end by
 /// default) by a projectile also moving along the rod with `v0t`, or a solid disc spinning
@@ -353,6 +395,7 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
 /// assert_eq!(threshold[0], Cell::Rational(q(5, 4)));
 /// ```
 pub fn t6(opts: &TableOptions) -> Result<Table, Error> {
+    check_t6_size(opts)?;
     let base = unit_scene(&opts.ratio, &opts.rod, &opts.e, None)?;
     let scene = |mu: &Q| {
         let mut b = Scene::builder(Q::one(), opts.ratio.clone())

@@ -60,6 +60,21 @@ pub(crate) type Big = dashu_int::IBig;
 #[cfg(feature = "malachite")]
 pub(crate) type Big = malachite_nz::integer::Integer;
 
+/// The decimal digits of `q`'s numerator and denominator together, to within one each (from
+/// their bit lengths): the size measure of the limits that bound exact work by the size of the
+/// numbers (figures, T6).
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{int::decimal_digits, q};
+/// assert_eq!(decimal_digits(&q(1, 1)), 2);
+/// assert_eq!(decimal_digits(&rodimpact::number::parse("1e-300").unwrap()), 302);
+/// ```
+pub fn decimal_digits(q: &Q) -> u64 {
+    let digits = |bits: u64| bits * 30_103 / 100_000 + 1;
+    digits(q.numer().bits()) + digits(q.denom().bits())
+}
+
 /// `n/d` reduced to lowest terms with a positive denominator: the same value and
 /// representation as `Q::new(n, d)`, but a GCD of numbers up to 256 bits runs on two machine
 /// words instead of num-bigint's heap digits.

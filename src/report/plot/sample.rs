@@ -27,7 +27,7 @@ pub(crate) const MAX_SAMPLED_DIGITS: u64 = 700;
 /// `field: the figure samples its scene exactly at hundreds of points, and its numbers hold N
 /// digits, more than 700 (limit for figures); ...`.
 pub(crate) fn check_sampling_cost(scenes: &[Scene]) -> Result<(), Error> {
-    let digits = |x: &Q| (x.numer().bits() + x.denom().bits()) * 30_103 / 100_000 + 1;
+    let digits = crate::field::int::decimal_digits;
     let mut work = 0u64;
     let mut heaviest = ("scene", 0u64);
     for scene in scenes {
