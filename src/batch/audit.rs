@@ -8,12 +8,12 @@
 //! angular momentum, the energy before the impact for energies, and for states the distance
 //! `max(|dv|, |dV|, |d omega| l)` against |v0|.
 
-use crate::field::{Q, QSqrt};
+use crate::field::big::{RBig, to_q, to_rbig};
+use crate::field::{Field, Q};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
-use crate::scene::{Scene, Support};
-use crate::solve::optimum::optimum;
-use num_traits::{One, Signed, Zero};
-use std::cmp::Ordering;
+use crate::scene::{Params, Scene, Support};
+use crate::solve::optimum::omega_max_squared;
+use num_traits::Signed;
 
 /// A balance counts as missed beyond this fraction of its scale: 1/1000.
 pub const LAW_TOLERANCE: (i64, i64) = (1, 1000);
@@ -107,11 +107,16 @@ pub struct Audit {
     pub energy_change: Q,
 }
 
-fn fraction((n, d): (i64, i64)) -> Q {
-    Q::new(n.into(), d.into())
+/// `n/d` in the audit's arithmetic.
+fn fraction((n, d): (i64, i64)) -> RBig {
+    RBig::from_parts(n.into(), d.unsigned_abs().into())
 }
 
 /// Audits `claimed` (the state after the impact) against the scene and its exact answer.
+///
+/// The balances and distances are computed over dashu's rationals ([`RBig`]), whose GCD keeps
+/// an engine log's 10,000-digit cells to a fraction of a second; only the energy change comes
+/// back as a [`Q`].
 ///
 /// # Examples
 /// Box2D 2.3 at v0 = 1 m/s, e = 1 (the paper's rod struck at l/2): it returns the sticking
@@ -126,79 +131,88 @@ fn fraction((n, d): (i64, i64)) -> Q {
 /// assert!(audit(&s, &exact, &exact).findings.is_empty());
 /// ```
 pub fn audit(scene: &Scene, exact: &Motion<Q>, claimed: &Motion<Q>) -> Audit {
-    let params = scene.params::<Q>();
-    let before = Motion::before(scene.v0().clone());
+    let params = scene.params::<RBig>();
+    let (exact, claimed) = (exact.as_ref().map(to_rbig), claimed.as_ref().map(to_rbig));
+    let before = Motion::before(params.v0.clone());
     let law = fraction(LAW_TOLERANCE);
-    let momentum_scale = scene.m() * scene.v0().abs();
+    let momentum_scale = params.m.clone() * &params.v0.abs();
     let mut findings = Vec::new();
 
     let energy_before = kinetic_energy(&params, &before);
-    let energy_claimed = kinetic_energy(&params, claimed);
-    let energy_exact = kinetic_energy(&params, exact);
-    if energy_claimed > &energy_before * (Q::one() + &law) {
+    let energy_claimed = kinetic_energy(&params, &claimed);
+    let energy_exact = kinetic_energy(&params, &exact);
+    if energy_claimed > energy_before.clone() * &(RBig::ONE + &law) {
         findings.push(Finding::EnergyGain);
     }
-    if energy_claimed < &energy_exact - &law * &energy_before {
+    if energy_claimed < energy_exact.clone() - &(law.clone() * &energy_before) {
         findings.push(Finding::EnergyLoss);
     }
     // The answer is linear in 1 + e: the e = 0 answer is before + (exact - before)/(1 + e).
-    if scene.e().is_positive() && is_taken_for(scene, claimed, &sticking(scene, exact), exact) {
+    if scene.e().is_positive()
+        && is_taken_for(&params, &claimed, &sticking(&params, &exact), &exact)
+    {
         findings.push(Finding::RestitutionIgnored);
     }
-    if is_taken_for(scene, claimed, &before, exact) {
+    if is_taken_for(&params, &claimed, &before, &exact) {
         findings.push(Finding::NoContact);
     }
     if matches!(scene.support(), Support::Free) {
-        let residual = linear_momentum(&params, &before) - linear_momentum(&params, claimed);
-        if residual.abs() > &law * &momentum_scale {
+        let residual = linear_momentum(&params, &before) - linear_momentum(&params, &claimed);
+        if residual.abs() > law.clone() * &momentum_scale {
             findings.push(Finding::Momentum);
         }
     }
     let axis = params.axis();
     let residual =
-        angular_momentum(&params, &before, &axis) - angular_momentum(&params, claimed, &axis);
-    if residual.abs() > &law * &momentum_scale * scene.half_length() {
+        angular_momentum(&params, &before, &axis) - angular_momentum(&params, &claimed, &axis);
+    if residual.abs() > law.clone() * &momentum_scale * &params.half_length {
         findings.push(Finding::AngularMomentum);
     }
-    let omega_max = optimum(scene)
-        .expect("a rod at rest before the impact has an optimum")
-        .omega_max;
-    let bound = omega_max * &QSqrt::rational(Q::one() + &law);
-    if QSqrt::rational(claimed.omega.abs()).cmp_exact(&bound) == Ordering::Greater {
+    // |omega| > omega_max (1 + law), squared: both sides are nonnegative.
+    let omega_max_squared: RBig =
+        omega_max_squared(scene).expect("a rod at rest before the impact has an optimum");
+    let bound = omega_max_squared * &(RBig::ONE + &law).square();
+    if claimed.omega.square() > bound {
         findings.push(Finding::AboveOmegaMax);
     }
     Audit {
         findings,
-        energy_change: (energy_claimed - energy_exact) / energy_before,
+        energy_change: to_q(&((energy_claimed - energy_exact) / energy_before)),
     }
 }
 
 /// The e = 0 answer of the scene, from its exact answer.
-fn sticking(scene: &Scene, exact: &Motion<Q>) -> Motion<Q> {
-    let share = Q::one() / (Q::one() + scene.e());
-    let toward = |after: &Q, before: &Q| before + (after - before) * &share;
+fn sticking(params: &Params<RBig>, exact: &Motion<RBig>) -> Motion<RBig> {
+    let share = RBig::ONE / (RBig::ONE + &params.e);
+    let toward =
+        |after: &RBig, before: &RBig| before.clone() + &((after.clone() - before) * &share);
     Motion {
-        v: toward(&exact.v, scene.v0()),
-        rod_v: toward(&exact.rod_v, &Q::zero()),
-        omega: toward(&exact.omega, &Q::zero()),
+        v: toward(&exact.v, &params.v0),
+        rod_v: toward(&exact.rod_v, &RBig::ZERO),
+        omega: toward(&exact.omega, &RBig::ZERO),
     }
 }
 
 /// The claimed state is within [`STATE_TOLERANCE`] of `other` and strictly nearer to it than
 /// to the exact answer.
-fn is_taken_for(scene: &Scene, claimed: &Motion<Q>, other: &Motion<Q>, exact: &Motion<Q>) -> bool {
-    let distance = |x: &Motion<Q>| {
-        let spin = (&claimed.omega - &x.omega).abs() * scene.half_length();
+fn is_taken_for(
+    params: &Params<RBig>,
+    claimed: &Motion<RBig>,
+    other: &Motion<RBig>,
+    exact: &Motion<RBig>,
+) -> bool {
+    let distance = |x: &Motion<RBig>| {
+        let spin = (claimed.omega.clone() - &x.omega).abs() * &params.half_length;
         [
-            (&claimed.v - &x.v).abs(),
-            (&claimed.rod_v - &x.rod_v).abs(),
+            (claimed.v.clone() - &x.v).abs(),
+            (claimed.rod_v.clone() - &x.rod_v).abs(),
             spin,
         ]
         .into_iter()
-        .fold(Q::zero(), |a, b| if b > a { b } else { a })
+        .fold(RBig::ZERO, |a, b| if b > a { b } else { a })
     };
     let to_other = distance(other);
-    to_other <= fraction(STATE_TOLERANCE) * scene.v0().abs() && to_other < distance(exact)
+    to_other <= fraction(STATE_TOLERANCE) * &params.v0.abs() && to_other < distance(exact)
 }
 
 #[cfg(test)]

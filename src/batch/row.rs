@@ -9,6 +9,7 @@ use super::plan::{Arithmetic, Diagnosis, OutputCheck, STATE, SolvedRow, write_fl
 use super::word_row::word_row;
 use crate::error::Error;
 use crate::field::Q;
+use crate::field::big::{RBig, to_q, to_rbig};
 use crate::mechanics::{Motion, kinetic_energy};
 use crate::scene::Scene;
 use crate::solve::{self, Impact, Route, Why};
@@ -200,9 +201,13 @@ fn exact_values(
     wanted: impl Fn(usize) -> bool,
 ) -> [Option<Q>; 6] {
     // The exact parameters (the rod's inertia among them) only when an energy is claimed:
-    // building them cost more than the whole solve.
-    let params = (wanted(4) || wanted(5)).then(|| scene.params::<Q>());
-    let energy = |motion: &Motion<Q>| params.as_ref().map(|p| kinetic_energy(p, motion));
+    // building them cost more than the whole solve. Over dashu's rationals, whose GCD is
+    // cheaper than num-bigint's on an engine's 17-digit decimals.
+    let params = (wanted(4) || wanted(5)).then(|| scene.params::<RBig>());
+    let energy = |motion: &Motion<Q>| {
+        let lifted = motion.as_ref().map(to_rbig);
+        params.as_ref().map(|p| to_q(&kinetic_energy(p, &lifted)))
+    };
     let m = scene.m();
     [
         Some(after.v.clone()),

@@ -20,6 +20,7 @@ use std::cmp::Ordering;
 use std::fmt::{Debug, Display};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+pub mod big;
 pub mod decimal;
 mod float;
 pub mod int;

@@ -219,38 +219,102 @@ pub fn optimum(scene: &Scene) -> Option<Optimum> {
     })
 }
 
+/// The square of the largest |omega| an impact on the struck side can give (the square of
+/// [`Optimum::omega_max`]), without a square root, in any ordered exact field: (1 + e)^2 v0^2 /
+/// (4 a*^2) when a* lies on the rod, else omega at the end squared; `None` when the rod turns
+/// before the impact. What a bound on a claimed spin needs, at a rational's cost.
+///
+/// # Examples
+/// The paper's M = m uniform rod: omega_max = sqrt(3/2) v0/l.
+/// ```
+/// use rodimpact::{scene::Scene, solve::optimum::omega_max_squared, field::{q, Q}};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).build()?;
+/// assert_eq!(omega_max_squared::<Q>(&s), Some(q(3, 2)));
+/// // M = 3m: a* = sqrt(4/3) l lies beyond the end, so omega_max is omega at the end, 6/7.
+/// let heavy = Scene::builder(q(1, 1), q(3, 1)).build()?;
+/// assert_eq!(omega_max_squared::<Q>(&heavy), Some(q(36, 49)));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn omega_max_squared<F: Field>(scene: &Scene) -> Option<F> {
+    if !scene.rod_before().omega.is_zero() {
+        return None;
+    }
+    let normal;
+    let scene = match scene.oblique() {
+        None => scene,
+        Some(_) => {
+            normal = scene.normal_problem();
+            &normal
+        }
+    };
+    let p = scene.params::<F>();
+    let squared = a_star_squared(&p);
+    let arm = F::from_rational(&struck_arm_of(scene));
+    let peak = Peak::of(&p, &squared, &arm);
+    Some(if peak.within_rod(&squared, &arm) {
+        peak.half.square() / squared
+    } else {
+        peak.at_end.square()
+    })
+}
+
+/// The rational parts of omega's peak over the struck side: half of (1 + e) v0, and omega at
+/// the end of the arm.
+struct Peak<F> {
+    half: F,
+    at_end: F,
+}
+
+impl<F: Field> Peak<F> {
+    fn of(p: &Params<F>, squared: &F, arm: &F) -> Peak<F> {
+        let scale = (F::one() + &p.e) * &p.v0;
+        Peak {
+            half: scale.clone() / F::from_i64(2),
+            at_end: scale * arm / (squared.clone() + &arm.square()),
+        }
+    }
+
+    /// a* <= arm, decided exactly.
+    fn within_rod(&self, squared: &F, arm: &F) -> bool {
+        (arm.square() - squared).sign() != Some(Ordering::Less)
+    }
+}
+
+/// The arm struck: l for a free rod, the end on the struck side from the pivot for a pivoted one.
+fn struck_arm_of(scene: &Scene) -> Q {
+    match scene.support() {
+        Support::Free => scene.half_length().clone(),
+        Support::Pivot(p) => struck_arm(scene.a(), p, scene.half_length()),
+    }
+}
+
 /// The optimum of a scene whose rod does not turn before the impact.
 fn of_rod_at_rest(scene: &Scene) -> Optimum {
     let (m, big_m) = (scene.m(), scene.rod_mass());
     let l = scene.half_length();
-    let squared: Q = a_star_squared(&scene.params());
+    let params = scene.params::<Q>();
+    let squared: Q = a_star_squared(&params);
     let gyration_squared = scene.inertia() / big_m;
-    let (arm, threshold_mass) = match scene.support() {
+    let arm = struck_arm_of(scene);
+    let threshold_mass = match scene.support() {
         Support::Free => {
             let excess = l * l - &gyration_squared;
-            let threshold = excess.is_positive().then(|| m * excess / &gyration_squared);
-            (l.clone(), threshold)
+            excess.is_positive().then(|| m * excess / &gyration_squared)
         }
-        Support::Pivot(p) => {
-            let arm = struck_arm(scene.a(), p, l);
-            let threshold = m * &arm * &arm / (gyration_squared + p * p);
-            (arm, Some(threshold))
-        }
+        Support::Pivot(p) => Some(m * &arm * &arm / (gyration_squared + p * p)),
     };
     let placement = match squared.cmp(&(&arm * &arm)) {
         Ordering::Less => Placement::Inside,
         Ordering::Equal => Placement::AtEnd,
         Ordering::Greater => Placement::Beyond,
     };
-    let within_rod = placement != Placement::Beyond;
-    let scale = (Q::one() + scene.e()) * scene.v0();
-    let omega_end = &scale * &arm / (&squared + &arm * &arm);
+    let peak = Peak::of(&params, &squared, &arm);
+    let within_rod = peak.within_rod(&squared, &arm);
     let (argmax, omega_max) = if within_rod {
-        let half = &scale / Q::from_integer(2.into());
         let inverse_root = QSqrt::sqrt_of(&(Q::one() / &squared));
-        (Argmax::AStar, inverse_root * &QSqrt::rational(half))
+        (Argmax::AStar, inverse_root * &QSqrt::rational(peak.half))
     } else {
-        (Argmax::End, QSqrt::rational(omega_end.clone()))
+        (Argmax::End, QSqrt::rational(peak.at_end.clone()))
     };
     Optimum {
         squared,
@@ -259,7 +323,7 @@ fn of_rod_at_rest(scene: &Scene) -> Optimum {
         argmax,
         omega_max,
         placement,
-        omega_end,
+        omega_end: peak.at_end,
         threshold_mass,
     }
 }

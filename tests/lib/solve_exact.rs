@@ -6,8 +6,10 @@ use crate::common;
 use common::{any_scene, rat, reference_rows, scene};
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
-use rodimpact::field::Q;
+use rodimpact::field::big::{RBig, to_q};
+use rodimpact::field::{Q, QSqrt};
 use rodimpact::scene::Support;
+use rodimpact::solve::optimum::{omega_max_squared, optimum};
 use rodimpact::solve::{closed_form::closed_form, linear::solve};
 
 /// (scene, v, V, omega, pivot impulse or "-", energy lost), each worked by hand.
@@ -120,6 +122,18 @@ proptest! {
         if let Some(r) = &out.residuals.energy { prop_assert!(r.is_zero()); }
         prop_assert!(!out.energy.lost.is_negative());
         prop_assert_eq!(out.residuals.linear_momentum.is_some(), matches!(s.support(), Support::Free));
+    }
+
+    /// Law: omega_max squared without a root, over Q and over dashu's rationals, is the square
+    /// of the optimum's omega_max in Q(sqrt d).
+    #[test]
+    fn omega_max_squared_is_the_optimums_squared(s in any_scene()) {
+        let o = optimum(&s).unwrap();
+        let squared = o.omega_max.clone() * &o.omega_max;
+        let q: Q = omega_max_squared(&s).unwrap();
+        prop_assert_eq!(QSqrt::rational(q.clone()), squared);
+        let big: RBig = omega_max_squared(&s).unwrap();
+        prop_assert_eq!(to_q(&big), q);
     }
 
     /// Law: the paper's closed forms (generalised to e, and the fixed-axis formula) equal the

@@ -12,25 +12,10 @@
 
 use super::Int;
 use crate::field::Q;
+use crate::field::big::{big_from_ubig, ibig_from_big};
 use dashu_int::ops::Gcd;
-use dashu_int::{IBig, Sign as DashuSign, UBig};
-use num_bigint::{BigInt, BigUint, Sign};
-
-/// `x` as a dashu [`IBig`].
-fn ibig_from_big(x: &BigInt) -> IBig {
-    let magnitude = UBig::from_le_bytes(&x.magnitude().to_bytes_le());
-    let sign = if x.sign() == Sign::Minus {
-        DashuSign::Negative
-    } else {
-        DashuSign::Positive
-    };
-    IBig::from_parts(sign, magnitude)
-}
-
-/// `x` as a num-bigint [`BigUint`].
-fn big_from_ubig(x: &UBig) -> BigUint {
-    BigUint::from_bytes_le(&x.to_le_bytes())
-}
+use dashu_int::{IBig, Sign as DashuSign};
+use num_bigint::{BigInt, Sign};
 
 impl Int for IBig {
     fn lift(x: &BigInt) -> Option<Self> {
@@ -61,19 +46,10 @@ impl Int for IBig {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::field::big::big_from_ibig;
+    use num_bigint::BigUint;
     use num_traits::One;
     use proptest::prelude::*;
-
-    /// `x` as a num-bigint [`BigInt`].
-    fn big_from_ibig(x: IBig) -> BigInt {
-        let (sign, magnitude) = x.into_parts();
-        let sign = if sign == DashuSign::Negative {
-            Sign::Minus
-        } else {
-            Sign::Plus
-        };
-        BigInt::from_biguint(sign, big_from_ubig(&magnitude))
-    }
 
     fn big() -> impl Strategy<Value = BigInt> {
         (
@@ -93,9 +69,9 @@ mod tests {
         #[test]
         fn dashu_agrees_with_num_bigint(a in big(), b in big()) {
             let (x, y) = (ibig_from_big(&a), ibig_from_big(&b));
-            prop_assert_eq!(big_from_ibig(x.clone()), a.clone());
-            prop_assert_eq!(big_from_ibig(x.mul(&y).unwrap()), &a * &b);
-            prop_assert_eq!(big_from_ibig(x.sub(&y).unwrap()), &a - &b);
+            prop_assert_eq!(big_from_ibig(&x), a.clone());
+            prop_assert_eq!(big_from_ibig(&x.mul(&y).unwrap()), &a * &b);
+            prop_assert_eq!(big_from_ibig(&x.sub(&y).unwrap()), &a - &b);
             let d = b.magnitude() + BigUint::one();
             let q = IBig::ratio(x, ibig_from_big(&BigInt::from(d.clone())));
             prop_assert_eq!(q, Q::new(a, BigInt::from(d)));
