@@ -39,7 +39,10 @@ fn formalise(_paper: &Paper) -> Formalised {
         (l1.clone() - &l2) / &m,
         l2.clone() / &m,
     ];
-    let energy = |vs: &[RatFn]| vs.iter().fold(k(0, 1), |t, x| t + &(m.clone() * &sq(x) / &k(2, 1)));
+    let energy = |vs: &[RatFn]| {
+        vs.iter()
+            .fold(k(0, 1), |t, x| t + &(m.clone() * &sq(x) / &k(2, 1)))
+    };
     let momentum = |vs: &[RatFn]| vs.iter().fold(k(0, 1), |t, x| t + &(m.clone() * x));
     // Sequential 1 then 2 (and 2 then 1: contact 2 does not approach first, so the same).
     let (s1, s2) = (m.clone() * &v, m.clone() * &v);
@@ -75,13 +78,41 @@ fn formalise(_paper: &Paper) -> Formalised {
                 &[],
                 prod([pc(2, 3), ps("m"), ps("v")]),
             ),
-            id("the first ball after (simultaneous) = -v/3", n("v_1", balls[0].clone()), -(v.clone() / &k(3, 1))),
-            id("momentum after (simultaneous) = m v", n("p", momentum(&balls)), m.clone() * &v),
-            id("energy after (simultaneous) = m v^2/2", n("K", energy(&balls)), m.clone() * &sq(&v) / &k(2, 1)),
-            id("the first ball after (sequential) = 0", n("v_1", sequential[0].clone()), k(0, 1)),
-            id("the last ball after (sequential) = v", n("v_3", sequential[2].clone()), v.clone()),
-            id("energy after (sequential) = m v^2/2", n("K", energy(&sequential)), m.clone() * &sq(&v) / &k(2, 1)),
-            id("momentum after (sequential) = m v", n("p", momentum(&sequential)), m.clone() * &v),
+            id(
+                "the first ball after (simultaneous) = -v/3",
+                n("v_1", balls[0].clone()),
+                -(v.clone() / &k(3, 1)),
+            ),
+            id(
+                "momentum after (simultaneous) = m v",
+                n("p", momentum(&balls)),
+                m.clone() * &v,
+            ),
+            id(
+                "energy after (simultaneous) = m v^2/2",
+                n("K", energy(&balls)),
+                m.clone() * &sq(&v) / &k(2, 1),
+            ),
+            id(
+                "the first ball after (sequential) = 0",
+                n("v_1", sequential[0].clone()),
+                k(0, 1),
+            ),
+            id(
+                "the last ball after (sequential) = v",
+                n("v_3", sequential[2].clone()),
+                v.clone(),
+            ),
+            id(
+                "energy after (sequential) = m v^2/2",
+                n("K", energy(&sequential)),
+                m.clone() * &sq(&v) / &k(2, 1),
+            ),
+            id(
+                "momentum after (sequential) = m v",
+                n("p", momentum(&sequential)),
+                m.clone() * &v,
+            ),
         ],
     )
 }

@@ -43,8 +43,14 @@ fn formalise(_paper: &Paper) -> Formalised {
     let (star1, star2) = (k(4, 3) * &m * &v, k(2, 3) * &m * &v);
     let (a, b) = sweep(&star1, &(star2.clone() + &d));
     let (z1, z2) = sweep(&k(0, 1), &k(0, 1));
-    let balls = [v.clone() - &(z1.clone() / &m), (z1.clone() - &z2) / &m, z2.clone() / &m];
-    let energy = balls.iter().fold(k(0, 1), |t, x| t + &(m.clone() * &sq(x) / &k(2, 1)));
+    let balls = [
+        v.clone() - &(z1.clone() / &m),
+        (z1.clone() - &z2) / &m,
+        z2.clone() / &m,
+    ];
+    let energy = balls
+        .iter()
+        .fold(k(0, 1), |t, x| t + &(m.clone() * &sq(x) / &k(2, 1)));
     proved(
         "Three equal balls of mass m > 0, e = 1, the first at v > 0 (W = (1/m) [2, -1; -1, 2], \
          u0 = (-v, 0), simultaneous Newton answer lam* = (4mv/3, 2mv/3)). A sweep of projected \
@@ -57,10 +63,26 @@ fn formalise(_paper: &Paper) -> Formalised {
          sweeps with the oracle.)",
         "a sweep maps the error d of lam_2 to d/4 (and lam_1's to d/2), and the first sweep from zero keeps half the energy",
         vec![
-            id("one sweep: lam_1' - lam*_1 = d/2", n("lam_1'", a) - &star1, d.clone() / &k(2, 1)),
-            id("one sweep: lam_2' - lam*_2 = d/4", n("lam_2'", b) - &star2, d.clone() / &k(4, 1)),
-            id("the first sweep from zero: lam = (m v, m v/2)", n("lam_1", z1) + &n("lam_2", z2), k(3, 2) * &m * &v),
-            id("its energy after = m v^2/4, half of m v^2/2", n("K", energy), m.clone() * &sq(&v) / &k(4, 1)),
+            id(
+                "one sweep: lam_1' - lam*_1 = d/2",
+                n("lam_1'", a) - &star1,
+                d.clone() / &k(2, 1),
+            ),
+            id(
+                "one sweep: lam_2' - lam*_2 = d/4",
+                n("lam_2'", b) - &star2,
+                d.clone() / &k(4, 1),
+            ),
+            id(
+                "the first sweep from zero: lam = (m v, m v/2)",
+                n("lam_1", z1) + &n("lam_2", z2),
+                k(3, 2) * &m * &v,
+            ),
+            id(
+                "its energy after = m v^2/4, half of m v^2/2",
+                n("K", energy),
+                m.clone() * &sq(&v) / &k(4, 1),
+            ),
         ],
     )
 }
