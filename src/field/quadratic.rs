@@ -11,7 +11,12 @@
 //! field. A square factor of a larger prime is still recognised when two elements meet: their
 //! `d`s describe the same field exactly when `d1*d2` is a square, and the larger is then
 //! rewritten over the smaller.
+//!
+//! The parts are combined in Q while they are small and in dashu's rationals
+//! ([`RBig`](super::big::RBig)) once any holds more than 512 bits: num-bigint's binary GCD made
+//! the tables at the number limits take seconds to minutes, dashu's takes milliseconds.
 
+use super::big::{to_q, to_rbig};
 use super::decimal;
 use super::{Field, Q, TrySqrt};
 use num_bigint::BigInt;
@@ -105,6 +110,50 @@ type Aligned<'a> = (Cow<'a, QSqrt>, Cow<'a, QSqrt>, Option<Arc<Q>>);
 
 fn sign_of(q: &Q) -> Ordering {
     q.cmp(&Q::zero())
+}
+
+/// Parts of more than this many bits (numerator and denominator together) are combined in
+/// dashu's rationals rather than Q.
+const BIG_BITS: u64 = 512;
+
+fn is_big(q: &Q) -> bool {
+    q.numer().bits() + q.denom().bits() > BIG_BITS
+}
+
+/// An operation on two elements `ax + ay sqrt(d)` and `bx + by sqrt(d)`, written once for
+/// any field of parts (Q, or dashu's rationals for big parts).
+#[derive(Clone, Copy)]
+enum PartsOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+}
+
+impl PartsOp {
+    /// The parts `(x, y)` of the result; `d` is the common radicand (`None`: both rational).
+    fn apply<F: Field>(self, [ax, ay, bx, by]: [&F; 4], d: Option<&F>) -> (F, F) {
+        let cross = || ax.clone() * by + &(ay.clone() * bx);
+        match self {
+            PartsOp::Add => (ax.clone() + bx, ay.clone() + by),
+            PartsOp::Sub => (ax.clone() - bx, ay.clone() - by),
+            PartsOp::Mul => match d {
+                Some(d) if !ay.is_zero() && !by.is_zero() => {
+                    (ax.clone() * bx + &(ay.clone() * by * d), cross())
+                }
+                _ => (ax.clone() * bx, cross()),
+            },
+            PartsOp::Div => {
+                let zero = F::zero();
+                let d = d.unwrap_or(&zero);
+                let norm = bx.square() - by.square() * d;
+                (
+                    (ax.clone() * bx - ay.clone() * by * d) / &norm,
+                    (ay.clone() * bx - ax.clone() * by) / &norm,
+                )
+            }
+        }
+    }
 }
 
 impl QSqrt {
@@ -270,50 +319,36 @@ impl QSqrt {
     }
 
     fn add_ref(a: &QSqrt, b: &QSqrt) -> QSqrt {
-        let (a, b, d) = QSqrt::align_or_panic(a, b);
-        QSqrt {
-            x: &a.x + &b.x,
-            y: &a.y + &b.y,
-            d,
-        }
+        QSqrt::combine(PartsOp::Add, a, b)
     }
 
     fn sub_ref(a: &QSqrt, b: &QSqrt) -> QSqrt {
-        let (a, b, d) = QSqrt::align_or_panic(a, b);
-        QSqrt {
-            x: &a.x - &b.x,
-            y: &a.y - &b.y,
-            d,
-        }
+        QSqrt::combine(PartsOp::Sub, a, b)
     }
 
     fn mul_ref(a: &QSqrt, b: &QSqrt) -> QSqrt {
-        let (a, b, d) = QSqrt::align_or_panic(a, b);
-        match d.as_deref() {
-            Some(dv) if !a.y.is_zero() && !b.y.is_zero() => QSqrt {
-                x: &a.x * &b.x + &a.y * &b.y * dv,
-                y: &a.x * &b.y + &a.y * &b.x,
-                d,
-            },
-            _ => QSqrt {
-                x: &a.x * &b.x,
-                y: &a.x * &b.y + &a.y * &b.x,
-                d,
-            },
-        }
+        QSqrt::combine(PartsOp::Mul, a, b)
     }
 
     /// `a / b = a * conj(b) / (x_b^2 - y_b^2 d)`.
     fn div_ref(a: &QSqrt, b: &QSqrt) -> QSqrt {
         assert!(!b.is_zero(), "QSqrt: division by zero");
+        QSqrt::combine(PartsOp::Div, a, b)
+    }
+
+    /// `op` on two elements written over one radicand.
+    fn combine(op: PartsOp, a: &QSqrt, b: &QSqrt) -> QSqrt {
         let (a, b, d) = QSqrt::align_or_panic(a, b);
-        let dv = d.as_deref().cloned().unwrap_or_else(Q::zero);
-        let norm = &b.x * &b.x - &b.y * &b.y * &dv;
-        QSqrt {
-            x: (&a.x * &b.x - &a.y * &b.y * &dv) / &norm,
-            y: (&a.y * &b.x - &a.x * &b.y) / &norm,
-            d,
-        }
+        let parts = [&a.x, &a.y, &b.x, &b.y];
+        let (x, y) = if parts.iter().any(|q| is_big(q)) || d.as_deref().is_some_and(is_big) {
+            let [ax, ay, bx, by] = parts.map(to_rbig);
+            let dv = d.as_deref().map(to_rbig);
+            let (x, y) = op.apply([&ax, &ay, &bx, &by], dv.as_ref());
+            (to_q(&x), to_q(&y))
+        } else {
+            op.apply(parts, d.as_deref())
+        };
+        QSqrt { x, y, d }
     }
 
     /// The exact sign of `x + y*sqrt(d)`: from the signs of `x` and `y`, comparing `x^2` with
@@ -326,11 +361,13 @@ impl QSqrt {
             _ if sx == sy => sx,
             (_, _, Some(d)) => {
                 // Never equal: d is not a square.
-                if &self.x * &self.x > &self.y * &self.y * d {
-                    sx
+                let x_wins = if is_big(&self.x) || is_big(&self.y) || is_big(d) {
+                    let (x, y, d) = (to_rbig(&self.x), to_rbig(&self.y), to_rbig(d));
+                    x.square() > y.square() * &d
                 } else {
-                    sy
-                }
+                    &self.x * &self.x > &self.y * &self.y * d
+                };
+                if x_wins { sx } else { sy }
             }
         }
     }

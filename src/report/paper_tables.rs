@@ -5,6 +5,7 @@
 
 use super::table::{Cell, Column, Table};
 use crate::error::{Error, ErrorKind};
+use crate::field::big::{RBig, to_q};
 use crate::field::notation::{self, Notation};
 use crate::field::{Q, QSqrt, q};
 use crate::scene::{Disc, Params, RodInertia, Scene};
@@ -333,48 +334,6 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
     })
 }
 
-/// The most decimal digits T6's inputs may hold together (`--ratio`, `--e`, `--a`, `--v0t`,
-/// `--radius`, `--spin` and the rod's): T6 solves seven or eight oblique rows with their
-/// stick-or-slide decisions over Q, whose reductions cost about d^2 for numbers of d digits, so
-/// 6,000 digits is about four seconds at worst (`--ratio 1e10000 --a 1e-10000` took 41 s).
-/// T1-T5 take each input at the number limits.
-pub const MAX_T6_DIGITS: u64 = 6_000;
-
-/// Refuses T6 inputs holding more than [`MAX_T6_DIGITS`] digits together, naming the largest.
-fn check_t6_size(opts: &TableOptions) -> Result<(), Error> {
-    let rod = match &opts.rod {
-        RodInertia::Gyration(x) | RodInertia::Moment(x) => Some(x),
-        _ => None,
-    };
-    let inputs = [
-        ("ratio", Some(&opts.ratio)),
-        ("e", Some(&opts.e)),
-        ("a", Some(&opts.a)),
-        ("v0t", Some(&opts.v0t)),
-        ("radius", opts.disc.as_ref().map(|d| &d.radius)),
-        ("spin", opts.disc.as_ref().map(|d| &d.spin)),
-        ("rod", rod),
-    ];
-    let sized = inputs
-        .iter()
-        .filter_map(|(name, x)| x.map(|x| (*name, crate::field::int::decimal_digits(x))));
-    let total: u64 = sized.clone().map(|(_, d)| d).sum();
-    if total <= MAX_T6_DIGITS {
-        return Ok(());
-    }
-    // The first of the largest: `max_by_key` keeps the last, so it runs backwards.
-    let heaviest = sized
-        .rev()
-        .max_by_key(|(_, d)| *d)
-        .map_or("ratio", |(name, _)| name);
-    Err(Error::out_of_range(
-        heaviest,
-        format!(
-            "T6 solves eight oblique impacts exactly, and its inputs hold {total} digits together, more than {MAX_T6_DIGITS} (limit for T6); T1-T5 and `rodimpact solve` take them"
-        ),
-    ))
-}
-
 /// T6: an oblique impact with friction, as mu grows past the exact threshold mu* at which the
 /// contact stops sliding: the rod of T2 and T3 (`ratio`, `rod`, `e`) struck at `a` (the end by
 /// default) by a projectile also moving along the rod with `v0t`, or a solid disc spinning
@@ -395,7 +354,6 @@ fn check_t6_size(opts: &TableOptions) -> Result<(), Error> {
 /// assert_eq!(threshold[0], Cell::Rational(q(5, 4)));
 /// ```
 pub fn t6(opts: &TableOptions) -> Result<Table, Error> {
-    check_t6_size(opts)?;
     let base = unit_scene(&opts.ratio, &opts.rod, &opts.e, None)?;
     let scene = |mu: &Q| {
         let mut b = Scene::builder(Q::one(), opts.ratio.clone())
@@ -411,10 +369,11 @@ pub fn t6(opts: &TableOptions) -> Result<Table, Error> {
         }
         b.build()
     };
+    // Over dashu's rationals: at the input limits num-bigint's GCD took most of a minute.
     let solved = |s: &Scene| {
         let o = s.oblique().cloned().unwrap_or_default();
-        oblique::solve(&s.params::<Q>(), &o.params(), None)
-            .expect("Q decides stick or slide, and every mass is positive")
+        oblique::solve(&s.params::<RBig>(), &o.params(), None)
+            .expect("exact rationals decide stick or slide, and every mass is positive")
     };
     // mu* = |u_t|/(J k_t): the stick impulse over the normal impulse.
     let frictionless = solved(&scene(&Q::zero())?);
@@ -426,7 +385,7 @@ pub fn t6(opts: &TableOptions) -> Result<Table, Error> {
             ),
         ));
     }
-    let threshold = frictionless.stick_impulse.abs() / &frictionless.impulse;
+    let threshold = to_q(&(frictionless.stick_impulse.abs() / &frictionless.impulse));
     let mut mus: Vec<Q> = [(0, 1), (1, 10), (1, 4), (1, 2), (1, 1), (2, 1)]
         .iter()
         .map(|&(n, d)| q(n, d))
@@ -444,18 +403,16 @@ pub fn t6(opts: &TableOptions) -> Result<Table, Error> {
             None => "frictionless",
             Some(c) => c.as_str(),
         };
+        let cell = |x: &RBig| Cell::Rational(to_q(x));
         let mut row = vec![
             Cell::Rational(mu.clone()),
             Cell::Text(contact.into()),
-            Cell::Rational(out.tangential_impulse.clone()),
-            Cell::Rational(out.after.vt.clone()),
-            Cell::Rational(out.after.rod.vt.clone()),
+            cell(&out.tangential_impulse),
+            cell(&out.after.vt),
+            cell(&out.after.rod.vt),
         ];
-        row.extend(out.after.spin.clone().map(Cell::Rational));
-        row.extend([
-            Cell::Rational(out.after.rod.omega.clone()),
-            Cell::Rational(out.lost_friction.clone()),
-        ]);
+        row.extend(out.after.spin.as_ref().map(cell));
+        row.extend([cell(&out.after.rod.omega), cell(&out.lost_friction)]);
         rows.push(row);
     }
     let (title, at) = if opts.a.is_one() {

@@ -120,9 +120,23 @@ pub fn impulse_equations<F: Field>(p: &Params<F>) -> (Vec<Vec<F>>, Vec<F>) {
 /// assert!(out.residuals.all_zero());
 /// ```
 pub fn solve<F: Field>(p: &Params<F>) -> Option<Outcome<F>> {
+    motion_after(p).map(|after| outcome(p, after))
+}
+
+/// The velocities after the impact alone, without the energies and residuals [`solve`] adds:
+/// for callers that need only the motion (an identity in a symbol, where each law would be
+/// one more rational function to reduce).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::Scene, solve::linear::motion_after, field::{q, Q}};
+/// let p = Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>();
+/// assert_eq!(motion_after(&p).unwrap().omega, q(6, 5));
+/// ```
+pub fn motion_after<F: Field>(p: &Params<F>) -> Option<Motion<F>> {
     let (a, b) = impulse_equations(p);
     let x = solve_linear(a, b)?;
-    let after = match &p.support {
+    Some(match &p.support {
         Support::Free => Motion {
             v: x[0].clone(),
             rod_v: x[1].clone(),
@@ -133,6 +147,5 @@ pub fn solve<F: Field>(p: &Params<F>) -> Option<Outcome<F>> {
             rod_v: -(pivot.clone() * &x[1]),
             omega: x[1].clone(),
         },
-    };
-    Some(outcome(p, after))
+    })
 }

@@ -8,7 +8,7 @@
 
 use crate::field::{Field, Q, QSqrt, RatFn};
 use crate::scene::{Params, Scene, Support};
-use crate::solve::linear::solve;
+use crate::solve::linear::motion_after;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
@@ -157,13 +157,13 @@ impl PaperForm {
             a: a.clone(),
             ..lifted
         };
-        let Some(out) = solve(&params) else {
+        let Some(after) = motion_after(&params) else {
             return false;
         };
         let x = a - &params.axis();
         let c = RatFn::from_rational(&self.c);
         let f = x.clone() / (RatFn::from_rational(&self.b_squared) + &(c.square() * &x * &x));
-        (out.after.omega - &(RatFn::from_rational(&self.k) * &f)).is_identically_zero()
+        (after.omega - &(RatFn::from_rational(&self.k) * &f)).is_identically_zero()
     }
 
     /// `b/c`, the argmax of f on x > 0, as an exact square root.

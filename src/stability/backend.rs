@@ -8,7 +8,8 @@ use crate::mechanics::Motion;
 use crate::scene::{Params, Scene, Support};
 use crate::solve::float::{FloatFormula, Real};
 use crate::solve::{self, Route};
-use num_traits::Zero;
+use num_traits::{Signed, Zero};
+use std::sync::OnceLock;
 
 /// A number format and the formula evaluated in it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -24,12 +25,23 @@ pub enum Backend {
 }
 
 /// The exact answer for a free-rod scene, with its condition numbers.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Reference {
     /// Exact (v, V, omega).
     pub motion: Motion<Q>,
     /// The exact scene inputs.
     pub params: Params<Q>,
+    /// The condition numbers, computed on first use and shared by every backend: for an `e`
+    /// the format holds exactly (index 0) and for one it rounds (index 1).
+    conditions: [OnceLock<Motion<Option<Q>>>; 2],
+}
+
+/// Two references are equal when their scenes and answers are: whether the condition numbers
+/// have been computed yet does not matter.
+impl PartialEq for Reference {
+    fn eq(&self, other: &Reference) -> bool {
+        (&self.motion, &self.params) == (&other.motion, &other.params)
+    }
 }
 
 impl Reference {
@@ -48,7 +60,40 @@ impl Reference {
             return None;
         }
         let motion = solve::with::<Q>(scene, Backend::Exact.route()).ok()?.after;
-        Some(Reference { motion, params })
+        Some(Reference {
+            motion,
+            params,
+            conditions: Default::default(),
+        })
+    }
+
+    /// Whether the scene is in range for the format `T`: every nonzero input (m, M, I, a, v0,
+    /// e) and every nonzero exact output (v, V, omega) is a normal number of `T` once rounded.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{scene::Scene, field::q, number::parse, stability::Reference};
+    /// let s = Scene::builder(q(1, 1), parse("1e200").unwrap()).build()?;
+    /// let reference = Reference::of(&s).unwrap();
+    /// assert!(reference.in_range::<f64>());
+    /// assert!(!reference.in_range::<f32>()); // M = 1e200 overflows f32
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn in_range<T: Real>(&self) -> bool {
+        let (p, x) = (&self.params, &self.motion);
+        [
+            &p.m,
+            &p.rod_mass,
+            &p.inertia,
+            &p.a,
+            &p.v0,
+            &p.e,
+            &x.v,
+            &x.rod_v,
+            &x.omega,
+        ]
+        .iter()
+        .all(|value| value.is_zero() || T::from_rational(&value.abs()).normal())
     }
 }
 
@@ -131,7 +176,9 @@ impl Backend {
         }
         .as_ref()
             != Some(e);
-        condition(&reference.params, e_rounds)
+        reference.conditions[usize::from(e_rounds)]
+            .get_or_init(|| condition(&reference.params, e_rounds))
+            .clone()
     }
 
     /// Evaluates `scene` from its exact inputs ([`FloatFormula::eval_scene`]) and measures (v, V,

@@ -2,7 +2,7 @@
 //! error in units of cond u against median run time, measured side by side in the same run
 //! (rendered by `crate::report::stability_markdown` and `stability_json`).
 
-use super::{Backend, Case, Class, Reference, in_range, median_nanos, suite, sweep};
+use super::{Backend, Case, Class, Reference, median_nanos, suite, sweep};
 use crate::field::{Interval, Q};
 use crate::solve::closed_form::closed_form;
 
@@ -41,8 +41,17 @@ pub struct BackendStats {
 /// ```
 pub fn compare_backends(count: usize) -> Vec<BackendStats> {
     let cases = suite();
-    let wide: Vec<Case> = cases.iter().cloned().chain(sweep(1, count, 300)).collect();
-    let narrow: Vec<Case> = cases.iter().cloned().chain(sweep(2, count, 36)).collect();
+    // Each scene's exact reference is computed once and shared by every backend.
+    let referenced = |pool: Vec<Case>| -> Vec<(Case, Reference)> {
+        pool.into_iter()
+            .map(|case| {
+                let reference = Reference::of(&case.scene).expect("the suite's rods are free");
+                (case, reference)
+            })
+            .collect()
+    };
+    let wide = referenced(cases.iter().cloned().chain(sweep(1, count, 300)).collect());
+    let narrow = referenced(cases.iter().cloned().chain(sweep(2, count, 36)).collect());
     Backend::ALL
         .iter()
         .map(|&backend| {
@@ -56,18 +65,17 @@ pub fn compare_backends(count: usize) -> Vec<BackendStats> {
         .collect()
 }
 
-fn stats(backend: Backend, pool: &[Case], timed: &[Case]) -> BackendStats {
-    let fits = |c: &&Case| match backend {
-        Backend::F32(_) => in_range::<f32>(&c.scene),
+fn stats(backend: Backend, pool: &[(Case, Reference)], timed: &[Case]) -> BackendStats {
+    let fits = |(_, reference): &&(Case, Reference)| match backend {
+        Backend::F32(_) => reference.in_range::<f32>(),
         Backend::Exact => true,
-        _ => in_range::<f64>(&c.scene),
+        _ => reference.in_range::<f64>(),
     };
     let mut ratios = Vec::new();
     let (mut nan, mut inf, mut zero, mut missed, mut scenes) = (0, 0, 0, 0, 0);
-    for case in pool.iter().filter(fits) {
+    for (case, reference) in pool.iter().filter(fits) {
         scenes += 1;
-        let reference = Reference::of(&case.scene).expect("free rod");
-        let (m, encloses) = backend.measure(&case.scene, &reference).expect("free rod");
+        let (m, encloses) = backend.measure(&case.scene, reference).expect("free rod");
         missed += usize::from(!encloses);
         for x in [m.v, m.rod_v, m.omega] {
             match x.class {

@@ -4,7 +4,7 @@
 use crate::field::Q;
 use crate::scene::{Scene, SceneInput};
 use crate::solve::float::Real;
-use num_traits::{Signed, Zero};
+use num_traits::Zero;
 
 /// One scene of the suite or the sweep.
 #[derive(Debug, Clone, PartialEq)]
@@ -225,22 +225,5 @@ pub fn sweep(seed: u64, count: usize, decades: i64) -> Vec<Case> {
 /// assert!(!in_range::<f32>(&s[14].scene)); // m = 1e200 overflows f32
 /// ```
 pub fn in_range<T: Real>(scene: &Scene) -> bool {
-    let Some(reference) = super::Reference::of(scene) else {
-        return false;
-    };
-    let p = &reference.params;
-    let x = &reference.motion;
-    [
-        &p.m,
-        &p.rod_mass,
-        &p.inertia,
-        &p.a,
-        &p.v0,
-        &p.e,
-        &x.v,
-        &x.rod_v,
-        &x.omega,
-    ]
-    .iter()
-    .all(|value| value.is_zero() || T::from_rational(&value.abs()).normal())
+    super::Reference::of(scene).is_some_and(|reference| reference.in_range::<T>())
 }

@@ -560,44 +560,33 @@ fn figures_at_the_limits_are_refused_or_drawn() {
 }
 
 /// Regression (G7): `table --only T6` at the number limits took 38-48 CPU s (`--ratio 1e10000 --a
-/// 1e-10000`): its eight oblique rows reduce 10,000-digit numbers with num-bigint's binary GCD.
-/// T6's inputs may now hold 6,000 digits together; beyond, exit 2 naming the largest.
+/// 1e-10000`): its eight oblique rows reduced 10,000-digit numbers with num-bigint's binary GCD.
+/// They are now solved over dashu's rationals and every input at the number limits is answered.
 #[test]
 fn table_t6_at_the_limits() {
-    let refusal = "more than 6000 (limit for T6)";
-    let cases: [(&str, &[&str], &str); 3] = [
-        (
-            "ratio and a",
-            &["--ratio", "1e10000", "--a", "1e-10000"],
-            "ratio: ",
-        ),
-        (
-            "disc",
-            &[
-                "--ratio", "1e-10", "--radius", "1e-10000", "--spin", "1e10000",
-            ],
-            "radius: ",
-        ),
-        ("e and v0t", &["--e", "1e-10000", "--v0t", "1e10000"], "e: "),
+    // T6 solves eight oblique impacts over dashu's rationals (Lehmer GCD): at 10,000-digit
+    // inputs it takes under half a second (41 s on num-bigint's binary GCD, when it was capped),
+    // so every input at the number limits is answered, within the CPU bound.
+    let cases: [&[&str]; 4] = [
+        &["--ratio", "1e10000", "--a", "1e-10000"],
+        &[
+            "--ratio", "1e-10", "--radius", "1e-10000", "--spin", "1e10000",
+        ],
+        &["--e", "1e-10000", "--v0t", "1e10000"],
+        &[
+            "--ratio", "1e10000", "--a", "1e-10000", "--e", "1e-10000", "--v0t", "1e10000",
+        ],
     ];
-    matrix(
-        cases
-            .iter()
-            .map(|(name, args, field)| {
-                let mut all = vec!["table", "--only", "T6"];
-                all.extend_from_slice(args);
-                (name.to_string(), os(&all), format!("{field}T6 solves"))
-            })
-            .collect(),
-    );
-    let (_, _, stderr) = run(&os(&["table", "--only", "T6", "--ratio", "1e10000"])).unwrap();
-    assert!(stderr.contains(refusal), "{stderr}");
-    // Within the limit, T6 is answered (and T2 still takes one input at the number limit).
-    let (code, out) = finished(&[
-        "table", "--only", "T6", "--ratio", "1e2900", "--a", "1e-2900",
-    ]);
-    assert_eq!(code, 0);
-    assert!(out.contains("stick"), "{out}");
+    for args in cases {
+        let mut all = vec!["table", "--only", "T6"];
+        all.extend_from_slice(args);
+        let (code, out) = finished(&all);
+        assert_eq!(code, 0, "{all:?}");
+        assert!(
+            out.contains("stick") || out.contains("slide"),
+            "{all:?}: {out}"
+        );
+    }
     let (code, _) = finished(&["table", "--only", "T2", "--ratio", "1e10000"]);
     assert_eq!(code, 0);
 }
