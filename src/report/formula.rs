@@ -4,6 +4,7 @@
 use crate::field::{Poly, Q, RatFn};
 use crate::textbook::expr::Radical;
 use crate::textbook::formula::{AnswerFormula, Formulas};
+use num_bigint::BigInt;
 use num_traits::{One, Signed};
 use serde_json::{Map, Value, json};
 
@@ -303,14 +304,20 @@ fn poly_latex(p: &Poly) -> String {
 /// A rational function in LaTeX: `\frac{num}{den}`, or the numerator alone over 1.
 fn ratfn_latex(f: &RatFn) -> String {
     if f.den().is_one() {
-        poly_latex(f.num())
-    } else {
-        format!(
-            "\\frac{{{}}}{{{}}}",
-            poly_latex(f.num()),
-            poly_latex(f.den())
-        )
+        return poly_latex(f.num());
     }
+    // The rational constant goes into the fraction as integers (\frac{v_0}{2 l}, not
+    // \frac{\frac{1}{2} v_0}{l}).
+    let (num_content, den_content) = (f.num().content(), f.den().content());
+    let constant = &num_content / &den_content;
+    let part = |p: &Poly, content: &Q, integer: &BigInt| {
+        p.scale(&(Q::from_integer(integer.clone()) / content))
+    };
+    format!(
+        "\\frac{{{}}}{{{}}}",
+        poly_latex(&part(f.num(), &num_content, constant.numer())),
+        poly_latex(&part(f.den(), &den_content, constant.denom()))
+    )
 }
 
 /// `coeff \sqrt{radicand}` in LaTeX.

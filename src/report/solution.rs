@@ -8,7 +8,7 @@ use crate::scene::{Oblique, RodInertia, Scene, Support};
 use crate::solve::Answer;
 use crate::solve::Energy;
 use crate::solve::oblique::{ContactMode, ObliqueOutcome};
-use crate::solve::optimum::{Argmax, Placement};
+use crate::solve::optimum::{Argmax, Arm, Placement};
 use num_traits::{One, Zero};
 use serde_json::{Map, Value, json};
 
@@ -65,6 +65,20 @@ pub fn solution_json(answer: &Answer, digits: usize) -> Value {
         surd_json(&o.end_to_max(), decimal_digits),
     );
     out.insert("gain".into(), surd_json(&o.gain(), decimal_digits));
+    if let Some(other) = &o.other_arm {
+        let (max, arm) = o.rod_max();
+        let argmax = match arm {
+            Arm::Struck => o.argmax,
+            Arm::Other => other.argmax,
+        };
+        let mut rod = surd_json(max, decimal_digits);
+        if let Value::Object(fields) = &mut rod {
+            fields.insert("arm".into(), Value::String(arm.as_str().into()));
+            fields.insert("argmax".into(), Value::String(argmax.as_str().into()));
+            fields.insert("other_arm".into(), Value::String(other.arm.to_string()));
+        }
+        out.insert("rod_omega_max".into(), rod);
+    }
     let (form, verified) = answer
         .paper_form
         .as_ref()
@@ -182,9 +196,14 @@ pub fn solution_text(answer: &Answer, digits: usize) -> String {
         &format!("{star} is on the rod when"),
         plain(on_the_rod_when(s, o.threshold_mass.as_ref())),
     );
+    let side = if o.other_arm.is_some() {
+        " on the struck arm"
+    } else {
+        ""
+    };
     let at = match o.argmax {
-        Argmax::AStar => format!("max |omega|, reached at {star}"),
-        Argmax::End => "max |omega|, reached at the end".to_string(),
+        Argmax::AStar => format!("max |omega|{side}, reached at {star}"),
+        Argmax::End => format!("max |omega|{side}, reached at the end"),
     };
     t.row(
         "",
@@ -201,6 +220,19 @@ pub fn solution_text(answer: &Answer, digits: usize) -> String {
         "omega(end)/omega_max",
         cells(ratio.to_string(), ratio.decimal(digits), ""),
     );
+    if let Some(other) = &o.other_arm {
+        let (max, arm) = o.rod_max();
+        let place = match (arm, other.argmax) {
+            (Arm::Struck, _) => "on the struck arm".to_string(),
+            (Arm::Other, Argmax::AStar) => format!("at {star} on the other arm"),
+            (Arm::Other, Argmax::End) => "at the other arm's end".to_string(),
+        };
+        t.row(
+            "",
+            &format!("max |omega| over the rod, {place}"),
+            cells(max.to_string(), max.decimal(digits), "rad/s"),
+        );
+    }
     out.push_str(&t.render());
     out
 }

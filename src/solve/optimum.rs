@@ -87,6 +87,47 @@ pub struct Optimum {
     /// else fixed: a* is on the rod iff M <= this. `None` for a dumbbell-like free rod
     /// (r_G = l), whose a* is beyond the end for every mass.
     pub threshold_mass: Option<Q>,
+    /// A pivoted rod's other arm, on the far side of the pivot from the impact, when it has a
+    /// length: the same curve of omega in the distance from the pivot holds there, so the
+    /// rod's largest |omega| may lie on it (`None` for a free rod, whose two halves mirror
+    /// each other, and for a pivot at an end).
+    pub other_arm: Option<ArmPeak>,
+}
+
+/// The largest |omega| over the impact points of one arm of a pivoted rod.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ArmPeak {
+    /// The arm's length, from the pivot to its end.
+    pub arm: Q,
+    /// Where on the arm the maximum is reached.
+    pub argmax: Argmax,
+    /// The maximum, exactly.
+    pub omega_max: QSqrt,
+}
+
+/// Which arm of a pivoted rod gives the rod's largest |omega|.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Arm {
+    /// The arm the projectile strikes (also when both arms give the same maximum).
+    Struck,
+    /// The arm on the far side of the pivot.
+    Other,
+}
+
+impl Arm {
+    /// The JSON spelling: `"struck"` or `"other"`.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::solve::optimum::Arm;
+    /// assert_eq!(Arm::Other.as_str(), "other");
+    /// ```
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Arm::Struck => "struck",
+            Arm::Other => "other",
+        }
+    }
 }
 
 impl Optimum {
@@ -112,6 +153,31 @@ impl Optimum {
     /// ```
     pub fn gain(&self) -> QSqrt {
         self.omega_max.clone() / &QSqrt::rational(self.omega_end.clone()) - &QSqrt::one()
+    }
+
+    /// The largest |omega| over the whole rod and the arm that gives it: the struck side's
+    /// maximum for a free rod; for a pivoted rod the larger of the two arms' (decided exactly).
+    ///
+    /// # Examples
+    /// A uniform rod (M = m, l = 1) on a pivot at p = 1/2 struck at a = 3/4: the struck arm
+    /// (1/2 long) peaks at its end, 6/5; d* = sqrt(21)/6 lies on the other arm (3/2 long), where
+    /// |omega| reaches v0/d* = 2 sqrt(21)/7.
+    /// ```
+    /// use rodimpact::{scene::Scene, solve::optimum::{optimum, Arm}, field::q};
+    /// let s = Scene::builder(q(1, 1), q(1, 1)).pivot(q(1, 2)).a(q(3, 4)).build()?;
+    /// let o = optimum(&s).unwrap();
+    /// assert_eq!(o.omega_max.to_string(), "6/5");
+    /// let (max, arm) = o.rod_max();
+    /// assert_eq!((max.to_string(), arm), ("2*sqrt(21)/7".to_string(), Arm::Other));
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn rod_max(&self) -> (&QSqrt, Arm) {
+        match &self.other_arm {
+            Some(other) if other.omega_max.cmp_exact(&self.omega_max) == Ordering::Greater => {
+                (&other.omega_max, Arm::Other)
+            }
+            _ => (&self.omega_max, Arm::Struck),
+        }
     }
 }
 
@@ -310,21 +376,43 @@ fn of_rod_at_rest(scene: &Scene) -> Optimum {
     };
     let peak = Peak::of(&params, &squared, &arm);
     let within_rod = peak.within_rod(&squared, &arm);
-    let (argmax, omega_max) = if within_rod {
-        let inverse_root = QSqrt::sqrt_of(&(Q::one() / &squared));
-        (Argmax::AStar, inverse_root * &QSqrt::rational(peak.half))
-    } else {
-        (Argmax::End, QSqrt::rational(peak.at_end.clone()))
+    let struck = ArmPeak::of(&params, &squared, &arm);
+    let other_arm = match scene.support() {
+        Support::Free => None,
+        Support::Pivot(_) => {
+            let other = l.clone() + l - &arm;
+            (!other.is_zero()).then(|| ArmPeak::of(&params, &squared, &other))
+        }
     };
     Optimum {
         squared,
         arm,
         within_rod,
-        argmax,
-        omega_max,
+        argmax: struck.argmax,
+        omega_max: struck.omega_max,
         placement,
         omega_end: peak.at_end,
         threshold_mass,
+        other_arm,
+    }
+}
+
+impl ArmPeak {
+    /// The peak of omega over an arm of length `arm` (from the centre of a free rod, from the
+    /// pivot of a pivoted one): at a* when a* lies on it, else at its end.
+    fn of(params: &Params<Q>, squared: &Q, arm: &Q) -> ArmPeak {
+        let peak = Peak::of(params, squared, arm);
+        let (argmax, omega_max) = if peak.within_rod(squared, arm) {
+            let inverse_root = QSqrt::sqrt_of(&(Q::one() / squared));
+            (Argmax::AStar, inverse_root * &QSqrt::rational(peak.half))
+        } else {
+            (Argmax::End, QSqrt::rational(peak.at_end))
+        };
+        ArmPeak {
+            arm: arm.clone(),
+            argmax,
+            omega_max,
+        }
     }
 }
 

@@ -189,7 +189,7 @@ pub const OBLIQUE_SYMBOLS: [&str; 7] = ["v0t", "mu", "rd", "w", "V0", "Vt0", "om
 /// ```
 /// use rodimpact::textbook::expr::parse;
 /// let r = parse("claim", "2*sqrt(m/3)").unwrap();
-/// assert_eq!((r.coeff.to_string(), r.radicand.to_string()), ("2".into(), "1/3*m".into()));
+/// assert_eq!((r.coeff.to_string(), r.radicand.to_string()), ("2/3".into(), "3*m".into()));
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Radical {
@@ -213,6 +213,21 @@ impl Radical {
             coeff,
             radicand: RatFn::one(),
         }
+    }
+
+    /// `coeff * sqrt(radicand)` in normal form: an integer free of squares under the root's
+    /// constant, and even powers of the (positive) symbols brought out.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::textbook::expr::Radical;
+    /// use rodimpact::field::{q, Field, RatFn};
+    /// let l = RatFn::symbol("l");
+    /// let r = Radical::normalized(RatFn::symbol("v0"), RatFn::from_rational(&q(3, 2)) / (l.clone() * &l));
+    /// assert_eq!(r.to_string(), "(1/2*v0/l)*sqrt(6)");
+    /// ```
+    pub fn normalized(coeff: RatFn, radicand: RatFn) -> Radical {
+        simplify(coeff, radicand)
     }
 
     /// Whether the value has no square root left.
@@ -711,30 +726,60 @@ fn sqrt(x: Radical) -> Result<Radical, String> {
     Ok(simplify(RatFn::one(), x.coeff))
 }
 
-/// Normal form: zero has radicand 1, and a constant radicand loses its square factors.
+/// Normal form: zero has radicand 1; the radicand's constant loses its square factors (an
+/// integer under the root: `sqrt(3/2)` is `sqrt(6)/2`), and even powers of a symbol dividing
+/// every term of its numerator or denominator come out of the root (the symbols are positive
+/// quantities: `sqrt(3/(2 l^2))` is `(1/2/l)*sqrt(6)`).
 fn simplify(coeff: RatFn, radicand: RatFn) -> Radical {
     if coeff.is_zero() || radicand.is_one() {
         return Radical::rational(coeff);
     }
-    if let Some(r) = radicand.as_constant()
-        && !r.is_negative()
-    {
-        let (n, d) = (r.numer().clone(), r.denom().clone());
-        // sqrt(n/d) = sqrt(n d) / d; pull the largest square factor out of small n d.
-        let nd = n * &d;
-        let root = nd.sqrt();
-        if &root * &root == nd {
-            let value = Q::new(root, d);
-            return Radical::rational(coeff * &RatFn::from_rational(&value));
-        }
-        let (outside, inside) = square_part(nd);
-        let factor = Q::new(outside, d);
-        return Radical {
-            coeff: coeff * &RatFn::from_rational(&factor),
-            radicand: RatFn::from_rational(&Q::from_integer(inside)),
-        };
+    let (num, num_out) = even_powers_out(radicand.num());
+    let (den, den_out) = even_powers_out(radicand.den());
+    let (num_content, den_content) = (num.content().abs(), den.content().abs());
+    let constant = &num_content / &den_content;
+    if constant.is_zero() || constant.is_negative() {
+        return Radical { coeff, radicand };
     }
-    Radical { coeff, radicand }
+    let (n, d) = (constant.numer().clone(), constant.denom().clone());
+    // sqrt(n/d) = sqrt(n d) / d; pull the largest square factor out of small n d.
+    let nd = n * &d;
+    let root = nd.sqrt();
+    let (outside, inside) = if &root * &root == nd {
+        (root, BigInt::one())
+    } else {
+        square_part(nd)
+    };
+    let outside = RatFn::from_rational(&Q::new(outside, d));
+    let rest = RatFn::new(
+        num.scale(&num_content.recip()),
+        den.scale(&den_content.recip()),
+    )
+    .expect("a radicand's denominator is not zero");
+    let coeff = coeff * &outside * &RatFn::from(num_out) / RatFn::from(den_out);
+    let radicand = rest * &RatFn::from_rational(&Q::from_integer(inside));
+    if radicand.is_one() {
+        Radical::rational(coeff)
+    } else {
+        Radical { coeff, radicand }
+    }
+}
+
+/// `p = out^2 * rest`, `out` the product of `sym^(k div 2)` over the symbols whose `k`-th
+/// power divides every term of `p`.
+fn even_powers_out(p: &Poly) -> (Poly, Poly) {
+    let (mut rest, mut out) = (p.clone(), Poly::one());
+    for sym in p.symbols() {
+        let half = p.low_degree_in(sym) / 2;
+        if half > 0 {
+            let root = Poly::var(sym).pow(half);
+            rest = rest
+                .div_exact(&(&root * &root))
+                .expect("every term holds the symbol's even power");
+            out = out * &root;
+        }
+    }
+    (rest, out)
 }
 
 /// `n = outside^2 * inside`, taking out the squares of the primes below 1000.

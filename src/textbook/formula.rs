@@ -12,8 +12,7 @@ use super::expr::OBLIQUE_SYMBOLS;
 use super::expr::{Budget, Radical};
 use super::symbolic::{GivenScene, SymbolicScene, heaviest_field, oblique_params};
 use crate::error::Error;
-use crate::field::poly::Monomial;
-use crate::field::{Field, Poly, RatFn, TrySqrt};
+use crate::field::{Field, Poly, RatFn};
 use crate::scene::{ObliqueParams, Params, SceneInput, Support};
 use crate::solve::linear::{self, solve};
 use crate::solve::oblique::{self, ContactMode, ObliqueOutcome, normal_params};
@@ -157,10 +156,13 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
     if let Some((across, _)) = &stick.pivot_impulse {
         list.push(rational("pivot_impulse", across.clone()));
     }
-    if o.rod_before.v.is_zero() && o.rod_before.vt.is_zero() && o.rod_before.omega.is_zero() {
-        let squared = a_star_squared(p);
+    if o.rod_before.omega.is_zero() {
+        // Drift along either axis leaves a* where it is (X31); omega_max scales with the
+        // approach speed, which is the normal problem's v0.
+        let normal_problem = normal_params(p, o);
+        let squared = a_star_squared(&normal_problem);
         list.push(rational("a_star_squared", squared.clone()));
-        list.push(omega_max(p, &stick.after.rod.omega, &squared));
+        list.push(omega_max(&normal_problem, &stick.after.rod.omega, &squared));
     }
     let mut defaults = scene.defaults.clone();
     let approach = normal_params(p, o).v0;
@@ -226,7 +228,8 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
         } else {
             -stick.stick_impulse.clone()
         };
-        list.push(rational("mu_star", speed / &stick.impulse));
+        let mu_star = speed / &stick.impulse;
+        list.push(rational("mu_star", mu_star.clone()));
         let decided = if slip.is_zero() {
             // No slip before the impact: nothing to stop, the contact holds (Jt = 0).
             Ok(stick.clone())
@@ -241,25 +244,51 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
             Err(_) => {
                 let slide = with(Some(ContactMode::Slide { forward }))
                     .expect("a valid scene's masses are positive");
-                let mu = match o.mu.as_constant() {
-                    Some(c) => format!("mu = {c}"),
-                    None => "mu".to_string(),
-                };
-                cases = vec![
-                    ContactCase {
-                        contact: "stick",
-                        condition: format!("{mu} >= mu_star"),
-                        formulas: tangential(&stick),
-                    },
-                    ContactCase {
-                        contact: "slide",
-                        condition: format!("{mu} < mu_star"),
-                        formulas: tangential(&slide),
-                    },
-                ];
+                // The symbols may leave the slip's course open while mu - mu* is a number
+                // (mu given, mu* free of symbols): that number decides the contact.
+                match (o.mu.clone() - &mu_star).as_constant() {
+                    Some(margin) => {
+                        let (mode, out) = if margin.is_negative() {
+                            ("slide", &slide)
+                        } else {
+                            ("stick", &stick)
+                        };
+                        contact = Some(mode);
+                        list.extend(tangential(out));
+                    }
+                    None => {
+                        let mu = match o.mu.as_constant() {
+                            Some(c) => format!("mu = {c}"),
+                            None => "mu".to_string(),
+                        };
+                        cases = vec![
+                            ContactCase {
+                                contact: "stick",
+                                condition: format!("{mu} >= mu_star"),
+                                formulas: tangential(&stick),
+                            },
+                            ContactCase {
+                                contact: "slide",
+                                condition: format!("{mu} < mu_star"),
+                                formulas: tangential(&slide),
+                            },
+                        ];
+                    }
+                }
             }
         }
     }
+    Formulas {
+        free: free_symbols(scene, o),
+        defaults,
+        formulas: list,
+        contact,
+        cases,
+    }
+}
+
+/// The scene's free symbols, then the oblique ones the formulas use.
+fn free_symbols(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Vec<String> {
     let mut free: Vec<String> = scene.free.iter().map(|s| s.name().to_string()).collect();
     let used: Vec<&RatFn> = [
         &o.v0t,
@@ -279,13 +308,7 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
             free.push(name.to_string());
         }
     }
-    Formulas {
-        free,
-        defaults,
-        formulas: list,
-        contact,
-        cases,
-    }
+    free
 }
 
 /// omega_max: `(1 + e) v0/(2 a*)` where a* lies on the rod, with the condition; omega at the
@@ -293,14 +316,7 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
 fn omega_max(p: &Params<RatFn>, omega: &RatFn, squared: &RatFn) -> AnswerFormula {
     let two = RatFn::from_i64(2);
     let coeff = (RatFn::one() + &p.e) * &p.v0 / two;
-    let inverse = RatFn::one() / squared.clone();
-    let value = match square_root(&inverse) {
-        Some(root) => Radical::rational(coeff * &root),
-        None => Radical {
-            coeff,
-            radicand: inverse,
-        },
-    };
+    let value = Radical::normalized(coeff, RatFn::one() / squared.clone());
     let at_end = end_omega(p, omega);
     let otherwise = match &at_end {
         Some(w) => format!("otherwise omega_max = omega(end) = {w}"),
@@ -323,28 +339,6 @@ fn omega_max(p: &Params<RatFn>, omega: &RatFn, squared: &RatFn) -> AnswerFormula
         value,
         condition,
     }
-}
-
-/// The square root of a quotient of two monomials whose exponents are even and whose
-/// coefficient is a rational square (`1/l^2` -> `1/l`; the symbols are positive quantities);
-/// `None` otherwise.
-fn square_root(f: &RatFn) -> Option<RatFn> {
-    let root = |p: &Poly| -> Option<Poly> {
-        let mut terms = p.terms();
-        let (monomial, c) = terms.next()?;
-        if terms.next().is_some() {
-            return None;
-        }
-        let mut half = Monomial::one();
-        for &(sym, e) in monomial.factors() {
-            if e % 2 != 0 {
-                return None;
-            }
-            half = half.mul(&Monomial::var(sym, e / 2));
-        }
-        Some(Poly::monomial(c.try_sqrt()?, half))
-    };
-    RatFn::new(root(f.num())?, root(f.den())?)
 }
 
 /// omega at the end the paper strikes: a = l for a free rod (a a symbol); `None` when a is

@@ -120,7 +120,10 @@ fn every_format_renders_and_bad_input_is_refused() {
         "{text}"
     );
     let latex = String::from_utf8(run(&["--format", "latex"]).stdout).unwrap();
-    assert!(latex.contains(r"\begin{align*}") && latex.contains(r"\omega_{\max} &= v_0 \sqrt{"));
+    assert!(
+        latex.contains(r"\begin{align*}")
+            && latex.contains(r"\omega_{\max} &= \frac{v_0}{l} \sqrt{")
+    );
     let md = String::from_utf8(run(&["--format", "markdown"]).stdout).unwrap();
     assert!(md.contains("| `a_star_squared` |"));
     for (args, message) in [
@@ -477,5 +480,63 @@ fn a_circular_flag_is_named_itself() {
     assert_eq!(
         String::from_utf8(out.stderr).unwrap(),
         "error: v0: circular definitions among v0\n"
+    );
+}
+
+/// Regression (oracle finding of issue 33): a rod drifting before the impact without turning
+/// lost a*^2 and omega_max, though drift leaves a* where it is (X31). By hand: the approach is
+/// u_n = v0 - V0 for every a, so omega(a) is the paper's curve with v0 - V0 for v0:
+/// a*^2 = I (M + m)/(m M) = (M + m) l^2/(3 m), omega_max = 2 (v0 - V0)/(2 a*) = (v0 - V0)/a*.
+/// Drift along the rod (`--rod-vt`) does not touch the normal problem at all.
+#[test]
+fn a_drifting_rod_keeps_its_optimum() {
+    let j = formula_json(&["--rod-v", "V0"]);
+    assert_formula(&j, "a_star_squared", "(M + m)*l^2/(3*m)");
+    assert_formula(&j, "omega_max", "(v0 - V0)/sqrt((M + m)*l^2/(3*m))");
+    let along = formula_json(&["--rod-vt", "1"]);
+    assert_formula(&along, "a_star_squared", "(M + m)*l^2/(3*m)");
+    assert_formula(&along, "omega_max", "v0/sqrt((M + m)*l^2/(3*m))");
+    // A turning rod has no such optimum: the approach depends on a.
+    let turning = formula_json(&["--rod-omega", "w"]);
+    assert!(turning.get("a_star_squared").is_none(), "{turning}");
+}
+
+/// Regression (oracle finding of issue 33): `--M m --a l --v0t v0 --mu 2` printed mu* = 5/4
+/// and then both a sticking and a sliding answer. On the paper's end hit with M = m, J =
+/// (2/5) m v0 and sticking takes Jt = u_t/k_t = v0/(2/m) = m v0/2, so mu* = (1/2)/(2/5) = 5/4
+/// for every m and v0: mu = 2 sticks (vt = Vt = v0/2), mu = 1 slides (Jt = mu J = (2/5) m v0,
+/// vt = v0 - 2/5 v0 = 3/5 v0), and mu = 5/4 just sticks.
+#[test]
+fn a_numeric_margin_over_mu_star_decides_the_contact() {
+    for (mu, contact, vt) in [
+        ("2", "stick", "v0/2"),
+        ("5/4", "stick", "v0/2"),
+        ("1", "slide", "3*v0/5"),
+    ] {
+        let j = formula_json(&["--M", "m", "--a", "l", "--v0t", "v0", "--mu", mu]);
+        assert_formula(&j, "mu_star", "5/4");
+        assert_eq!(j["contact"], contact, "mu = {mu}: {j}");
+        assert!(
+            j.get("cases")
+                .is_none_or(|c| c.as_object().is_none_or(|o| o.is_empty())),
+            "mu = {mu}: {j}"
+        );
+        assert_formula(&j, "vt", vt);
+    }
+}
+
+/// The canonical surd (oracle finding of issue 33): an integer free of squares under the root,
+/// positive symbols' even powers outside: omega_max = v0/a* with a*^2 = 2 l^2/3 is
+/// v0 sqrt(3/2)/l = sqrt(6) v0/(2 l), printed `(1/2*v0/l)*sqrt(6)`, not `(v0)*sqrt(3/2/l^2)`.
+#[test]
+fn omega_max_is_printed_as_a_canonical_surd() {
+    let text = String::from_utf8(run(&["--M", "m"]).stdout).unwrap();
+    assert!(text.contains("omega_max = (1/2*v0/l)*sqrt(6)\n"), "{text}");
+    let j = formula_json(&["--M", "m"]);
+    assert_formula(&j, "omega_max", "v0*sqrt(3/2)/l");
+    let latex = String::from_utf8(run(&["--M", "m", "--format", "latex"]).stdout).unwrap();
+    assert!(
+        latex.contains(r"\omega_{\max} &= \frac{v_0}{2 l} \sqrt{6}"),
+        "{latex}"
     );
 }

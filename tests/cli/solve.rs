@@ -73,6 +73,50 @@ fn pivoted_sticking_scene_reports_the_pivot_impulse_not_momentum() {
     assert_eq!(j["a_star"]["within_rod"], true);
 }
 
+/// Regression (oracle finding of issue 33): on a pivot, the maximum was reported over the struck
+/// arm only, unnamed. m = M = l = 1, pivot p = 1/2, I_p = 1/3 + 1/4 = 7/12 = m d*^2, so
+/// d* = sqrt(21)/6 ~ 0.764. Struck at a = 3/4, the struck arm is 1/2 long and omega(d) =
+/// 2 d/(7/12 + d^2) peaks at its end, 1/(5/6) = 6/5; the other arm (3/2 long) holds d*, where
+/// omega = 1/d* = 2 sqrt(21)/7 ~ 1.309 (striking a = -1/4 gives 72/55 ~ 1.30909, just below).
+#[test]
+fn a_pivoted_rod_reports_the_struck_arm_and_the_whole_rod() {
+    let j = solve_json(&["--m", "1", "--M", "1", "--pivot", "1/2", "--a", "3/4"]);
+    assert_eq!(j["a_star"]["squared"], "7/12");
+    assert_eq!(j["argmax"], "end");
+    assert_eq!(j["omega_max"]["exact"], "6/5");
+    assert_eq!(j["rod_omega_max"]["exact"], "2*sqrt(21)/7");
+    assert_eq!(j["rod_omega_max"]["arm"], "other");
+    assert_eq!(j["rod_omega_max"]["argmax"], "a_star");
+    assert_eq!(j["rod_omega_max"]["other_arm"], "3/2");
+    let (code, text, _) = rodimpact(&[
+        "solve", "--m", "1", "--M", "1", "--pivot", "1/2", "--a", "3/4",
+    ]);
+    assert_eq!(code, 0);
+    assert!(
+        text.contains("max |omega| on the struck arm, reached at the end"),
+        "{text}"
+    );
+    assert!(
+        text.contains("max |omega| over the rod, at d* on the other arm"),
+        "{text}"
+    );
+    // Struck on the long arm, the struck arm's maximum is the rod's.
+    let j = solve_json(&["--m", "1", "--M", "1", "--pivot", "1/2", "--a", "-1/4"]);
+    assert_eq!(j["omega_max"]["exact"], "2*sqrt(21)/7");
+    assert_eq!(j["rod_omega_max"]["arm"], "struck");
+    // A pivot at an end leaves one arm, and a free rod's halves mirror each other.
+    assert!(
+        solve_json(&["--m", "1", "--M", "1", "--pivot", "1"])
+            .get("rod_omega_max")
+            .is_none()
+    );
+    assert!(
+        solve_json(&["--m", "1", "--M", "1"])
+            .get("rod_omega_max")
+            .is_none()
+    );
+}
+
 #[test]
 fn heavy_rod_peaks_at_the_end() {
     let j = solve_json(&["--m", "1", "--M", "3"]);

@@ -206,7 +206,7 @@ pub fn contact_matrix<F: Field>(system: &System) -> (ContactMatrix<F>, [F; 2]) {
     )
 }
 
-/// Answers the system's one contact under `law`, in the field `F` (exact: [`QSqrt`](crate::field::QSqrt)).
+/// Answers the system's one contact under `law`, in the field `F` (exact: [`QSqrt`]).
 ///
 /// # Errors
 /// [`ImpactError::SeveralContacts`], or [`ImpactError::Jam`] when the law never ends the
