@@ -35,4 +35,15 @@
 (assert (not (= v (* (/ (- (- (- 1 (/ m M)) (/ (* m (* a a)) I))) (+ (+ 1 (/ m M)) (/ (* m (* a a)) I))) v0))))
 (check-sat-using qfnra)
 (pop 1)
-; expect: sat unsat
+; check 2: D > 0
+; the hypotheses are consistent
+(push 1)
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (not (> (+ (+ 1 (/ m M)) (/ (* m (* a a)) I)) 0)))
+(check-sat-using qfnra)
+(pop 1)
+; expect: sat unsat sat unsat

@@ -98,10 +98,28 @@
 (push 1)
 (assert (> h 0))
 (assert (> d 0))
-(assert (not (=> (= P 0) (and (= (* (* d M) h) Ip) (=> (= (* (* d M) h) Ip) (= P 0))))))
+(assert (not (and (=> (= P 0) (= (* (* d M) h) Ip)) (=> (= (* (* d M) h) Ip) (= P 0)))))
 (check-sat-using qfnra)
 (pop 1)
-; check 5: door: at 2L/3 from the hinge
+; check 5: reading: a wrong centre of percussion, d = I_p/(2 M h), where the impulse would vanish; refuted
+; the negation of the reading is satisfiable
+(push 1)
+(assert (> h 0))
+(assert (> d 0))
+(assert (not (=> (= (* (* (* 2 d) M) h) Ip) (= P 0))))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; check 6: reading: the impulse vanishes only at d = I_p/(2 M h); refuted
+; the negation of the reading is satisfiable
+(push 1)
+(assert (> h 0))
+(assert (> d 0))
+(assert (not (=> (= P 0) (= (* (* (* 2 d) M) h) Ip))))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; check 7: door: at 2L/3 from the hinge
 ; the hypotheses are consistent
 (push 1)
 (assert (> L 0))
@@ -120,4 +138,4 @@
 (assert (not (= P 0)))
 (check-sat-using qfnra)
 (pop 1)
-; expect: sat unsat sat unsat sat unsat sat unsat sat unsat
+; expect: sat unsat sat unsat sat unsat sat unsat sat sat sat unsat

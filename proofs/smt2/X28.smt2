@@ -109,4 +109,56 @@
 (assert (not (= Jt (* mu_f J))))
 (check-sat-using qfnra)
 (pop 1)
-; expect: sat unsat sat unsat sat unsat sat unsat
+; check 5: point, u_t >= 0: the sticking impulse is within the friction cone (|Jt| <= mu_f J) exactly when mu_f >= mu_f*
+; the hypotheses are consistent
+(push 1)
+(assert (= rd 0))
+(assert (>= mu_f 0))
+(assert (>= v0t 0))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (= rd 0))
+(assert (>= mu_f 0))
+(assert (>= v0t 0))
+(assert (not (and (=> (and (<= Jt (* mu_f J)) (<= (- Jt) (* mu_f J))) (>= (* (* (* mu_f (+ 1 e)) v0) (+ (/ 1 m) (/ 1 M))) (* v0t (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))))) (=> (>= (* (* (* mu_f (+ 1 e)) v0) (+ (/ 1 m) (/ 1 M))) (* v0t (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))) (and (<= Jt (* mu_f J)) (<= (- Jt) (* mu_f J)))))))
+(check-sat-using qfnra)
+(pop 1)
+; check 6: point, at mu_f = mu_f*: the sticking impulse obeys the sliding law Jt = mu_f J
+; the hypotheses are consistent
+(push 1)
+(assert (= rd 0))
+(assert (= (* (* (* mu_f (+ 1 e)) v0) (+ (/ 1 m) (/ 1 M))) (* v0t (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (= rd 0))
+(assert (= (* (* (* mu_f (+ 1 e)) v0) (+ (/ 1 m) (/ 1 M))) (* v0t (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))))
+(assert (not (= Jt (* mu_f J))))
+(check-sat-using qfnra)
+(pop 1)
+; check 7: reading: the disc's moment of inertia taken as m rd^2/4 (k_t = 5/m + 1/M), it sticks once mu_f reaches that lower threshold; refuted
+; the negation of the reading is satisfiable
+(push 1)
+(assert (> rd 0))
+(assert (>= mu_f 0))
+(assert (>= (+ v0t (* w rd)) 0))
+(assert (not (=> (>= (* (* (* mu_f (+ 1 e)) v0) (+ (/ 5 m) (/ 1 M))) (* (+ v0t (* w rd)) (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))) (and (<= Jt (* mu_f J)) (<= (- Jt) (* mu_f J))))))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; check 8: reading: a disc sticks only above the point's threshold (k_t = 1/m + 1/M); refuted
+; the negation of the reading is satisfiable
+(push 1)
+(assert (> rd 0))
+(assert (>= mu_f 0))
+(assert (>= (+ v0t (* w rd)) 0))
+(assert (not (=> (and (<= Jt (* mu_f J)) (<= (- Jt) (* mu_f J))) (>= (* (* (* mu_f (+ 1 e)) v0) (+ (/ 1 m) (/ 1 M))) (* (+ v0t (* w rd)) (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))))))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; expect: sat unsat sat unsat sat unsat sat unsat sat unsat sat unsat sat sat

@@ -53,7 +53,7 @@
 (assert (= (* (* m (* rd rd)) (- spin w)) (* (* (- 2) rd) Jt)))
 ; sticking: the disc's contact point ends moving with the rod's, along the rod
 (assert (= (+ vt (* spin rd)) (- Vt (* omega d))))
-; check 1: the rod at rest's answer in the relative velocities (v0 - V0, v0t - Vt0): J, Jt and omega from the relative approach, each velocity shifted by the frame's
+; check 1: disc: the rod at rest's answer in the relative velocities (v0 - V0, v0t - Vt0): J, Jt and omega from the relative approach, each velocity shifted by the frame's
 ; the hypotheses are consistent
 (push 1)
 (assert (> rd 0))
@@ -66,4 +66,25 @@
 (assert (not (and (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) (- v0 V0))) (= (* Jt (+ (/ 3 m) (/ 1 M))) (+ (- v0t Vt0) (* w rd))) (= (* I omega) (* a J)) (= (- v V0) (- (- v0 V0) (/ J m))) (= (- vt Vt0) (- (- v0t Vt0) (/ Jt m))) (= (- V V0) (/ J M)) (= (- Vt Vt0) (/ Jt M)) (= spin (- w (/ (* 2 Jt) (* m rd)))))))
 (check-sat-using qfnra)
 (pop 1)
-; expect: sat unsat
+; check 2: point (rd = 0): the rod at rest's answer in the relative velocities, k_t = 1/m + 1/M
+; the hypotheses are consistent
+(push 1)
+(assert (= rd 0))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (= rd 0))
+(assert (not (and (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) (- v0 V0))) (= (* Jt (+ (/ 1 m) (/ 1 M))) (- v0t Vt0)) (= (* I omega) (* a J)) (= (- v V0) (- (- v0 V0) (/ J m))) (= (- vt Vt0) (- (- v0t Vt0) (/ Jt m))) (= (- V V0) (/ J M)) (= (- Vt Vt0) (/ Jt M)))))
+(check-sat-using qfnra)
+(pop 1)
+; check 3: reading: the rod's drift does not enter the impulse (J k_n = (1 + e) v0); refuted
+; the negation of the reading is satisfiable
+(push 1)
+(assert (= rd 0))
+(assert (not (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) v0))))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; expect: sat unsat sat unsat sat

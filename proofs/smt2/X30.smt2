@@ -82,7 +82,79 @@
 (assert (not (= (- (+ (/ (* m (+ (* v0 v0) (* v0t v0t))) 2) (/ (* (* m (* rd rd)) (* w w)) 4)) (+ (+ (+ (/ (* m (+ (* v v) (* vt vt))) 2) (/ (* M (+ (* V V) (* Vt Vt))) 2)) (/ (* I (* omega omega)) 2)) (/ (* (* m (* rd rd)) (* spin spin)) 4))) (+ (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))) (* (* mu_f J) (- (+ v0t (* w rd)) (/ (* (* mu_f J) (+ (/ 3 m) (/ 1 M))) 2)))))))
 (check-sat-using qfnra)
 (pop 1)
-; check 3: still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive
+; check 3: the normal motion's part of the loss: (1 - e^2) v0^2/(2 k_n)
+; the hypotheses are consistent
+(push 1)
+; proved above (check 1), a lemma
+(assert (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) v0)))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+; proved above (check 1), a lemma
+(assert (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) v0)))
+(assert (not (= (- (/ (* m (* v0 v0)) 2) (+ (+ (/ (* m (* v v)) 2) (/ (* M (* V V)) 2)) (/ (* I (* omega omega)) 2))) (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))))))
+(check-sat-using qfnra)
+(pop 1)
+; check 4: the translation along the rod's part: Jt (v0t - Jt (1/m + 1/M)/2)
+; the hypotheses are consistent
+(push 1)
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (not (= (- (/ (* m (* v0t v0t)) 2) (+ (/ (* m (* vt vt)) 2) (/ (* M (* Vt Vt)) 2))) (* Jt (- v0t (/ (* Jt (+ (/ 1 m) (/ 1 M))) 2))))))
+(check-sat-using qfnra)
+(pop 1)
+; check 5: point (rd = 0), sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (v0t - mu_f J k_t/2), k_t = 1/m + 1/M
+; the hypotheses are consistent
+(push 1)
+(assert (= rd 0))
+; proved above (check 3), a lemma
+(assert (= (- (/ (* m (* v0 v0)) 2) (+ (+ (/ (* m (* v v)) 2) (/ (* M (* V V)) 2)) (/ (* I (* omega omega)) 2))) (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))))))
+; proved above (check 4), a lemma
+(assert (= (- (/ (* m (* v0t v0t)) 2) (+ (/ (* m (* vt vt)) 2) (/ (* M (* Vt Vt)) 2))) (* Jt (- v0t (/ (* Jt (+ (/ 1 m) (/ 1 M))) 2)))))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (= rd 0))
+; proved above (check 3), a lemma
+(assert (= (- (/ (* m (* v0 v0)) 2) (+ (+ (/ (* m (* v v)) 2) (/ (* M (* V V)) 2)) (/ (* I (* omega omega)) 2))) (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))))))
+; proved above (check 4), a lemma
+(assert (= (- (/ (* m (* v0t v0t)) 2) (+ (/ (* m (* vt vt)) 2) (/ (* M (* Vt Vt)) 2))) (* Jt (- v0t (/ (* Jt (+ (/ 1 m) (/ 1 M))) 2)))))
+(assert (not (= (- (/ (* m (+ (* v0 v0) (* v0t v0t))) 2) (+ (+ (/ (* m (+ (* v v) (* vt vt))) 2) (/ (* M (+ (* V V) (* Vt Vt))) 2)) (/ (* I (* omega omega)) 2))) (+ (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))) (* (* mu_f J) (- v0t (/ (* (* mu_f J) (+ (/ 1 m) (/ 1 M))) 2)))))))
+(check-sat-using qfnra)
+(pop 1)
+; check 6: point, still sliding at the end (v0t > mu_f J k_t): the frictional loss is positive
+; the hypotheses are consistent
+(push 1)
+(assert (= rd 0))
+(assert (> mu_f 0))
+(assert (> (- v0t (* (* mu_f J) (+ (/ 1 m) (/ 1 M)))) 0))
+; proved above (check 1), a lemma
+(assert (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) v0)))
+; proved above (check 5), a lemma
+(assert (= (- (/ (* m (+ (* v0 v0) (* v0t v0t))) 2) (+ (+ (/ (* m (+ (* v v) (* vt vt))) 2) (/ (* M (+ (* V V) (* Vt Vt))) 2)) (/ (* I (* omega omega)) 2))) (+ (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))) (* (* mu_f J) (- v0t (/ (* (* mu_f J) (+ (/ 1 m) (/ 1 M))) 2))))))
+(check-sat-using qfnra)
+(get-model)
+(pop 1)
+; the negation of the conclusion is not
+(push 1)
+(assert (= rd 0))
+(assert (> mu_f 0))
+(assert (> (- v0t (* (* mu_f J) (+ (/ 1 m) (/ 1 M)))) 0))
+; proved above (check 1), a lemma
+(assert (= (* J (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))) (* (+ 1 e) v0)))
+; proved above (check 5), a lemma
+(assert (= (- (/ (* m (+ (* v0 v0) (* v0t v0t))) 2) (+ (+ (/ (* m (+ (* v v) (* vt vt))) 2) (/ (* M (+ (* V V) (* Vt Vt))) 2)) (/ (* I (* omega omega)) 2))) (+ (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I)))) (* (* mu_f J) (- v0t (/ (* (* mu_f J) (+ (/ 1 m) (/ 1 M))) 2))))))
+(assert (not (> (- (- (/ (* m (+ (* v0 v0) (* v0t v0t))) 2) (+ (+ (/ (* m (+ (* v v) (* vt vt))) 2) (/ (* M (+ (* V V) (* Vt Vt))) 2)) (/ (* I (* omega omega)) 2))) (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))))) 0)))
+(check-sat-using qfnra)
+(pop 1)
+; check 7: disc, still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive
 ; the hypotheses are consistent
 (push 1)
 (assert (> rd 0))
@@ -107,4 +179,4 @@
 (assert (not (> (- (- (+ (/ (* m (+ (* v0 v0) (* v0t v0t))) 2) (/ (* (* m (* rd rd)) (* w w)) 4)) (+ (+ (+ (/ (* m (+ (* v v) (* vt vt))) 2) (/ (* M (+ (* V V) (* Vt Vt))) 2)) (/ (* I (* omega omega)) 2)) (/ (* (* m (* rd rd)) (* spin spin)) 4))) (/ (* (- 1 (* e e)) (* v0 v0)) (* 2 (+ (+ (/ 1 m) (/ 1 M)) (/ (* a a) I))))) 0)))
 (check-sat-using qfnra)
 (pop 1)
-; expect: sat unsat sat unsat sat unsat
+; expect: sat unsat sat unsat sat unsat sat unsat sat unsat sat unsat sat unsat

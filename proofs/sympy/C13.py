@@ -99,4 +99,7 @@ found = (solutions(balance, unknowns, defs, filters + [
 ]), defs)
 ok = confirm("Eq. (v)", "holds", lambda at: EQ(at(v), at((((-((Integer(1) - (m / M)) - ((m * (a ** 2)) / I))) / ((Integer(1) + (m / M)) + ((m * (a ** 2)) / I))) * v0))), found) and ok
 
+# check 2: D > 0
+print("left to z3 (not an identity or a check at given values): D > 0")
+
 sys.exit(0 if ok else 1)

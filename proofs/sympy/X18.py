@@ -123,7 +123,13 @@ print("left to z3 (not an identity or a check at given values): door (I_p = M L^
 # check 4: the pivot's impulse vanishes iff d = I_p/(M h), the centre of percussion
 print("left to z3 (not an identity or a check at given values): the pivot's impulse vanishes iff d = I_p/(M h), the centre of percussion")
 
-# check 5: door: at 2L/3 from the hinge
+# check 5: reading: a wrong centre of percussion, d = I_p/(2 M h), where the impulse would vanish; refuted
+print("left to z3 (not an identity or a check at given values): reading: a wrong centre of percussion, d = I_p/(2 M h), where the impulse would vanish; refuted")
+
+# check 6: reading: the impulse vanishes only at d = I_p/(2 M h); refuted
+print("left to z3 (not an identity or a check at given values): reading: the impulse vanishes only at d = I_p/(2 M h); refuted")
+
+# check 7: door: at 2L/3 from the hinge
 defs = definitions + [(Ip, ((M * (L ** 2)) / Integer(3))), (h, (L / Integer(2))), (d, ((Integer(2) * L) / Integer(3)))]
 found = (solutions(balance, unknowns, defs, filters + [
 ]), defs)

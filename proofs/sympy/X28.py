@@ -128,4 +128,16 @@ print("left to z3 (not an identity or a check at given values): disc, u_t >= 0: 
 # check 4: disc, at mu_f = mu_f*: the sticking impulse obeys the sliding law Jt = mu_f J, so slide and stick coincide
 print("left to z3 (not an identity or a check at given values): disc, at mu_f = mu_f*: the sticking impulse obeys the sliding law Jt = mu_f J, so slide and stick coincide")
 
+# check 5: point, u_t >= 0: the sticking impulse is within the friction cone (|Jt| <= mu_f J) exactly when mu_f >= mu_f*
+print("left to z3 (not an identity or a check at given values): point, u_t >= 0: the sticking impulse is within the friction cone (|Jt| <= mu_f J) exactly when mu_f >= mu_f*")
+
+# check 6: point, at mu_f = mu_f*: the sticking impulse obeys the sliding law Jt = mu_f J
+print("left to z3 (not an identity or a check at given values): point, at mu_f = mu_f*: the sticking impulse obeys the sliding law Jt = mu_f J")
+
+# check 7: reading: the disc's moment of inertia taken as m rd^2/4 (k_t = 5/m + 1/M), it sticks once mu_f reaches that lower threshold; refuted
+print("left to z3 (not an identity or a check at given values): reading: the disc's moment of inertia taken as m rd^2/4 (k_t = 5/m + 1/M), it sticks once mu_f reaches that lower threshold; refuted")
+
+# check 8: reading: a disc sticks only above the point's threshold (k_t = 1/m + 1/M); refuted
+print("left to z3 (not an identity or a check at given values): reading: a disc sticks only above the point's threshold (k_t = 1/m + 1/M); refuted")
+
 sys.exit(0 if ok else 1)

@@ -123,7 +123,28 @@ found = (solutions(balance, unknowns, defs, filters + [
 ]), defs)
 ok = confirm("sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (u_t - mu_f J k_t/2), u_t = v0t + w rd, k_t = 3/m + 1/M", "holds", lambda at: EQ(at(((((m * ((v0 ** 2) + (v0t ** 2))) / Integer(2)) + (((m * (rd ** 2)) * (w ** 2)) / Integer(4))) - (((((m * ((v ** 2) + (vt ** 2))) / Integer(2)) + ((M * ((V ** 2) + (Vt ** 2))) / Integer(2))) + ((I * (omega ** 2)) / Integer(2))) + (((m * (rd ** 2)) * (spin ** 2)) / Integer(4))))), at(((((Integer(1) - (e ** 2)) * (v0 ** 2)) / (Integer(2) * (((Integer(1) / m) + (Integer(1) / M)) + ((a ** 2) / I)))) + ((mu_f * J) * ((v0t + (w * rd)) - (((mu_f * J) * ((Integer(3) / m) + (Integer(1) / M))) / Integer(2))))))), found) and ok
 
-# check 3: still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive
-print("left to z3 (not an identity or a check at given values): still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive")
+# check 3: the normal motion's part of the loss: (1 - e^2) v0^2/(2 k_n)
+defs = definitions + []
+found = (solutions(balance, unknowns, defs, filters + [
+]), defs)
+ok = confirm("the normal motion's part of the loss: (1 - e^2) v0^2/(2 k_n)", "holds", lambda at: EQ(at((((m * (v0 ** 2)) / Integer(2)) - ((((m * (v ** 2)) / Integer(2)) + ((M * (V ** 2)) / Integer(2))) + ((I * (omega ** 2)) / Integer(2))))), at((((Integer(1) - (e ** 2)) * (v0 ** 2)) / (Integer(2) * (((Integer(1) / m) + (Integer(1) / M)) + ((a ** 2) / I)))))), found) and ok
+
+# check 4: the translation along the rod's part: Jt (v0t - Jt (1/m + 1/M)/2)
+defs = definitions + []
+found = (solutions(balance, unknowns, defs, filters + [
+]), defs)
+ok = confirm("the translation along the rod's part: Jt (v0t - Jt (1/m + 1/M)/2)", "holds", lambda at: EQ(at((((m * (v0t ** 2)) / Integer(2)) - (((m * (vt ** 2)) / Integer(2)) + ((M * (Vt ** 2)) / Integer(2))))), at((Jt * (v0t - ((Jt * ((Integer(1) / m) + (Integer(1) / M))) / Integer(2)))))), found) and ok
+
+# check 5: point (rd = 0), sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (v0t - mu_f J k_t/2), k_t = 1/m + 1/M
+defs = definitions + [(rd, Integer(0))]
+found = (solutions(balance, unknowns, defs, filters + [
+]), defs)
+ok = confirm("point (rd = 0), sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (v0t - mu_f J k_t/2), k_t = 1/m + 1/M", "holds", lambda at: EQ(at((((m * ((v0 ** 2) + (v0t ** 2))) / Integer(2)) - ((((m * ((v ** 2) + (vt ** 2))) / Integer(2)) + ((M * ((V ** 2) + (Vt ** 2))) / Integer(2))) + ((I * (omega ** 2)) / Integer(2))))), at(((((Integer(1) - (e ** 2)) * (v0 ** 2)) / (Integer(2) * (((Integer(1) / m) + (Integer(1) / M)) + ((a ** 2) / I)))) + ((mu_f * J) * (v0t - (((mu_f * J) * ((Integer(1) / m) + (Integer(1) / M))) / Integer(2))))))), found) and ok
+
+# check 6: point, still sliding at the end (v0t > mu_f J k_t): the frictional loss is positive
+print("left to z3 (not an identity or a check at given values): point, still sliding at the end (v0t > mu_f J k_t): the frictional loss is positive")
+
+# check 7: disc, still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive
+print("left to z3 (not an identity or a check at given values): disc, still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive")
 
 sys.exit(0 if ok else 1)

@@ -29,7 +29,17 @@ const EXPORT: Export = Export::Stated(
             .given(&["L > 0", "Ip = M*L^2/3"]),
             Check::holds(
                 "the pivot's impulse vanishes iff d = I_p/(M h), the centre of percussion",
-                "P = 0 => d*M*h = Ip and (d*M*h = Ip => P = 0)",
+                "(P = 0 => d*M*h = Ip) and (d*M*h = Ip => P = 0)",
+            )
+            .given(&["h > 0", "d > 0"]),
+            Check::fails(
+                "reading: a wrong centre of percussion, d = I_p/(2 M h), where the impulse would vanish; refuted",
+                "2*d*M*h = Ip => P = 0",
+            )
+            .given(&["h > 0", "d > 0"]),
+            Check::fails(
+                "reading: the impulse vanishes only at d = I_p/(2 M h); refuted",
+                "P = 0 => 2*d*M*h = Ip",
             )
             .given(&["h > 0", "d > 0"]),
             Check::holds("door: at 2L/3 from the hinge", "P = 0").given(&[

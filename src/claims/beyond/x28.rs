@@ -34,6 +34,26 @@ const EXPORT: Export = Export::Stated(Statement::new(
             "Jt = mu_f*J",
         )
         .given(&["rd > 0", "mu_f*(1 + e)*v0*(3/m + 1/M) = (v0t + w*rd)*(1/m + 1/M + a^2/I)"]),
+        Check::holds(
+            "point, u_t >= 0: the sticking impulse is within the friction cone (|Jt| <= mu_f J) exactly when mu_f >= mu_f*",
+            "((Jt <= mu_f*J and -Jt <= mu_f*J) => mu_f*(1 + e)*v0*(1/m + 1/M) >= v0t*(1/m + 1/M + a^2/I)) and (mu_f*(1 + e)*v0*(1/m + 1/M) >= v0t*(1/m + 1/M + a^2/I) => (Jt <= mu_f*J and -Jt <= mu_f*J))",
+        )
+        .given(&["rd = 0", "mu_f >= 0", "v0t >= 0"]),
+        Check::holds(
+            "point, at mu_f = mu_f*: the sticking impulse obeys the sliding law Jt = mu_f J",
+            "Jt = mu_f*J",
+        )
+        .given(&["rd = 0", "mu_f*(1 + e)*v0*(1/m + 1/M) = v0t*(1/m + 1/M + a^2/I)"]),
+        Check::fails(
+            "reading: the disc's moment of inertia taken as m rd^2/4 (k_t = 5/m + 1/M), it sticks once mu_f reaches that lower threshold; refuted",
+            "mu_f*(1 + e)*v0*(5/m + 1/M) >= (v0t + w*rd)*(1/m + 1/M + a^2/I) => (Jt <= mu_f*J and -Jt <= mu_f*J)",
+        )
+        .given(&["rd > 0", "mu_f >= 0", "v0t + w*rd >= 0"]),
+        Check::fails(
+            "reading: a disc sticks only above the point's threshold (k_t = 1/m + 1/M); refuted",
+            "(Jt <= mu_f*J and -Jt <= mu_f*J) => mu_f*(1 + e)*v0*(1/m + 1/M) >= (v0t + w*rd)*(1/m + 1/M + a^2/I)",
+        )
+        .given(&["rd > 0", "mu_f >= 0", "v0t + w*rd >= 0"]),
     ],
 ));
 

@@ -16,11 +16,23 @@ const EXPORT: Export = Export::Stated(
         Setting::new(Rod::Free, Law::Restitution)
             .oblique(Friction::Stick)
             .moving(),
-        &[Check::holds(
-            "the rod at rest's answer in the relative velocities (v0 - V0, v0t - Vt0): J, Jt and omega from the relative approach, each velocity shifted by the frame's",
-            "J*(1/m + 1/M + a^2/I) = (1 + e)*(v0 - V0) and Jt*(3/m + 1/M) = v0t - Vt0 + w*rd and I*omega = a*J and v - V0 = v0 - V0 - J/m and vt - Vt0 = v0t - Vt0 - Jt/m and V - V0 = J/M and Vt - Vt0 = Jt/M and spin = w - 2*Jt/(m*rd)",
-        )
-        .given(&["rd > 0"])],
+        &[
+            Check::holds(
+                "disc: the rod at rest's answer in the relative velocities (v0 - V0, v0t - Vt0): J, Jt and omega from the relative approach, each velocity shifted by the frame's",
+                "J*(1/m + 1/M + a^2/I) = (1 + e)*(v0 - V0) and Jt*(3/m + 1/M) = v0t - Vt0 + w*rd and I*omega = a*J and v - V0 = v0 - V0 - J/m and vt - Vt0 = v0t - Vt0 - Jt/m and V - V0 = J/M and Vt - Vt0 = Jt/M and spin = w - 2*Jt/(m*rd)",
+            )
+            .given(&["rd > 0"]),
+            Check::holds(
+                "point (rd = 0): the rod at rest's answer in the relative velocities, k_t = 1/m + 1/M",
+                "J*(1/m + 1/M + a^2/I) = (1 + e)*(v0 - V0) and Jt*(1/m + 1/M) = v0t - Vt0 and I*omega = a*J and v - V0 = v0 - V0 - J/m and vt - Vt0 = v0t - Vt0 - Jt/m and V - V0 = J/M and Vt - Vt0 = Jt/M",
+            )
+            .given(&["rd = 0"]),
+            Check::fails(
+                "reading: the rod's drift does not enter the impulse (J k_n = (1 + e) v0); refuted",
+                "J*(1/m + 1/M + a^2/I) = (1 + e)*v0",
+            )
+            .given(&["rd = 0"]),
+        ],
     )
     .partly("the sliding contact (the same invariance) is certified by rodimpact only: one scene per exported statement"),
 );

@@ -26,7 +26,28 @@ const EXPORT: Export = Export::Stated(
             .given(&["rd > 0"])
             .using(&[0]),
             Check::holds(
-                "still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive",
+                "the normal motion's part of the loss: (1 - e^2) v0^2/(2 k_n)",
+                "m*v0^2/2 - (m*v^2/2 + M*V^2/2 + I*omega^2/2) = (1 - e^2)*v0^2/(2*(1/m + 1/M + a^2/I))",
+            )
+            .using(&[0]),
+            Check::holds(
+                "the translation along the rod's part: Jt (v0t - Jt (1/m + 1/M)/2)",
+                "m*v0t^2/2 - (m*vt^2/2 + M*Vt^2/2) = Jt*(v0t - Jt*(1/m + 1/M)/2)",
+            ),
+            Check::holds(
+                "point (rd = 0), sliding: energy lost = (1 - e^2) v0^2/(2 k_n) + mu_f J (v0t - mu_f J k_t/2), k_t = 1/m + 1/M",
+                "(m*(v0^2 + v0t^2)/2 - (m*(v^2 + vt^2)/2 + M*(V^2 + Vt^2)/2 + I*omega^2/2)) = (1 - e^2)*v0^2/(2*(1/m + 1/M + a^2/I)) + mu_f*J*(v0t - mu_f*J*(1/m + 1/M)/2)",
+            )
+            .given(&["rd = 0"])
+            .using(&[2, 3]),
+            Check::holds(
+                "point, still sliding at the end (v0t > mu_f J k_t): the frictional loss is positive",
+                "(m*(v0^2 + v0t^2)/2 - (m*(v^2 + vt^2)/2 + M*(V^2 + Vt^2)/2 + I*omega^2/2)) - (1 - e^2)*v0^2/(2*(1/m + 1/M + a^2/I)) > 0",
+            )
+            .given(&["rd = 0", "mu_f > 0", "v0t - mu_f*J*(1/m + 1/M) > 0"])
+            .using(&[0, 4]),
+            Check::holds(
+                "disc, still sliding at the end (u_t > mu_f J k_t): the frictional loss is positive",
                 "(m*(v0^2 + v0t^2)/2 + m*rd^2*w^2/4 - (m*(v^2 + vt^2)/2 + M*(V^2 + Vt^2)/2 + I*omega^2/2 + m*rd^2*spin^2/4)) - (1 - e^2)*v0^2/(2*(1/m + 1/M + a^2/I)) > 0",
             )
             .given(&["rd > 0", "mu_f > 0", "v0t + w*rd - mu_f*J*(3/m + 1/M) > 0"])

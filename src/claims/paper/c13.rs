@@ -11,10 +11,10 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(Statement::new(
     Setting::new(Rod::Free, Law::Elastic),
-    &[Check::holds(
-        "Eq. (v)",
-        "v = -(1 - m/M - m*a^2/I)/(1 + m/M + m*a^2/I)*v0",
-    )],
+    &[
+        Check::holds("Eq. (v)", "v = -(1 - m/M - m*a^2/I)/(1 + m/M + m*a^2/I)*v0"),
+        Check::holds("D > 0", "1 + m/M + m*a^2/I > 0"),
+    ],
 ));
 
 fn formalise(paper: &Paper) -> Formalised {
