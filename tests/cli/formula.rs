@@ -540,3 +540,35 @@ fn omega_max_is_printed_as_a_canonical_surd() {
         "{latex}"
     );
 }
+
+/// The oracle finding of issue 33: `r` was refused in `--a`. Struck at its own radius of
+/// gyration r (I = M r^2), a free rod spins at, by hand, omega = (1 + e) m a v0/(I (1 + m/M) +
+/// m a^2) with a = r: 2 m v0/((M + 2m) r); a*^2 = I (M + m)/(m M) = (M + m) r^2/m.
+#[test]
+fn the_impact_point_may_be_the_radius_of_gyration() {
+    let j = formula_json(&["--rod", "rg=r", "--a", "r"]);
+    assert_formula(&j, "omega", "2*m*v0/((M + 2*m)*r)");
+    assert_formula(&j, "a_star_squared", "(M + m)*r^2/m");
+    // A dumbbell's r is l: struck at r is struck at the end.
+    let dumbbell = formula_json(&["--rod", "dumbbell", "--a", "r"]);
+    let end = formula_json(&["--rod", "dumbbell", "--a", "l"]);
+    assert_eq!(dumbbell["omega"], end["omega"]);
+    for (args, message) in [
+        (
+            &["--a", "r"][..],
+            "error: a: r stands for the rod's radius of gyration, which is not rational for this rod (uniform: l/sqrt(3)); give it with --rod rg=...\n",
+        ),
+        (
+            &["--rod", "rg=a/2", "--a", "r"],
+            "error: a: circular definitions: a uses r, which the rod defines through a\n",
+        ),
+        (
+            &["--v0", "r"],
+            "error: v0: r may appear only in --rod, --a, --from-end, --pivot and in claims\n",
+        ),
+    ] {
+        let out = run(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(String::from_utf8(out.stderr).unwrap(), message, "{args:?}");
+    }
+}

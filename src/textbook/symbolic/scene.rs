@@ -126,17 +126,24 @@ impl SymbolicScene {
                     )),
                 ));
             }
-            if let Some(s) = v.symbols().iter().find(|s| ["I", "r"].contains(&s.name())) {
+            // The impact point and the pivot may be placed by the rod's own lengths (`--a r`:
+            // struck at the radius of gyration); every other flag defines what the rod uses.
+            let placed_on_rod = ["a", "p"].contains(key);
+            if let Some(s) = v
+                .symbols()
+                .iter()
+                .find(|s| ["I", "r"].contains(&s.name()) && !placed_on_rod)
+            {
                 return Err(Error::new(
                     *key,
                     ErrorKind::Invalid(format!(
-                        "{} may appear only in --rod and in claims",
+                        "{} may appear only in --rod, --a, --from-end, --pivot and in claims",
                         s.name()
                     )),
                 ));
             }
         }
-        let defs = resolve(defs)?;
+        let mut defs = resolve(defs)?;
         let mut names = vec!["m", "M", "l", "a", "v0", "e"];
         if has_pivot {
             names.push("p");
@@ -171,6 +178,13 @@ impl SymbolicScene {
             }
             RodGiven::Moment(i) => (substitute(i)?, None),
         };
+        for (key, field) in [("a", "a"), ("p", "pivot")] {
+            if let Some(placed) = defs.get(key) {
+                let placed = on_the_rod(field, placed, &inertia, gyration.as_ref())?;
+                defs.insert(key, placed);
+            }
+        }
+        let value = |n: &str| defs.get(n).cloned().unwrap_or_else(|| RatFn::symbol(n));
         let a = value("a");
         let mentioned: BTreeSet<Sym> = names
             .iter()
@@ -566,6 +580,49 @@ fn in_cycles(defs: &BTreeMap<&'static str, RatFn>) -> Vec<&'static str> {
         .collect()
 }
 
+/// A position along the rod (`a`, the pivot) written with the rod's own `I` or `r`, in the
+/// scene's symbols: `r` is the rod's radius of gyration, which must be rational (given with
+/// `--rod rg=...`, or the dumbbell's l), `I` its moment of inertia about the centre. A rod
+/// defined through the position it places is circular.
+fn on_the_rod(
+    field: &str,
+    placed: &RatFn,
+    inertia: &RatFn,
+    gyration: Option<&RatFn>,
+) -> Result<RatFn, Error> {
+    let uses = |f: &RatFn, name: &str| f.symbols().iter().any(|s| s.name() == name);
+    let mut out = placed.clone();
+    for (name, meaning) in [("r", gyration), ("I", Some(inertia))] {
+        if !uses(&out, name) {
+            continue;
+        }
+        let meaning = meaning.ok_or_else(|| {
+            Error::new(
+                field,
+                ErrorKind::Invalid(
+                    "r stands for the rod's radius of gyration, which is not rational for this rod (uniform: l/sqrt(3)); give it with --rod rg=...".into(),
+                ),
+            )
+        })?;
+        if *meaning == RatFn::symbol(name) {
+            // The rod's own free symbol (`--rod rg=r`): r stays r.
+            continue;
+        }
+        if uses(meaning, "a") || uses(meaning, "p") || uses(meaning, name) {
+            return Err(Error::new(
+                field,
+                ErrorKind::Invalid(format!(
+                    "circular definitions: {field} uses {name}, which the rod defines through {field}"
+                )),
+            ));
+        }
+        out = out
+            .subs(sym(name), meaning)
+            .ok_or_else(|| Error::new(field, ErrorKind::DivisionByZero))?;
+    }
+    Ok(out)
+}
+
 fn check_constant(name: &str, v: &RatFn) -> Result<(), Error> {
     let Some(c) = v.as_constant() else {
         return Ok(());
@@ -628,7 +685,18 @@ mod tests {
 
     #[test]
     fn rod_symbols_stay_out_of_the_scene_flags() {
+        let err = build(&[("v0", "r")]).unwrap_err().to_string();
+        assert_eq!(
+            err,
+            "v0: r may appear only in --rod, --a, --from-end, --pivot and in claims"
+        );
+        // The impact point may be the uniform rod's I-derived length, not its irrational r.
         let err = build(&[("a", "r")]).unwrap_err().to_string();
-        assert_eq!(err, "a: r may appear only in --rod and in claims");
+        assert!(
+            err.starts_with("a: r stands for the rod's radius of gyration"),
+            "{err}"
+        );
+        let scene = build(&[("a", "3*I/(M*l)")]).unwrap();
+        assert_eq!(scene.params.a.to_string(), "l");
     }
 }
