@@ -29,7 +29,10 @@ impl Part {
     };
 
     /// `[+-]digits[/digits]` with at most 18 digits a part (below 2^60) and a nonzero
-    /// denominator, surrounding ASCII blanks ignored; `None` for anything else.
+    /// denominator, or a decimal `[+-]digits.digits[e[+-]digits]` (also `.5`, `5.`, `2e3`,
+    /// `E` for `e`) whose value is such a fraction over a power of ten (`0.05` is 5/100),
+    /// surrounding ASCII blanks ignored; `None` for anything else (the general parser's
+    /// forms and errors).
     pub(crate) fn parse(cell: &[u8]) -> Option<Part> {
         let cell = cell.trim_ascii();
         let (negative, rest) = match cell.first()? {
@@ -37,16 +40,61 @@ impl Part {
             b'+' => (false, &cell[1..]),
             _ => (false, cell),
         };
-        let (n, used) = digits(rest)?;
+        let (n, used) = digits(rest).unwrap_or((0, 0));
         let d = match rest.get(used) {
-            None => 1,
-            Some(b'/') => match digits(&rest[used + 1..])? {
+            None if used > 0 => 1,
+            Some(b'/') if used > 0 => match digits(&rest[used + 1..])? {
                 (d, k) if k == rest.len() - used - 1 => d,
                 _ => return None,
             },
-            Some(_) => return None,
+            Some(b'.' | b'e' | b'E') => return Part::decimal(negative, rest),
+            _ => return None,
         };
         (d != 0).then_some(Part { negative, n, d })
+    }
+
+    /// `digits[.digits][(e|E)[+-]digits]` (at least one mantissa digit, at most 18 in all) as
+    /// `n/10^k` or `n 10^k/1`, each part below 10^18.
+    fn decimal(negative: bool, text: &[u8]) -> Option<Part> {
+        let (whole, after) = run_of_digits(text);
+        let (fraction, after) = match after.split_first() {
+            Some((b'.', tail)) => run_of_digits(tail),
+            _ => (&after[..0], after),
+        };
+        let mantissa = whole.len() + fraction.len();
+        if mantissa == 0 || mantissa > 18 {
+            return None;
+        }
+        let exponent: i64 = match after.split_first() {
+            None => 0,
+            Some((b'e' | b'E', tail)) => {
+                let (sign, tail) = match tail.split_first()? {
+                    (b'-', t) => (-1, t),
+                    (b'+', t) => (1, t),
+                    _ => (1, tail),
+                };
+                let (written, rest) = run_of_digits(tail);
+                if written.is_empty() || written.len() > 3 || !rest.is_empty() {
+                    return None;
+                }
+                sign * written.iter().fold(0, |x, &b| x * 10 + i64::from(b - b'0'))
+            }
+            _ => return None,
+        };
+        let n = whole
+            .iter()
+            .chain(fraction)
+            .fold(0u64, |x, &b| x * 10 + u64::from(b - b'0'));
+        // value = n 10^shift
+        let shift = exponent - fraction.len() as i64;
+        let below = 10u64.pow(18);
+        if shift >= 0 {
+            let n = n.checked_mul(10u64.checked_pow(u32::try_from(shift).ok()?)?)?;
+            (n < below).then_some(Part { negative, n, d: 1 })
+        } else {
+            let d = 10u64.checked_pow(u32::try_from(-shift).ok()?)?;
+            (d < below).then_some(Part { negative, n, d })
+        }
     }
 
     /// Strictly positive.
@@ -68,6 +116,15 @@ fn digits(bytes: &[u8]) -> Option<(u64, usize)> {
         used += 1;
     }
     (1..=18).contains(&used).then_some((n, used))
+}
+
+/// The ASCII digits at the start of `bytes`, and the rest.
+fn run_of_digits(bytes: &[u8]) -> (&[u8], &[u8]) {
+    let k = bytes
+        .iter()
+        .position(|b| !b.is_ascii_digit())
+        .unwrap_or(bytes.len());
+    bytes.split_at(k)
 }
 
 /// Bit length of a word (0 for 0).
@@ -425,11 +482,33 @@ mod tests {
             })
         );
         assert_eq!(p("+7").map(|x| (x.n, x.d)), Some((7, 1)));
+        // Decimals: the digits over a power of ten, as written (unreduced).
+        let nd = |s: &str| p(s).map(|x| (x.negative, x.n, x.d));
+        assert_eq!(nd("0.05"), Some((false, 5, 100)));
+        assert_eq!(nd("-0.98"), Some((true, 98, 100)));
+        assert_eq!(nd(" 1.5e-3 "), Some((false, 15, 10_000)));
+        assert_eq!(nd("2E+2"), Some((false, 200, 1)));
+        assert_eq!(nd(".5"), Some((false, 5, 10)));
+        assert_eq!(nd("5."), Some((false, 5, 1)));
+        assert_eq!(nd("1e3"), Some((false, 1000, 1)));
+        assert_eq!(
+            nd("12.345678901234567"),
+            Some((false, 12345678901234567, 10u64.pow(15)))
+        );
         for general in [
             "",
             "1/0",
-            "0.5",
-            "1e3",
+            ".",
+            "e5",
+            "1.5e",
+            "1.5e+",
+            "1.2.3",
+            "1.5/2",
+            "1e1000",
+            "1e18",
+            "1e-18",
+            "1234567890.123456789",
+            "0.5 m",
             "1 kg",
             "1/2/3",
             "--1",

@@ -254,3 +254,27 @@ fn a_tiny_rtol_is_stated_exactly() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The same sweep written in decimals and in fractions (tests/data/README.md) has the same
+/// answers, row by row, exact and f64: the decimal cells are read as the fractions they are
+/// (the word row reads `0.05` as 5/100), whichever row takes them.
+#[test]
+fn a_sweep_in_decimals_is_answered_as_in_fractions() {
+    for backend in ["exact", "f64"] {
+        let answers = |file: &str| -> Vec<String> {
+            let (code, stdout, stderr) =
+                rodimpact(&["batch", &data_file(file), "--backend", backend]);
+            assert_eq!(code, 0, "{stderr}");
+            stdout
+                .lines()
+                .map(|line| line.splitn(7, ',').nth(6).unwrap_or_default().to_string())
+                .collect()
+        };
+        let (decimals, fractions) = (
+            answers("sweep-decimals.csv"),
+            answers("sweep-fractions.csv"),
+        );
+        assert_eq!(decimals.len(), 2001);
+        assert_eq!(decimals, fractions, "{backend}");
+    }
+}

@@ -150,3 +150,61 @@ proptest! {
         }
     }
 }
+
+/// A decimal as a sweep writes it: `[-]w.f[e±x]`, `.f`, `w.`; mantissa of up to 18 digits.
+fn decimal(whole: u64, fraction: u64, places: u32, exponent: i32, style: u8) -> String {
+    let fraction = (fraction % 10u64.pow(places)).max(1);
+    let fraction = format!("{fraction:0width$}", width = places as usize);
+    let mantissa = match style % 3 {
+        0 if places > 0 => format!(".{fraction}"),
+        1 => format!("{whole}."),
+        _ if places > 0 => format!("{whole}.{fraction}"),
+        _ => whole.to_string(),
+    };
+    match exponent {
+        0 => mantissa,
+        x if style.is_multiple_of(2) => format!("{mantissa}e{x}"),
+        x => format!("{mantissa}E{x:+}"),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Scenes written in decimals (the word row reads them as digits over a power of ten, up to
+    /// 18 digits a part; beyond, the general row): the same line both ways, exact and f64, with
+    /// and without claims.
+    #[test]
+    fn decimal_rows_give_the_general_rows_lines(
+        m in (1u64..1_000_000, 0u64..1 << 40, 0u32..12, -4i32..4, any::<u8>()),
+        big in (1u64..1_000_000, 0u64..1 << 40, 0u32..12, -4i32..4, any::<u8>()),
+        a_tenths in -10i64..=10, v0 in (1u64..1000, 0u64..1000, 0u32..4, any::<u8>()),
+        e_hundredths in 0u64..=100, claims in any::<bool>(),
+    ) {
+        let (mw, mf, mp, mx, ms) = m;
+        let (bw, bf, bp, bx, bs) = big;
+        let (vw, vf, vp, vs) = v0;
+        let scene = [
+            decimal(mw, mf, mp, mx, ms),
+            decimal(bw, bf, bp, bx, bs),
+            "1.0".to_string(),
+            format!("{}{}.{}", if a_tenths < 0 { "-" } else { "" }, a_tenths.abs() / 10, a_tenths.abs() % 10),
+            decimal(vw, vf, vp, 0, vs),
+            format!("0.{e_hundredths:02}").replace("0.100", "1.00"),
+        ]
+        .join(",");
+        let general = Batch::new("m,M,l,a,v0,e,rod", Arithmetic::Exact).unwrap();
+        let solved = general.row(1, &format!("{scene},uniform")).unwrap();
+        let (header, line) = if claims {
+            let values: Vec<&str> = solved.line.trim_end().split(',').skip(7).take(3).collect();
+            ("m,M,l,a,v0,e,v,V,omega", format!("{scene},{}", values.join(",")))
+        } else {
+            ("m,M,l,a,v0,e", scene.clone())
+        };
+        for arithmetic in [Arithmetic::Exact, Arithmetic::F64] {
+            for (fast, slow) in in_arithmetic(arithmetic, header, std::slice::from_ref(&line)) {
+                prop_assert_eq!(fast, slow, "{}", line);
+            }
+        }
+    }
+}
