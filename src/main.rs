@@ -41,10 +41,11 @@ enum Command {
     Impact(Box<commands::impact::ImpactArgs>),
     /// Check published answers (printed numbers, fractions, formulas) against the exact ones.
     Check(Box<commands::check::CheckArgs>),
-    /// The exact answer as formulas (v, V, omega, J, energy lost, a*^2, omega_max; with the
-    /// oblique flags also vt, Vt, spin, Jt and mu*, split into stick and slide when the symbols
-    /// leave the contact open) in the scene's free symbols: any scene flag may be a symbol or an
-    /// expression (--M 2*m, --v0t v0t).
+    /// The exact answer as formulas in the scene's free symbols (--M 2*m, --v0t v0t).
+    ///
+    /// v, V, omega, J, the energy lost, a*^2 and omega_max; with the oblique flags also vt, Vt,
+    /// spin, Jt and mu*, split into stick and slide when the symbols leave the contact open.
+    /// Any scene flag may be a symbol or an expression.
     Formula(Box<commands::formula::FormulaArgs>),
     /// An interactive page (one self-contained HTML file) on which a student predicts where to
     /// hit the rod, then finds the exact answer, the curve and the motion.

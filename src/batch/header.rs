@@ -86,6 +86,14 @@ impl Batch {
                 .iter()
                 .any(|c| matches!(c, Column::Scene(k) if k.name == required))
             {
+                if let Some(separator) = [';', '\t', '|']
+                    .into_iter()
+                    .find(|s| !header.contains(',') && header.contains(*s))
+                {
+                    return Err(bad(format!(
+                        "the header has no commas (it is separated by {separator:?}): rodimpact reads comma-separated files"
+                    )));
+                }
                 return Err(bad(format!("column '{required}' is required")));
             }
         }
@@ -378,6 +386,14 @@ mod tests {
         for (header, want) in [
             ("m,m,M", "header: column 'm' given twice"),
             ("M,l", "header: column 'm' is required"),
+            (
+                "m;M;a",
+                "header: the header has no commas (it is separated by ';'): rodimpact reads comma-separated files",
+            ),
+            (
+                "m\tM",
+                "header: the header has no commas (it is separated by '\\t'): rodimpact reads comma-separated files",
+            ),
             ("m,M,v,J,v", "header: column 'v' given twice"),
         ] {
             assert_eq!(

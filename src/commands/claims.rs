@@ -234,7 +234,7 @@ fn paper_figures() -> Result<Vec<report::PaperFigure>, Error> {
     Ok(vec![
         report::PaperFigure {
             file: "omega.svg",
-            caption: "$\\omega(a)/\\omega_{\\max}$ along the rod for $M/m = 1/2, 1, 2, 3, 10$ (uniform rod, elastic), each curve's optimum $a^*$ marked; dashed beyond the end $a = l$.".into(),
+            caption: "The spin $\\omega l/v_0$ against the impact point $a/l$ for $M/m = 1/2, 1, 2, 3, 10$ (uniform rod, elastic), each curve's optimum $a^*$ marked; dashed beyond the end $a = l$.".into(),
             svg: report::plot_omega(&ratios, &RodInertia::Uniform)?,
         },
         report::PaperFigure {
@@ -244,7 +244,7 @@ fn paper_figures() -> Result<Vec<report::PaperFigure>, Error> {
         },
         report::PaperFigure {
             file: "figure1.svg",
-            caption: "The paper's Figure 1, to scale: the rod of length $2l$ at rest, the projectile $m$ with speed $v_0$ aimed at $a = l/2$ ($M = m$).".into(),
+            caption: "The paper's Fig. 1, to scale: the rod of length $2l$ at rest, the projectile $m$ with speed $v_0$ aimed at $a = l/2$ ($M = m$).".into(),
             svg: report::plot_figure1(&example.build()?)?,
         },
     ])

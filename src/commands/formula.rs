@@ -1,10 +1,9 @@
 //! `rodimpact formula`: the exact answer as formulas in the scene's free symbols.
 
-use super::{Failure, ObliqueFlags, SceneFlags, print_out};
+use super::{Failure, ObliqueFlags, SceneFlags, format_choice, print_out};
 use clap::Args;
 use rodimpact::report::{formula_json, formula_latex, formula_markdown, formula_text};
 use rodimpact::textbook::formula::formulas;
-use rodimpact::{Error, ErrorKind};
 
 #[derive(Args, Debug)]
 pub(crate) struct FormulaArgs {
@@ -12,23 +11,17 @@ pub(crate) struct FormulaArgs {
     pub(crate) scene: SceneFlags,
     #[command(flatten)]
     pub(crate) oblique: ObliqueFlags,
-    /// Output format: text, latex, markdown or json.
+    /// Output format: text, latex, markdown or json (also md, tex, txt).
     #[arg(long, value_name = "FORMAT", default_value = "text")]
     pub(crate) format: String,
 }
 
 pub(crate) fn run_formula(args: &FormulaArgs) -> Result<(), Failure> {
-    let format = args.format.as_str();
-    if !["text", "latex", "markdown", "json"].contains(&format) {
-        return Err(Error::new(
-            "format",
-            ErrorKind::Invalid(format!(
-                "expected text, latex, markdown or json, got '{}'",
-                rodimpact::echo::echo(format)
-            )),
-        )
-        .into());
-    }
+    let format = format_choice(
+        "format",
+        &args.format,
+        &["text", "latex", "markdown", "json"],
+    )?;
     let f = formulas(&args.oblique.input(&args.scene))?;
     let text = match format {
         "latex" => formula_latex(&f),

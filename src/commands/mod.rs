@@ -126,6 +126,46 @@ impl From<Error> for Failure {
     }
 }
 
+/// The format names every command takes, with their aliases: `md` is `markdown`, `tex` is
+/// `latex`, `txt` is `text`, `htm` is `html`.
+const FORMAT_NAMES: [(&str, &str); 10] = [
+    ("text", "text"),
+    ("txt", "text"),
+    ("markdown", "markdown"),
+    ("md", "markdown"),
+    ("latex", "latex"),
+    ("tex", "latex"),
+    ("json", "json"),
+    ("csv", "csv"),
+    ("html", "html"),
+    ("htm", "html"),
+];
+
+/// The canonical name of the format `text` (an alias taken, case ignored) when it is one of
+/// `allowed` (canonical names); else the error naming `field` and what it takes.
+pub(crate) fn format_choice(
+    field: &str,
+    text: &str,
+    allowed: &[&'static str],
+) -> Result<&'static str, Error> {
+    let wanted = text.trim().to_ascii_lowercase();
+    FORMAT_NAMES
+        .iter()
+        .find(|(name, canonical)| *name == wanted && allowed.contains(canonical))
+        .map(|(_, canonical)| *canonical)
+        .ok_or_else(|| {
+            let (last, first) = allowed.split_last().expect("a command takes some format");
+            Error::new(
+                field,
+                rodimpact::ErrorKind::Invalid(format!(
+                    "expected {} or {last}, got '{}'",
+                    first.join(", "),
+                    rodimpact::echo::echo(text)
+                )),
+            )
+        })
+}
+
 /// The largest `--digits` accepted: beyond it the decimals are refused, not computed for ever.
 pub(crate) const MAX_DIGITS_OUT: usize = 10_000;
 

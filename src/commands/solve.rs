@@ -1,6 +1,6 @@
 //! `rodimpact solve`: one scene, exactly, and optionally in a float backend next to it.
 
-use super::{Failure, ObliqueFlags, SceneFlags, parse_digits, print_out};
+use super::{Failure, ObliqueFlags, SceneFlags, format_choice, parse_digits, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::report::{ExplainFormat, backend_values, explain, solution_json, solution_text};
 use rodimpact::solve::Answer;
@@ -82,20 +82,10 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
         .into());
     }
     if let Some(format) = &args.explain {
-        let format = match format.as_str() {
-            "text" => ExplainFormat::Text,
+        let format = match format_choice("explain", format, &["text", "markdown", "latex"])? {
             "markdown" => ExplainFormat::Markdown,
             "latex" => ExplainFormat::Latex,
-            other => {
-                return Err(rodimpact::Error::new(
-                    "explain",
-                    rodimpact::error::ErrorKind::Invalid(format!(
-                        "expected text, markdown or latex, got '{}'",
-                        rodimpact::echo::echo(other)
-                    )),
-                )
-                .into());
-            }
+            _ => ExplainFormat::Text,
         };
         if scene.oblique().is_some() || args.json || backend != Backend::Exact {
             return Err(rodimpact::Error::new(

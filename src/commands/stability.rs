@@ -14,6 +14,7 @@ const SWEEP: usize = 150;
 #[derive(ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum StabilityFormat {
     /// A Markdown table.
+    #[value(alias = "markdown")]
     Md,
     /// A JSON list of rows.
     Json,

@@ -1,5 +1,6 @@
 //! The summary `rodimpact batch` prints on standard error.
 
+use super::counted;
 use crate::batch::{Finding, OutputStats, Summary};
 use crate::field::decimal;
 
@@ -15,7 +16,7 @@ use crate::field::decimal;
 /// let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
 /// let mut s = Summary::default();
 /// s.add(&b.row(1, "1,1,3/5").unwrap());
-/// assert_eq!(batch_summary(&s), "1 rows, laws held exactly on 1\nv: 1 claims, 0 wrong, max rel error 0, median 0\n");
+/// assert_eq!(batch_summary(&s), "1 row, laws held exactly on 1\nv: 1 claim, 0 wrong, max rel error 0, median 0\n");
 /// s.add(&b.row(2, "1,1,0.6").unwrap());
 /// s.add(&b.row(3, "1,1,0.61").unwrap());
 /// assert!(batch_summary(&s).contains("v: 3 claims, 1 wrong (row 3), max rel error 0.0167, median 0"));
@@ -23,7 +24,7 @@ use crate::field::decimal;
 /// let f = Batch::new("m,M", Arithmetic::F64).unwrap();
 /// let mut s = Summary::default();
 /// s.add(&f.row(1, "1,1").unwrap());
-/// assert_eq!(batch_summary(&s), "1 rows (f64: conservation laws and diagnoses not checked)\n");
+/// assert_eq!(batch_summary(&s), "1 row (f64: conservation laws and diagnoses not checked)\n");
 ///
 /// let engine = Batch::new("m,M,a,v,V,omega", Arithmetic::Exact).unwrap();
 /// let mut s = Summary::default();
@@ -35,13 +36,13 @@ use crate::field::decimal;
 pub fn batch_summary(summary: &Summary) -> String {
     let mut out = if summary.laws_unchecked > 0 {
         format!(
-            "{} rows (f64: conservation laws and diagnoses not checked)\n",
-            summary.rows
+            "{} (f64: conservation laws and diagnoses not checked)\n",
+            counted(summary.rows, "row")
         )
     } else {
         format!(
-            "{} rows, laws held exactly on {}\n",
-            summary.rows,
+            "{}, laws held exactly on {}\n",
+            counted(summary.rows, "row"),
             summary.rows - summary.laws_failed
         )
     };
@@ -59,15 +60,15 @@ pub fn batch_summary(summary: &Summary) -> String {
             None => "-".to_string(),
         };
         out.push_str(&format!(
-            "{name}: {} claims, {} wrong{}, max rel error {max}, median {median}\n",
-            stats.compared(),
+            "{name}: {}, {} wrong{}, max rel error {max}, median {median}\n",
+            counted(stats.compared(), "claim"),
             stats.wrong(),
             wrong_rows_text(stats),
         ));
     }
     let diagnoses = summary.diagnoses();
     if !diagnoses.is_empty() {
-        out.push_str(&format!("diagnosis of {} rows:\n", summary.rows));
+        out.push_str(&format!("diagnosis of {}:\n", counted(summary.rows, "row")));
         for (name, count) in diagnoses {
             let examples = Finding::ALL
                 .iter()
@@ -108,7 +109,7 @@ mod tests {
         assert!(row.line.ends_with(",false,inf\n"), "{}", row.line);
         let mut s = Summary::default();
         s.add(&row);
-        assert!(batch_summary(&s).contains("omega: 1 claims, 1 wrong (row 1), max rel error inf"));
+        assert!(batch_summary(&s).contains("omega: 1 claim, 1 wrong (row 1), max rel error inf"));
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! The reports of `rodimpact check`: a table or JSON of one scene's checked answers, the same
 //! for a problem collection, and the summary lines (`2 of 3 claims agree; 1 disagrees`).
 
+use super::counted;
 use crate::field::decimal;
 use crate::field::decimal::magnitude;
 use crate::field::{Field, Q};
@@ -248,15 +249,6 @@ pub fn check_json(check: &SceneCheck) -> Value {
     j
 }
 
-/// `n thing` or `n things`.
-fn count(n: usize, noun: &str) -> String {
-    if n == 1 {
-        format!("1 {noun}")
-    } else {
-        format!("{n} {noun}s")
-    }
-}
-
 /// How many claimed answers agree, in words: `no claims`, `1 claim, it agrees`,
 /// `1 of 3 claims agrees; 2 disagree`.
 ///
@@ -334,7 +326,7 @@ pub fn problems_text(checks: &[ProblemCheck]) -> String {
     let _ = write!(
         out,
         "{}; {}",
-        count(checks.len(), "problem"),
+        counted(checks.len(), "problem"),
         agreement_line(agree, total)
     );
     if !wrong.is_empty() {

@@ -57,6 +57,15 @@ use crate::field::decimal;
 use crate::field::{Q, QSqrt};
 use serde_json::{Value, json};
 
+/// `n thing` or `n things`: the one noun form the reports use for counts.
+pub(crate) fn counted(n: usize, noun: &str) -> String {
+    if n == 1 {
+        format!("1 {noun}")
+    } else {
+        format!("{n} {noun}s")
+    }
+}
+
 /// The JSON value form of an exact number: `{"exact": "p/q", "decimal": "..."}`, the decimal
 /// correctly rounded to `digits` significant digits.
 ///

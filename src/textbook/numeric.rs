@@ -74,6 +74,9 @@ pub fn decide_value(
                     }
                     AnswerAgreement::Agrees
                 } else {
+                    if equal {
+                        d.notes.push(sign_only_note(name, c.is_positive()));
+                    }
                     AnswerAgreement::Disagrees
                 };
                 let claim_mid = midpoint(&Exact::Surd(QSqrt::new(Q::zero(), c, rad)), 40);
@@ -83,6 +86,19 @@ pub fn decide_value(
         },
     }
     d
+}
+
+/// The note for a claim whose magnitude agrees and whose sign does not: what the exact sign
+/// means for the quantity `name` (the projectile's or the rod's velocity across the rod).
+fn sign_only_note(name: &str, exact_negative: bool) -> String {
+    let meaning = match (name.rsplit('.').next().unwrap_or(name), exact_negative) {
+        ("v", true) => ": v < 0, the projectile rebounds (it moves back after the impact)",
+        ("v", false) => ": v > 0, the projectile carries on forward",
+        ("V", true) => ": V < 0, the rod's centre moves back, towards the projectile",
+        ("V", false) => ": V > 0, the rod's centre moves forward, away from the projectile",
+        _ => "",
+    };
+    format!("the magnitude agrees, only the sign differs{meaning}")
 }
 
 /// The note for an omega claim of the opposite sign.
@@ -172,6 +188,11 @@ fn printed(d: &mut CheckedAnswer, m: &Measured, exact: &Exact, omega: bool, sig:
         d.rel_error = RelError::new(claim_value.clone(), mid.clone());
         if omega && !p.value.is_zero() && !mid.is_zero() && p.value.is_negative() != negative {
             d.notes.push(opposite_sign_note());
+        }
+        if agreement == AnswerAgreement::Disagrees
+            && judge(&-claim_value.clone(), &p, &lo, &hi) == Some(AnswerAgreement::Agrees)
+        {
+            d.notes.push(sign_only_note(&d.name, mid.is_negative()));
         }
         if p.precision == Precision::Exact && lo != hi {
             d.notes

@@ -278,3 +278,26 @@ fn a_sweep_in_decimals_is_answered_as_in_fractions() {
         assert_eq!(decimals, fractions, "{backend}");
     }
 }
+
+/// NEWCOMER m17 and m18: one row and one claim are counted in the singular, and a file
+/// separated by semicolons is named as such instead of "column 'm' is required".
+#[test]
+fn counts_read_as_english_and_a_semicolon_file_is_named() {
+    let dir = scratch("plural");
+    let one = dir.join("one.csv");
+    std::fs::write(&one, "m,M,v\n1,1,3/5\n").unwrap();
+    let (code, _, stderr) = rodimpact(&["batch", one.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert_eq!(
+        stderr,
+        "1 row, laws held exactly on 1\nv: 1 claim, 0 wrong, max rel error 0, median 0\n"
+    );
+    let semi = dir.join("semi.csv");
+    std::fs::write(&semi, "m;M;a\n1;1;1\n").unwrap();
+    let (code, _, stderr) = rodimpact(&["batch", semi.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert_eq!(
+        stderr,
+        "error: header: the header has no commas (it is separated by ';'): rodimpact reads comma-separated files\n"
+    );
+}

@@ -511,3 +511,39 @@ fn a_mistyped_subcommand_suggests_the_right_one() {
         "{err}"
     );
 }
+
+/// NEWCOMER M7: a velocity claimed with the right magnitude and the wrong sign disagrees (the
+/// sign of v says whether the projectile rebounds), and the note says so. By hand: m = 0.05,
+/// M = 0.3, l = 0.4, a = 0.3, v0 = 4, uniform rod, elastic: D = 1 + m/M + m a^2/I with I = M
+/// l^2/3 = 0.016, so D = 1 + 1/6 + 0.0045/0.016 = 139/96 and v = -(1 - 1/6 - 9/32)/D v0 =
+/// -(53/96)(96/139) 4 = -212/139 ~ -1.525.
+#[test]
+fn a_rebound_claimed_forward_is_named_as_a_sign_error() {
+    let scene = [
+        "--m",
+        "50g",
+        "--M",
+        "0.30kg",
+        "--length",
+        "80cm",
+        "--from-end",
+        "10cm",
+        "--v0",
+        "4.0m/s",
+    ];
+    let note = "note: the magnitude agrees, only the sign differs: v < 0, the projectile rebounds (it moves back after the impact)";
+    for claim in ["v=1.5 m/s", "v=212/139"] {
+        let (code, out, _) = check(&[&scene[..], &["--claim", claim]].concat());
+        assert_eq!(code, 1, "{out}");
+        assert!(
+            out.contains("-212/139") && out.contains("DISAGREES"),
+            "{out}"
+        );
+        assert!(out.contains(note), "{claim}: {out}");
+    }
+    // A wrong magnitude gets no such note, and the right signed value agrees.
+    let (_, out, _) = check(&[&scene[..], &["--claim", "v=1.2"]].concat());
+    assert!(!out.contains("only the sign differs"), "{out}");
+    let (code, out, _) = check(&[&scene[..], &["--claim", "v=-1.5"]].concat());
+    assert_eq!(code, 0, "{out}");
+}

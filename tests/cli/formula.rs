@@ -572,3 +572,30 @@ fn the_impact_point_may_be_the_radius_of_gyration() {
         assert_eq!(String::from_utf8(out.stderr).unwrap(), message, "{args:?}");
     }
 }
+
+/// NEWCOMER m3 and m21: the format names have the same aliases everywhere (`md`, `tex`,
+/// `txt`), and `formula`'s summary in `rodimpact --help` is one line.
+#[test]
+fn format_aliases_are_the_same_everywhere() {
+    let md = run(&["--format", "md"]);
+    assert_eq!(md.stdout, run(&["--format", "markdown"]).stdout);
+    assert_eq!(
+        run(&["--format", "tex"]).stdout,
+        run(&["--format", "latex"]).stdout
+    );
+    let explain = |format: &str| {
+        crate::common::output(vec!["solve", "--m", "1", "--M", "1", "--explain", format]).stdout
+    };
+    assert_eq!(explain("md"), explain("markdown"));
+    let stability = crate::common::output(vec!["stability", "--format", "markdown"]);
+    assert!(stability.status.success());
+    let help = String::from_utf8(crate::common::output(vec!["--help"]).stdout).unwrap();
+    let line = help
+        .lines()
+        .find(|l| l.trim_start().starts_with("formula"))
+        .unwrap();
+    assert_eq!(
+        line.trim(),
+        "formula    The exact answer as formulas in the scene's free symbols (--M 2*m, --v0t v0t)"
+    );
+}

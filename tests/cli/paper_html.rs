@@ -17,6 +17,15 @@ fn page_to_stdout() -> String {
 fn the_page_holds_every_claim_table_figure_and_formula() {
     let page = page_to_stdout();
     assert!(page.starts_with("<!DOCTYPE html>\n<html lang=\"en\">"));
+    // NEWCOMER M5: the spin figure's caption says what its axis shows (omega l/v0, not
+    // omega/omega_max), and the paper's figure keeps one numbering.
+    assert!(
+        page.contains("<figcaption><b>Figure 1.</b> The spin <math>"),
+        "caption"
+    );
+    assert!(!page.contains("omega_{\\max}$ along the rod"));
+    assert!(page.contains("<b>Figure 3.</b> The paper&#39;s Fig. 1, to scale"));
+    assert!(!page.contains("Figure 1: a projectile"));
     assert!(page.ends_with("</html>\n"));
     // Every registered claim once, folded, with its verdict class.
     let ids: Vec<&str> = rodimpact::claims::registry().iter().map(|e| e.id).collect();

@@ -222,7 +222,7 @@ pub fn plot_figure1(scene: &Scene) -> Result<String, Error> {
     header(
         &mut svg,
         width,
-        "Figure 1: a projectile strikes a rod at rest on a smooth table (top view)",
+        "A projectile strikes a rod at rest on a smooth table (top view)",
         &[scene_line(scene)],
     );
     let mut panel = Panel::new((-2.4, 1.45), (-1.5, 1.5), (45.0, 80.0));
