@@ -32,6 +32,13 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   });
   check(JSON.stringify(quad) === JSON.stringify(["√6/3", "1", "-1 + sqrt(2)", "−1 + √2/2 −0.292893", "1 -1 -1 1"]), `x + y√r arithmetic: ${quad.join(" | ")}`);
 
+  // The page opens in predict-first mode: the introduction asks, the answer is withheld.
+  check(await page.$eval("#predict", (e) => e.checked), "predict first is on when the page opens");
+  check(await page.$eval("body", (b) => b.classList.contains("answer-hidden")), "on opening, the answer is hidden");
+  check(!(await text("header")).includes("a*") && !(await text("#summary")).includes("a* ="), "the introduction and the summary do not give a* away");
+  await page.screenshot({ path: `${shots}/${name}-explore-opening.png`, fullPage: true });
+  await page.click("#predict"); // off: everything shown, for the checks below
+
   // The default scene, M = m: a* = sqrt(2/3) l = √6/3 l ≈ 0.8165 l, on the rod.
   check((await text("#self-check")).startsWith("Self-check: on opening, the page recomputed"), "the page's arithmetic agrees with rodimpact's embedded answers");
   const summary = await text("#summary");

@@ -143,3 +143,26 @@ fn out_writes_the_page_whole_and_refuses_a_bad_path() {
     let (code, _, _) = rodimpact(&["explore", "--bogus"]);
     assert_eq!(code, 2);
 }
+
+/// NEWCOMER M4: the page opens in predict-first mode and its introduction asks the question
+/// without answering it (the browser run checks that the answer is then hidden on screen).
+#[test]
+fn the_page_opens_asking_not_answering() {
+    let page = page();
+    assert!(page.contains(r#"<input type="checkbox" id="predict" checked>"#));
+    assert!(
+        page.contains(r#"<div id="guess-box">"#),
+        "the guess is offered at once"
+    );
+    let header = &page[page.find("<header>").unwrap()..page.find("</header>").unwrap()];
+    assert!(
+        header.contains("Where should it\nhit to make the rod spin fastest?"),
+        "{header}"
+    );
+    for answer in ["interior point", "a</i>*", "2<i>m</i>", "√"] {
+        assert!(
+            !header.contains(answer),
+            "the introduction gives away {answer:?}"
+        );
+    }
+}

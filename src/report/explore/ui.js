@@ -115,7 +115,8 @@
   });
 
   // ---- predict first -------------------------------------------------------------------
-  let revealed = true;
+  // Predict first is on when the page opens: the student guesses before seeing the answer.
+  let revealed = !$("predict").checked;
   let guess = null;
   const hidden = () => $("predict").checked && !revealed;
   $("predict").addEventListener("change", () => {
