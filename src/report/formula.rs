@@ -3,7 +3,7 @@
 
 use crate::field::{Poly, Q, RatFn};
 use crate::textbook::expr::Radical;
-use crate::textbook::formula::{AnswerFormula, Formulas};
+use crate::textbook::formula::{AnswerFormula, Condition, Formulas};
 use num_bigint::BigInt;
 use num_traits::{One, Signed};
 use serde_json::{Map, Value, json};
@@ -134,44 +134,116 @@ pub fn formula_markdown(f: &Formulas) -> String {
     out
 }
 
-/// LaTeX: a document fragment, one `align*` row per formula (compiles with amsmath).
+/// LaTeX: a document fragment (compiles with amsmath): the free symbols and the defaults as
+/// text, then one `align*` with a row per formula; a case split typeset as `cases` beside its
+/// formula (omega_max: at a* when a* lies on the rod, at the end otherwise), and a contact the
+/// symbols leave open as an `\intertext` heading before each case's rows.
 ///
 /// # Examples
 /// ```
 /// use rodimpact::{report::formula_latex, scene::SceneInput, textbook::formula::formulas};
 /// let f = formulas(&SceneInput::default())?;
-/// assert!(formula_latex(&f).contains(r"\omega &= \frac{6 a m v_0}{"));
+/// let latex = formula_latex(&f);
+/// assert!(latex.contains(r"\omega &= \frac{6 a m v_0}{"));
+/// assert!(latex.contains(r"& \text{if } M \le 2 m"), "{latex}");
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn formula_latex(f: &Formulas) -> String {
     let mut out = String::new();
     for line in preamble(f) {
-        out.push_str(&format!("% {line}\n"));
+        out.push_str(&format!("\\noindent {}\\par\n", text_latex(&line)));
     }
-    let align = |out: &mut String, list: &[AnswerFormula]| {
-        out.push_str("\\begin{align*}\n");
-        let rows: Vec<String> = list
-            .iter()
-            .map(|x| format!("  {} &= {}", key_latex(x.key), radical_latex(&x.value)))
-            .collect();
-        out.push_str(&rows.join(" \\\\\n"));
-        out.push_str("\n\\end{align*}\n");
-        for x in list {
-            if let Some(c) = &x.condition {
-                out.push_str(&format!("% {}: {c}\n", x.key));
+    let row = |x: &AnswerFormula| {
+        let value = radical_latex(&x.value);
+        let value = match &x.piecewise {
+            None => value,
+            Some(p) => {
+                let when = match &p.when {
+                    None => "\\text{never}".to_string(),
+                    Some(Condition::Inequality(c)) => {
+                        format!(
+                            "\\text{{if }} {} \\le {}",
+                            poly_latex(&c.lhs),
+                            poly_latex(&c.rhs)
+                        )
+                    }
+                    Some(Condition::Words(w)) => format!("\\text{{if {}}}", text_latex(w)),
+                };
+                let otherwise = match &p.otherwise {
+                    Some(end) => format!("{} & \\text{{otherwise (at the end)}}", ratfn_latex(end)),
+                    None => "\\text{largest at the end of the rod} & \\text{otherwise}".to_string(),
+                };
+                format!(
+                    "\\begin{{cases}} \\displaystyle {value} & {when} \\\\ \\displaystyle {otherwise} \\end{{cases}}"
+                )
             }
-        }
+        };
+        format!("  {} &= {value}", key_latex(x.key))
     };
-    align(&mut out, &f.formulas);
-    if let Some(contact) = f.contact {
-        out.push_str(&format!("% contact: {contact}\n"));
+    // Rows of the align: formulas (Ok) and \intertext headings (Err), which amsmath takes
+    // right after a line break and which need none after them.
+    let mut rows: Vec<Result<String, String>> = Vec::new();
+    for x in &f.formulas {
+        rows.push(Ok(row(x)));
+        if x.key == "mu_star"
+            && let Some(contact) = f.contact
+        {
+            rows.push(Err(format!("The contact {}s:", text_latex(contact))));
+        }
     }
     for case in &f.cases {
-        out.push_str(&format!(
-            "% if it {}s ({}):\n",
-            case.contact, case.condition
-        ));
-        align(&mut out, &case.formulas);
+        rows.push(Err(format!(
+            "If it {}s (${}$):",
+            case.contact,
+            condition_latex(&case.condition)
+        )));
+        rows.extend(case.formulas.iter().map(|x| Ok(row(x))));
+    }
+    let mut out_rows = String::new();
+    for (k, r) in rows.iter().enumerate() {
+        match r {
+            Ok(formula) => {
+                out_rows.push_str(formula);
+                if k + 1 < rows.len() {
+                    out_rows.push_str(" \\\\");
+                }
+            }
+            Err(heading) => out_rows.push_str(&format!("  \\intertext{{{heading}}}")),
+        }
+        out_rows.push('\n');
+    }
+    out.push_str("\\begin{align*}\n");
+    out.push_str(&out_rows);
+    out.push_str("\\end{align*}\n");
+    out
+}
+
+/// A contact case's condition (`mu >= mu_star`, `mu = 1/4 >= mu_star`) in LaTeX math.
+fn condition_latex(condition: &str) -> String {
+    condition
+        .replace(">=", "\\ge")
+        .replace("mu_star", "\\mu^{*}")
+        .replace("mu", "\\mu")
+        .replace("\\\\mu^{*}", "\\mu^{*}")
+}
+
+/// Plain text for LaTeX's text mode: its special characters escaped.
+fn text_latex(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '\\' => out.push_str("\\textbackslash{}"),
+            '{' | '}' | '_' | '&' | '%' | '$' | '#' => {
+                out.push('\\');
+                out.push(c);
+            }
+            '^' => out.push_str("\\^{}"),
+            // OT1 text fonts print < and > as inverted punctuation.
+            '<' => out.push_str("$<$"),
+            '>' => out.push_str("$>$"),
+            '~' => out.push_str("\\~{}"),
+            _ => out.push(c),
+        }
     }
     out
 }

@@ -31,6 +31,28 @@ pub struct AnswerFormula {
     pub value: Radical,
     /// When the formula holds (omega_max's case split), if it does not hold everywhere.
     pub condition: Option<String>,
+    /// The same case split, structured for typesetting: when the formula holds, and the value
+    /// otherwise.
+    pub piecewise: Option<Piecewise>,
+}
+
+/// A formula that holds under a condition, and what holds otherwise (omega_max: at a* when a*
+/// lies on the rod, else at the end).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Piecewise {
+    /// When the formula holds: an inequality in the symbols, or words (`None`: never).
+    pub when: Option<Condition>,
+    /// The value otherwise, when it has a formula (omega at the end of a free rod).
+    pub otherwise: Option<RatFn>,
+}
+
+/// A condition of a case split.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Condition {
+    /// An inequality between the symbols.
+    Inequality(Inequality),
+    /// A condition said in words.
+    Words(&'static str),
 }
 
 /// The formulas of one scene, with its free symbols and the defaults applied.
@@ -132,6 +154,7 @@ fn rational(key: &'static str, x: RatFn) -> AnswerFormula {
         key,
         value: Radical::rational(x),
         condition: None,
+        piecewise: None,
     }
 }
 
@@ -322,22 +345,36 @@ fn omega_max(p: &Params<RatFn>, omega: &RatFn, squared: &RatFn) -> AnswerFormula
         Some(w) => format!("otherwise omega_max = omega(end) = {w}"),
         None => "otherwise omega is largest at the end of the rod".to_string(),
     };
-    let condition = match &p.support {
+    let beyond_pivot = "a* (measured from the pivot) reaches no farther than the end of the rod";
+    let (condition, when) = match &p.support {
         Support::Free => match on_rod(squared, &p.half_length) {
-            OnRod::Always => None,
-            OnRod::Never => Some(format!(
-                "never: a* lies beyond the end for every value of the symbols; {otherwise}"
-            )),
-            OnRod::When(c) => Some(format!("when {c} (a* on the rod); {otherwise}")),
+            OnRod::Always => (None, None),
+            OnRod::Never => (
+                Some(format!(
+                    "never: a* lies beyond the end for every value of the symbols; {otherwise}"
+                )),
+                Some(None),
+            ),
+            OnRod::When(c) => (
+                Some(format!("when {c} (a* on the rod); {otherwise}")),
+                Some(Some(Condition::Inequality(c))),
+            ),
         },
-        Support::Pivot(_) => Some(format!(
-            "when a* (measured from the pivot) reaches no farther than the end of the rod; {otherwise}"
-        )),
+        Support::Pivot(_) => (
+            Some(format!("when {beyond_pivot}; {otherwise}")),
+            Some(Some(Condition::Words(
+                "a* (from the pivot) lies on the rod",
+            ))),
+        ),
     };
     AnswerFormula {
         key: "omega_max",
         value,
         condition,
+        piecewise: when.map(|when| Piecewise {
+            when,
+            otherwise: at_end,
+        }),
     }
 }
 
@@ -359,8 +396,24 @@ pub(crate) enum OnRod {
     Always,
     /// For no value of the symbols.
     Never,
-    /// When the condition (written `lhs <= rhs`) holds.
-    When(String),
+    /// When the condition holds.
+    When(Inequality),
+}
+
+/// `lhs <= rhs` between two polynomials in the scene's symbols, with positive coefficients
+/// (`M <= 2*m`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Inequality {
+    /// The left side.
+    pub lhs: Poly,
+    /// The right side.
+    pub rhs: Poly,
+}
+
+impl std::fmt::Display for Inequality {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} <= {}", self.lhs, self.rhs)
+    }
 }
 
 /// Whether a* (squared: `squared`) lies on a rod of half-length `l`: the sign of `a*^2 - l^2`
@@ -379,7 +432,10 @@ pub(crate) fn on_rod(squared: &RatFn, l: &RatFn) -> OnRod {
     let den = excess.den();
     let positive_den = den.terms().count() == 1 && den.terms().all(|(_, c)| c.is_positive());
     if !positive_den {
-        return OnRod::When(format!("{excess} <= 0"));
+        return OnRod::When(Inequality {
+            lhs: excess.num().clone() * excess.den(),
+            rhs: Poly::zero(),
+        });
     }
     let mut num = excess.num().clone();
     for sym in num.symbols() {
@@ -405,6 +461,6 @@ pub(crate) fn on_rod(squared: &RatFn, l: &RatFn) -> OnRod {
     } else if lhs.is_zero() {
         OnRod::Always
     } else {
-        OnRod::When(format!("{lhs} <= {rhs}"))
+        OnRod::When(Inequality { lhs, rhs })
     }
 }

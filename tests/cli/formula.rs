@@ -122,7 +122,7 @@ fn every_format_renders_and_bad_input_is_refused() {
     let latex = String::from_utf8(run(&["--format", "latex"]).stdout).unwrap();
     assert!(
         latex.contains(r"\begin{align*}")
-            && latex.contains(r"\omega_{\max} &= \frac{v_0}{l} \sqrt{")
+            && latex.contains(r"\omega_{\max} &= \begin{cases} \displaystyle \frac{v_0}{l} \sqrt{")
     );
     let md = String::from_utf8(run(&["--format", "markdown"]).stdout).unwrap();
     assert!(md.contains("| `a_star_squared` |"));
@@ -597,5 +597,43 @@ fn format_aliases_are_the_same_everywhere() {
     assert_eq!(
         line.trim(),
         "formula    The exact answer as formulas in the scene's free symbols (--M 2*m, --v0t v0t)"
+    );
+}
+
+/// NEWCOMER M1: the case conditions are typeset with the formulas, not left in `%` comments:
+/// omega_max as `cases` (v0/a* when M <= 2m, omega at the end 6 m v0/((M + 4m) l) otherwise),
+/// and each contact case under an `\intertext` heading, so the LaTeX pasted into a handout
+/// states when each block holds. (`pdflatex` compiles all three outputs with amsmath.)
+#[test]
+fn latex_typesets_the_case_conditions() {
+    let latex = |args: &[&str]| {
+        String::from_utf8(run(&[args, &["--format", "latex"]].concat()).stdout).unwrap()
+    };
+    let paper = latex(&[]);
+    assert!(
+        paper.contains(r"\omega_{\max} &= \begin{cases} \displaystyle \frac{v_0}{l} \sqrt{\frac{3 m}{M + m}} & \text{if } M \le 2 m \\ \displaystyle \frac{6 m v_0}{M l + 4 l m} & \text{otherwise (at the end)} \end{cases}"),
+        "{paper}"
+    );
+    assert!(
+        !paper.contains("\n%"),
+        "no condition left in a comment: {paper}"
+    );
+    let open = latex(&["--M", "m", "--a", "l", "--v0t", "v0t", "--mu", "mu"]);
+    assert!(
+        open.contains("\\\\\n  \\intertext{If it sticks ($\\mu \\ge \\mu^{*}$):}\n"),
+        "{open}"
+    );
+    assert!(
+        open.contains("\\\\\n  \\intertext{If it slides ($\\mu < \\mu^{*}$):}\n"),
+        "{open}"
+    );
+    assert!(
+        open.contains("taken $>$ 0"),
+        "the default slip sign is printed: {open}"
+    );
+    let decided = latex(&["--M", "m", "--a", "l", "--v0t", "v0", "--mu", "2"]);
+    assert!(
+        decided.contains("\\intertext{The contact sticks:}"),
+        "{decided}"
     );
 }
