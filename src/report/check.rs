@@ -179,7 +179,11 @@ pub fn check_table(check: &SceneCheck) -> String {
     }
     let mut rows = vec![[
         "claim".to_string(),
-        "exact (SI)".to_string(),
+        if check.symbolic.is_some() {
+            "exact".to_string()
+        } else {
+            "exact (SI)".to_string()
+        },
         "claimed".to_string(),
         "rel. error".to_string(),
         "verdict".to_string(),

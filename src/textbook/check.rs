@@ -164,10 +164,10 @@ fn exact_value(
         return Ok(Radical::rational(x));
     }
     match quantity {
-        Quantity::AStar => Ok(Radical {
-            coeff: RatFn::one(),
-            radicand: a_star_squared(&scene.params),
-        }),
+        Quantity::AStar => Ok(Radical::normalized(
+            RatFn::one(),
+            a_star_squared(&scene.params),
+        )),
         _ => Err(Error::new(
             field,
             ErrorKind::Invalid(

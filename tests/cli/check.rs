@@ -209,7 +209,7 @@ fn a_constant_claim_is_decided_against_a_formula() {
     let (code, out, err) = check(&["--M", "4*m", "--a", "l", "--claim", "v=0"]);
     assert_eq!(code, 0, "{out}{err}");
     assert!(
-        out.contains("  v      0           0        -           agrees"),
+        out.contains("  v      0      0        -           agrees"),
         "{out}"
     );
     let (code, out, err) = check(&["--M", "4*m", "--elastic", "--claim", "v=0", "--json"]);
@@ -546,4 +546,22 @@ fn a_rebound_claimed_forward_is_named_as_a_sign_error() {
     assert!(!out.contains("only the sign differs"), "{out}");
     let (code, out, _) = check(&[&scene[..], &["--claim", "v=-1.5"]].concat());
     assert_eq!(code, 0, "{out}");
+}
+
+/// NEWCOMER m16: a symbolic a* is shown canonically (an integer free of squares under the
+/// root, l outside it: for M = m, a*^2 = 2 l^2/3, a* = sqrt(6) l/3), under a header without
+/// "(SI)" (the scene has symbols, not units), and the note on the sign says what it means.
+#[test]
+fn a_symbolic_a_star_is_shown_canonically() {
+    let (code, out, _) = check(&["--M", "m", "--claim", "a_star=sqrt(2/3)*l"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(
+        out.contains("  claim   exact            claimed      rel. error  verdict\n"),
+        "{out}"
+    );
+    assert!(
+        out.contains("  a_star  (1/3*l)*sqrt(6)  sqrt(2/3)*l  -           agrees\n"),
+        "{out}"
+    );
+    assert!(out.contains("note: the squares agree identically, and both sides have the same sign (checked at a sample scene)"), "{out}");
 }

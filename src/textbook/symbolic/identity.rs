@@ -51,7 +51,7 @@ pub(crate) fn identity(
         if claimed.equals(&value, false, budget, field)? {
             squares_agree = true;
             d.notes.push(
-                "the squares agree identically; the sign is taken from a sample scene".into(),
+                "the squares agree identically, and both sides have the same sign (checked at a sample scene)".into(),
             );
         }
     }
