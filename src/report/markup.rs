@@ -134,7 +134,13 @@ pub fn ascii_math(text: &str) -> String {
                 i = next;
                 continue;
             }
-            let greek = match word.as_str() {
+            // A Greek name with a numeric index (`tau1`) takes the index as a subscript.
+            let stem = word.trim_end_matches(|c: char| c.is_ascii_digit());
+            let index: String = word[stem.len()..]
+                .chars()
+                .map(|d| char::from_u32(0x2080 + d.to_digit(10).unwrap_or(0)).unwrap_or(d))
+                .collect();
+            let greek = match stem {
                 "omega" => Some("ω"),
                 "pi" => Some("π"),
                 "mu" => Some("μ"),
@@ -154,8 +160,12 @@ pub fn ascii_math(text: &str) -> String {
                 out.push_str(digits);
                 continue;
             }
+            // After a coefficient (`3pi`) it is still a Greek letter; inside a word it is not.
             match greek {
-                Some(g) if !joined_before => out.push_str(g),
+                Some(g) if !after_letter && !stem.is_empty() => {
+                    out.push_str(g);
+                    out.push_str(&index);
+                }
                 _ => out.push_str(&word),
             }
             continue;
