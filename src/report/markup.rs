@@ -86,7 +86,7 @@ pub fn markdown_text(text: &str) -> String {
 /// The ASCII math of the claims' texts spelled in Unicode: `omega` → `ω`, `sqrt(6)` → `√6`,
 /// `sqrt(2/3)` → `√(2/3)`, `^2` → `²`, `pi` → `π`, `oo` → `∞`, `->` → `→`, `<=` → `≤`,
 /// `>=` → `≥`, `!=` → `≠`, `<<` → `≪`, `>>` → `≫`. Words are matched whole (`omega_max` →
-/// `ω_max`, `a0` stays); anything else is left as written.
+/// `ω_max`, `a0` stays, `tau1` → `τ₁`); anything else is left as written.
 ///
 /// # Examples
 /// ```
@@ -95,6 +95,8 @@ pub fn markdown_text(text: &str) -> String {
 ///     ascii_math("omega(sqrt(2/3) l) = sqrt(6)/2 v0/l; a*^2 -> oo, M >= 2m"),
 ///     "ω(√(2/3) l) = √6/2 v0/l; a*² → ∞, M ≥ 2m"
 /// );
+/// // An indexed Greek name takes a subscript; a coefficient does not stop a Greek letter.
+/// assert_eq!(ascii_math("tau1 in (pi/2, 3pi/2), pie"), "τ₁ in (π/2, 3π/2), pie");
 /// ```
 pub fn ascii_math(text: &str) -> String {
     let chars: Vec<char> = text.chars().collect();
