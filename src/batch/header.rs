@@ -6,6 +6,7 @@ use super::plan::{Arithmetic, CLAIMS, OBLIQUE_OUTPUTS, Role, STATE, WORD_SCENE, 
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::scene::{SCENE_KEYS, Scene, SceneInput, SceneKey};
+use num_traits::Signed;
 
 /// The scene key of the batch column `name`, if it is one.
 fn scene_column(name: &str) -> Option<&'static SceneKey> {
@@ -36,6 +37,8 @@ pub struct Batch {
     pub(super) id_column: Option<usize>,
     /// Where the word row finds its cells, when the header allows it (see [`WordPlan`]).
     pub(super) word_plan: Option<WordPlan>,
+    /// `--atol`: a claim also agrees within this many of the scene's own units.
+    pub(super) atol: Option<Q>,
     header: String,
 }
 
@@ -129,6 +132,7 @@ impl Batch {
             claims,
             id_column,
             word_plan,
+            atol: None,
             header: header.to_string(),
         };
         batch.names_each_column_once()?;
@@ -195,6 +199,48 @@ impl Batch {
         self.agreement = agreement;
         // `--ulps` adds `<claim>_ulps` columns, which an input column may already hold.
         self.names_each_column_once()?;
+        Ok(self)
+    }
+
+    /// `--atol X`: a claim also agrees when it lies within X of the exact value in the scene's
+    /// own units: X |v0| for v and V, X |v0|/l for omega, X m |v0| for J, X m v0^2/2 for the
+    /// energies. For the quantities that vanish exactly (omega at a = 0, V at a centre pivot),
+    /// where an engine returns round-off and no relative error or ulp count can agree. The
+    /// word rows, which take exact claims only, are then left to the general row.
+    ///
+    /// # Errors
+    /// `atol: ...` when X is not a number from 0 to 1.
+    ///
+    /// # Examples
+    /// A centre hit (omega exactly 0) claimed as 1e-17 by an engine:
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic, Agreement, FloatFormat};
+    /// let ulps = Agreement::parse_ulps("16", FloatFormat::F64).unwrap();
+    /// let b = Batch::new("m,M,a,v,V,omega", Arithmetic::Exact).unwrap().with_agreement(ulps).unwrap();
+    /// assert!(!b.row(1, "1,1,0,0,1,1e-17").unwrap().checks[2].ok);
+    /// let b = b.with_atol("1e-12").unwrap();
+    /// assert!(b.row(1, "1,1,0,0,1,1e-17").unwrap().checks[2].ok);
+    /// assert!(!b.row(2, "1,1,0,0,1,1e-11").unwrap().checks[2].ok);
+    /// ```
+    pub fn with_atol(mut self, text: &str) -> Result<Batch, Error> {
+        let bad = || {
+            Error::out_of_range(
+                "atol",
+                format!(
+                    "must be a number from 0 to 1, got {}",
+                    crate::echo::echo(text)
+                ),
+            )
+        };
+        let x = crate::number::parse(text).map_err(|kind| match kind {
+            ErrorKind::Invalid(_) => bad(),
+            other => Error::new("atol", other),
+        })?;
+        if x.is_negative() || x > Q::from_integer(1.into()) {
+            return Err(bad());
+        }
+        self.atol = Some(x);
+        self.word_plan = None;
         Ok(self)
     }
 

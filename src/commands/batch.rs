@@ -37,6 +37,11 @@ pub(crate) struct BatchArgs {
     /// The float format of --ulps [default: f64].
     #[arg(long, value_enum, requires = "ulps", value_name = "f32|f64")]
     pub(crate) float: Option<FloatArg>,
+    /// A claim also agrees when it lies within X of the exact value in the scene's own units
+    /// (X v0 for v and V, X v0/l for omega, X m v0 for J, X m v0^2/2 for the energies; 0 <= X
+    /// <= 1): for quantities that vanish exactly, where an engine returns round-off.
+    #[arg(long, value_name = "X")]
+    pub(crate) atol: Option<String>,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -122,6 +127,10 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         Some(agreement) => batch.with_agreement(agreement.clone())?,
         None => batch,
     };
+    let batch = match &args.atol {
+        Some(x) => batch.with_atol(x)?,
+        None => batch,
+    };
 
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = ProgressBar::new(size);
@@ -170,7 +179,12 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
-    report(&summary, &batch.passed_through(), agreement.as_ref())
+    report(
+        &summary,
+        &batch.passed_through(),
+        agreement.as_ref(),
+        args.atol.as_deref(),
+    )
 }
 
 /// The agreement rule of `--rtol` or `--ulps [--float]` (clap refuses both at once), checked
@@ -236,6 +250,7 @@ fn report(
     summary: &Summary,
     passed: &[&str],
     agreement: Option<&Agreement>,
+    atol: Option<&str>,
 ) -> Result<(), Failure> {
     if !passed.is_empty() {
         let names: Vec<String> = passed.iter().map(|name| echo(name)).collect();
@@ -243,6 +258,12 @@ fn report(
     }
     if let Some(agreement) = agreement {
         super::print_err(&format!("claims agree {}\n", agreement.describe()));
+    }
+    if let Some(x) = atol {
+        super::print_err(&format!(
+            "claims also agree within {} of the scene's units (v0, v0/l, m v0, m v0^2/2)\n",
+            echo(x.trim())
+        ));
     }
     super::print_err(&batch_summary(summary));
     if summary.wrong() > 0 || summary.laws_failed > 0 || summary.rows_with_findings() > 0 {

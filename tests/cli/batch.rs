@@ -301,3 +301,43 @@ fn counts_read_as_english_and_a_semicolon_file_is_named() {
         "error: header: the header has no commas (it is separated by ';'): rodimpact reads comma-separated files\n"
     );
 }
+
+/// NEWCOMER M3: an engine returns round-off (1e-17) for a quantity that vanishes exactly (omega
+/// for a centre hit: m = M = l = v0 = 1, a = 0 gives v = 0, V = 1, omega = 0). No ulp count
+/// accepts it (exit 1, diagnosis `off`); `--atol 1e-12` accepts it in the scene's own units
+/// (here v0/l = 1), and still refuses 1e-11.
+#[test]
+fn an_absolute_floor_accepts_round_off_where_the_exact_value_vanishes() {
+    let dir = scratch("atol");
+    let file = dir.join("zero.csv");
+    std::fs::write(
+        &file,
+        "id,m,M,a,v,V,omega\nc,1,1,0,0,1,1e-17\nd,1,1,0,0,1,1e-11\n",
+    )
+    .unwrap();
+    let path = file.to_str().unwrap();
+    let (code, out, _) = rodimpact(&["batch", path, "--ulps", "16"]);
+    assert_eq!(code, 1);
+    assert!(
+        out.contains("\nc,1,1,0,0,1,1e-17,0,1,0,true,true,0,0,true,0,0,false,inf,"),
+        "{out}"
+    );
+    let (code, out, err) = rodimpact(&["batch", path, "--ulps", "16", "--atol", "1e-12"]);
+    assert_eq!(code, 1, "row d is still wrong: {err}");
+    assert!(out.contains(",omega_ok,"), "{out}");
+    assert!(out.contains("\nc,1,1,0,0,1,1e-17,0,1,0,true,true,0,0,true,0,0,true,inf,4352464011485697175,+3.33e-35,ok\n"), "{out}");
+    assert!(
+        out.contains("\nd,1,1,0,0,1,1e-11,0,1,0,true,true,0,0,true,0,0,false,inf,"),
+        "{out}"
+    );
+    assert!(
+        err.contains(
+            "claims also agree within 1e-12 of the scene's units (v0, v0/l, m v0, m v0^2/2)\n"
+        ),
+        "{err}"
+    );
+    assert!(err.contains("omega: 2 claims, 1 wrong (row 2)"), "{err}");
+    let (code, _, err) = rodimpact(&["batch", path, "--atol", "2"]);
+    assert_eq!(code, 2);
+    assert_eq!(err, "error: atol: must be a number from 0 to 1, got 2\n");
+}
