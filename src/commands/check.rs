@@ -11,6 +11,11 @@ use std::io::Read;
 use std::path::PathBuf;
 
 #[derive(Args, Debug)]
+// In check a quantity not given stays a free symbol when the claims are formulas (solve's
+// defaults hold for numeric claims), so --a's help says both.
+#[command(mut_arg("a", |a| a.help(
+    "Signed impact distance a from the rod's centre, |a| <= l [default: l, the end, for numeric claims; a free symbol a for formulas]"
+)))]
 pub(crate) struct CheckArgs {
     /// A problem collection (TOML) to check instead of one scene.
     #[arg(value_name = "PROBLEMS.toml")]
@@ -138,7 +143,12 @@ fn read_bounded(label: &str, path: &std::path::Path) -> Result<String, Error> {
 
 fn check_flags(args: &CheckArgs) -> Result<bool, Error> {
     if args.claim.is_empty() {
-        return Err(Error::new("claim", ErrorKind::Missing));
+        return Err(Error::new(
+            "claim",
+            ErrorKind::Invalid(
+                "nothing to check: give --claim NAME=VALUE (with the scene's flags), or a problems .toml file (rodimpact check examples/textbook.toml)".into(),
+            ),
+        ));
     }
     if args.claim.len() > MAX_CLAIMS {
         return Err(Error::out_of_range(

@@ -4,7 +4,7 @@
 //! ([`super::symbolic`]) and each claim decided as an identity, or numerically when both sides
 //! are constants.
 
-use super::answer::{SceneCheck, SceneSummary};
+use super::answer::{AnswerAgreement, SceneCheck, SceneSummary};
 use super::claim::{ClaimedAnswer, ClaimedValue};
 use super::exact::Exact;
 use super::expr::{Budget, Radical};
@@ -250,6 +250,15 @@ fn check_symbolic(
             && let Some(condition) = a_star_on_rod(&scene.params)
         {
             answer.notes.push(condition);
+        }
+        // In check, a quantity not given is a free symbol, not solve's default: an end-hit
+        // formula refuted only because a is free says so.
+        let a_free = scene.free.iter().any(|s| s.name() == "a");
+        let uses_a = matches!(&claim.value, ClaimedValue::Formula(r) if r.mentions(crate::field::Sym::new("a")));
+        if answer.agreement == AnswerAgreement::Disagrees && a_free && !uses_a {
+            answer.notes.push(
+                "a is a free symbol here (not the end, solve's default): add --a l for a hit at the end".into(),
+            );
         }
         if matches!(claim.value, ClaimedValue::Printed(_)) {
             answer.notes.insert(

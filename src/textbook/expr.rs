@@ -9,10 +9,11 @@
 //! intermediate results are capped ([`MAX_DEGREE`], [`MAX_TERMS`], [`MAX_COEFF_BITS`]), and so is
 //! the total work of the evaluation ([`MAX_WORK`]), so no input runs for long.
 
+use super::spelling::nearest_symbol;
+use super::surd_form::normal_form;
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Poly, Q, RatFn};
 use crate::number;
-use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 
 /// The longest accepted expression, in characters.
@@ -281,6 +282,12 @@ impl Radical {
     }
 }
 
+/// `coeff * sqrt(radicand)` in normal form ([`normal_form`]).
+fn simplify(coeff: RatFn, radicand: RatFn) -> Radical {
+    let (coeff, radicand) = normal_form(coeff, radicand);
+    Radical { coeff, radicand }
+}
+
 impl std::fmt::Display for Radical {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         if self.is_rational() {
@@ -363,14 +370,33 @@ struct Parser<'a> {
 
 impl Parser<'_> {
     fn error(&self, why: &str) -> Error {
-        let found = match self.chars.get(self.pos) {
+        let here = self.chars.get(self.pos);
+        let found = match here {
             Some(c) => format!("'{}'", c.escape_debug()),
             None => "the end".to_string(),
+        };
+        // `4m`, `2(M+m)`, `(M+m)l`: a product written without its `*`.
+        let before = self.pos.checked_sub(1).and_then(|k| self.chars.get(k));
+        let implicit = matches!(before, Some(b) if b.is_ascii_alphanumeric() || *b == ')')
+            && matches!(here, Some(c) if c.is_ascii_alphabetic() || *c == '(');
+        let hint = if implicit {
+            let left: String = self.chars[..self.pos]
+                .iter()
+                .rev()
+                .take_while(|c| c.is_ascii_alphanumeric() || **c == '.' || **c == ')')
+                .collect::<Vec<_>>()
+                .into_iter()
+                .rev()
+                .collect();
+            let right = here.map(|c| c.to_string()).unwrap_or_default();
+            format!(": write {left}*{right}... (a product needs '*')")
+        } else {
+            String::new()
         };
         invalid(
             self.field,
             format!(
-                "{why} at character {} (found {found}) in expression",
+                "{why} at character {} (found {found}) in expression{hint}",
                 self.pos + 1
             ),
         )
@@ -562,10 +588,15 @@ impl Parser<'_> {
             Ok(Radical::rational(RatFn::symbol(&name)))
         } else {
             self.pos = start;
+            let known: Vec<&'static str> =
+                SYMBOLS.iter().chain(&OBLIQUE_SYMBOLS).copied().collect();
+            let suggestion = nearest_symbol(&name, &known)
+                .map(|s| format!("did you mean {s}? "))
+                .unwrap_or_default();
             Err(invalid(
                 self.field,
                 format!(
-                    "unknown symbol '{}' at character {} (symbols: m M l L a d v0 e p I r, oblique v0t mu rd w V0 Vt0 omega0, function sqrt)",
+                    "unknown symbol '{}' at character {} ({suggestion}symbols: m M l L a d v0 e p I r, oblique v0t mu rd w V0 Vt0 omega0, function sqrt)",
                     crate::echo::echo(&name),
                     start + 1
                 ),
@@ -724,73 +755,4 @@ fn sqrt(x: Radical) -> Result<Radical, String> {
         return Err(format!("square root of the negative number {c}"));
     }
     Ok(simplify(RatFn::one(), x.coeff))
-}
-
-/// Normal form: zero has radicand 1; the radicand's constant loses its square factors (an
-/// integer under the root: `sqrt(3/2)` is `sqrt(6)/2`), and even powers of a symbol dividing
-/// every term of its numerator or denominator come out of the root (the symbols are positive
-/// quantities: `sqrt(3/(2 l^2))` is `(1/2/l)*sqrt(6)`).
-fn simplify(coeff: RatFn, radicand: RatFn) -> Radical {
-    if coeff.is_zero() || radicand.is_one() {
-        return Radical::rational(coeff);
-    }
-    let (num, num_out) = even_powers_out(radicand.num());
-    let (den, den_out) = even_powers_out(radicand.den());
-    let (num_content, den_content) = (num.content().abs(), den.content().abs());
-    let constant = &num_content / &den_content;
-    if constant.is_zero() || constant.is_negative() {
-        return Radical { coeff, radicand };
-    }
-    let (n, d) = (constant.numer().clone(), constant.denom().clone());
-    // sqrt(n/d) = sqrt(n d) / d; pull the largest square factor out of small n d.
-    let nd = n * &d;
-    let root = nd.sqrt();
-    let (outside, inside) = if &root * &root == nd {
-        (root, BigInt::one())
-    } else {
-        square_part(nd)
-    };
-    let outside = RatFn::from_rational(&Q::new(outside, d));
-    let rest = RatFn::new(
-        num.scale(&num_content.recip()),
-        den.scale(&den_content.recip()),
-    )
-    .expect("a radicand's denominator is not zero");
-    let coeff = coeff * &outside * &RatFn::from(num_out) / RatFn::from(den_out);
-    let radicand = rest * &RatFn::from_rational(&Q::from_integer(inside));
-    if radicand.is_one() {
-        Radical::rational(coeff)
-    } else {
-        Radical { coeff, radicand }
-    }
-}
-
-/// `p = out^2 * rest`, `out` the product of `sym^(k div 2)` over the symbols whose `k`-th
-/// power divides every term of `p`.
-fn even_powers_out(p: &Poly) -> (Poly, Poly) {
-    let (mut rest, mut out) = (p.clone(), Poly::one());
-    for sym in p.symbols() {
-        let half = p.low_degree_in(sym) / 2;
-        if half > 0 {
-            let root = Poly::var(sym).pow(half);
-            rest = rest
-                .div_exact(&(&root * &root))
-                .expect("every term holds the symbol's even power");
-            out = out * &root;
-        }
-    }
-    (rest, out)
-}
-
-/// `n = outside^2 * inside`, taking out the squares of the primes below 1000.
-fn square_part(mut n: BigInt) -> (BigInt, BigInt) {
-    let mut outside = BigInt::one();
-    for k in 2u32..1000 {
-        let k2 = BigInt::from(k * k);
-        while (&n % &k2).is_zero() {
-            n /= &k2;
-            outside *= k;
-        }
-    }
-    (outside, n)
 }

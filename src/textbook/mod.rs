@@ -38,6 +38,8 @@ pub mod numeric;
 pub mod problems;
 mod quantity;
 pub mod sigfig;
+mod spelling;
+mod surd_form;
 pub mod symbolic;
 pub mod units;
 

@@ -565,3 +565,46 @@ fn a_symbolic_a_star_is_shown_canonically() {
     );
     assert!(out.contains("note: the squares agree identically, and both sides have the same sign (checked at a sample scene)"), "{out}");
 }
+
+/// NEWCOMER m20 and m15: a product written without `*` is named with the fix, a misspelt
+/// symbol gets a suggestion, `check` with nothing to check says what to give, and a formula
+/// refuted only because a is free (check does not assume the end) says how to hit the end.
+#[test]
+fn authors_mistakes_in_writing_are_named_with_their_fix() {
+    for (args, message) in [
+        (
+            &["--a", "l", "--claim", "omega=6*m*v0/((M+4m)*l)"][..],
+            "error: claim omega: expected ')' at character 13 (found 'm') in expression: write 4*m... (a product needs '*')\n",
+        ),
+        (
+            &["--a", "l", "--claim", "omega=6*m*v_0/((M+4*m)*l)"],
+            "error: claim omega: unknown symbol 'v_0' at character 5 (did you mean v0? symbols: m M l L a d v0 e p I r, oblique v0t mu rd w V0 Vt0 omega0, function sqrt)\n",
+        ),
+        (
+            &[],
+            "error: claim: nothing to check: give --claim NAME=VALUE (with the scene's flags), or a problems .toml file (rodimpact check examples/textbook.toml)\n",
+        ),
+    ] {
+        let (code, out, err) = check(args);
+        assert_eq!(
+            (code, out.as_str(), err.as_str()),
+            (2, "", message),
+            "{args:?}"
+        );
+    }
+    let end_hit = "omega=6*m*v0/((M+4*m)*l)";
+    let (code, out, _) = check(&["--elastic", "--claim", end_hit]);
+    assert_eq!(code, 1);
+    assert!(
+        out.contains("note: a is a free symbol here (not the end, solve's default): add --a l for a hit at the end"),
+        "{out}"
+    );
+    let (code, out, _) = check(&["--elastic", "--a", "l", "--claim", end_hit]);
+    assert_eq!(code, 0, "{out}");
+    let help = crate::common::output(vec!["check", "--help"]).stdout;
+    assert!(
+        String::from_utf8(help)
+            .unwrap()
+            .contains("a free symbol a for formulas")
+    );
+}
