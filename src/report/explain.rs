@@ -8,8 +8,8 @@ use crate::field::{Q, QSqrt};
 use crate::mechanics::Groups;
 use crate::scene::{Scene, Support};
 use crate::solve::linear::solve;
-use crate::solve::optimum::{Placement, optimum};
-use num_traits::{One, Signed};
+use crate::solve::optimum::{Arm, Placement, optimum};
+use num_traits::{One, Signed, Zero};
 
 /// The output format of [`explain`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -114,12 +114,15 @@ fn render(
 /// `sqrt(x)` -> `\sqrt{x}`, `<=` -> `\le`, `=>` -> `\Rightarrow`, wide gaps -> `\qquad`.
 fn latex(e: &str) -> String {
     // Names first, into placeholders that the operator rules below cannot touch.
-    const NAMES: [(&str, &str); 6] = [
+    const NAMES: [(&str, &str); 9] = [
         ("omega_max", "\\omega_{\\max}"),
+        ("max |omega| over the rod", "\\max_{\\text{rod}} |\\omega|"),
         ("omega", "\\omega"),
         ("v0", "v_0"),
         ("a*^2", "a^{*2}"),
         ("a* ", "a^{*} "),
+        ("d*^2", "d^{*2}"),
+        ("d* ", "d^{*} "),
         ("≈", "\\approx"),
     ];
     let mut s = e.to_string();
@@ -283,32 +286,66 @@ fn a_star_step(scene: &Scene) -> Step {
     let o = optimum(scene).expect("a rod at rest before the impact has an optimum");
     let root = surd(&QSqrt::sqrt_of(&o.squared), Notation::Ascii);
     let approx = QSqrt::sqrt_of(&o.squared).decimal(6);
-    let (lever, moment) = match scene.support() {
-        Support::Free => ("a", "I*(M + m)/M".to_string()),
-        Support::Pivot(_) => ("d", "I + M*p^2".to_string()),
+    let (lever, moment, star, from) = match scene.support() {
+        Support::Free => ("a", "I*(M + m)/M".to_string(), "a*", String::new()),
+        Support::Pivot(p) => {
+            // The end of the struck arm, where d = the arm's length.
+            let positive = match (scene.a() - p).cmp(&Q::zero()) {
+                std::cmp::Ordering::Equal => !p.is_positive(),
+                side => side == std::cmp::Ordering::Greater,
+            };
+            let end = if positive {
+                p.clone() + &o.arm
+            } else {
+                p.clone() - &o.arm
+            };
+            (
+                "d",
+                "I + M*p^2".to_string(),
+                "d*",
+                format!(
+                    " from the pivot (the struck arm ends at a = {end}, {} from the pivot)",
+                    o.arm
+                ),
+            )
+        }
     };
     let placement = match o.placement {
         Placement::Inside => format!(
-            "`a* = {root} ≈ {approx} < {}`: a* lies on the rod, and hitting there spins the rod faster than hitting the end.",
+            "`{star} = {root} ≈ {approx} < {}`{from}: {star} lies on the rod, and hitting there spins the rod faster than hitting the end.",
             o.arm
         ),
-        Placement::AtEnd => format!("`a* = {root}`: exactly the end of the rod."),
+        Placement::AtEnd => format!("`{star} = {root}`{from}: exactly the end of the rod."),
         Placement::Beyond => format!(
-            "`a* = {root} ≈ {approx} > {}`: a* lies beyond the end, so omega grows all the way to the end, which gives the fastest spin.",
+            "`{star} = {root} ≈ {approx} > {}`{from}: {star} lies beyond the end, so omega grows all the way to the end, which gives the fastest spin.",
             o.arm
         ),
     };
+    let mut prose = vec![
+        format!(
+            "As a function of the lever arm `{lever}`, `omega` has the form `K*x/(b^2 + c^2*x^2)` with `x = {lever}`, `b^2 = {moment}` and `c^2 = m`; `f(x) = x/(b^2 + c^2*x^2)` is largest at `x = b/c`, so"
+        ),
+        placement,
+    ];
+    let mut equations = vec![
+        format!("{star}^2 = b^2/c^2 = {}", o.squared),
+        format!("omega_max = {}", surd(&o.omega_max, Notation::Ascii)),
+    ];
+    // On a pivot the same curve holds on the other arm, which may spin the rod faster.
+    if let (Some(other), (max, Arm::Other)) = (&o.other_arm, o.rod_max()) {
+        prose.push(format!(
+            "The other arm, {} long beyond the pivot, gives more: |omega| reaches `{}` there.",
+            other.arm,
+            surd(max, Notation::Ascii)
+        ));
+        equations.push(format!(
+            "max |omega| over the rod = {}",
+            surd(max, Notation::Ascii)
+        ));
+    }
     Step {
         title: "Where omega is largest",
-        prose: vec![
-            format!(
-                "As a function of the lever arm `{lever}`, `omega` has the form `K*x/(b^2 + c^2*x^2)` with `x = {lever}`, `b^2 = {moment}` and `c^2 = m`; `f(x) = x/(b^2 + c^2*x^2)` is largest at `x = b/c`, so"
-            ),
-            placement,
-        ],
-        equations: vec![
-            format!("a*^2 = b^2/c^2 = {}", o.squared),
-            format!("omega_max = {}", surd(&o.omega_max, Notation::Ascii)),
-        ],
+        prose,
+        equations,
     }
 }

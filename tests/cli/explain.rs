@@ -92,3 +92,56 @@ fn markdown_and_latex_and_refusals() {
         assert_eq!(err, message);
     }
 }
+
+/// NEWCOMER m11: on a pivot the working's step 5 speaks of d*, the distance from the pivot
+/// (not a*, which is measured from the centre), says where the struck arm ends, and gives the
+/// rod's maximum when the other arm spins it faster. m = 1, M = 3, l = 1, p = -1, uniform:
+/// I_p = 1 + 3 = 4, d*^2 = I_p/m = 4, d* = 2, the far end a = 1. m = M = l = 1, p = 1/2,
+/// a = 3/4: d*^2 = 7/12, the struck arm is 1/2 long, the other 3/2, where |omega| reaches
+/// 1/d* = 2 sqrt(21)/7.
+#[test]
+fn a_pivots_working_speaks_of_d_star() {
+    let run = |args: &[&str]| {
+        let (code, out, err) = crate::common::rodimpact(args);
+        assert_eq!(code, 0, "{err}");
+        out
+    };
+    let end = run(&[
+        "solve",
+        "--m",
+        "1",
+        "--M",
+        "3",
+        "--a",
+        "1/2",
+        "--pivot",
+        "-1",
+        "--inelastic",
+        "--explain",
+    ]);
+    assert!(
+        end.contains("d* = 2 from the pivot (the struck arm ends at a = 1, 2 from the pivot): exactly the end of the rod."),
+        "{end}"
+    );
+    assert!(
+        end.contains("    d*^2 = b^2/c^2 = 4\n") && !end.contains("a*"),
+        "{end}"
+    );
+    let other = run(&[
+        "solve",
+        "--m",
+        "1",
+        "--M",
+        "1",
+        "--pivot",
+        "1/2",
+        "--a",
+        "3/4",
+        "--explain",
+    ]);
+    assert!(other.contains("The other arm, 3/2 long beyond the pivot, gives more: |omega| reaches 2*sqrt(21)/7 there."), "{other}");
+    assert!(
+        other.contains("    max |omega| over the rod = 2*sqrt(21)/7\n"),
+        "{other}"
+    );
+}
