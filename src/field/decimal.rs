@@ -199,6 +199,37 @@ pub fn decimal(value: &Q, digits: usize) -> String {
     decimal_rounded(value, digits, Rounding::HalfEven)
 }
 
+/// [`decimal`], but a value that `digits` significant digits hold exactly is printed without
+/// its trailing zeros: what a table shows beside an exact fraction (`1/25` is `0.04`, not
+/// `0.0400000000000`; `1/3` keeps its digits).
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{decimal::decimal_short, q};
+/// assert_eq!(decimal_short(&q(1, 25), 12), "0.04");
+/// assert_eq!(decimal_short(&q(24, 625), 12), "0.0384");
+/// assert_eq!(decimal_short(&q(6, 1), 12), "6");
+/// assert_eq!(decimal_short(&q(1, 3), 12), "0.333333333333");
+/// assert_eq!(decimal_short(&q(3, 20_000_000_000), 12), "1.5e-10");
+/// ```
+pub fn decimal_short(value: &Q, digits: usize) -> String {
+    let rounded = Significant::of(value, digits, Rounding::HalfEven);
+    let text = rounded.text();
+    if !rounded.exact {
+        return text;
+    }
+    let (mantissa, exponent) = match text.find('e') {
+        Some(k) => text.split_at(k),
+        None => (text.as_str(), ""),
+    };
+    let mantissa = if mantissa.contains('.') {
+        mantissa.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        mantissa
+    };
+    format!("{mantissa}{exponent}")
+}
+
 /// `value` rounded to `digits` significant digits in the given direction, printed as
 /// [`decimal`] prints. `Floor` and `Ceiling` give printed bounds that enclose the exact value.
 ///

@@ -136,6 +136,24 @@ impl Cell {
         }
     }
 
+    /// The `≈` beside an exact value in Markdown and LaTeX: [`Cell::decimal`], without the
+    /// trailing zeros of a value the digits hold exactly (`1/25` is `0.04`).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::Cell;
+    /// use rodimpact::field::q;
+    /// assert_eq!(Cell::Rational(q(1, 25)).approx(12).as_deref(), Some("0.04"));
+    /// assert_eq!(Cell::root(&q(2, 1)).approx(5).as_deref(), Some("1.4142"));
+    /// ```
+    pub fn approx(&self, digits: usize) -> Option<String> {
+        match self {
+            Cell::Rational(x) => Some(decimal::decimal_short(x, digits)),
+            Cell::Surd(x) => Some(x.decimal(digits)),
+            Cell::Text(_) | Cell::Absent => None,
+        }
+    }
+
     fn is_number(&self) -> bool {
         matches!(self, Cell::Rational(_) | Cell::Surd(_))
     }
@@ -233,7 +251,7 @@ impl Table {
         for (cell, column) in row.iter().zip(&self.columns) {
             out.push(cell.render(format));
             if column.approx {
-                out.push(cell.decimal(TABLE_DIGITS).unwrap_or_default());
+                out.push(cell.approx(TABLE_DIGITS).unwrap_or_default());
             }
         }
         out
@@ -300,7 +318,7 @@ impl Table {
                     let _ = write!(
                         out,
                         "<td class=\"decimal\">{}</td>",
-                        cell.decimal(TABLE_DIGITS).unwrap_or_default()
+                        cell.approx(TABLE_DIGITS).unwrap_or_default()
                     );
                 }
             }
@@ -346,7 +364,7 @@ impl Table {
     fn decimal_spec(&self, index: usize) -> String {
         let (mut before, mut after) = (1, 0);
         for row in &self.rows {
-            if let Some(d) = row[index].decimal(TABLE_DIGITS) {
+            if let Some(d) = row[index].approx(TABLE_DIGITS) {
                 let (int, frac) = d.split_once('.').unwrap_or((&d, ""));
                 before = before.max(int.len());
                 after = after.max(frac.len());
@@ -387,7 +405,7 @@ impl Table {
                 cells.push(cell.render(Format::Latex));
                 if column.approx {
                     // A decimal column is typeset in math mode; no number: an empty cell.
-                    cells.push(cell.decimal(TABLE_DIGITS).unwrap_or_default());
+                    cells.push(cell.approx(TABLE_DIGITS).unwrap_or_default());
                 }
             }
             let _ = writeln!(out, "{} \\\\", cells.join(" & "));
