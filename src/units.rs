@@ -58,7 +58,7 @@ impl Dimension {
     /// # Examples
     /// ```
     /// use rodimpact::units::Dimension;
-    /// assert_eq!(Dimension::Mass.accepted(), "kg, g");
+    /// assert_eq!(Dimension::Mass.accepted(), "kg, lb, g");
     /// assert_eq!(Dimension::Pure.accepted(), "none");
     /// ```
     pub fn accepted(self) -> String {
@@ -141,30 +141,46 @@ const fn unit(name: &'static str, dimension: Dimension, num: u32, den: u32) -> U
     }
 }
 
-/// The accepted units, longest spelling first so that `cm/s` is not read as `s`.
-const UNITS: [Unit; 17] = [
+/// An angular unit whose size in rad/s is `num/den` times pi.
+const fn angular(name: &'static str, num: u32, den: u32) -> Unit {
+    Unit {
+        name,
+        dimension: Dimension::AngularSpeed,
+        factor: (num, den),
+        times_pi: true,
+    }
+}
+
+/// The accepted units, longest spelling first so that `cm/s` is not read as `s`. The
+/// imperial ones are exact by definition (1 lb = 0.45359237 kg, 1 ft = 0.3048 m, 1 mph =
+/// 0.44704 m/s).
+const UNITS: [Unit; 25] = [
     unit("kg*m^2", Dimension::MomentOfInertia, 1, 1),
     unit("kg m^2", Dimension::MomentOfInertia, 1, 1),
     unit("kg*m/s", Dimension::Impulse, 1, 1),
     unit("kg m/s", Dimension::Impulse, 1, 1),
     unit("rad/s", Dimension::AngularSpeed, 1, 1),
+    angular("deg/s", 1, 180),
+    angular("rev/s", 2, 1),
     unit("km/h", Dimension::Speed, 5, 18),
     unit("cm/s", Dimension::Speed, 1, 100),
+    unit("ft/s", Dimension::Speed, 381, 1250),
     unit("m/s", Dimension::Speed, 1, 1),
-    Unit {
-        name: "rpm",
-        dimension: Dimension::AngularSpeed,
-        factor: (1, 30),
-        times_pi: true,
-    },
+    unit("mph", Dimension::Speed, 1397, 3125),
+    angular("rpm", 1, 30),
     unit("N*s", Dimension::Impulse, 1, 1),
     unit("N s", Dimension::Impulse, 1, 1),
     unit("kg", Dimension::Mass, 1, 1),
+    unit("kJ", Dimension::Energy, 1000, 1),
+    unit("lb", Dimension::Mass, 45_359_237, 100_000_000),
     unit("cm", Dimension::Length, 1, 100),
     unit("mm", Dimension::Length, 1, 1000),
+    unit("ft", Dimension::Length, 381, 1250),
     unit("g", Dimension::Mass, 1, 1000),
     unit("m", Dimension::Length, 1, 1),
     unit("J", Dimension::Energy, 1, 1),
+    // Written after a space only (`1.2 1/s`): `11/s` is no number with a unit.
+    unit("1/s", Dimension::AngularSpeed, 1, 1),
 ];
 
 /// The unit spelled `name`, if it is one.
@@ -203,13 +219,28 @@ pub fn split_unit<'t>(
     let text = text.trim();
     let found = UNITS.iter().find(|u| {
         text.strip_suffix(u.name).is_some_and(|rest| {
-            rest.ends_with(|c: char| c.is_ascii_digit() || c == '.' || c == ' ')
+            let joined = !u.name.starts_with(|c: char| c.is_ascii_digit());
+            rest.ends_with(|c: char| (joined && (c.is_ascii_digit() || c == '.')) || c == ' ')
         })
     });
     let Some(u) = found else {
-        if let Some((_, tail)) = text.rsplit_once(' ')
-            && tail.starts_with(|c: char| c.is_alphabetic())
-        {
+        // `2 oz`, or `2oz` written against the number: the word after the number.
+        let unit_chars = |c: char| c.is_alphabetic() || "/^*".contains(c);
+        let joined_tail = text
+            .find(|c: char| c.is_alphabetic())
+            .filter(|&k| k > 0)
+            .map(|k| text.split_at(k))
+            .filter(|(number, tail)| {
+                tail.chars().all(unit_chars)
+                    && !tail.starts_with(['e', 'E'])
+                    && number::parse(number).is_ok()
+            })
+            .map(|(_, tail)| tail);
+        let spaced_tail = text
+            .rsplit_once(' ')
+            .map(|(_, tail)| tail)
+            .filter(|tail| tail.starts_with(|c: char| c.is_alphabetic()));
+        if let Some(tail) = spaced_tail.or(joined_tail) {
             return Err(Error::new(
                 field,
                 ErrorKind::Invalid(format!(

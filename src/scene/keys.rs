@@ -64,7 +64,7 @@ pub const SCENE_KEYS: [SceneKey; 17] = [
         Mass,
         true,
         false,
-        "Projectile mass m (> 0); numbers may carry a unit (kg, g; m, cm, mm; m/s, cm/s, km/h), read exactly in SI",
+        "Projectile mass m (> 0); numbers may carry a unit (kg, g, lb; m, cm, mm, ft; m/s, cm/s, km/h, ft/s, mph), read exactly in SI",
     ),
     key("M", "M", Mass, true, false, "Rod mass M (> 0)"),
     key(

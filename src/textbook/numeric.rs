@@ -162,9 +162,16 @@ fn printed(d: &mut CheckedAnswer, m: &Measured, exact: &Exact, omega: bool, sig:
         ));
     }
     let scale = m.scale();
-    if matches!(scale, Scale::Pi(_)) {
-        d.notes
-            .push("rpm = pi/30 rad/s: decided with exact rational bounds on pi".into());
+    if let (Scale::Pi(factor), Some(unit)) = (&scale, &m.unit) {
+        let size = if factor.is_integer() {
+            format!("{factor} pi")
+        } else {
+            format!("pi/{}", factor.recip())
+        };
+        d.notes.push(format!(
+            "{} = {size} rad/s: decided with exact rational bounds on pi",
+            unit.name
+        ));
     }
     let claim_value = if omega {
         p.value.abs()

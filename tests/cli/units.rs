@@ -111,8 +111,14 @@ fn a_wrong_unit_is_named_on_one_line() {
             "error: m: unit 'm/s' is a speed, expected a mass\n",
         ),
         (
-            &["solve", "--m", "3 lb", "--M", "1"][..],
-            "error: m: unknown unit 'lb' (a mass takes kg, g)\n",
+            &["solve", "--m", "3 oz", "--M", "1"][..],
+            "error: m: unknown unit 'oz' (a mass takes kg, lb, g)\n",
+        ),
+        // Written against the number, an unknown unit is named the same way (NEWCOMER m14:
+        // it was "not a number: unexpected character 'o'").
+        (
+            &["solve", "--m", "3oz", "--M", "1"][..],
+            "error: m: unknown unit 'oz' (a mass takes kg, lb, g)\n",
         ),
         (
             &[
@@ -146,4 +152,56 @@ fn solve_text_prints_si_units() {
     ] {
         assert!(out.contains(needle), "{needle:?} in\n{out}");
     }
+}
+
+/// NEWCOMER m14: the common textbook units, exact by definition: 1 lb = 0.45359237 kg,
+/// 1 ft = 0.3048 m, 1 mph = 0.44704 m/s, 1 kJ = 1000 J; angular speeds in deg/s (pi/180
+/// rad/s), rev/s (2 pi) and 1/s, decided in claims with exact bounds on pi.
+#[test]
+fn textbook_units_are_read_exactly() {
+    let (code, out, err) = rodimpact(&[
+        "solve", "--m", "2lb", "--M", "1 kg", "--length", "6 ft", "--v0", "10 mph", "--json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["scene"]["m"], "45359237/50000000");
+    assert_eq!(j["scene"]["l"], "1143/1250");
+    assert_eq!(j["scene"]["v0"], "2794/625");
+    // m = M = l = v0 = 1, a = 1/2: omega = 12/11 rad/s = 62.50... deg/s = 0.17362... rev/s.
+    let (code, out, _) = rodimpact(&[
+        "check",
+        "--m",
+        "1",
+        "--M",
+        "1",
+        "--a",
+        "1/2",
+        "--claim",
+        "omega=62.5 deg/s",
+        "--claim",
+        "omega=0.174 rev/s",
+        "--claim",
+        "omega=1.09 1/s",
+        "--claim",
+        "energy_lost=0 kJ",
+    ]);
+    assert_eq!(code, 0, "{out}");
+    assert!(
+        out.contains("note: deg/s = pi/180 rad/s: decided with exact rational bounds on pi"),
+        "{out}"
+    );
+    assert!(
+        out.contains("note: rev/s = 2 pi rad/s: decided with exact rational bounds on pi"),
+        "{out}"
+    );
+    assert!(out.ends_with("4 of 4 claims agree\n"), "{out}");
+    let (code, _, err) = rodimpact(&[
+        "solve", "--m", "1", "--M", "1", "--v0t", "1", "--mu", "1", "--radius", "1/10", "--spin",
+        "10 rpm",
+    ]);
+    assert_eq!(code, 2);
+    assert_eq!(
+        err,
+        "error: spin: rpm is not a rational multiple of rad/s: give it in rad/s\n"
+    );
 }
