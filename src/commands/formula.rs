@@ -2,7 +2,9 @@
 
 use super::{Failure, ObliqueFlags, SceneFlags, format_choice, print_out};
 use clap::Args;
-use rodimpact::report::{formula_json, formula_latex, formula_markdown, formula_text};
+use rodimpact::report::{
+    formula_json, formula_latex, formula_markdown, formula_text, latex_document,
+};
 use rodimpact::textbook::formula::formulas;
 
 #[derive(Args, Debug)]
@@ -14,6 +16,9 @@ pub(crate) struct FormulaArgs {
     /// Output format: text, latex, markdown or json (also md, tex, txt).
     #[arg(long, value_name = "FORMAT", default_value = "text")]
     pub(crate) format: String,
+    /// With --format latex: a complete document that pdflatex compiles as it is.
+    #[arg(long)]
+    pub(crate) standalone: bool,
 }
 
 pub(crate) fn run_formula(args: &FormulaArgs) -> Result<(), Failure> {
@@ -22,8 +27,18 @@ pub(crate) fn run_formula(args: &FormulaArgs) -> Result<(), Failure> {
         &args.format,
         &["text", "latex", "markdown", "json"],
     )?;
+    if args.standalone && format != "latex" {
+        return Err(rodimpact::Error::new(
+            "standalone",
+            rodimpact::ErrorKind::Conflict(
+                "a complete document is LaTeX: add --format latex".into(),
+            ),
+        )
+        .into());
+    }
     let f = formulas(&args.oblique.input(&args.scene))?;
     let text = match format {
+        "latex" if args.standalone => latex_document(&[], &formula_latex(&f)),
         "latex" => formula_latex(&f),
         "markdown" => formula_markdown(&f),
         "json" => format!(

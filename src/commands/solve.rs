@@ -2,7 +2,9 @@
 
 use super::{Failure, ObliqueFlags, SceneFlags, format_choice, parse_digits, print_out};
 use clap::{Args, ValueEnum};
-use rodimpact::report::{ExplainFormat, backend_values, explain, solution_json, solution_text};
+use rodimpact::report::{
+    ExplainFormat, backend_values, explain, latex_document, solution_json, solution_text,
+};
 use rodimpact::solve::Answer;
 use rodimpact::solve::float::FloatFormula;
 use rodimpact::stability::Backend;
@@ -67,9 +69,25 @@ pub(crate) struct SolveArgs {
     /// elimination, D, the result and the a* step, as text, markdown or latex.
     #[arg(long, value_name = "FORMAT", num_args = 0..=1, default_missing_value = "text")]
     pub(crate) explain: Option<String>,
+    /// With --explain latex: a complete document that pdflatex compiles as it is.
+    #[arg(long)]
+    pub(crate) standalone: bool,
 }
 
 pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
+    let latex_working = args
+        .explain
+        .as_deref()
+        .is_some_and(|f| ["latex", "tex"].contains(&f.trim().to_ascii_lowercase().as_str()));
+    if args.standalone && !latex_working {
+        return Err(rodimpact::Error::new(
+            "standalone",
+            rodimpact::error::ErrorKind::Conflict(
+                "a complete document is LaTeX: add --explain latex".into(),
+            ),
+        )
+        .into());
+    }
     let scene = args.oblique.input(&args.scene).build()?;
     let backend = args.backend.backend();
     if scene.oblique().is_some() && backend != Backend::Exact {
@@ -96,7 +114,11 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
             )
             .into());
         }
-        print_out(&explain(&scene, format));
+        let working = explain(&scene, format);
+        print_out(&match (args.standalone, format) {
+            (true, ExplainFormat::Latex) => latex_document(&[], &working),
+            _ => working,
+        });
         return Ok(());
     }
     let floats = match backend {

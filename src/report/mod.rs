@@ -57,6 +57,34 @@ use crate::field::decimal;
 use crate::field::{Q, QSqrt};
 use serde_json::{Value, json};
 
+/// A complete LaTeX document around `body`: article class, amsmath, 2 cm margins, and
+/// `extra` preamble lines (packages a body needs beyond amsmath). What `table --format latex`
+/// prints, and `formula` and `solve --explain latex` with `--standalone`.
+///
+/// # Examples
+/// ```
+/// let doc = rodimpact::report::latex_document(&[], "$x$");
+/// assert!(doc.starts_with("\\documentclass{article}\n\\usepackage{amsmath}\n"));
+/// assert!(doc.ends_with("\\begin{document}\n\n$x$\n\\end{document}\n"));
+/// ```
+pub fn latex_document(extra: &[&str], body: &str) -> String {
+    let mut out = String::from("\\documentclass{article}\n\\usepackage{amsmath}\n");
+    for line in extra {
+        out.push_str(line);
+        out.push('\n');
+    }
+    if !extra.iter().any(|l| l.contains("{geometry}")) {
+        out.push_str("\\usepackage[margin=2cm]{geometry}\n");
+    }
+    out.push_str("\\begin{document}\n\n");
+    out.push_str(body);
+    if !body.ends_with('\n') {
+        out.push('\n');
+    }
+    out.push_str("\\end{document}\n");
+    out
+}
+
 /// `n thing` or `n things`: the one noun form the reports use for counts.
 pub(crate) fn counted(n: usize, noun: &str) -> String {
     if n == 1 {

@@ -512,9 +512,14 @@ pub fn render_document(tables: &[Table], format: Format) -> String {
         Format::Csv => csv_document(&tables.iter().collect::<Vec<_>>()),
         Format::Latex => {
             let body: Vec<String> = tables.iter().map(|t| t.render(format)).collect();
-            format!(
-                "\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\usepackage{{booktabs}}\n\\usepackage{{dcolumn}}\n\\usepackage[margin=2cm]{{geometry}}\n\\renewcommand{{\\arraystretch}}{{1.5}}\n\\begin{{document}}\n\n{}\n\\end{{document}}\n",
-                body.join("\n")
+            super::latex_document(
+                &[
+                    "\\usepackage{booktabs}",
+                    "\\usepackage{dcolumn}",
+                    "\\usepackage[margin=2cm]{geometry}",
+                    "\\renewcommand{\\arraystretch}{1.5}",
+                ],
+                &format!("{}\n", body.join("\n")),
             )
         }
     }

@@ -637,3 +637,40 @@ fn latex_typesets_the_case_conditions() {
         "{decided}"
     );
 }
+
+/// NEWCOMER m2: `--standalone` makes `formula --format latex` and `solve --explain latex` a
+/// complete document (pdflatex compiles both as they are), as `table --format latex` is;
+/// without LaTeX it is refused.
+#[test]
+fn standalone_latex_is_a_complete_document() {
+    let doc = String::from_utf8(run(&["--format", "latex", "--standalone"]).stdout).unwrap();
+    assert!(
+        doc.starts_with("\\documentclass{article}\n\\usepackage{amsmath}\n"),
+        "{doc}"
+    );
+    assert!(
+        doc.contains("\\begin{document}\n\n") && doc.ends_with("\\end{align*}\n\\end{document}\n"),
+        "{doc}"
+    );
+    let working = crate::common::output(vec![
+        "solve",
+        "--m",
+        "1",
+        "--M",
+        "1",
+        "--explain",
+        "latex",
+        "--standalone",
+    ]);
+    let working = String::from_utf8(working.stdout).unwrap();
+    assert!(
+        working.starts_with("\\documentclass{article}") && working.ends_with("\\end{document}\n"),
+        "{working}"
+    );
+    let refused = run(&["--standalone"]);
+    assert_eq!(refused.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8(refused.stderr).unwrap(),
+        "error: standalone: a complete document is LaTeX: add --format latex\n"
+    );
+}
