@@ -13,9 +13,7 @@ use std::path::PathBuf;
 
 #[derive(Args, Debug)]
 pub(crate) struct BatchArgs {
-    /// CSV file: header among m,M,l,a,v0,rod,e,pivot (m and M required), claimed
-    /// v,V,omega,J,energy_before,energy_after, and any other columns (passed through).
-    #[arg(value_name = "FILE.csv")]
+    #[arg(value_name = "FILE.csv", help = file_help())]
     pub(crate) file: PathBuf,
     /// Arithmetic: exact rationals, or the paper's closed form in f64 (the naive formula, not
     /// the stable one of `solve --backend f64`).
@@ -116,8 +114,9 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         return Err(Error::new(
             "FILE",
             ErrorKind::Invalid(format!(
-                "{} has no header line (expected columns among m,M,l,a,v0,rod,e,pivot,v,V,omega)",
-                echo_path(&args.file)
+                "{} has no header line (expected columns among {},v,V,omega)",
+                echo_path(&args.file),
+                scene_columns()
             )),
         )
         .into());
@@ -184,6 +183,24 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         &batch.passed_through(),
         agreement.as_ref(),
         args.atol.as_deref(),
+    )
+}
+
+/// The scene columns a batch reads, from the one table of scene keys.
+fn scene_columns() -> String {
+    rodimpact::scene::SCENE_KEYS
+        .iter()
+        .filter(|k| k.column)
+        .map(|k| k.name)
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+/// The help of the FILE argument: every scene column, the claims, and the rest passed through.
+fn file_help() -> String {
+    format!(
+        "CSV file: header among {} (m and M required), claimed v,V,omega,J,energy_before,energy_after, and any other columns (passed through)",
+        scene_columns()
     )
 }
 

@@ -341,3 +341,20 @@ fn an_absolute_floor_accepts_round_off_where_the_exact_value_vanishes() {
     assert_eq!(code, 2);
     assert_eq!(err, "error: atol: must be a number from 0 to 1, got 2\n");
 }
+
+/// NEWCOMER m19: `batch --help` lists every scene column the engine suite writes (the oblique
+/// ones too), from the one table of scene keys.
+#[test]
+fn the_help_lists_every_scene_column() {
+    let (code, help, _) = rodimpact(&["batch", "--help"]);
+    assert_eq!(code, 0);
+    assert!(
+        help.contains("header among m,M,l,a,v0,rod,e,pivot,v0t,mu,radius,spin,rod-v,rod-vt,rod-omega (m and M required)"),
+        "{help}"
+    );
+    let (_, suite, _) = rodimpact(&["scenes", "--suite", "engines"]);
+    let header = suite.lines().next().unwrap();
+    for column in header.split(',').filter(|c| !["id", "class"].contains(c)) {
+        assert!(help.contains(column), "{column} missing from batch --help");
+    }
+}
