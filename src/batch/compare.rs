@@ -58,6 +58,27 @@ fn exact_text(r: &Q) -> String {
     }
 }
 
+/// A tolerance flag's value (`--rtol`, `--atol`): an exact number from 0 to 1.
+pub(super) fn unit_fraction(field: &str, text: &str) -> Result<Q, Error> {
+    let bad = || {
+        Error::out_of_range(
+            field,
+            format!(
+                "must be a number from 0 to 1, got {}",
+                crate::echo::echo(text)
+            ),
+        )
+    };
+    let x = crate::number::parse(text).map_err(|kind| match kind {
+        ErrorKind::Invalid(_) => bad(),
+        other => Error::new(field, other),
+    })?;
+    if x.is_negative() || x > Q::from_integer(1.into()) {
+        return Err(bad());
+    }
+    Ok(x)
+}
+
 impl Agreement {
     /// `--rtol R`: an exact number from 0 to 1.
     ///
@@ -71,23 +92,7 @@ impl Agreement {
     /// assert!(Agreement::parse_rtol("2").is_err());
     /// ```
     pub fn parse_rtol(text: &str) -> Result<Agreement, Error> {
-        let bad = || {
-            Error::out_of_range(
-                "rtol",
-                format!(
-                    "must be a number from 0 to 1, got {}",
-                    crate::echo::echo(text)
-                ),
-            )
-        };
-        let r = crate::number::parse(text).map_err(|kind| match kind {
-            ErrorKind::Invalid(_) => bad(),
-            other => Error::new("rtol", other),
-        })?;
-        if r.is_negative() || r > Q::from_integer(1.into()) {
-            return Err(bad());
-        }
-        Ok(Agreement::Relative(r))
+        unit_fraction("rtol", text).map(Agreement::Relative)
     }
 
     /// The rule in words, for the summary.

@@ -6,7 +6,6 @@ use super::plan::{Arithmetic, CLAIMS, OBLIQUE_OUTPUTS, Role, STATE, WORD_SCENE, 
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::scene::{SCENE_KEYS, Scene, SceneInput, SceneKey};
-use num_traits::Signed;
 
 /// The scene key of the batch column `name`, if it is one.
 fn scene_column(name: &str) -> Option<&'static SceneKey> {
@@ -223,22 +222,7 @@ impl Batch {
     /// assert!(!b.row(2, "1,1,0,0,1,1e-11").unwrap().checks[2].ok);
     /// ```
     pub fn with_atol(mut self, text: &str) -> Result<Batch, Error> {
-        let bad = || {
-            Error::out_of_range(
-                "atol",
-                format!(
-                    "must be a number from 0 to 1, got {}",
-                    crate::echo::echo(text)
-                ),
-            )
-        };
-        let x = crate::number::parse(text).map_err(|kind| match kind {
-            ErrorKind::Invalid(_) => bad(),
-            other => Error::new("atol", other),
-        })?;
-        if x.is_negative() || x > Q::from_integer(1.into()) {
-            return Err(bad());
-        }
+        let x = super::compare::unit_fraction("atol", text)?;
         self.atol = Some(x);
         self.word_plan = None;
         Ok(self)
