@@ -516,6 +516,8 @@ pub fn render_document(tables: &[Table], format: Format) -> String {
                 &[
                     "\\usepackage{booktabs}",
                     "\\usepackage{dcolumn}",
+                    // The caption sits above the table: keep a gap between it and the rule.
+                    "\\usepackage[tableposition=top,skip=6pt]{caption}",
                     "\\usepackage[margin=2cm]{geometry}",
                     "\\renewcommand{\\arraystretch}{1.5}",
                 ],

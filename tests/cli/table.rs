@@ -327,3 +327,17 @@ fn a_flag_that_changes_none_of_the_tables_asked_for_is_refused() {
     assert_eq!(code, 0, "{stderr}");
     assert!(stdout.contains("### T6."), "{stdout}");
 }
+
+/// NEWCOMER m4: the caption above each LaTeX table keeps a gap to the rule below it (it sat on
+/// `\toprule`): the caption package, with captions on top, 6 pt. Compiled with pdflatex and
+/// looked at.
+#[test]
+fn latex_captions_keep_a_gap_to_the_rule() {
+    let (code, out, _) = crate::common::rodimpact(&["table", "--format", "latex", "--only", "T3"]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("\\usepackage[tableposition=top,skip=6pt]{caption}\n"),
+        "{out}"
+    );
+    assert!(out.find("{caption}").unwrap() < out.find("\\begin{document}").unwrap());
+}
