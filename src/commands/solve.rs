@@ -75,11 +75,13 @@ pub(crate) struct SolveArgs {
 }
 
 pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
-    let latex_working = args
+    // The working's format, aliases read once (`tex` is `latex`).
+    let working = args
         .explain
         .as_deref()
-        .is_some_and(|f| ["latex", "tex"].contains(&f.trim().to_ascii_lowercase().as_str()));
-    if args.standalone && !latex_working {
+        .map(|f| format_choice("explain", f, &["text", "markdown", "latex"]))
+        .transpose()?;
+    if args.standalone && working != Some("latex") {
         return Err(rodimpact::Error::new(
             "standalone",
             rodimpact::error::ErrorKind::Conflict(
@@ -99,8 +101,8 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
         )
         .into());
     }
-    if let Some(format) = &args.explain {
-        let format = match format_choice("explain", format, &["text", "markdown", "latex"])? {
+    if let Some(format) = working {
+        let format = match format {
             "markdown" => ExplainFormat::Markdown,
             "latex" => ExplainFormat::Latex,
             _ => ExplainFormat::Text,

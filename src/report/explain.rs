@@ -8,8 +8,8 @@ use crate::field::{Q, QSqrt};
 use crate::mechanics::Groups;
 use crate::scene::{Scene, Support};
 use crate::solve::linear::solve;
-use crate::solve::optimum::{Arm, Placement, optimum};
-use num_traits::{One, Signed, Zero};
+use crate::solve::optimum::{Arm, Placement, optimum, struck_end};
+use num_traits::{One, Signed};
 
 /// The output format of [`explain`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -288,17 +288,8 @@ fn a_star_step(scene: &Scene) -> Step {
     let approx = QSqrt::sqrt_of(&o.squared).decimal(6);
     let (lever, moment, star, from) = match scene.support() {
         Support::Free => ("a", "I*(M + m)/M".to_string(), "a*", String::new()),
-        Support::Pivot(p) => {
-            // The end of the struck arm, where d = the arm's length.
-            let positive = match (scene.a() - p).cmp(&Q::zero()) {
-                std::cmp::Ordering::Equal => !p.is_positive(),
-                side => side == std::cmp::Ordering::Greater,
-            };
-            let end = if positive {
-                p.clone() + &o.arm
-            } else {
-                p.clone() - &o.arm
-            };
+        Support::Pivot(_) => {
+            let end = struck_end(scene);
             (
                 "d",
                 "I + M*p^2".to_string(),

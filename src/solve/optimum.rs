@@ -350,8 +350,30 @@ impl<F: Field> Peak<F> {
 fn struck_arm_of(scene: &Scene) -> Q {
     match scene.support() {
         Support::Free => scene.half_length().clone(),
-        Support::Pivot(p) => struck_arm(scene.a(), p, scene.half_length()),
+        Support::Pivot(p) => (struck_end(scene) - p).abs(),
     }
+}
+
+/// The end of the rod on the struck side, `l` or `-l`: the paper's end `l` for a free rod; on a
+/// pivot the end on the impact's side of it (the longer arm when the pivot itself is struck).
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::Scene, solve::optimum::struck_end, field::q};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).pivot(q(1, 2)).a(q(-1, 4)).build()?;
+/// assert_eq!(struck_end(&s), q(-1, 1));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn struck_end(scene: &Scene) -> Q {
+    let l = scene.half_length().clone();
+    let Support::Pivot(p) = scene.support() else {
+        return l;
+    };
+    let positive = match (scene.a() - p).signum() {
+        s if s.is_zero() => !p.is_positive(),
+        s => s.is_positive(),
+    };
+    if positive { l } else { -l }
 }
 
 /// The optimum of a scene whose rod does not turn before the impact.
@@ -414,16 +436,6 @@ impl ArmPeak {
             omega_max,
         }
     }
-}
-
-/// Distance from the pivot to the rod's end on the struck side (the longer arm when the
-/// projectile hits the pivot itself).
-fn struck_arm(a: &Q, p: &Q, l: &Q) -> Q {
-    let side_positive = match (a - p).signum() {
-        s if s.is_zero() => !p.is_positive(),
-        s => s.is_positive(),
-    };
-    if side_positive { l - p } else { l + p }
 }
 
 #[cfg(test)]
@@ -530,6 +542,17 @@ mod tests {
 
     #[test]
     fn struck_side_decides_the_arm() {
+        // The arm from the pivot p to the struck end, a and l as given.
+        let struck_arm = |a: &Q, p: &Q, l: &Q| {
+            struck_arm_of(
+                &scene(q(1, 1), q(1, 1))
+                    .half_length(l.clone())
+                    .a(a.clone())
+                    .pivot(p.clone())
+                    .build()
+                    .unwrap(),
+            )
+        };
         assert_eq!(struck_arm(&q(1, 2), &q(-1, 2), &q(1, 1)), q(3, 2));
         assert_eq!(struck_arm(&q(-1, 1), &q(-1, 2), &q(1, 1)), q(1, 2));
         assert_eq!(struck_arm(&q(1, 2), &q(1, 2), &q(1, 1)), q(3, 2));
