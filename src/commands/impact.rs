@@ -10,9 +10,7 @@ use rodimpact::report::{
     models_json, models_text,
 };
 use rodimpact::solve::impact::{Law, solve_exact};
-use rodimpact::solve::impact::{
-    MAX_ORDERED, MAX_SIMULTANEOUS, Model, ModelOutcome, orders, solve_several,
-};
+use rodimpact::solve::impact::{MAX_ORDERED, Model, ModelOutcome, orders, solve_several};
 use rodimpact::textbook::SceneCheck;
 use rodimpact::textbook::impact::{
     ImpactClaim, check_impact_claims, check_model_claims, read_impact_claims,
@@ -165,16 +163,6 @@ fn run_models(
             "law",
             ErrorKind::Conflict(
                 "several contacts: their models (--model) say how the contacts act together".into(),
-            ),
-        )
-        .into());
-    }
-    if system.contacts.len() > MAX_SIMULTANEOUS {
-        return Err(Error::out_of_range(
-            label,
-            format!(
-                "{} contacts: the models are enumerated for at most {MAX_SIMULTANEOUS} (limit)",
-                system.contacts.len()
             ),
         )
         .into());

@@ -20,4 +20,6 @@ mod system;
 pub use input::{MAX_SCENE_BYTES, MAX_VERTICES, from_value, parse_toml, toml_value};
 pub use paper::{PROJECTILE, ROD, paper_system};
 pub use shape::Shape;
-pub use system::{Body, Contact, MAX_BODIES, MAX_CONTACTS, Mobility, System};
+pub use system::{
+    Body, Contact, MAX_BODIES, MAX_CONTACTS, MAX_FRICTIONAL_CONTACTS, Mobility, System,
+};

@@ -104,8 +104,12 @@ pub struct System {
 
 /// The most bodies and contacts a system may hold.
 pub const MAX_BODIES: usize = 1_000;
-/// The most contacts a system may hold (simultaneous models enumerate subsets of them).
-pub const MAX_CONTACTS: usize = 16;
+/// The most contacts a system may hold (the simultaneous models solve them by Lemke's method
+/// beyond eight).
+pub const MAX_CONTACTS: usize = 64;
+/// The most contacts a system with friction may hold (the simultaneous models with friction try
+/// every one of the 6^n modes of its contacts in each phase).
+pub const MAX_FRICTIONAL_CONTACTS: usize = 4;
 
 impl System {
     /// Checks a system and returns it: names unique, masses positive, inertias non-negative (a
@@ -148,6 +152,15 @@ impl System {
             return Err(invalid(
                 "contact",
                 format!("more than {MAX_CONTACTS} contacts (limit)"),
+            ));
+        }
+        if contacts.len() > MAX_FRICTIONAL_CONTACTS && contacts.iter().any(|c| c.mu.is_positive()) {
+            return Err(invalid(
+                "contact",
+                format!(
+                    "{} contacts with friction: at most {MAX_FRICTIONAL_CONTACTS} when any has mu > 0 (limit)",
+                    contacts.len()
+                ),
             ));
         }
         check_names(&bodies)?;

@@ -248,6 +248,22 @@ fn bad_inputs_are_refused_naming_the_field() {
         stderr.contains("larger than 1048576 bytes (limit)"),
         "{stderr}"
     );
+    // Too many contacts: 65, or 5 with friction (6^5 modes a phase), refused by count.
+    let contact = &BASE[BASE.find("[[contact]]").unwrap()..];
+    for (copies, expected) in [
+        (65, "contact: more than 64 contacts (limit)"),
+        (
+            5,
+            "contact: 5 contacts with friction: at most 4 when any has mu > 0 (limit)",
+        ),
+    ] {
+        let path = dir.join("many.toml");
+        std::fs::write(&path, format!("{BASE}{}", contact.repeat(copies - 1))).unwrap();
+        let (code, stdout, stderr) = rodimpact(&["impact", path.to_str().unwrap()]);
+        assert_eq!(code, 2, "{copies}: {stdout}{stderr}");
+        assert!(stderr.contains(expected), "{copies}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -8,6 +8,7 @@ for an integer).
 
     python3 tests/oracles/multi_contact.py examples/impacts/cradle-3.toml [--model M]
     python3 tests/oracles/multi_contact.py --write-fixtures      # every examples/impacts/*.toml
+                                                                 # with several contacts
                                                                  # -> tests/data/impacts/*.json
 
 Mechanics (derivation)
@@ -1225,6 +1226,10 @@ def scene_json(sc: Scene):
     return {"file": sc.source, "title": sc.title, "bodies": bodies, "contacts": contacts}
 
 
+# The most contacts whose every order the sequential models run.
+MAX_ORDERED = 6
+
+
 def analyse(sc: Scene, models=("simultaneous-newton", "simultaneous-poisson", "sequential", "sequential-priority", "pgs")):
     W = sc.delassus(sc.rows_n, sc.rows_n)
     s0 = sc.initial_state()
@@ -1257,10 +1262,15 @@ def analyse(sc: Scene, models=("simultaneous-newton", "simultaneous-poisson", "s
             ms.append(model_newton_json(sc, W, u0))
         if "simultaneous-poisson" in models:
             ms.append(model_poisson_json(sc, W, u0))
-        if "sequential" in models:
-            ms.append(model_sequential_json(sc, W, u0))
-        if "sequential-priority" in models:
-            ms.append(model_sequential_priority_json(sc, W, u0))
+        # Every order is n! runs: like rodimpact (MAX_ORDERED), at most 6 contacts.
+        if sc.n > MAX_ORDERED and any(m.startswith("sequential") for m in models):
+            out["not_computed"] = (f"sequential in every order: {sc.n} contacts, more than "
+                                   f"{MAX_ORDERED} ({sc.n}! orders)")
+        else:
+            if "sequential" in models:
+                ms.append(model_sequential_json(sc, W, u0))
+            if "sequential-priority" in models:
+                ms.append(model_sequential_priority_json(sc, W, u0))
         if "pgs" in models:
             ms.extend(model_pgs_json(sc, W, u0))
     out["models"] = ms
@@ -1284,7 +1294,10 @@ def main(argv):
         outdir = root / "tests" / "data" / "impacts"
         outdir.mkdir(parents=True, exist_ok=True)
         for p in sorted((root / "examples" / "impacts").glob("*.toml")):
-            res = analyse(load(p))
+            sc = load(p)
+            if sc.n < 2:
+                continue  # one contact: planar_impact.py writes its fixture
+            res = analyse(sc)
             (outdir / (p.stem + ".json")).write_text(json.dumps(res, indent=1) + "\n")
             print(f"wrote {outdir / (p.stem + '.json')}", file=sys.stderr)
         return 0

@@ -2,7 +2,8 @@
 //! formulation (`tests/oracles/several-contacts.md`, section 6): in each phase, every contact
 //! open or closed, sticking or sliding, every combination tried; Coulomb's cone bounds each
 //! phase's tangential impulse by mu times that phase's normal impulse, the friction opposing the
-//! slip at the phase's end.
+//! slip at the phase's end. Each phase tries 6^n modes, so a system with friction holds at most
+//! [`MAX_FRICTIONAL_CONTACTS`](crate::model::MAX_FRICTIONAL_CONTACTS) contacts.
 
 use super::several::{
     Contacts, Model, ModelAnswer, ModelOutcome, finish, negative_part, nonnegative,

@@ -15,9 +15,11 @@
 //! | `matrix.rs` | each body's response to an impulse, the contact matrix W |
 //! | `routh.rs` | the path in the normal impulse (Routh's construction) and each law's end |
 //! | `several.rs` | several frictionless contacts under each model: simultaneous Newton and Poisson (exact LCPs), sequential, projected Gauss-Seidel |
+//! | `lemke.rs` | Lemke's method for the LCPs of many contacts, exact, lexicographic |
 //! | `friction.rs` | several frictional contacts under the simultaneous models, every mode tried |
 
 mod friction;
+mod lemke;
 mod matrix;
 mod routh;
 mod several;
@@ -25,7 +27,7 @@ mod several;
 pub use matrix::ContactMatrix;
 pub use routh::{Jam, Law, Mode, Roots};
 pub use several::{
-    Ledger, MAX_ORDERED, MAX_SEQUENTIAL_IMPACTS, MAX_SIMULTANEOUS, MAX_SWEEPS, Model, ModelAnswer,
+    Ledger, MAX_ENUMERATED, MAX_ORDERED, MAX_SEQUENTIAL_IMPACTS, MAX_SWEEPS, Model, ModelAnswer,
     ModelOutcome, orders,
 };
 

@@ -14,10 +14,14 @@
 //! - **pgs:K**: K sweeps of projected Gauss-Seidel from zero impulses, in the contacts' order,
 //!   `lam_i <- max(0, lam_i - (u_i + e_i u0_i^-)/W_ii)`, as engines run it.
 //!
-//! The linear complementarity problems are solved exactly by enumerating the active sets (every
-//! subset of the contacts, so at most [`MAX_SIMULTANEOUS`] contacts), and every solution is
-//! reported: a model may have one answer, several or none.
+//! The linear complementarity problems are solved exactly: up to [`MAX_ENUMERATED`] contacts by
+//! enumerating the active sets (every subset of the contacts; solutions with the same
+//! velocities are one), beyond by Lemke's method with lexicographic pivoting (`lemke.rs`), up
+//! to [`MAX_CONTACTS`](crate::model::MAX_CONTACTS) contacts. W is positive semidefinite, so the velocities after are
+//! the same for every solution: a model has one answer or none (the impulses may be split
+//! otherwise where W is singular).
 
+use super::lemke::lemke;
 use super::matrix::Response;
 use crate::field::Field;
 use crate::mechanics::planar::{
@@ -28,8 +32,9 @@ use crate::solve::linear::solve_linear;
 use std::cmp::Ordering;
 use std::fmt;
 
-/// The most contacts the simultaneous models enumerate the active sets of.
-pub const MAX_SIMULTANEOUS: usize = 10;
+/// The most contacts whose active sets the simultaneous models enumerate (2^n of them);
+/// beyond, Lemke's method solves them.
+pub const MAX_ENUMERATED: usize = 8;
 /// The most impacts a sequential model runs before it is reported as not stopping.
 pub const MAX_SEQUENTIAL_IMPACTS: usize = 1_000;
 /// The most sweeps `pgs:K` runs.
@@ -327,9 +332,19 @@ fn velocities<F: Field>(u0: &[F], w: &[Vec<F>], lam: &[F]) -> Vec<F> {
         .collect()
 }
 
-/// Every solution of the LCP `lam >= 0, q + W lam >= 0, lam . (q + W lam) = 0`, by active sets;
-/// solutions that differ only where W leaves them open are one (the first found).
+/// The solutions of the LCP `lam >= 0, q + W lam >= 0, lam . (q + W lam) = 0` that differ in
+/// their velocities (for a positive semidefinite W, one or none): by active sets up to
+/// [`MAX_ENUMERATED`] contacts, by Lemke's method beyond.
 fn lcp<F: Field>(w: &[Vec<F>], q: &[F]) -> Vec<Vec<F>> {
+    if q.len() > MAX_ENUMERATED {
+        return lemke(w, q).into_iter().collect();
+    }
+    every_active_set(w, q)
+}
+
+/// Every solution of the LCP by active sets; solutions that differ only where W leaves them
+/// open are one (the first found).
+fn every_active_set<F: Field>(w: &[Vec<F>], q: &[F]) -> Vec<Vec<F>> {
     let n = q.len();
     let mut found: Vec<Vec<F>> = Vec::new();
     for mask in 0u32..(1 << n) {
@@ -573,4 +588,51 @@ pub fn orders(n: usize) -> Vec<Vec<usize>> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::{Q, q};
+    use proptest::prelude::*;
+
+    /// `W = J J^T` (positive semidefinite, singular when J has fewer columns than rows, as
+    /// for several contacts on few bodies) and `q`, from small integers.
+    fn problem() -> impl Strategy<Value = (Vec<Vec<Q>>, Vec<Q>)> {
+        (1usize..=6, 1usize..=6).prop_flat_map(|(n, k)| {
+            (
+                proptest::collection::vec(proptest::collection::vec(-3i64..=3, k), n),
+                proptest::collection::vec(-4i64..=4, n),
+            )
+                .prop_map(move |(j, q_int)| {
+                    let w = (0..n)
+                        .map(|a| {
+                            (0..n)
+                                .map(|b| q((0..k).map(|c| j[a][c] * j[b][c]).sum(), 1))
+                                .collect()
+                        })
+                        .collect();
+                    (w, q_int.into_iter().map(|x| q(x, 1)).collect())
+                })
+        })
+    }
+
+    proptest! {
+        /// Lemke's method and the enumeration of active sets agree: both find no solution, or
+        /// both find velocities `q + W z`, the same, and Lemke's z is complementary.
+        #[test]
+        fn lemke_agrees_with_every_active_set((w, q0) in problem()) {
+            let by_sets = every_active_set(&w, &q0);
+            let by_lemke = lemke(&w, &q0);
+            prop_assert_eq!(by_sets.is_empty(), by_lemke.is_none());
+            if let (Some(z), Some(other)) = (by_lemke, by_sets.first()) {
+                let after = velocities(&q0, &w, &z);
+                prop_assert_eq!(&after, &velocities(&q0, &w, other));
+                for (zi, ui) in z.iter().zip(&after) {
+                    prop_assert!(nonnegative(zi) && nonnegative(ui));
+                    prop_assert_eq!(zi.clone() * ui, q(0, 1));
+                }
+            }
+        }
+    }
 }
