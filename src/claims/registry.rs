@@ -109,6 +109,8 @@ registry! {
     "beyond/x34.rs" => x34,
     "beyond/x35.rs" => x35,
     "beyond/x36.rs" => x36,
+    "beyond/x37.rs" => x37,
+    "beyond/x38.rs" => x38,
 }
 
 /// Every claim, in the order of `docs/claims.md`: the paper's, then the results beyond it.

@@ -30,6 +30,7 @@ const NOT_PLAINLY_PROVED: &[(&str, &str)] = &[
     ("X32", "PROVED †"),
     ("X33", "PROVED †"),
     ("X34", "REFUTED"),
+    ("X37", "PROVED †"),
 ];
 
 /// The verdict, as printed, that the table expects for claim `id`.
