@@ -94,6 +94,42 @@ pub(crate) fn counted(n: usize, noun: &str) -> String {
     }
 }
 
+/// The largest number of significant digits a report prints (`--digits`, and `digits=` in
+/// Python): beyond it the decimals are refused, not computed for ever.
+pub const MAX_DIGITS_OUT: usize = 10_000;
+
+/// The number of significant digits `text` asks for (`default` when it is `None`): a whole
+/// number from 1 to [`MAX_DIGITS_OUT`].
+///
+/// # Errors
+/// `digits: must be a whole number from 1 to 10000, got '...'` for anything else.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::parse_digits;
+/// assert_eq!(parse_digits(None, 30).unwrap(), 30);
+/// assert_eq!(parse_digits(Some(" 12 "), 30).unwrap(), 12);
+/// assert_eq!(
+///     parse_digits(Some("0"), 30).unwrap_err().to_string(),
+///     "digits: must be a whole number from 1 to 10000, got '0'"
+/// );
+/// ```
+pub fn parse_digits(text: Option<&str>, default: usize) -> Result<usize, crate::Error> {
+    let Some(text) = text else {
+        return Ok(default);
+    };
+    match text.trim().parse::<usize>() {
+        Ok(n) if (1..=MAX_DIGITS_OUT).contains(&n) => Ok(n),
+        _ => Err(crate::Error::out_of_range(
+            "digits",
+            format!(
+                "must be a whole number from 1 to {MAX_DIGITS_OUT}, got '{}'",
+                crate::echo::echo(text)
+            ),
+        )),
+    }
+}
+
 /// The JSON value form of an exact number: `{"exact": "p/q", "decimal": "..."}`, the decimal
 /// correctly rounded to `digits` significant digits.
 ///
