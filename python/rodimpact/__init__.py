@@ -32,7 +32,7 @@ from typing import Any, Dict, Iterable, List, Mapping, Optional, Tuple, Union
 
 from . import _native
 from ._values import Exact, Record, Surd, as_text, exact
-# audit: next step
+from ._audit import AuditSummary, audit
 
 __all__ = [
     "solve",

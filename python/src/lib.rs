@@ -95,7 +95,6 @@ fn scene_keys() -> Vec<(&'static str, bool, &'static str)> {
 
 /// A Rust panic that reached the binding (a bug: the library never panics on input) as
 /// `RuntimeError`, never an abort of the interpreter.
-#[allow(dead_code)]
 fn internal(why: impl std::fmt::Display) -> PyErr {
     PyRuntimeError::new_err(format!("rodimpact internal error: {why}"))
 }
