@@ -220,5 +220,5 @@ def formula(**scene: Any) -> Formulas:
     return Formulas(_loads(data), latex, text)
 
 
-# check: next step
-# impact: next step
+from ._check import Check, check  # noqa: E402
+from ._impact import Impact, impact  # noqa: E402

@@ -131,8 +131,23 @@ def exact(value: Mapping[str, Any]) -> Exact:
     )
 
 
+#: The keys a JSON value of the CLI may hold beside ``exact`` and ``decimal`` (``a_star``'s
+#: bounds and placement, ``rod_omega_max``'s arm).
+_VALUE_KEYS = frozenset(
+    ["exact", "decimal", "squared", "lower", "upper", "within_rod", "placement", "threshold_M",
+     "arm", "argmax", "other_arm"]
+)
+
+
 def _is_value(x: Any) -> bool:
-    return isinstance(x, dict) and isinstance(x.get("exact"), str) and isinstance(x.get("decimal"), str)
+    """Whether ``x`` is a JSON value of the CLI (``{"exact", "decimal", ...}``), not a record
+    that merely holds those keys among others (a checked claim)."""
+    return (
+        isinstance(x, dict)
+        and isinstance(x.get("exact"), str)
+        and isinstance(x.get("decimal"), str)
+        and x.keys() <= _VALUE_KEYS
+    )
 
 
 def _convert(x: Any) -> Any:

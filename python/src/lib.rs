@@ -84,6 +84,115 @@ fn formula_json(
     .map_err(value_error)
 }
 
+/// `check --json` with scene flags and `--claim`s: the JSON text, whether every claim agrees
+/// (the CLI's exit 0), and the text table with its summary line.
+#[pyfunction]
+#[pyo3(signature = (pairs, claims, sig=None))]
+fn check_json(
+    py: Python<'_>,
+    pairs: Vec<(String, String)>,
+    claims: Vec<String>,
+    sig: Option<u32>,
+) -> PyResult<(String, bool, String)> {
+    py.detach(|| {
+        let check = rodimpact::textbook::check_claims(&scene_input(&pairs)?, &claims, sig)?;
+        let text = format!(
+            "{}{}\n",
+            rodimpact::report::check_table(&check),
+            rodimpact::report::check_summary(&check)
+        );
+        Ok::<_, Error>((
+            to_json(&rodimpact::report::check_json(&check)),
+            check.all_agree(),
+            text,
+        ))
+    })
+    .map_err(value_error)
+}
+
+/// `check PROBLEMS.toml --json`: the JSON text, whether every claim agrees, and the text report.
+#[pyfunction]
+#[pyo3(signature = (path, sig=None))]
+fn check_file_json(
+    py: Python<'_>,
+    path: std::path::PathBuf,
+    sig: Option<u32>,
+) -> PyResult<(String, bool, String)> {
+    use rodimpact::textbook::problems::{check_problems, parse_problems, read_problem_file};
+    py.detach(|| {
+        let label = rodimpact::echo::echo_path(&path);
+        let text = read_problem_file(&label, &path)?;
+        let problems = parse_problems(&label, &text)?;
+        let checks = check_problems(&label, &problems, sig)?;
+        Ok::<_, Error>((
+            to_json(&rodimpact::report::problems_json(&checks)),
+            checks.iter().all(|p| p.check.all_agree()),
+            rodimpact::report::problems_text(&checks),
+        ))
+    })
+    .map_err(value_error)
+}
+
+/// `impact FILE --format json`: the scene from a file (`path`) or from the JSON text of a
+/// dict with the file's structure (`scene`, named `label` in errors); the JSON text, whether
+/// the file's claims all agree, and the text report.
+#[pyfunction]
+#[pyo3(signature = (path, scene, label, law=None, model=None, digits=None))]
+#[allow(clippy::too_many_arguments)]
+fn impact_json(
+    py: Python<'_>,
+    path: Option<std::path::PathBuf>,
+    scene: Option<String>,
+    label: String,
+    law: Option<String>,
+    model: Option<String>,
+    digits: Option<String>,
+) -> PyResult<(String, bool, String)> {
+    use rodimpact::solve::impact::Law;
+    use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
+    py.detach(|| {
+        let (value, label) = match (&path, &scene) {
+            (Some(path), _) => {
+                let label = rodimpact::echo::echo_path(path);
+                (read_scene_file(&label, path)?, label)
+            }
+            (None, Some(text)) => {
+                let value: serde_json::Value = serde_json::from_str(text).map_err(|e| {
+                    Error::new(label.clone(), ErrorKind::Invalid(format!("not JSON: {e}")))
+                })?;
+                (value, label)
+            }
+            (None, None) => {
+                return Err(Error::new(label, ErrorKind::Missing));
+            }
+        };
+        let law = match law.as_deref().map(str::trim) {
+            None | Some("all") => None,
+            Some("newton") => Some(Law::Newton),
+            Some("poisson") => Some(Law::Poisson),
+            Some("energetic") => Some(Law::Energetic),
+            Some(other) => {
+                return Err(Error::new(
+                    "law",
+                    ErrorKind::Invalid(format!(
+                        "expected newton, poisson, energetic or all, got '{}'",
+                        rodimpact::echo::echo(other)
+                    )),
+                ));
+            }
+        };
+        let digits_json = rodimpact::report::parse_digits(digits.as_deref(), 30)?;
+        let digits_text = rodimpact::report::parse_digits(digits.as_deref(), 6)?;
+        let run = answer_impact(&value, &label, law, model.as_deref())?;
+        Ok::<_, Error>((
+            to_json(&rodimpact::report::impact_run_json(&run, digits_json)),
+            run.all_agree(),
+            rodimpact::report::impact_run_text(&run, digits_text),
+        ))
+    })
+    .map_err(value_error)
+}
+
 /// The scene keys, in the order a scene is read: `(name, is a batch column, help)`.
 #[pyfunction]
 fn scene_keys() -> Vec<(&'static str, bool, &'static str)> {
@@ -104,6 +213,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(solve_json, m)?)?;
     m.add_function(wrap_pyfunction!(formula_json, m)?)?;
     m.add_function(wrap_pyfunction!(scene_keys, m)?)?;
+    m.add_function(wrap_pyfunction!(check_json, m)?)?;
+    m.add_function(wrap_pyfunction!(check_file_json, m)?)?;
+    m.add_function(wrap_pyfunction!(impact_json, m)?)?;
     audit::register(m)?;
     Ok(())
 }
