@@ -8,7 +8,7 @@ use rodimpact::batch::{
 };
 use rodimpact::echo::{echo, echo_path};
 use rodimpact::io::AtomicFile;
-use rodimpact::report::batch_summary;
+use rodimpact::report::{batch_passed, batch_report};
 use rodimpact::{Error, ErrorKind};
 use std::io::{BufReader, IsTerminal, Write};
 use std::path::PathBuf;
@@ -231,23 +231,10 @@ fn report(
     agreement: Option<&Agreement>,
     atol: Option<&str>,
 ) -> Result<(), Failure> {
-    if !passed.is_empty() {
-        let names: Vec<String> = passed.iter().map(|name| echo(name)).collect();
-        super::print_err(&format!("passed through: {}\n", names.join(", ")));
-    }
-    if let Some(agreement) = agreement {
-        super::print_err(&format!("claims agree {}\n", agreement.describe()));
-    }
-    if let Some(x) = atol {
-        super::print_err(&format!(
-            "claims also agree within {} of the scene's units (v0, v0/l, m v0, m v0^2/2)\n",
-            echo(x.trim())
-        ));
-    }
-    super::print_err(&batch_summary(summary));
-    if summary.wrong() > 0 || summary.laws_failed > 0 || summary.rows_with_findings() > 0 {
-        Err(Failure::Check)
-    } else {
+    super::print_err(&batch_report(summary, passed, agreement, atol));
+    if batch_passed(summary) {
         Ok(())
+    } else {
+        Err(Failure::Check)
     }
 }

@@ -25,7 +25,7 @@ mod stability;
 mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
-pub use batch::batch_summary;
+pub use batch::{batch_passed, batch_report, batch_summary};
 pub use certificate::certificate_markdown;
 pub use check::{
     agreement_json, agreement_key, agreement_label, agreement_line, answer_json, check_json,
