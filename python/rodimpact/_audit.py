@@ -16,25 +16,37 @@ __all__ = ["audit", "AuditSummary"]
 _FEED_ROWS = 1 << 15
 
 
-class AuditSummary(str):
-    """The text ``rodimpact batch`` prints on standard error after the rows (a ``str``), with
-    ``ok`` (the CLI's exit 0: no wrong claim, every law held, no finding), ``rows``,
-    ``passed_through`` and ``agreement`` as attributes. ``DataFrame.attrs["summary"]``."""
+class AuditSummary:
+    """What ``rodimpact batch`` prints on standard error after the rows: ``str(summary)`` is
+    that text; ``ok`` is the CLI's exit 0 (no wrong claim, every law held, no finding),
+    ``rows`` the number of rows, ``passed_through`` the input columns passed through,
+    ``agreement`` the rule claims agree by, in words (``None`` for the default).
+    ``DataFrame.attrs["summary"]``."""
 
-    ok: bool
-    rows: int
-    passed_through: List[str]
-    agreement: Optional[str]
+    __slots__ = ("text", "ok", "rows", "passed_through", "agreement")
 
-    def __new__(cls, text: str, ok: bool, rows: int, passed: List[str], agreement: Optional[str]):
-        lines = []
-        if passed:
-            lines.append(f"passed through: {', '.join(passed)}\n")
-        if agreement:
-            lines.append(f"claims agree {agreement}\n")
-        self = super().__new__(cls, "".join(lines) + text)
-        self.ok, self.rows, self.passed_through, self.agreement = ok, rows, passed, agreement
-        return self
+    def __init__(
+        self, text: str, ok: bool, rows: int, passed_through: List[str], agreement: Optional[str]
+    ) -> None:
+        self.text = text
+        self.ok = ok
+        self.rows = rows
+        self.passed_through = list(passed_through)
+        self.agreement = agreement
+
+    def __str__(self) -> str:
+        return self.text
+
+    def __contains__(self, text: str) -> bool:
+        return text in self.text
+
+    def __repr__(self) -> str:
+        return f"AuditSummary(ok={self.ok}, rows={self.rows})"
+
+    def _repr_html_(self) -> str:
+        import html
+
+        return f"<pre>{html.escape(self.text)}</pre>"
 
 
 def _option(name: str, value: Any) -> Optional[str]:

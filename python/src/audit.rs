@@ -147,7 +147,8 @@ pub(crate) struct AuditStream {
     names: Vec<String>,
     input_width: usize,
     passed: Vec<String>,
-    agreement: Option<String>,
+    agreement: Option<Agreement>,
+    atol: Option<String>,
 }
 
 /// The batch for `header` with the options of `rodimpact batch`.
@@ -264,7 +265,8 @@ impl AuditStream {
             names,
             input_width: header.trim_end().split(',').count(),
             passed,
-            agreement: agreement.map(|a| a.describe()),
+            agreement,
+            atol: options.atol.clone(),
         })
     }
 }
@@ -371,7 +373,7 @@ impl AuditStream {
     /// When a claim agrees, in words (the CLI's `claims agree ...` line), if a rule was given.
     #[getter]
     fn agreement(&self) -> Option<String> {
-        self.agreement.clone()
+        self.agreement.as_ref().map(Agreement::describe)
     }
 
     /// Feeds whole lines of CSV text (no header). Returns False when the worker has stopped
@@ -418,9 +420,9 @@ impl AuditStream {
         Some((block.rows, columns))
     }
 
-    /// Waits for the worker: the summary the CLI prints on standard error (its totals) and
-    /// whether the CLI would exit 0 (no wrong claim, every law held, no finding); or the
-    /// `ValueError` of the first bad row.
+    /// Waits for the worker: what the CLI prints on standard error after the rows, whether
+    /// it would exit 0 (no wrong claim, every law held, no finding) and the number of rows; or
+    /// the `ValueError` of the first bad row.
     fn finish(&mut self, py: Python<'_>) -> PyResult<(String, bool, usize)> {
         self.input = None;
         let Some(worker) = self.worker.take() else {
@@ -434,10 +436,18 @@ impl AuditStream {
                 return Err(crate::internal("the audit's worker stopped unexpectedly"));
             }
         };
-        // The CLI's exit 0: no wrong claim, every law held, no finding.
-        let ok =
-            summary.wrong() == 0 && summary.laws_failed == 0 && summary.rows_with_findings() == 0;
-        Ok((rodimpact::report::batch_summary(&summary), ok, summary.rows))
+        let passed: Vec<&str> = self.passed.iter().map(String::as_str).collect();
+        let text = rodimpact::report::batch_report(
+            &summary,
+            &passed,
+            self.agreement.as_ref(),
+            self.atol.as_deref(),
+        );
+        Ok((
+            text,
+            rodimpact::report::batch_passed(&summary),
+            summary.rows,
+        ))
     }
 }
 
