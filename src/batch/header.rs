@@ -12,6 +12,63 @@ fn scene_column(name: &str) -> Option<&'static SceneKey> {
     SCENE_KEYS.iter().find(|k| k.column && k.name == name)
 }
 
+/// The scene columns a batch reads, comma-separated, from the one table of scene keys.
+///
+/// # Examples
+/// ```
+/// assert!(rodimpact::batch::scene_columns().starts_with("m,M,l,a,v0,rod,e,pivot,v0t,"));
+/// ```
+pub fn scene_columns() -> String {
+    SCENE_KEYS
+        .iter()
+        .filter(|k| k.column)
+        .map(|k| k.name)
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+/// Reads the header line of a batch file from `input` (named `label` in errors), no further
+/// than [`MAX_LINE`](super::MAX_LINE) bytes, so that a file of one endless line is refused
+/// instead of read into memory. The rows follow in `input`.
+///
+/// # Errors
+/// `header (line 1): cannot read LABEL: ...`, `header (line 1): line longer than ... (limit)`,
+/// or `FILE: LABEL has no header line (expected columns among ...)` for an empty file.
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::read_header;
+/// let mut input = "m,M\n1,1\n".as_bytes();
+/// assert_eq!(read_header(&mut input, "runs.csv").unwrap(), "m,M\n");
+/// assert_eq!(input, b"1,1\n");
+/// let err = read_header(&mut "\n".as_bytes(), "empty.csv").unwrap_err().to_string();
+/// assert!(err.starts_with("FILE: empty.csv has no header line (expected columns among m,M,"));
+/// ```
+pub fn read_header(input: &mut impl std::io::BufRead, label: &str) -> Result<String, Error> {
+    use std::io::{BufRead, Read};
+    let max = super::MAX_LINE;
+    let mut header = String::new();
+    let n = Read::take(&mut *input, max as u64 + 1)
+        .read_line(&mut header)
+        .map_err(|why| Error::io("header (line 1)", format!("cannot read {label}"), why))?;
+    if n > max {
+        return Err(Error::new(
+            "header (line 1)",
+            ErrorKind::Invalid(format!("line longer than {max} bytes (limit)")),
+        ));
+    }
+    if header.trim().is_empty() {
+        return Err(Error::new(
+            "FILE",
+            ErrorKind::Invalid(format!(
+                "{label} has no header line (expected columns among {},v,V,omega)",
+                scene_columns()
+            )),
+        ));
+    }
+    Ok(header)
+}
+
 /// What one input column feeds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Column {

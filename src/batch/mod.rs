@@ -35,7 +35,7 @@ mod word_row;
 
 pub use audit::{Audit, Finding, LAW_TOLERANCE, STATE_TOLERANCE, audit};
 pub use compare::{Agreement, FLOAT_TOLERANCE, MAX_ULPS};
-pub use header::Batch;
+pub use header::{Batch, read_header, scene_columns};
 pub use impacts::{ImpactAudit, Reference, audit_impact};
 pub use plan::{Arithmetic, Diagnosis, OutputCheck, SolvedRow};
 pub use stream::{CHUNK, MAX_LINE, MAX_ROWS, run};

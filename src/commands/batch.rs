@@ -3,12 +3,14 @@
 use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
-use rodimpact::batch::{Agreement, Arithmetic, Batch, FloatFormat, MAX_LINE, Summary, run};
+use rodimpact::batch::{
+    Agreement, Arithmetic, Batch, FloatFormat, Summary, read_header, run, scene_columns,
+};
 use rodimpact::echo::{echo, echo_path};
 use rodimpact::io::AtomicFile;
-use rodimpact::report::batch_summary;
+use rodimpact::report::{batch_passed, batch_report};
 use rodimpact::{Error, ErrorKind};
-use std::io::{BufRead, BufReader, IsTerminal, Read, Write};
+use std::io::{BufReader, IsTerminal, Write};
 use std::path::PathBuf;
 
 #[derive(Args, Debug)]
@@ -90,37 +92,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     let file = std::fs::File::open(&args.file).map_err(read_error)?;
     let size = file.metadata().map(|m| m.len()).unwrap_or(0);
     let mut input = BufReader::with_capacity(1 << 16, file);
-    // The header is read like any row: bounded by MAX_LINE, so a file of one endless line (a
-    // sparse file of zeros) is refused instead of read into memory.
-    let mut header = String::new();
-    let n = (&mut input)
-        .take(MAX_LINE as u64 + 1)
-        .read_line(&mut header)
-        .map_err(|why| {
-            Error::io(
-                "header (line 1)",
-                format!("cannot read {}", echo_path(&args.file)),
-                why,
-            )
-        })?;
-    if n > MAX_LINE {
-        return Err(Error::new(
-            "header (line 1)",
-            ErrorKind::Invalid(format!("line longer than {MAX_LINE} bytes (limit)")),
-        )
-        .into());
-    }
-    if header.trim().is_empty() {
-        return Err(Error::new(
-            "FILE",
-            ErrorKind::Invalid(format!(
-                "{} has no header line (expected columns among {},v,V,omega)",
-                echo_path(&args.file),
-                scene_columns()
-            )),
-        )
-        .into());
-    }
+    let header = read_header(&mut input, &echo_path(&args.file))?;
     let batch = Batch::new(&header, arithmetic)?;
     let batch = match &agreement {
         Some(agreement) => batch.with_agreement(agreement.clone())?,
@@ -184,16 +156,6 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         agreement.as_ref(),
         args.atol.as_deref(),
     )
-}
-
-/// The scene columns a batch reads, from the one table of scene keys.
-fn scene_columns() -> String {
-    rodimpact::scene::SCENE_KEYS
-        .iter()
-        .filter(|k| k.column)
-        .map(|k| k.name)
-        .collect::<Vec<_>>()
-        .join(",")
 }
 
 /// The help of the FILE argument: every scene column, the claims, and the rest passed through.
@@ -269,23 +231,10 @@ fn report(
     agreement: Option<&Agreement>,
     atol: Option<&str>,
 ) -> Result<(), Failure> {
-    if !passed.is_empty() {
-        let names: Vec<String> = passed.iter().map(|name| echo(name)).collect();
-        super::print_err(&format!("passed through: {}\n", names.join(", ")));
-    }
-    if let Some(agreement) = agreement {
-        super::print_err(&format!("claims agree {}\n", agreement.describe()));
-    }
-    if let Some(x) = atol {
-        super::print_err(&format!(
-            "claims also agree within {} of the scene's units (v0, v0/l, m v0, m v0^2/2)\n",
-            echo(x.trim())
-        ));
-    }
-    super::print_err(&batch_summary(summary));
-    if summary.wrong() > 0 || summary.laws_failed > 0 || summary.rows_with_findings() > 0 {
-        Err(Failure::Check)
-    } else {
+    super::print_err(&batch_report(summary, passed, agreement, atol));
+    if batch_passed(summary) {
         Ok(())
+    } else {
+        Err(Failure::Check)
     }
 }

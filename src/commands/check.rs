@@ -3,11 +3,9 @@
 use super::{Failure, ObliqueFlags, SceneFlags, print_out};
 use clap::Args;
 use rodimpact::report::{check_json, check_summary, check_table, problems_json, problems_text};
-use rodimpact::textbook::expr::Budget;
-use rodimpact::textbook::problems::{MAX_CLAIMS, MAX_FILE_BYTES, check_problems, parse_problems};
-use rodimpact::textbook::{ClaimedAnswer, check_scene_within};
+use rodimpact::textbook::check_claims;
+use rodimpact::textbook::problems::{check_problems, parse_problems, read_problem_file};
 use rodimpact::{Error, ErrorKind};
-use std::io::Read;
 use std::path::PathBuf;
 
 #[derive(Args, Debug)]
@@ -79,7 +77,7 @@ fn check_file(args: &CheckArgs, path: &std::path::Path) -> Result<bool, Error> {
     if !args.claim.is_empty() || scene_given {
         return Err(stray_argument(path));
     }
-    let text = read_bounded(&label, path)?;
+    let text = read_problem_file(&label, path)?;
     let problems = parse_problems(&label, &text)?;
     let checks = check_problems(&label, &problems, args.sig)?;
     if args.json {
@@ -117,57 +115,8 @@ fn stray_argument(path: &std::path::Path) -> Error {
     Error::new("check", ErrorKind::Invalid(why))
 }
 
-/// The file's text, read no further than the size limit (a huge or endless file is refused
-/// without being read into memory); bytes that are not UTF-8 are named by line.
-fn read_bounded(label: &str, path: &std::path::Path) -> Result<String, Error> {
-    let io = |e: std::io::Error| Error::io(label, "cannot read", e);
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_FILE_BYTES as u64 + 1).read_to_end(&mut bytes))
-        .map_err(io)?;
-    if bytes.len() > MAX_FILE_BYTES {
-        return Err(Error::out_of_range(
-            label,
-            format!("file larger than {MAX_FILE_BYTES} bytes (limit)"),
-        ));
-    }
-    String::from_utf8(bytes).map_err(|e| {
-        let good = &e.as_bytes()[..e.utf8_error().valid_up_to()];
-        let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
-        Error::new(
-            label,
-            ErrorKind::Invalid(format!("line {line}: not valid UTF-8")),
-        )
-    })
-}
-
 fn check_flags(args: &CheckArgs) -> Result<bool, Error> {
-    if args.claim.is_empty() {
-        return Err(Error::new(
-            "claim",
-            ErrorKind::Invalid(
-                "nothing to check: give --claim NAME=VALUE (with the scene's flags), or a problems .toml file (rodimpact check examples/textbook.toml)".into(),
-            ),
-        ));
-    }
-    if args.claim.len() > MAX_CLAIMS {
-        return Err(Error::out_of_range(
-            "claim",
-            format!("more than {MAX_CLAIMS} claims (limit)"),
-        ));
-    }
-    let mut budget = Budget::run();
-    let claims = args
-        .claim
-        .iter()
-        .map(|c| ClaimedAnswer::parse_within(c, &mut budget))
-        .collect::<Result<Vec<_>, _>>()?;
-    let check = check_scene_within(
-        &args.oblique.input(&args.scene),
-        &claims,
-        args.sig,
-        &mut budget,
-    )?;
+    let check = check_claims(&args.oblique.input(&args.scene), &args.claim, args.sig)?;
     if args.json {
         print_out(&format!("{}\n", pretty(&check_json(&check))));
     } else {

@@ -4,17 +4,10 @@ use super::{Failure, parse_digits, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::batch::audit_impact;
 use rodimpact::field::Q;
-use rodimpact::model::{MAX_SCENE_BYTES, System, from_value, toml_value};
-use rodimpact::report::{
-    check_json, check_summary, check_table, impact_audit_json, impact_json, impact_text,
-    models_json, models_text,
-};
-use rodimpact::solve::impact::{Law, solve_exact};
-use rodimpact::solve::impact::{MAX_ORDERED, Model, ModelOutcome, orders, solve_several};
-use rodimpact::textbook::SceneCheck;
-use rodimpact::textbook::impact::{
-    ImpactClaim, check_impact_claims, check_model_claims, read_impact_claims,
-};
+use rodimpact::model::MAX_SCENE_BYTES;
+use rodimpact::report::{impact_audit_json, impact_run_json, impact_run_text};
+use rodimpact::solve::impact::Law;
+use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
 use rodimpact::{Error, ErrorKind};
 use std::io::Read;
 use std::path::PathBuf;
@@ -76,180 +69,33 @@ pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
     }
     let file = args.file.as_ref().expect("clap requires FILE or --batch");
     let label = rodimpact::echo::echo_path(file);
-    let mut bytes = Vec::new();
-    std::fs::File::open(file)
-        .and_then(|f| f.take(MAX_SCENE_BYTES as u64 + 1).read_to_end(&mut bytes))
-        .map_err(|e| Error::io(label.clone(), "cannot read", e))?;
-    let text = String::from_utf8(bytes)
-        .map_err(|_| Error::new(label.clone(), ErrorKind::Invalid("not UTF-8 text".into())))?;
-    let value = toml_value(&label, &text)?;
-    let at_file = |e: Error| Error::new(format!("{label}: {}", e.field), e.kind);
-    let system = from_value(&value).map_err(at_file)?;
-    if system.contacts.len() > 1 {
-        let claims = read_impact_claims(&value, &system).map_err(at_file)?;
-        return run_models(args, &system, &label, &claims);
-    }
-    if args.model.is_some() {
-        return Err(Error::new(
-            "model",
-            ErrorKind::Conflict(
-                "one contact: the models of several contacts do not apply (the laws do: --law)"
-                    .into(),
-            ),
-        )
-        .into());
-    }
-    let claims = read_impact_claims(&value, &system).map_err(at_file)?;
-    // A file's published answers need their laws answered whatever --law says.
-    let laws: &[Law] = match args.law {
-        _ if !claims.is_empty() => &Law::ALL,
-        LawChoice::Newton => &[Law::Newton],
-        LawChoice::Poisson => &[Law::Poisson],
-        LawChoice::Energetic => &[Law::Energetic],
-        LawChoice::All => &Law::ALL,
+    let value = read_scene_file(&label, file)?;
+    let law = match args.law {
+        LawChoice::Newton => Some(Law::Newton),
+        LawChoice::Poisson => Some(Law::Poisson),
+        LawChoice::Energetic => Some(Law::Energetic),
+        LawChoice::All => None,
     };
-    let answers = laws
-        .iter()
-        .map(|&law| {
-            solve_exact(&system, law)
-                .map_err(|e| Error::new(label.clone(), ErrorKind::Invalid(e.to_string())))
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    let checked = SceneCheck {
-        symbolic: None,
-        answers: check_impact_claims(&claims, &system, &answers).map_err(at_file)?,
-    };
+    let run = answer_impact(&value, &label, law, args.model.as_deref())?;
     match args.format {
         ImpactFormat::Json => {
             let digits = parse_digits(args.digits.as_deref(), 30)?;
-            let mut json = impact_json(&system, &answers, digits);
-            if !claims.is_empty() {
-                json["claims"] = check_json(&checked);
-            }
             print_out(&format!(
                 "{}\n",
-                serde_json::to_string_pretty(&json).expect("JSON of strings and bools")
+                serde_json::to_string_pretty(&impact_run_json(&run, digits))
+                    .expect("JSON of strings and bools")
             ));
         }
         ImpactFormat::Text => {
             let digits = parse_digits(args.digits.as_deref(), 6)?;
-            let mut text = impact_text(&system, &answers, digits);
-            if !claims.is_empty() {
-                text.push_str(&format!(
-                    "\nPublished answers (the file's claims, each under its source's law)\n{}  {}\n",
-                    check_table(&checked),
-                    check_summary(&checked)
-                ));
-            }
-            print_out(&text);
+            print_out(&impact_run_text(&run, digits));
         }
     }
-    if checked.all_agree() {
+    if run.all_agree() {
         Ok(())
     } else {
         Err(Failure::Check)
     }
-}
-
-/// A scene with several contacts: every model asked for, side by side.
-fn run_models(
-    args: &ImpactArgs,
-    system: &System,
-    label: &str,
-    claims: &[ImpactClaim],
-) -> Result<(), Failure> {
-    if args.law != LawChoice::All {
-        return Err(Error::new(
-            "law",
-            ErrorKind::Conflict(
-                "several contacts: their models (--model) say how the contacts act together".into(),
-            ),
-        )
-        .into());
-    }
-    let models = parse_models(
-        args.model.as_deref().unwrap_or("all"),
-        system.contacts.len(),
-    )?;
-    let outcomes: Vec<(Model, ModelOutcome<Q>)> = models
-        .into_iter()
-        .map(|m| {
-            let outcome = solve_several::<Q>(system, &m);
-            (m, outcome)
-        })
-        .collect();
-    let at_file = |e: Error| Error::new(format!("{label}: {}", e.field), e.kind);
-    let checked = SceneCheck {
-        symbolic: None,
-        answers: check_model_claims(claims, system).map_err(at_file)?,
-    };
-    match args.format {
-        ImpactFormat::Json => {
-            let digits = parse_digits(args.digits.as_deref(), 30)?;
-            let mut json = models_json(system, &outcomes, digits);
-            if !claims.is_empty() {
-                json["claims"] = check_json(&checked);
-            }
-            print_out(&format!(
-                "{}\n",
-                serde_json::to_string_pretty(&json).expect("JSON of strings and bools")
-            ));
-        }
-        ImpactFormat::Text => {
-            let digits = parse_digits(args.digits.as_deref(), 6)?;
-            let mut text = models_text(system, &outcomes, digits);
-            if !claims.is_empty() {
-                text.push_str(&format!(
-                    "\nPublished answers (the file's claims, each under its source's model)\n{}  {}\n",
-                    check_table(&checked),
-                    check_summary(&checked)
-                ));
-            }
-            print_out(&text);
-        }
-    }
-    if checked.all_agree() {
-        Ok(())
-    } else {
-        Err(Failure::Check)
-    }
-}
-
-/// The models `--model` names, for `n` contacts.
-fn parse_models(text: &str, n: usize) -> Result<Vec<Model>, Error> {
-    let bad = |why: String| Error::new("model", ErrorKind::Invalid(why));
-    let every_order = || -> Result<Vec<Model>, Error> {
-        if n > MAX_ORDERED {
-            return Err(Error::out_of_range(
-                "model",
-                format!(
-                    "sequential in every order takes at most {MAX_ORDERED} contacts ({n}! orders); give one order, sequential:1,2,..."
-                ),
-            ));
-        }
-        Ok(orders(n).into_iter().map(Model::Sequential).collect())
-    };
-    Ok(match text.trim() {
-        "all" => {
-            let mut all = vec![Model::SimultaneousNewton, Model::SimultaneousPoisson];
-            if n <= MAX_ORDERED {
-                all.extend(every_order()?);
-            }
-            all.extend([Model::Pgs(1), Model::Pgs(10)]);
-            all
-        }
-        "sequential" => every_order()?,
-        other => vec![Model::parse(other, n).map_err(|why| {
-            bad(if other.contains(':') {
-                why
-            } else {
-                format!(
-                    "expected simultaneous-newton, simultaneous-poisson, sequential, sequential:ORDER, pgs:K or all, got '{}'",
-                    rodimpact::echo::echo(other)
-                )
-            })
-        })?],
-    })
 }
 
 /// `impact --batch FILE.jsonl`: every line audited, one JSON line out each, a summary on stderr.

@@ -166,24 +166,7 @@ pub(crate) fn format_choice(
         })
 }
 
-/// The largest `--digits` accepted: beyond it the decimals are refused, not computed for ever.
-pub(crate) const MAX_DIGITS_OUT: usize = 10_000;
-
-pub(crate) fn parse_digits(text: Option<&str>, default: usize) -> Result<usize, Error> {
-    let Some(text) = text else {
-        return Ok(default);
-    };
-    match text.trim().parse::<usize>() {
-        Ok(n) if (1..=MAX_DIGITS_OUT).contains(&n) => Ok(n),
-        _ => Err(Error::out_of_range(
-            "digits",
-            format!(
-                "must be a whole number from 1 to {MAX_DIGITS_OUT}, got '{}'",
-                rodimpact::echo::echo(text)
-            ),
-        )),
-    }
-}
+pub(crate) use rodimpact::report::parse_digits;
 
 /// The most mass ratios one `--ratios` list may hold.
 pub(crate) const MAX_RATIOS: usize = 1_000;

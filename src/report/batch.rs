@@ -127,3 +127,64 @@ mod tests {
         );
     }
 }
+
+/// Everything `rodimpact batch` prints on standard error after the rows: the columns passed
+/// through, the agreement rule (`claims agree ...`), the `atol` floor, then [`batch_summary`].
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Agreement, Arithmetic, Batch, Summary};
+/// use rodimpact::report::batch_report;
+/// let b = Batch::new("id,m,M,v", Arithmetic::Exact).unwrap();
+/// let mut s = Summary::default();
+/// s.add(&b.row(1, "a,1,1,3/5").unwrap());
+/// let rule = Agreement::parse_rtol("1e-9").unwrap();
+/// assert_eq!(
+///     batch_report(&s, &b.passed_through(), Some(&rule), Some("1e-12")),
+///     "passed through: id\nclaims agree within a relative 0.000000001\n\
+///      claims also agree within 1e-12 of the scene's units (v0, v0/l, m v0, m v0^2/2)\n\
+///      1 row, laws held exactly on 1\nv: 1 claim, 0 wrong, max rel error 0, median 0\n"
+/// );
+/// ```
+pub fn batch_report(
+    summary: &Summary,
+    passed: &[&str],
+    agreement: Option<&crate::batch::Agreement>,
+    atol: Option<&str>,
+) -> String {
+    use crate::echo::echo;
+    let mut out = String::new();
+    if !passed.is_empty() {
+        let names: Vec<String> = passed.iter().map(|name| echo(name)).collect();
+        out.push_str(&format!("passed through: {}\n", names.join(", ")));
+    }
+    if let Some(agreement) = agreement {
+        out.push_str(&format!("claims agree {}\n", agreement.describe()));
+    }
+    if let Some(x) = atol {
+        out.push_str(&format!(
+            "claims also agree within {} of the scene's units (v0, v0/l, m v0, m v0^2/2)\n",
+            echo(x.trim())
+        ));
+    }
+    out.push_str(&batch_summary(summary));
+    out
+}
+
+/// Whether a batch passed: no wrong claim, every law held, no finding (`rodimpact batch`'s
+/// exit 0).
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Arithmetic, Batch, Summary};
+/// use rodimpact::report::batch_passed;
+/// let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
+/// let mut s = Summary::default();
+/// s.add(&b.row(1, "1,1,3/5").unwrap());
+/// assert!(batch_passed(&s));
+/// s.add(&b.row(2, "1,1,0.7").unwrap());
+/// assert!(!batch_passed(&s));
+/// ```
+pub fn batch_passed(summary: &Summary) -> bool {
+    summary.wrong() == 0 && summary.laws_failed == 0 && summary.rows_with_findings() == 0
+}

@@ -11,6 +11,7 @@ mod explain;
 pub mod explore;
 mod formula;
 mod impact;
+mod impact_run;
 pub mod markup;
 pub mod mathml;
 pub mod page;
@@ -24,7 +25,7 @@ mod stability;
 mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
-pub use batch::batch_summary;
+pub use batch::{batch_passed, batch_report, batch_summary};
 pub use certificate::certificate_markdown;
 pub use check::{
     agreement_json, agreement_key, agreement_label, agreement_line, answer_json, check_json,
@@ -34,6 +35,7 @@ pub use claims_doc::claims_markdown;
 pub use explain::{ExplainFormat, explain};
 pub use formula::{formula_json, formula_latex, formula_markdown, formula_text};
 pub use impact::{impact_audit_json, impact_json, impact_text, models_json, models_text};
+pub use impact_run::{impact_run_json, impact_run_text};
 pub use paper_html::paper_html;
 pub use paper_tables::{
     ALL_TABLE_IDS, TABLE_IDS, TableOptions, all_tables, t1, t2, t3, t4, t5, t6, tables,
@@ -91,6 +93,42 @@ pub(crate) fn counted(n: usize, noun: &str) -> String {
         format!("1 {noun}")
     } else {
         format!("{n} {noun}s")
+    }
+}
+
+/// The largest number of significant digits a report prints (`--digits`, and `digits=` in
+/// Python): beyond it the decimals are refused, not computed for ever.
+pub const MAX_DIGITS_OUT: usize = 10_000;
+
+/// The number of significant digits `text` asks for (`default` when it is `None`): a whole
+/// number from 1 to [`MAX_DIGITS_OUT`].
+///
+/// # Errors
+/// `digits: must be a whole number from 1 to 10000, got '...'` for anything else.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::parse_digits;
+/// assert_eq!(parse_digits(None, 30).unwrap(), 30);
+/// assert_eq!(parse_digits(Some(" 12 "), 30).unwrap(), 12);
+/// assert_eq!(
+///     parse_digits(Some("0"), 30).unwrap_err().to_string(),
+///     "digits: must be a whole number from 1 to 10000, got '0'"
+/// );
+/// ```
+pub fn parse_digits(text: Option<&str>, default: usize) -> Result<usize, crate::Error> {
+    let Some(text) = text else {
+        return Ok(default);
+    };
+    match text.trim().parse::<usize>() {
+        Ok(n) if (1..=MAX_DIGITS_OUT).contains(&n) => Ok(n),
+        _ => Err(crate::Error::out_of_range(
+            "digits",
+            format!(
+                "must be a whole number from 1 to {MAX_DIGITS_OUT}, got '{}'",
+                crate::echo::echo(text)
+            ),
+        )),
     }
 }
 

@@ -22,6 +22,52 @@ use crate::solve::oblique;
 use crate::solve::optimum::{a_star_squared, optimum};
 use num_traits::One;
 
+/// Checks the claims `specs` (each `NAME=VALUE` as typed: `omega=1.2`, `v=3/5`,
+/// `omega=6*m*v0*a/(...)`) about one scene: what `rodimpact check` does with scene flags and
+/// `--claim`, the work of every formula charged to one run's budget.
+///
+/// # Errors
+/// No claim, more than [`MAX_CLAIMS`](super::problems::MAX_CLAIMS), a claim that does not
+/// parse, and those of [`check_scene_within`].
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::SceneInput, textbook::check_claims};
+/// let s = SceneInput { m: Some("1".into()), rod_mass: Some("1".into()), ..Default::default() };
+/// assert!(check_claims(&s, &["omega=6/5", "v=0.6"], None)?.all_agree());
+/// assert!(!check_claims(&s, &["omega=1.3"], None)?.all_agree());
+/// let none: [&str; 0] = [];
+/// assert!(check_claims(&s, &none, None).unwrap_err().to_string().starts_with("claim: nothing to check"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn check_claims(
+    input: &SceneInput,
+    specs: &[impl AsRef<str>],
+    sig: Option<u32>,
+) -> Result<SceneCheck, Error> {
+    use super::problems::MAX_CLAIMS;
+    if specs.is_empty() {
+        return Err(Error::new(
+            "claim",
+            ErrorKind::Invalid(
+                "nothing to check: give --claim NAME=VALUE (with the scene's flags), or a problems .toml file (rodimpact check examples/textbook.toml)".into(),
+            ),
+        ));
+    }
+    if specs.len() > MAX_CLAIMS {
+        return Err(Error::out_of_range(
+            "claim",
+            format!("more than {MAX_CLAIMS} claims (limit)"),
+        ));
+    }
+    let mut budget = Budget::run();
+    let claims = specs
+        .iter()
+        .map(|c| ClaimedAnswer::parse_within(c.as_ref(), &mut budget))
+        .collect::<Result<Vec<_>, _>>()?;
+    check_scene_within(input, &claims, sig, &mut budget)
+}
+
 /// Checks claims about one scene given as typed (numbers may carry units; any formula in a
 /// scene flag or a claim makes the whole check symbolic). `sig` overrides the claims'
 /// significant figures.

@@ -34,6 +34,7 @@ mod exact;
 pub mod expr;
 pub mod formula;
 pub mod impact;
+pub mod impact_run;
 pub mod numeric;
 pub mod problems;
 mod quantity;
@@ -46,7 +47,7 @@ pub mod units;
 pub use answer::{
     AnswerAgreement, CheckedAnswer, Counterexample, RelError, SceneCheck, SceneSummary,
 };
-pub use check::{check_scene, check_scene_within};
+pub use check::{check_claims, check_scene, check_scene_within};
 pub use claim::{ClaimedAnswer, ClaimedValue, read_claimed};
 pub use exact::Exact;
 pub use quantity::Quantity;

@@ -283,6 +283,46 @@ pub struct ProblemCheck {
     pub check: SceneCheck,
 }
 
+/// The text of the problem file at `path` (named `label` in errors), read no further than
+/// [`MAX_FILE_BYTES`] (a huge or endless file is refused without being read into memory);
+/// bytes that are not UTF-8 are named by line.
+///
+/// # Errors
+/// `LABEL: cannot read: ...`, `LABEL: file larger than ... (limit)`, `LABEL: line N: not
+/// valid UTF-8`.
+///
+/// # Examples
+/// ```
+/// use rodimpact::textbook::problems::read_problem_file;
+/// let text = read_problem_file("textbook.toml", "examples/textbook.toml".as_ref())?;
+/// assert!(text.contains("[[problem]]"));
+/// let missing = read_problem_file("none.toml", "no/such/file.toml".as_ref()).unwrap_err();
+/// assert!(missing.to_string().starts_with("none.toml: cannot read: "));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn read_problem_file(label: &str, path: &std::path::Path) -> Result<String, Error> {
+    use std::io::Read;
+    let io = |e: std::io::Error| Error::io(label, "cannot read", e);
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_FILE_BYTES as u64 + 1).read_to_end(&mut bytes))
+        .map_err(io)?;
+    if bytes.len() > MAX_FILE_BYTES {
+        return Err(Error::out_of_range(
+            label,
+            format!("file larger than {MAX_FILE_BYTES} bytes (limit)"),
+        ));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        let good = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+        let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
+        Error::new(
+            label,
+            ErrorKind::Invalid(format!("line {line}: not valid UTF-8")),
+        )
+    })
+}
+
 /// Checks every problem, one at a time (its claims read, decided and dropped before the next
 /// problem's); `sig` (if given) overrides each problem's figures. The work of every formula
 /// of the file is charged to one budget ([`super::expr::MAX_RUN_WORK`]).

@@ -1,0 +1,116 @@
+"""``impact``: any planar impact with bodies and contacts as data (``rodimpact impact``)."""
+
+from __future__ import annotations
+
+import decimal
+import json
+import numbers
+import os
+from typing import Any, Dict, Mapping, Optional, Union
+
+from . import _native
+from ._values import Record
+
+__all__ = ["impact", "Impact"]
+
+
+class Impact(Record):
+    """A planar impact answered, as ``rodimpact impact --format json`` gives it.
+
+    One contact: ``laws``, one record per restitution law (``law``, ``bodies`` with each
+    moving body's ``velocity`` and ``omega`` after, ``impulse``, ``contact_velocity``,
+    ``energy``, ``energy_gain``, ``laws_hold``, ...); several contacts: ``models``. Every
+    number is exact (``Fraction`` or :class:`Surd`). ``law("newton")`` picks one law;
+    ``all_agree`` says whether the file's published answers (``[[claim]]``) all agree;
+    ``str()`` is the CLI's text report and ``to_dict()`` its JSON.
+    """
+
+    __slots__ = ("_agree", "_text")
+
+    def __init__(self, data: Dict[str, Any], agree: bool, text: str) -> None:
+        super().__init__(data)
+        object.__setattr__(self, "_agree", agree)
+        object.__setattr__(self, "_text", text)
+
+    @property
+    def all_agree(self) -> bool:
+        """Whether the scene's published answers all agree (true when it has none)."""
+        return self._agree
+
+    def law(self, name: str) -> Record:
+        """The answer under the law ``name`` (``"newton"``, ``"poisson"``, ``"energetic"``)."""
+        for answer in self._data.get("laws", []):
+            if answer.get("law") == name:
+                return Record(answer)
+        raise KeyError(f"no law {name!r} in this answer")
+
+    def __str__(self) -> str:
+        return self._text
+
+    def __repr__(self) -> str:
+        kind = "laws" if "laws" in self._data else "models"
+        names = [a.get("law") or a.get("model") for a in self._data.get(kind, [])]
+        return f"Impact({kind}: {', '.join(map(str, names))})"
+
+    def _repr_html_(self) -> str:
+        import html
+
+        return f"<pre>{html.escape(self._text)}</pre>"
+
+
+def _plain(value: Any, where: str) -> Any:
+    """The dict's values as the scene file has them: exact numbers as text."""
+    if isinstance(value, Mapping):
+        return {str(k): _plain(v, f"{where}.{k}" if where else str(k)) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v, f"{where}[{i}]") for i, v in enumerate(value)]
+    if isinstance(value, (str, bool)) or value is None:
+        return value
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Rational):
+        return f"{value.numerator}/{value.denominator}"
+    if isinstance(value, decimal.Decimal) and value.is_finite():
+        return str(value)
+    if isinstance(value, numbers.Real):
+        raise ValueError(
+            f"{where}: the float {value!r} is not exact (a binary approximation); "
+            f"pass the number as a string ('{value!r}') or a fractions.Fraction"
+        )
+    raise ValueError(f"{where}: expected a number, a string, a list or a table, got {type(value).__name__}")
+
+
+def impact(
+    scene: Union[str, "os.PathLike[str]", Mapping[str, Any]],
+    *,
+    law: Optional[str] = None,
+    model: Optional[str] = None,
+    digits: Optional[int] = None,
+) -> Impact:
+    """Answers a planar impact exactly, as ``rodimpact impact``.
+
+    ``scene``: the path of a TOML scene file (``examples/impacts/*.toml``), or a dict with the
+    file's structure: ``{"body": [{"name": "rod", "mass": "1", "inertia": "1/3", ...},
+    {"name": "floor", "fixed": True}], "contact": [{"bodies": ["rod", "floor"], "point": [...],
+    "normal": [...], "e": "1"}]}`` (numbers as strings, ints or Fractions; a float is
+    refused). ``law``: ``"newton"``, ``"poisson"``, ``"energetic"`` or ``"all"`` (one
+    contact; default all three); ``model`` for several contacts: ``"simultaneous-newton"``,
+    ``"simultaneous-poisson"``, ``"sequential"``, ``"sequential:2,1"``, ``"pgs:K"`` or
+    ``"all"`` (default). ``digits``: significant digits of the decimals (at least 30).
+    """
+    if digits is not None and (isinstance(digits, bool) or not isinstance(digits, (int, str))):
+        raise ValueError(f"digits: must be a whole number from 1 to 10000, got {digits!r}")
+    text_digits = None if digits is None else str(digits)
+    if isinstance(scene, Mapping):
+        data, agree, text = _native.impact_json(
+            None, json.dumps(_plain(scene, "")), "scene", law, model, text_digits
+        )
+    elif isinstance(scene, (str, os.PathLike)):
+        data, agree, text = _native.impact_json(
+            os.fspath(scene), None, "scene", law, model, text_digits
+        )
+    else:
+        raise ValueError(
+            f"scene: expected a path or a dict, got {type(scene).__name__}"
+        )
+    return Impact(json.loads(data), agree, text)

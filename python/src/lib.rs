@@ -1,0 +1,221 @@
+//! `rodimpact._native`: the Rust side of the Python package.
+//!
+//! Every function takes the scene as `(key, text)` pairs (the keys of
+//! `rodimpact::scene::SCENE_KEYS`, spelt as the command-line flags: `m`, `M`, `from-end`, ...),
+//! calls the same library functions as the command line and returns the JSON text the command
+//! line prints with `--json`, so that Python's `.to_dict()` is the CLI's JSON by construction.
+//! Errors become `ValueError` with the CLI's one-line message (`M: must be > 0, got -1`).
+//! The Python package (`rodimpact/__init__.py`) turns the JSON into Fractions and surds.
+
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use rodimpact::scene::SceneInput;
+use rodimpact::{Error, ErrorKind};
+
+mod audit;
+
+/// The library's error as Python's `ValueError`, with the CLI's message.
+fn value_error(e: Error) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// The scene the `(key, text)` pairs give. An unknown key is refused, naming the keys there are.
+fn scene_input(pairs: &[(String, String)]) -> Result<SceneInput, Error> {
+    let mut input = SceneInput::default();
+    for (key, text) in pairs {
+        let Some(slot) = input.slot(key) else {
+            let known: Vec<&str> = rodimpact::scene::SCENE_KEYS
+                .iter()
+                .map(|k| k.name)
+                .collect();
+            return Err(Error::new(
+                rodimpact::echo::echo(key),
+                ErrorKind::Invalid(format!(
+                    "not a scene input (expected one of {})",
+                    known.join(", ")
+                )),
+            ));
+        };
+        *slot = Some(text.clone());
+    }
+    Ok(input)
+}
+
+fn to_json(value: &serde_json::Value) -> String {
+    serde_json::to_string(value).expect("JSON of strings, numbers and bools")
+}
+
+/// `solve --json [--digits N]`: the JSON text of one scene's whole answer, whether the
+/// conservation laws held (the CLI's exit 0; exit 1 otherwise) and the text report of `solve`
+/// (15 digits).
+#[pyfunction]
+#[pyo3(signature = (pairs, digits=None))]
+fn solve_json(
+    py: Python<'_>,
+    pairs: Vec<(String, String)>,
+    digits: Option<String>,
+) -> PyResult<(String, bool, String)> {
+    py.detach(|| {
+        let scene = scene_input(&pairs)?.build()?;
+        let digits = rodimpact::report::parse_digits(digits.as_deref(), 30)?;
+        let answer = rodimpact::solve::Answer::of(&scene);
+        let json = rodimpact::report::solution_json(&answer, digits);
+        let text = rodimpact::report::solution_text(&answer, 15);
+        Ok::<_, Error>((to_json(&json), answer.laws_hold(), text))
+    })
+    .map_err(value_error)
+}
+
+/// `formula --format json`, `--format latex` and `--format text`: the JSON text of the formulas
+/// with their free symbols and defaults, the LaTeX block and the text report.
+#[pyfunction]
+fn formula_json(
+    py: Python<'_>,
+    pairs: Vec<(String, String)>,
+) -> PyResult<(String, String, String)> {
+    py.detach(|| {
+        let f = rodimpact::textbook::formula::formulas(&scene_input(&pairs)?)?;
+        Ok::<_, Error>((
+            to_json(&rodimpact::report::formula_json(&f)),
+            rodimpact::report::formula_latex(&f),
+            rodimpact::report::formula_text(&f),
+        ))
+    })
+    .map_err(value_error)
+}
+
+/// `check --json` with scene flags and `--claim`s: the JSON text, whether every claim agrees
+/// (the CLI's exit 0), and the text table with its summary line.
+#[pyfunction]
+#[pyo3(signature = (pairs, claims, sig=None))]
+fn check_json(
+    py: Python<'_>,
+    pairs: Vec<(String, String)>,
+    claims: Vec<String>,
+    sig: Option<u32>,
+) -> PyResult<(String, bool, String)> {
+    py.detach(|| {
+        let check = rodimpact::textbook::check_claims(&scene_input(&pairs)?, &claims, sig)?;
+        let text = format!(
+            "{}{}\n",
+            rodimpact::report::check_table(&check),
+            rodimpact::report::check_summary(&check)
+        );
+        Ok::<_, Error>((
+            to_json(&rodimpact::report::check_json(&check)),
+            check.all_agree(),
+            text,
+        ))
+    })
+    .map_err(value_error)
+}
+
+/// `check PROBLEMS.toml --json`: the JSON text, whether every claim agrees, and the text report.
+#[pyfunction]
+#[pyo3(signature = (path, sig=None))]
+fn check_file_json(
+    py: Python<'_>,
+    path: std::path::PathBuf,
+    sig: Option<u32>,
+) -> PyResult<(String, bool, String)> {
+    use rodimpact::textbook::problems::{check_problems, parse_problems, read_problem_file};
+    py.detach(|| {
+        let label = rodimpact::echo::echo_path(&path);
+        let text = read_problem_file(&label, &path)?;
+        let problems = parse_problems(&label, &text)?;
+        let checks = check_problems(&label, &problems, sig)?;
+        Ok::<_, Error>((
+            to_json(&rodimpact::report::problems_json(&checks)),
+            checks.iter().all(|p| p.check.all_agree()),
+            rodimpact::report::problems_text(&checks),
+        ))
+    })
+    .map_err(value_error)
+}
+
+/// `impact FILE --format json`: the scene from a file (`path`) or from the JSON text of a
+/// dict with the file's structure (`scene`, named `label` in errors); the JSON text, whether
+/// the file's claims all agree, and the text report.
+#[pyfunction]
+#[pyo3(signature = (path, scene, label, law=None, model=None, digits=None))]
+#[allow(clippy::too_many_arguments)]
+fn impact_json(
+    py: Python<'_>,
+    path: Option<std::path::PathBuf>,
+    scene: Option<String>,
+    label: String,
+    law: Option<String>,
+    model: Option<String>,
+    digits: Option<String>,
+) -> PyResult<(String, bool, String)> {
+    use rodimpact::solve::impact::Law;
+    use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
+    py.detach(|| {
+        let (value, label) = match (&path, &scene) {
+            (Some(path), _) => {
+                let label = rodimpact::echo::echo_path(path);
+                (read_scene_file(&label, path)?, label)
+            }
+            (None, Some(text)) => {
+                let value: serde_json::Value = serde_json::from_str(text).map_err(|e| {
+                    Error::new(label.clone(), ErrorKind::Invalid(format!("not JSON: {e}")))
+                })?;
+                (value, label)
+            }
+            (None, None) => {
+                return Err(Error::new(label, ErrorKind::Missing));
+            }
+        };
+        let law = match law.as_deref().map(str::trim) {
+            None | Some("all") => None,
+            Some("newton") => Some(Law::Newton),
+            Some("poisson") => Some(Law::Poisson),
+            Some("energetic") => Some(Law::Energetic),
+            Some(other) => {
+                return Err(Error::new(
+                    "law",
+                    ErrorKind::Invalid(format!(
+                        "expected newton, poisson, energetic or all, got '{}'",
+                        rodimpact::echo::echo(other)
+                    )),
+                ));
+            }
+        };
+        let digits_json = rodimpact::report::parse_digits(digits.as_deref(), 30)?;
+        let digits_text = rodimpact::report::parse_digits(digits.as_deref(), 6)?;
+        let run = answer_impact(&value, &label, law, model.as_deref())?;
+        Ok::<_, Error>((
+            to_json(&rodimpact::report::impact_run_json(&run, digits_json)),
+            run.all_agree(),
+            rodimpact::report::impact_run_text(&run, digits_text),
+        ))
+    })
+    .map_err(value_error)
+}
+
+/// The scene keys, in the order a scene is read: `(name, is a batch column, help)`.
+#[pyfunction]
+fn scene_keys() -> Vec<(&'static str, bool, &'static str)> {
+    rodimpact::scene::SCENE_KEYS
+        .iter()
+        .map(|k| (k.name, k.column, k.help))
+        .collect()
+}
+
+/// A Rust panic that reached the binding (a bug: the library never panics on input) as
+/// `RuntimeError`, never an abort of the interpreter.
+fn internal(why: impl std::fmt::Display) -> PyErr {
+    PyRuntimeError::new_err(format!("rodimpact internal error: {why}"))
+}
+
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(solve_json, m)?)?;
+    m.add_function(wrap_pyfunction!(formula_json, m)?)?;
+    m.add_function(wrap_pyfunction!(scene_keys, m)?)?;
+    m.add_function(wrap_pyfunction!(check_json, m)?)?;
+    m.add_function(wrap_pyfunction!(check_file_json, m)?)?;
+    m.add_function(wrap_pyfunction!(impact_json, m)?)?;
+    audit::register(m)?;
+    Ok(())
+}

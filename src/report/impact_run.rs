@@ -1,0 +1,58 @@
+//! A scene of `impact` answered ([`ImpactRun`]) as `rodimpact impact` prints it: the answers
+//! per law or per model, and the file's published answers checked.
+
+use super::{
+    check_json, check_summary, check_table, impact_json, impact_text, models_json, models_text,
+};
+use crate::textbook::impact_run::{ImpactAnswers, ImpactRun};
+use serde_json::Value;
+
+/// The JSON of `impact --format json`: [`impact_json`] for one contact, [`models_json`] for
+/// several, with `claims` ([`check_json`]) when the file has published answers.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::impact_run_json;
+/// use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
+/// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
+/// let json = impact_run_json(&answer_impact(&value, "paper.toml", None, None)?, 30);
+/// assert_eq!(json["laws"].as_array().map(Vec::len), Some(3));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn impact_run_json(run: &ImpactRun, digits: usize) -> Value {
+    let mut json = match &run.answers {
+        ImpactAnswers::Laws(answers) => impact_json(&run.system, answers, digits),
+        ImpactAnswers::Models(outcomes) => models_json(&run.system, outcomes, digits),
+    };
+    if run.has_claims() {
+        json["claims"] = check_json(&run.checked);
+    }
+    json
+}
+
+/// The text report of `impact`: [`impact_text`] or [`models_text`], and the published answers
+/// checked, each under its source's law or model.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::impact_run_text;
+/// use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
+/// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
+/// let text = impact_run_text(&answer_impact(&value, "paper.toml", None, None)?, 6);
+/// assert!(text.contains("newton"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn impact_run_text(run: &ImpactRun, digits: usize) -> String {
+    let (mut text, under) = match &run.answers {
+        ImpactAnswers::Laws(answers) => (impact_text(&run.system, answers, digits), "law"),
+        ImpactAnswers::Models(outcomes) => (models_text(&run.system, outcomes, digits), "model"),
+    };
+    if run.has_claims() {
+        text.push_str(&format!(
+            "\nPublished answers (the file's claims, each under its source's {under})\n{}  {}\n",
+            check_table(&run.checked),
+            check_summary(&run.checked)
+        ));
+    }
+    text
+}
