@@ -165,6 +165,13 @@ impl Error {
         context: impl Into<String>,
         source: std::io::Error,
     ) -> Self {
+        // An operating-system error is told as the system tells it: a wrapper's own context
+        // (tempfile names its random temporary, "at path .../.x.csv.UWHvpdus.tmp") is dropped,
+        // since `context` already names the file the user gave.
+        let source = match source.raw_os_error() {
+            Some(code) => std::io::Error::from_raw_os_error(code),
+            None => source,
+        };
         Error::new(
             field,
             ErrorKind::Io {

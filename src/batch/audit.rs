@@ -26,7 +26,7 @@ pub const STATE_TOLERANCE: (i64, i64) = (1, 100);
 /// ```
 /// use rodimpact::batch::Finding;
 /// assert_eq!(Finding::RestitutionIgnored.name(), "restitution-ignored");
-/// assert_eq!(Finding::ALL.len(), 8);
+/// assert_eq!(Finding::ALL.len(), 10);
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Finding {
@@ -45,13 +45,18 @@ pub enum Finding {
     AngularMomentum,
     /// |omega| exceeds the largest |omega| any impact point on the struck side can give.
     AboveOmegaMax,
-    /// No finding above, but a claim disagrees (or is NaN or infinite).
+    /// The claimed state is the exact one with omega's sign flipped: a sign convention (the
+    /// rod's spin counted clockwise) rather than wrong physics.
+    OmegaSign,
+    /// A claim is not a finite number (NaN, an infinity): the engine's state blew up.
+    NonFinite,
+    /// No finding above, but a claim disagrees.
     Off,
 }
 
 impl Finding {
     /// Every finding, in column order.
-    pub const ALL: [Finding; 8] = [
+    pub const ALL: [Finding; 10] = [
         Finding::EnergyGain,
         Finding::EnergyLoss,
         Finding::RestitutionIgnored,
@@ -59,6 +64,8 @@ impl Finding {
         Finding::Momentum,
         Finding::AngularMomentum,
         Finding::AboveOmegaMax,
+        Finding::OmegaSign,
+        Finding::NonFinite,
         Finding::Off,
     ];
 
@@ -78,6 +85,8 @@ impl Finding {
             Finding::Momentum => "momentum",
             Finding::AngularMomentum => "angular-momentum",
             Finding::AboveOmegaMax => "above-omega-max",
+            Finding::OmegaSign => "omega-sign",
+            Finding::NonFinite => "non-finite",
             Finding::Off => "off",
         }
     }
@@ -175,6 +184,13 @@ pub fn audit(scene: &Scene, exact: &Motion<Q>, claimed: &Motion<Q>) -> Audit {
     if claimed.omega.square() > bound {
         findings.push(Finding::AboveOmegaMax);
     }
+    let flipped = Motion {
+        omega: -exact.omega.clone(),
+        ..exact.clone()
+    };
+    if exact.omega != RBig::ZERO && is_taken_for(&params, &claimed, &flipped, &exact) {
+        findings.push(Finding::OmegaSign);
+    }
     Audit {
         findings,
         energy_change: to_q(&((energy_claimed - energy_exact) / energy_before)),
@@ -265,6 +281,23 @@ mod tests {
             audit(&s, &exact, &twisted).findings,
             [Finding::EnergyLoss, Finding::AngularMomentum]
         );
+    }
+
+    /// An engine that counts the rod's spin clockwise: the paper's exact state (3/5, 2/5, 6/5)
+    /// reported with omega = -1.2. Angular momentum fails, and the sign flip is named.
+    #[test]
+    fn a_flipped_spin_is_named() {
+        let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
+        let exact = motion(q(3, 5), q(2, 5), q(6, 5));
+        let flipped = motion(q(3, 5), q(2, 5), q(-6, 5));
+        assert_eq!(
+            audit(&s, &exact, &flipped).findings,
+            [Finding::AngularMomentum, Finding::OmegaSign]
+        );
+        // A centre hit does not spin: nothing to flip.
+        let centre = Scene::builder(q(1, 1), q(1, 1)).a(q(0, 1)).build().unwrap();
+        let still = motion(q(0, 1), q(1, 1), q(0, 1));
+        assert!(audit(&centre, &still, &still).findings.is_empty());
     }
 
     #[test]

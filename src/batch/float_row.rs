@@ -103,6 +103,7 @@ pub(super) fn float_word_row(
         checks,
         diagnosis: None,
         label: None,
+        expectation: None,
     })
 }
 

@@ -2,10 +2,12 @@
 //! appended to the output) and the cells of a data row, read into a scene and claimed values.
 
 use super::compare::{Agreement, Claimed};
+use super::expected::Expected;
 use super::plan::{Arithmetic, CLAIMS, OBLIQUE_OUTPUTS, Role, STATE, WORD_SCENE, WordPlan};
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::scene::{SCENE_KEYS, Scene, SceneInput, SceneKey};
+use std::sync::Arc;
 
 /// The scene key of the batch column `name`, if it is one.
 fn scene_column(name: &str) -> Option<&'static SceneKey> {
@@ -95,6 +97,8 @@ pub struct Batch {
     pub(super) word_plan: Option<WordPlan>,
     /// `--atol`: a claim also agrees within this many of the scene's own units.
     pub(super) atol: Option<Q>,
+    /// `--expect`: the findings the batch is allowed to have.
+    pub(super) expected: Option<Arc<Expected>>,
     header: String,
 }
 
@@ -189,6 +193,7 @@ impl Batch {
             id_column,
             word_plan,
             atol: None,
+            expected: None,
             header: header.to_string(),
         };
         batch.names_each_column_once()?;
@@ -282,6 +287,38 @@ impl Batch {
         let x = super::compare::unit_fraction("atol", text)?;
         self.atol = Some(x);
         self.word_plan = None;
+        Ok(self)
+    }
+
+    /// The batch with a baseline of known findings (`--expect`): the summary then tells the
+    /// rows whose findings the baseline allows from those with new ones
+    /// ([`Summary::baseline`](super::Summary::baseline)).
+    ///
+    /// # Errors
+    /// `expect: ...` when the header has no `id` column to match the baseline's ids against.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Arithmetic, Batch, Expected};
+    /// let known = Expected::parse("known.csv", "id,finding\nend,no-contact\n")?;
+    /// let b = Batch::new("id,m,M,a,v,V,omega", Arithmetic::Exact)?.with_expected(known.clone())?;
+    /// let row = b.row(1, "end,1,1,1,1,0,0")?;
+    /// assert_eq!(row.expectation.unwrap().unexpected, Vec::<&str>::new());
+    /// let untagged = Batch::new("m,M,v", Arithmetic::Exact)?.with_expected(known);
+    /// assert_eq!(untagged.unwrap_err().to_string(),
+    ///     "expect: the batch has no id column to match the baseline's ids against");
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn with_expected(mut self, expected: Expected) -> Result<Batch, Error> {
+        if self.id_column.is_none() {
+            return Err(Error::new(
+                "expect",
+                ErrorKind::Invalid(
+                    "the batch has no id column to match the baseline's ids against".into(),
+                ),
+            ));
+        }
+        self.expected = Some(Arc::new(expected));
         Ok(self)
     }
 

@@ -18,11 +18,13 @@
 //!
 //! One job per file: the header and the cells of a row (`header.rs`: [`Batch`]), solving a row
 //! and writing its output line (`row.rs`: [`SolvedRow`]), claimed values against computed ones
-//! (`compare.rs`: [`OutputCheck`]), the totals (`summary.rs`: [`Summary`], rendered by
+//! (`compare.rs`: [`OutputCheck`]), the known findings of `--expect` (`expected.rs`:
+//! [`Expected`]), the totals (`summary.rs`: [`Summary`], rendered by
 //! [`crate::report::batch_summary`]) and the chunked, parallel stream (`stream.rs`: [`run`]).
 
 mod audit;
 mod compare;
+mod expected;
 mod float_row;
 mod header;
 mod impacts;
@@ -35,9 +37,10 @@ mod word_row;
 
 pub use audit::{Audit, Finding, LAW_TOLERANCE, STATE_TOLERANCE, audit};
 pub use compare::{Agreement, FLOAT_TOLERANCE, MAX_ULPS};
+pub use expected::{Expected, ExpectedEntry, MAX_EXPECTED_BYTES};
 pub use header::{Batch, read_header, scene_columns};
 pub use impacts::{ImpactAudit, Reference, audit_impact};
-pub use plan::{Arithmetic, Diagnosis, OutputCheck, SolvedRow};
+pub use plan::{Arithmetic, Diagnosis, OutputCheck, RowExpectation, SolvedRow};
 pub use stream::{CHUNK, MAX_LINE, MAX_ROWS, run};
-pub use summary::{FINDING_EXAMPLES, OutputStats, Summary, WRONG_ROWS_SHOWN};
+pub use summary::{Baseline, FINDING_EXAMPLES, OutputStats, Summary, WRONG_ROWS_SHOWN};
 pub use ulps::{FloatFormat, ulp_distance};

@@ -99,9 +99,20 @@ pub struct SolvedRow {
     /// The audit of the claimed state (`None` when the batch audits none: v, V, omega not all
     /// claimed, or the f64 arithmetic).
     pub diagnosis: Option<Diagnosis>,
-    /// What the summary calls the row when its audit found something: its `id` cell when the
-    /// batch has an `id` column, else `row N`.
+    /// What the summary calls the row when its audit found something or a claim is wrong:
+    /// its `id` cell when the batch has an `id` column, else `row N`.
     pub label: Option<String>,
+    /// The row against the baseline, when the batch has one (`--expect`).
+    pub expectation: Option<RowExpectation>,
+}
+
+/// A row against the baseline of `--expect` ([`Expected::check`](super::Expected::check)).
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct RowExpectation {
+    /// The baseline entries (0-based) that allowed its findings.
+    pub used: Vec<usize>,
+    /// Its findings (and `wrong`) that no entry allows.
+    pub unexpected: Vec<&'static str>,
 }
 
 /// The diagnosis of a row: its findings, `ok`, or not audited (a state claim missing).

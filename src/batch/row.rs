@@ -5,7 +5,9 @@ use super::audit::{Finding, audit};
 use super::compare::{Agreement, Claimed, compare};
 use super::float_row::float_word_row;
 use super::header::Batch;
-use super::plan::{Arithmetic, Diagnosis, OutputCheck, STATE, SolvedRow, write_float};
+use super::plan::{
+    Arithmetic, Diagnosis, OutputCheck, RowExpectation, STATE, SolvedRow, write_float,
+};
 use super::word_row::word_row;
 use crate::error::Error;
 use crate::field::Q;
@@ -44,7 +46,7 @@ impl Batch {
                 Arithmetic::F64 => float_word_row(plan, &self.agreement, number, line),
             })
         {
-            return Ok(row);
+            return Ok(self.labelled(row, line));
         }
         let (scene, claimed) = self.cells(number, line)?;
         let mut out = String::with_capacity(2 * line.len() + 64);
@@ -99,16 +101,16 @@ impl Batch {
             _ => None,
         };
         out.push('\n');
-        let found = matches!(&diagnosis, Some(Diagnosis::Findings(f)) if !f.is_empty());
-        let label = found.then(|| self.label(number, line));
-        Ok(SolvedRow {
+        let row = SolvedRow {
             number,
             line: out,
             laws_held,
             checks,
             diagnosis,
-            label,
-        })
+            label: None,
+            expectation: None,
+        };
+        Ok(self.labelled(row, line))
     }
 }
 
@@ -141,6 +143,27 @@ impl Batch {
             checks.push(check);
         }
         checks
+    }
+
+    /// The row, named when the summary lists it (a finding, or a wrong claim), and checked
+    /// against the baseline of `--expect`.
+    fn labelled(&self, mut row: SolvedRow, line: &str) -> SolvedRow {
+        let findings: Vec<&'static str> = match &row.diagnosis {
+            Some(Diagnosis::Findings(f)) => f.iter().map(|f| f.name()).collect(),
+            _ => Vec::new(),
+        };
+        let wrong = row.checks.iter().any(|c| !c.ok);
+        if !findings.is_empty() || wrong {
+            let label = self.label(row.number, line);
+            if let Some(expected) = &self.expected {
+                let (used, unexpected) = expected.check(&label, &findings, wrong);
+                row.expectation = Some(RowExpectation { used, unexpected });
+            }
+            row.label = Some(label);
+        } else if self.expected.is_some() {
+            row.expectation = Some(RowExpectation::default());
+        }
+        row
     }
 
     /// The row's name in the summary: its `id` cell (escaped), or `row N`.
@@ -180,8 +203,11 @@ fn diagnose(
     }
     let [Some(Some(v)), Some(Some(rod_v)), Some(Some(omega))] = [&state[0], &state[1], &state[2]]
     else {
-        // A claim that is not a finite number: no state to audit, and a wrong claim.
-        return ("nan".to_string(), Diagnosis::Findings(vec![Finding::Off]));
+        // A claim that is not a finite number: no state to audit.
+        return (
+            "nan".to_string(),
+            Diagnosis::Findings(vec![Finding::NonFinite]),
+        );
     };
     // The exact state has no finding and no energy change: no audit work for exact claims
     // (the reference batches claim exact values on every row).
@@ -189,10 +215,14 @@ fn diagnose(
         .iter()
         .all(|c| c.rel_error.as_ref().is_some_and(Q::is_zero))
     {
-        let off = checks.iter().any(|c| !c.ok);
+        let finding = if checks.iter().any(|c| c.not_finite) {
+            Some(Finding::NonFinite)
+        } else {
+            checks.iter().any(|c| !c.ok).then_some(Finding::Off)
+        };
         return (
             "0".to_string(),
-            Diagnosis::Findings(if off { vec![Finding::Off] } else { vec![] }),
+            Diagnosis::Findings(finding.into_iter().collect()),
         );
     }
     let claimed = Motion {
@@ -201,6 +231,9 @@ fn diagnose(
         omega: omega.clone(),
     };
     let mut audit = audit(scene, exact, &claimed);
+    if checks.iter().any(|c| c.not_finite) {
+        audit.findings.push(Finding::NonFinite);
+    }
     if audit.findings.is_empty() && checks.iter().any(|c| !c.ok) {
         audit.findings.push(Finding::Off);
     }

@@ -29,13 +29,28 @@ pub struct Summary {
     pub laws_unchecked: usize,
     outputs: [OutputStats; 6],
     /// Audited rows per finding (in [`Finding::ALL`] order), rows found `ok`, rows not audited.
-    findings: [usize; 8],
+    findings: [usize; Finding::ALL.len()],
     audited_ok: usize,
     not_audited: usize,
     findings_rows: usize,
     /// Per finding, the first [`FINDING_EXAMPLES`] distinct row labels, and whether more rows
     /// had it.
-    examples: [(Vec<String>, bool); 8],
+    examples: [(Vec<String>, bool); Finding::ALL.len()],
+    baseline: Option<Baseline>,
+}
+
+/// The batch against its baseline (`--expect`): rows whose findings it allows, rows with new
+/// ones, and the entries used.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Baseline {
+    /// Rows with findings (or wrong claims), every one allowed.
+    pub rows_expected: usize,
+    /// Rows with a finding (or a wrong claim) no entry allows.
+    pub rows_unexpected: usize,
+    /// The first [`WRONG_ROWS_SHOWN`] rows with new findings: label and the findings.
+    pub unexpected: Vec<(String, Vec<&'static str>)>,
+    /// The entries (0-based, in file order) that allowed some row's finding.
+    pub used: std::collections::BTreeSet<usize>,
 }
 
 /// How many rows (by `id`, or number) the summary names per finding.
@@ -47,6 +62,7 @@ pub const FINDING_EXAMPLES: usize = 5;
 pub struct OutputStats {
     compared: usize,
     wrong: usize,
+    not_finite: usize,
     /// `None` before the first claim; `Some(None)` once an infinite error was seen.
     max: Option<Option<Q>>,
     /// The nearest f64 to the largest finite error (0 before one is seen): rounding to
@@ -55,8 +71,9 @@ pub struct OutputStats {
     max_nearest: f64,
     /// Relative errors rounded to 2 significant digits (f64 bits, ordered as the values).
     histogram: BTreeMap<u64, usize>,
-    /// The first [`WRONG_ROWS_SHOWN`] rows with a wrong claim.
-    wrong_rows: Vec<usize>,
+    /// The first [`WRONG_ROWS_SHOWN`] distinct rows (by label) with a wrong claim, and how
+    /// many wrong claims each label had.
+    wrong_rows: Vec<(String, usize)>,
 }
 
 /// How many rows with a wrong claim the summary names, per output.
@@ -94,12 +111,39 @@ impl Summary {
                 }
             }
         }
+        if let Some(expectation) = &row.expectation {
+            let tally = self.baseline.get_or_insert_with(Baseline::default);
+            tally.used.extend(expectation.used.iter().copied());
+            if !expectation.unexpected.is_empty() {
+                tally.rows_unexpected += 1;
+                if tally.unexpected.len() < WRONG_ROWS_SHOWN {
+                    let label = row
+                        .label
+                        .clone()
+                        .unwrap_or_else(|| format!("row {}", row.number));
+                    tally
+                        .unexpected
+                        .push((label, expectation.unexpected.clone()));
+                }
+            } else if !expectation.used.is_empty() {
+                tally.rows_expected += 1;
+            }
+        }
         for v in &row.checks {
             let s = &mut self.outputs[v.output];
             s.compared += 1;
             s.wrong += usize::from(!v.ok);
-            if !v.ok && s.wrong_rows.len() < WRONG_ROWS_SHOWN {
-                s.wrong_rows.push(row.number);
+            s.not_finite += usize::from(v.not_finite);
+            if !v.ok {
+                let label = row
+                    .label
+                    .clone()
+                    .unwrap_or_else(|| format!("row {}", row.number));
+                if let Some(at) = s.wrong_rows.iter().position(|(l, _)| *l == label) {
+                    s.wrong_rows[at].1 += 1;
+                } else if s.wrong_rows.len() < WRONG_ROWS_SHOWN {
+                    s.wrong_rows.push((label, 1));
+                }
             }
             let nearest = v.rel_error.as_ref().map(crate::field::Field::nearest_f64);
             let bigger = match (&s.max, &v.rel_error, nearest) {
@@ -196,6 +240,26 @@ impl Summary {
         self.findings_rows
     }
 
+    /// The batch against its baseline, when it has one (`--expect`).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Arithmetic, Batch, Expected, Summary};
+    /// let known = Expected::parse("known.csv", "id,finding\nend,no-contact\n")?;
+    /// let b = Batch::new("id,m,M,a,v,V,omega", Arithmetic::Exact)?.with_expected(known)?;
+    /// let mut s = Summary::default();
+    /// s.add(&b.row(1, "end,1,1,1,1,0,0")?); // no contact: known
+    /// s.add(&b.row(2, "mid,1,1,1/2,1,0,0")?); // no contact: new
+    /// s.add(&b.row(3, "fine,1,1,1/2,3/11,8/11,12/11")?);
+    /// let tally = s.baseline().unwrap();
+    /// assert_eq!((tally.rows_expected, tally.rows_unexpected), (1, 1));
+    /// assert_eq!(tally.unexpected, [("mid".to_string(), vec!["no-contact"])]);
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn baseline(&self) -> Option<&Baseline> {
+        self.baseline.as_ref()
+    }
+
     /// The statistics of each claimed output, named (`v`, `V`, `omega`, `J`, `energy_before`,
     /// `energy_after`), in that order;
     /// outputs without a claim column have nothing compared.
@@ -225,8 +289,27 @@ impl OutputStats {
         self.wrong
     }
 
-    /// The first [`WRONG_ROWS_SHOWN`] rows with a wrong claim, in input order.
-    pub fn wrong_rows(&self) -> &[usize] {
+    /// Claims that were not a finite number (NaN, an infinity): wrong, with an infinite error.
+    pub fn not_finite(&self) -> usize {
+        self.not_finite
+    }
+
+    /// The first [`WRONG_ROWS_SHOWN`] distinct rows with a wrong claim, in input order: each
+    /// row's label (its `id`, or `row N`) and its wrong claims of this output (an engine log
+    /// may repeat an id over several runs).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Batch, Arithmetic, Summary};
+    /// let b = Batch::new("id,m,M,v", Arithmetic::Exact).unwrap();
+    /// let mut s = Summary::default();
+    /// for (n, line) in ["end,1,1,0.7", "end,1,1,0.8", "mid,1,1,3/5"].iter().enumerate() {
+    ///     s.add(&b.row(n + 1, line).unwrap());
+    /// }
+    /// let (_, v) = s.outputs().next().unwrap();
+    /// assert_eq!(v.wrong_rows(), [("end".to_string(), 2)]);
+    /// ```
+    pub fn wrong_rows(&self) -> &[(String, usize)] {
         &self.wrong_rows
     }
 

@@ -105,5 +105,6 @@ pub(super) fn word_row(
         checks,
         diagnosis: plan.audits.then(|| Diagnosis::Findings(Vec::new())),
         label: None,
+        expectation: None,
     })
 }

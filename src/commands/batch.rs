@@ -4,14 +4,15 @@ use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use rodimpact::batch::{
-    Agreement, Arithmetic, Batch, FloatFormat, Summary, read_header, run, scene_columns,
+    Agreement, Arithmetic, Batch, Expected, FloatFormat, MAX_EXPECTED_BYTES, read_header, run,
+    scene_columns,
 };
 use rodimpact::echo::{echo, echo_path};
-use rodimpact::io::AtomicFile;
-use rodimpact::report::{batch_passed, batch_report};
+use rodimpact::io::{AtomicFile, write_atomic};
+use rodimpact::report::{batch_passed, batch_report, batch_summary_json, expected_report};
 use rodimpact::{Error, ErrorKind};
-use std::io::{BufReader, IsTerminal, Write};
-use std::path::PathBuf;
+use std::io::{BufReader, IsTerminal, Read, Write};
+use std::path::{Path, PathBuf};
 
 #[derive(Args, Debug)]
 pub(crate) struct BatchArgs {
@@ -42,6 +43,13 @@ pub(crate) struct BatchArgs {
     /// <= 1): for quantities that vanish exactly, where an engine returns round-off.
     #[arg(long, value_name = "X")]
     pub(crate) atol: Option<String>,
+    /// Known findings (CSV `id,finding`, `*` in an id for a class of scenes): the batch fails
+    /// only on findings the file does not allow (needs an id column).
+    #[arg(long, value_name = "FILE")]
+    pub(crate) expect: Option<PathBuf>,
+    /// Also write the summary as JSON here (all or nothing), for a CI job.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) summary_json: Option<PathBuf>,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug)]
@@ -82,6 +90,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     };
     let jobs = args.jobs.as_deref().map(parse_jobs).transpose()?;
     let agreement = agreement(args)?;
+    let expected = args.expect.as_deref().map(read_expected).transpose()?;
     let read_error = |why: std::io::Error| {
         Error::io(
             "FILE",
@@ -100,6 +109,10 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     };
     let batch = match &args.atol {
         Some(x) => batch.with_atol(x)?,
+        None => batch,
+    };
+    let batch = match &expected {
+        Some(expected) => batch.with_expected(expected.clone())?,
         None => batch,
     };
 
@@ -150,12 +163,39 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }
-    report(
+    let mut text = batch_report(
         &summary,
         &batch.passed_through(),
         agreement.as_ref(),
         args.atol.as_deref(),
-    )
+    );
+    if let (Some(path), Some(expected)) = (&args.expect, &expected) {
+        text.push_str(&expected_report(&summary, expected, path));
+    }
+    if let Some(path) = &args.summary_json {
+        let json = batch_summary_json(&summary, expected.as_ref());
+        let json = serde_json::to_string_pretty(&json).expect("JSON of numbers and strings");
+        write_atomic("summary-json", path, &format!("{json}\n"))?;
+    }
+    super::print_err(&text);
+    if batch_passed(&summary) {
+        Ok(())
+    } else {
+        Err(Failure::Check)
+    }
+}
+
+/// The baseline of `--expect`.
+fn read_expected(path: &Path) -> Result<Expected, Error> {
+    let name = echo_path(path);
+    let mut text = String::new();
+    std::fs::File::open(path)
+        .and_then(|f| {
+            f.take(MAX_EXPECTED_BYTES as u64 + 1)
+                .read_to_string(&mut text)
+        })
+        .map_err(|why| Error::io("expect", format!("cannot read {name}"), why))?;
+    Expected::parse(&name, &text)
 }
 
 /// The help of the FILE argument: every scene column, the claims, and the rest passed through.
@@ -223,18 +263,4 @@ impl<W: Write> Write for Recorded<W> {
 fn write_header(out: &mut impl Write, batch: &Batch) -> Result<(), Error> {
     out.write_all(batch.output_header().as_bytes())
         .map_err(|why| Error::io("out", "cannot write", why))
-}
-
-fn report(
-    summary: &Summary,
-    passed: &[&str],
-    agreement: Option<&Agreement>,
-    atol: Option<&str>,
-) -> Result<(), Failure> {
-    super::print_err(&batch_report(summary, passed, agreement, atol));
-    if batch_passed(summary) {
-        Ok(())
-    } else {
-        Err(Failure::Check)
-    }
 }

@@ -1,7 +1,7 @@
 //! The summary `rodimpact batch` prints on standard error.
 
 use super::counted;
-use crate::batch::{Finding, OutputStats, Summary};
+use crate::batch::{Baseline, Expected, Finding, OutputStats, Summary};
 use crate::field::decimal;
 
 /// The summary of a batch: rows, laws (or that they were not checked, with the f64
@@ -59,8 +59,12 @@ pub fn batch_summary(summary: &Summary) -> String {
             Some(x) => format!("{x:.1e}"),
             None => "-".to_string(),
         };
+        let not_finite = match stats.not_finite() {
+            0 => String::new(),
+            n => format!(" ({n} not a finite number)"),
+        };
         out.push_str(&format!(
-            "{name}: {}, {} wrong{}, max rel error {max}, median {median}\n",
+            "{name}: {}, {} wrong{}, max rel error {max}{not_finite}, median {median}\n",
             counted(stats.compared(), "claim"),
             stats.wrong(),
             wrong_rows_text(stats),
@@ -85,15 +89,37 @@ pub fn batch_summary(summary: &Summary) -> String {
     out
 }
 
-/// ` (rows 3, 17 and 5 more)`, or nothing when no claim was wrong.
+/// ` (rows 3, 17 and 5 more)` (rows without an `id`), ` (free-end-3 ×3, pivot-1)` (by `id`,
+/// with how many wrong claims a repeated id had), or nothing when no claim was wrong.
 fn wrong_rows_text(stats: &OutputStats) -> String {
-    let rows: Vec<String> = stats.wrong_rows().iter().map(usize::to_string).collect();
-    let more = stats.wrong() - rows.len();
-    match (rows.len(), more) {
-        (0, _) => String::new(),
-        (1, 0) => format!(" (row {})", rows[0]),
-        (_, 0) => format!(" (rows {})", rows.join(", ")),
-        _ => format!(" (rows {} and {more} more)", rows.join(", ")),
+    let listed = stats.wrong_rows();
+    if listed.is_empty() {
+        return String::new();
+    }
+    let more = stats.wrong() - listed.iter().map(|(_, n)| n).sum::<usize>();
+    let numbers: Option<Vec<&str>> = listed
+        .iter()
+        .map(|(label, n)| label.strip_prefix("row ").filter(|_| *n == 1))
+        .collect();
+    let items = match numbers {
+        Some(numbers) if numbers.len() == 1 && more == 0 => format!("row {}", numbers[0]),
+        Some(numbers) => format!("rows {}", numbers.join(", ")),
+        None => listed
+            .iter()
+            .map(|(label, n)| {
+                if *n > 1 {
+                    format!("{label} ×{n}")
+                } else {
+                    label.clone()
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(", "),
+    };
+    if more == 0 {
+        format!(" ({items})")
+    } else {
+        format!(" ({items} and {more} more)")
     }
 }
 
@@ -171,8 +197,8 @@ pub fn batch_report(
     out
 }
 
-/// Whether a batch passed: no wrong claim, every law held, no finding (`rodimpact batch`'s
-/// exit 0).
+/// Whether a batch passed (`rodimpact batch`'s exit 0): every law held, and no wrong claim
+/// and no finding, or, with a baseline (`--expect`), none the baseline does not allow.
 ///
 /// # Examples
 /// ```
@@ -186,5 +212,66 @@ pub fn batch_report(
 /// assert!(!batch_passed(&s));
 /// ```
 pub fn batch_passed(summary: &Summary) -> bool {
-    summary.wrong() == 0 && summary.laws_failed == 0 && summary.rows_with_findings() == 0
+    match summary.baseline() {
+        Some(baseline) => summary.laws_failed == 0 && baseline.rows_unexpected == 0,
+        None => {
+            summary.wrong() == 0 && summary.laws_failed == 0 && summary.rows_with_findings() == 0
+        }
+    }
+}
+
+/// The lines `batch --expect FILE` adds after the summary: how the rows with findings stand
+/// against the baseline `file`, the rows with new findings, and the baseline lines that
+/// matched no row (known differences that are gone).
+///
+/// # Examples
+/// ```
+/// use rodimpact::batch::{Arithmetic, Batch, Expected, Summary};
+/// use rodimpact::report::expected_report;
+/// let known = Expected::parse("known.csv", "id,finding\nend,no-contact\nold,off\n")?;
+/// let b = Batch::new("id,m,M,a,v,V,omega", Arithmetic::Exact)?.with_expected(known.clone())?;
+/// let mut s = Summary::default();
+/// s.add(&b.row(1, "end,1,1,1,1,0,0")?);
+/// s.add(&b.row(2, "mid,1,1,1/2,1,0,0")?);
+/// assert_eq!(expected_report(&s, &known, std::path::Path::new("known.csv")),
+///     "against known.csv: 1 row with known findings only, 1 with new ones: mid (no-contact)\n\
+///      known.csv lines that matched no row: 3 (old,off)\n");
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn expected_report(summary: &Summary, expected: &Expected, file: &std::path::Path) -> String {
+    let file = crate::echo::echo_path(file);
+    let empty = Baseline::default();
+    let tally = summary.baseline().unwrap_or(&empty);
+    let mut out = format!(
+        "against {file}: {} with known findings only, {} with new ones",
+        counted(tally.rows_expected, "row"),
+        tally.rows_unexpected
+    );
+    if !tally.unexpected.is_empty() {
+        let rows: Vec<String> = tally
+            .unexpected
+            .iter()
+            .map(|(label, names)| format!("{label} ({})", names.join(", ")))
+            .collect();
+        let more = tally.rows_unexpected - rows.len();
+        out.push_str(&format!(": {}", rows.join(", ")));
+        if more > 0 {
+            out.push_str(&format!(" and {more} more"));
+        }
+    }
+    out.push('\n');
+    let unseen: Vec<String> = expected
+        .entries
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| !tally.used.contains(k))
+        .map(|(_, e)| format!("{} ({},{})", e.line, e.id, e.finding))
+        .collect();
+    if !unseen.is_empty() {
+        out.push_str(&format!(
+            "{file} lines that matched no row: {}\n",
+            unseen.join(", ")
+        ));
+    }
+    out
 }

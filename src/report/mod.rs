@@ -4,6 +4,7 @@
 
 mod backend;
 mod batch;
+mod batch_json;
 mod certificate;
 mod check;
 mod claims_doc;
@@ -25,7 +26,8 @@ mod stability;
 mod table;
 
 pub use backend::{ERROR_BOUND, backend_values};
-pub use batch::{batch_passed, batch_report, batch_summary};
+pub use batch::{batch_passed, batch_report, batch_summary, expected_report};
+pub use batch_json::batch_summary_json;
 pub use certificate::certificate_markdown;
 pub use check::{
     agreement_json, agreement_key, agreement_label, agreement_line, answer_json, check_json,

@@ -336,7 +336,7 @@ fn an_absolute_floor_accepts_round_off_where_the_exact_value_vanishes() {
         ),
         "{err}"
     );
-    assert!(err.contains("omega: 2 claims, 1 wrong (row 2)"), "{err}");
+    assert!(err.contains("omega: 2 claims, 1 wrong (d)"), "{err}");
     let (code, _, err) = rodimpact(&["batch", path, "--atol", "2"]);
     assert_eq!(code, 2);
     assert_eq!(err, "error: atol: must be a number from 0 to 1, got 2\n");
@@ -357,4 +357,158 @@ fn the_help_lists_every_scene_column() {
     for column in header.split(',').filter(|c| !["id", "class"].contains(c)) {
         assert!(help.contains(column), "{column} missing from batch --help");
     }
+}
+
+/// NEWCOMER m17: the wrong claims are listed by id, a repeated id once with its count; a claim
+/// that is not a finite number is `non-finite` (summary: "not a finite number"); an engine that
+/// counts the spin the other way is told so (`omega-sign`, beside the angular momentum it breaks).
+#[test]
+fn wrong_claims_by_id_a_flipped_spin_and_a_nan() {
+    let dir = scratch("ids");
+    let file = dir.join("log.csv");
+    std::fs::write(
+        &file,
+        "id,m,M,a,v,V,omega,J\nend,1,1,1,0.7,0.3,0.9,\nend,1,1,1,0.8,0.3,0.9,\n\
+         flip,1,1,1/2,3/11,8/11,-12/11,\nnan,1,1,1/2,NaN,8/11,12/11,\nj,1,1,1/2,3/11,8/11,12/11,inf\n",
+    )
+    .unwrap();
+    let (code, out, err) = rodimpact(&["batch", file.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    let diagnoses: Vec<&str> = out
+        .lines()
+        .skip(1)
+        .map(|l| l.rsplit(',').next().unwrap())
+        .collect();
+    assert_eq!(
+        diagnoses,
+        [
+            "energy-loss",
+            "momentum;angular-momentum",
+            "angular-momentum;omega-sign",
+            "non-finite",
+            "non-finite"
+        ]
+    );
+    for line in [
+        "v: 5 claims, 3 wrong (end ×2, nan), max rel error inf (1 not a finite number), median 1.7e-1\n",
+        "omega: 5 claims, 3 wrong (end ×2, flip), max rel error 2.00, median 2.5e-1\n",
+        "J: 1 claim, 1 wrong (j), max rel error inf (1 not a finite number), median inf\n",
+        "  omega-sign: 1 (flip)\n",
+        "  non-finite: 2 (nan, j)\n",
+    ] {
+        assert!(err.contains(line), "{line}{err}");
+    }
+}
+
+/// NEWCOMER m24: a CI job on an engine's log. pymunk 7.3.1's known differences
+/// (`tests/data/engines/pymunk-7.3.1-f64-expected.csv`) let its log pass (exit 0), with the
+/// summary as JSON; the same log with one spin flipped fails (exit 1) and names the new finding;
+/// a baseline line that matches no row is told; bad baselines exit 2 and write nothing.
+#[test]
+fn a_baseline_lets_known_findings_pass_and_fails_new_ones() {
+    let dir = scratch("expect");
+    let log = std::path::PathBuf::from(data_file("engines/pymunk-7.3.1-f64.csv"));
+    let baseline = std::path::PathBuf::from(data_file("engines/pymunk-7.3.1-f64-expected.csv"));
+    let json = dir.join("summary.json");
+    let run = |log: &str, baseline: &str| {
+        rodimpact(&[
+            "batch",
+            log,
+            "--ulps",
+            "16",
+            "--atol",
+            "1e-12",
+            "--expect",
+            baseline,
+            "--summary-json",
+            json.to_str().unwrap(),
+        ])
+    };
+    let (code, _, err) = run(log.to_str().unwrap(), baseline.to_str().unwrap());
+    assert_eq!(code, 0, "{err}");
+    // The baseline's path as the summary shows it (its tail, for a long one).
+    assert!(
+        err.ends_with(
+            "pymunk-7.3.1-f64-expected.csv: 150 rows with known findings only, 0 with new ones\n"
+        ),
+        "{err}"
+    );
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(summary["rows"], 264);
+    assert_eq!(summary["passed"], true);
+    assert_eq!(summary["diagnosis"]["no-contact"]["rows"], 84);
+    assert_eq!(summary["expected"]["rows_unexpected"], 0);
+    assert_eq!(summary["claims"]["omega"]["wrong"], 141);
+
+    // One row's spin flipped, and a stale line in the baseline.
+    let text = std::fs::read_to_string(&log).unwrap();
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let omega = lines[0].split(',').position(|c| c == "omega").unwrap();
+    let row = lines
+        .iter()
+        .position(|l| l.starts_with("free-inside-1,"))
+        .unwrap();
+    let mut cells: Vec<String> = lines[row].split(',').map(str::to_string).collect();
+    cells[omega] = format!("-{}", cells[omega]);
+    lines[row] = cells.join(",");
+    let flipped = dir.join("flipped.csv");
+    std::fs::write(&flipped, lines.join("\n") + "\n").unwrap();
+    let stale = dir.join("stale.csv");
+    std::fs::write(
+        &stale,
+        std::fs::read_to_string(&baseline).unwrap() + "gone-*,energy-gain\n",
+    )
+    .unwrap();
+    let (code, _, err) = run(flipped.to_str().unwrap(), stale.to_str().unwrap());
+    assert_eq!(code, 1);
+    assert!(err.contains(": 150 rows with known findings only, 1 with new ones: free-inside-1 (angular-momentum, omega-sign)\n"), "{err}");
+    assert!(
+        err.ends_with("stale.csv lines that matched no row: 15 (gone-*,energy-gain)\n"),
+        "{err}"
+    );
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(summary["passed"], false);
+    assert_eq!(
+        summary["expected"]["unexpected"],
+        serde_json::json!([{"id": "free-inside-1", "findings": ["angular-momentum", "omega-sign"]}])
+    );
+    assert_eq!(
+        summary["expected"]["unmatched_lines"],
+        serde_json::json!([{"line": 15, "id": "gone-*", "finding": "energy-gain"}])
+    );
+
+    // Bad baselines and a log without ids: exit 2, one line, no summary written.
+    std::fs::remove_file(&json).unwrap();
+    let bad = dir.join("bad.csv");
+    for (text, expected) in [
+        (
+            "id,finding\nend,energy-loose\n",
+            "line 2: unknown finding 'energy-loose'",
+        ),
+        (
+            "id;finding\n",
+            "line 1: the header is 'id;finding', expected 'id,finding'",
+        ),
+    ] {
+        std::fs::write(&bad, text).unwrap();
+        let (code, out, err) = run(log.to_str().unwrap(), bad.to_str().unwrap());
+        assert_eq!((code, out.as_str()), (2, ""), "{err}");
+        assert!(
+            err.starts_with("error: expect: ") && err.contains(expected),
+            "{err}"
+        );
+        assert_eq!(err.lines().count(), 1);
+    }
+    let untagged = dir.join("untagged.csv");
+    std::fs::write(&untagged, "m,M,v\n1,1,1\n").unwrap();
+    let (code, _, err) = run(untagged.to_str().unwrap(), baseline.to_str().unwrap());
+    assert_eq!(code, 2);
+    assert_eq!(
+        err,
+        "error: expect: the batch has no id column to match the baseline's ids against\n"
+    );
+    assert!(!json.exists());
+    std::fs::remove_dir_all(&dir).unwrap();
 }
