@@ -96,7 +96,7 @@ def audit(
     repr: ``1e-9`` is 1/10^9).
 
     Returns the CLI's output rows as a pandas ``DataFrame`` (a pyarrow ``Table`` when pandas is
-    not installed): the input's columns (a DataFrame's own columns and index as they were; a
+    not installed, a list of dicts of text without pyarrow either): the input's columns (a DataFrame's own columns and index as they were; a
     file's as text), then the appended ones: exact values as text (``"3/5"``; ``Fraction(x)``
     reads one), ``laws_held`` and ``*_ok`` as booleans, ``*_rel_error`` and ``energy_change``
     as floats (missing where the CLI writes ``-`` or nothing), ``diagnosis`` as text.
