@@ -45,8 +45,10 @@ __all__ = [
     "Check",
     "Impact",
     "Record",
+    "AuditSummary",
     "Surd",
     "Exact",
+    "exact",
     "SCENE_KEYS",
 ]
 

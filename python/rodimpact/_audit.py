@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 import numbers
 import os
+import struct
 from fractions import Fraction
 from typing import Any, Dict, List, Optional, Union
 
@@ -95,7 +96,7 @@ def audit(
     repr: ``1e-9`` is 1/10^9).
 
     Returns the CLI's output rows as a pandas ``DataFrame`` (a pyarrow ``Table`` when pandas is
-    not installed): the input's columns (a DataFrame's own columns and index as they were; a
+    not installed, a list of dicts of text without pyarrow either): the input's columns (a DataFrame's own columns and index as they were; a
     file's as text), then the appended ones: exact values as text (``"3/5"``; ``Fraction(x)``
     reads one), ``laws_held`` and ``*_ok`` as booleans, ``*_rel_error`` and ``energy_change``
     as floats (missing where the CLI writes ``-`` or nothing), ``diagnosis`` as text.
@@ -183,19 +184,14 @@ def _cell(x: Any) -> Optional[str]:
 
 def _csv_piece(batch: Any) -> bytes:
     """The rows of a record batch as CSV lines (no header, no quoting: the batch reader splits
-    at every comma, so a cell holding one is refused)."""
+    at every comma, so a cell holding one makes its row too long, which the library refuses;
+    :func:`_separators` then names the cell)."""
     pa = _pyarrow()
     pc = pa.compute
     texts = []
     for name, column in zip(batch.schema.names, batch.columns):
         if pa.types.is_dictionary(column.type):
             column = column.dictionary_decode()
-        if not (pa.types.is_string(column.type) or pa.types.is_large_string(column.type)):
-            column = pc.cast(column, pa.large_string())
-        elif column.null_count < len(column) and pc.any(
-            pc.match_substring_regex(column, "[,\\n\\r]")
-        ).as_py():
-            raise ValueError(f"column {name}: a cell holds a comma or a line break")
         texts.append(column.cast(pa.large_string()))
     lines = pc.binary_join_element_wise(
         *texts, pa.scalar(",", pa.large_string()), null_handling="replace", null_replacement=""
@@ -206,16 +202,30 @@ def _csv_piece(batch: Any) -> bytes:
     return _data_of(lines) if len(lines) else b""
 
 
+def _separators(table: Any) -> None:
+    """Raises the ValueError naming the first text cell of ``table`` that holds a comma or a
+    line break (looked for only after the library found a row of the wrong length: a scan of
+    every cell would cost as much as the audit)."""
+    pa = _pyarrow()
+    pc = pa.compute
+    for name, column in zip(table.column_names, table.columns):
+        if pa.types.is_string(column.type) or pa.types.is_large_string(column.type):
+            found = pc.match_substring_regex(column, "[,\\n\\r]")
+            if pc.any(found).as_py():
+                row = pc.index(found, True).as_py() + 1
+                raise ValueError(f"row {row}, column {name}: a cell holds a comma or a line break")
+
+
 def _data_of(strings: Any) -> bytes:
     """The bytes of a string array's values, one after another."""
     pa = _pyarrow()
     strings = strings.cast(pa.large_string()) if strings.type != pa.large_string() else strings
     _, offsets, data = strings.buffers()
-    import struct
-
-    first, = struct.unpack_from("<q", offsets, strings.offset * 8)
-    last, = struct.unpack_from("<q", offsets, (strings.offset + len(strings)) * 8)
-    return data.to_pybytes()[first:last] if data is not None else b""
+    if data is None:
+        return b""
+    (first,) = struct.unpack_from("<q", offsets, strings.offset * 8)
+    (last,) = struct.unpack_from("<q", offsets, (strings.offset + len(strings)) * 8)
+    return data.slice(first, last - first).to_pybytes()
 
 
 _TRUE_FALSE = {"true": True, "false": False}
@@ -267,7 +277,12 @@ def _collect(stream: Any, feed: Any, original: Any) -> Any:
         stream.close()
     while (block := stream.next_block(True)) is not None:
         take(block)
-    text, ok, rows = stream.finish()  # the first bad row's ValueError, after its good rows
+    try:
+        text, ok, rows = stream.finish()  # the first bad row's ValueError, after its good rows
+    except ValueError as error:
+        if feed is not None and "cells, got" in str(error):
+            _separators(feed)
+        raise
     summary = AuditSummary(text, ok, rows, stream.passed_through, stream.agreement)
     if pa is None:
         return _rows_without_pyarrow(names, raw, summary)

@@ -126,7 +126,7 @@ def test_bad_rows_and_options():
         rodimpact.audit(pd.DataFrame({"m": [1], "M": [1]}), backend="f16")
     with pytest.raises(ValueError, match=r"^FILE: cannot read"):
         rodimpact.audit(REPO / "no-such-file.csv")
-    with pytest.raises(ValueError, match="holds a comma"):
+    with pytest.raises(ValueError, match=r"^row 1, column m: a cell holds a comma or a line break$"):
         rodimpact.audit(pd.DataFrame({"m": ["1,5"], "M": ["1"]}))
 
 
@@ -159,3 +159,12 @@ def test_summary_is_the_clis_stderr_with_atol(cli):
     out = rodimpact.audit(REPO / name, rtol="1e-6", atol=1e-12)  # a float tolerance: its repr
     assert str(out.attrs["summary"]) == err
     assert (code == 0) == out.attrs["summary"].ok
+
+
+def test_without_pyarrow_rows_are_dicts(monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "pyarrow", None)
+    rows = rodimpact.audit(DATA / "bench-textbook.csv")
+    assert len(rows) == 10_000
+    assert rows[0]["omega_ok"] == "true" and rows[0]["diagnosis"] == "ok"

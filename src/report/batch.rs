@@ -123,37 +123,6 @@ fn wrong_rows_text(stats: &OutputStats) -> String {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::batch::{Arithmetic, Batch};
-
-    #[test]
-    fn a_zero_value_with_a_nonzero_claim_is_infinitely_wrong() {
-        let b = Batch::new("m,M,a,omega", Arithmetic::Exact).unwrap();
-        let row = b.row(1, "1,1,0,1/1000").unwrap();
-        assert!(row.line.ends_with(",false,inf\n"), "{}", row.line);
-        let mut s = Summary::default();
-        s.add(&row);
-        assert!(batch_summary(&s).contains("omega: 1 claim, 1 wrong (row 1), max rel error inf"));
-    }
-
-    #[test]
-    fn more_wrong_rows_than_shown_are_counted() {
-        let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
-        let mut s = Summary::default();
-        for n in 1..=13 {
-            s.add(&b.row(n, "1,1,1").unwrap());
-        }
-        assert!(
-            batch_summary(&s)
-                .contains("v: 13 claims, 13 wrong (rows 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 and 3 more)"),
-            "{}",
-            batch_summary(&s)
-        );
-    }
-}
-
 /// Everything `rodimpact batch` prints on standard error after the rows: the columns passed
 /// through, the agreement rule (`claims agree ...`), the `atol` floor, then [`batch_summary`].
 ///
@@ -274,4 +243,35 @@ pub fn expected_report(summary: &Summary, expected: &Expected, file: &std::path:
         ));
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::batch::{Arithmetic, Batch};
+
+    #[test]
+    fn a_zero_value_with_a_nonzero_claim_is_infinitely_wrong() {
+        let b = Batch::new("m,M,a,omega", Arithmetic::Exact).unwrap();
+        let row = b.row(1, "1,1,0,1/1000").unwrap();
+        assert!(row.line.ends_with(",false,inf\n"), "{}", row.line);
+        let mut s = Summary::default();
+        s.add(&row);
+        assert!(batch_summary(&s).contains("omega: 1 claim, 1 wrong (row 1), max rel error inf"));
+    }
+
+    #[test]
+    fn more_wrong_rows_than_shown_are_counted() {
+        let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
+        let mut s = Summary::default();
+        for n in 1..=13 {
+            s.add(&b.row(n, "1,1,1").unwrap());
+        }
+        assert!(
+            batch_summary(&s)
+                .contains("v: 13 claims, 13 wrong (rows 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 and 3 more)"),
+            "{}",
+            batch_summary(&s)
+        );
+    }
 }

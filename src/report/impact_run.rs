@@ -39,7 +39,7 @@ pub fn impact_run_json(run: &ImpactRun, digits: usize) -> Value {
 /// use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
 /// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
 /// let text = impact_run_text(&answer_impact(&value, "paper.toml", None, None)?, 6);
-/// assert!(text.contains("newton"));
+/// assert!(text.contains("Newton (kinematic") && text.contains("omega = -12/11"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn impact_run_text(run: &ImpactRun, digits: usize) -> String {
