@@ -399,7 +399,7 @@ mod tests {
         assert!(row.checks.iter().all(|c| !c.ok && c.not_finite));
         assert!(
             row.line
-                .ends_with(",false,nan,false,nan,false,nan,nan,off\n"),
+                .ends_with(",false,nan,false,nan,false,nan,nan,non-finite\n"),
             "{}",
             row.line
         );

@@ -321,7 +321,8 @@ fn mujoco_compliant_contact_is_never_exact() {
 /// Regression (issue 15): an engine log with a NaN in one row stopped the whole batch with
 /// exit 2 ("row 2, column v: ..."), and its tag columns were refused before that ("unknown
 /// column 'engine'"). A NaN or infinite claim is now a wrong claim in its own row: the rows
-/// after it are still audited, and the batch ends with exit 1.
+/// after it are still audited, and the batch ends with exit 1; its diagnosis says so
+/// (`non-finite`).
 #[test]
 fn a_nan_from_the_engine_is_a_wrong_claim_and_the_stream_goes_on() {
     let path = crate::common::scratch("nan").join("nan.csv");
@@ -341,10 +342,10 @@ fn a_nan_from_the_engine_is_a_wrong_claim_and_the_stream_goes_on() {
         .skip(1)
         .map(|l| l.rsplit(',').next().unwrap())
         .collect();
-    assert_eq!(diagnoses, ["ok", "off", "off", "no-contact"]);
-    assert!(stderr.contains("  off: 2 (b, c)\n"), "{stderr}");
+    assert_eq!(diagnoses, ["ok", "non-finite", "non-finite", "no-contact"]);
+    assert!(stderr.contains("  non-finite: 2 (b, c)\n"), "{stderr}");
     assert!(
-        stderr.contains("v: 4 claims, 3 wrong (rows 2, 3, 4)"),
+        stderr.contains("v: 4 claims, 3 wrong (b, c, d), max rel error inf (2 not a finite number)"),
         "{stderr}"
     );
     std::fs::remove_dir_all(path.parent().expect("in its scratch directory")).unwrap();
