@@ -200,8 +200,10 @@ pub fn normal_params<F: Field>(p: &Params<F>, o: &ObliqueParams<F>) -> Params<F>
     }
 }
 
-/// Solves an oblique impact by the linear route for the normal problem. `given` decides stick
-/// or slide where the field cannot (rational functions); a field with signs decides itself.
+/// Solves an oblique impact by the linear route for the normal problem. `given` takes the
+/// contact as stick or slide whatever Coulomb's law decides (a symbolic scene's stick and
+/// slide cases, a worked answer's mistaken contact); `None` lets the law decide, where the
+/// field can (a field with signs always can).
 ///
 /// # Errors
 /// [`Refusal::Singular`] or [`Refusal::Undecided`].
@@ -216,6 +218,9 @@ pub fn normal_params<F: Field>(p: &Params<F>, o: &ObliqueParams<F>) -> Params<F>
 /// let out = solve(&s.params::<Q>(), &s.oblique().unwrap().params(), None).unwrap();
 /// assert_eq!(out.contact, Some(ContactMode::Slide { forward: true }));
 /// assert_eq!(out.tangential_impulse, q(1, 4)); // mu J, J = 1
+/// // Taken as sticking: the slip 1 stopped by k_t = 1/m + 1/M = 2, Jt = 1/2.
+/// let stuck = solve(&s.params::<Q>(), &s.oblique().unwrap().params(), Some(ContactMode::Stick)).unwrap();
+/// assert_eq!(stuck.tangential_impulse, q(1, 2));
 /// ```
 pub fn solve<F: Field>(
     p: &Params<F>,
@@ -230,7 +235,7 @@ pub fn solve<F: Field>(
 /// paper's scene [`normal_params`], from any route) into the oblique outcome.
 ///
 /// # Errors
-/// [`Refusal::Undecided`] when stick or slide cannot be decided and `given` is `None`;
+/// [`Refusal::Undecided`] when `given` is `None` and the field cannot decide stick or slide;
 /// [`Refusal::Singular`] for a zero mass.
 ///
 /// # Examples
@@ -271,8 +276,8 @@ pub fn complete<F: Field>(
         None
     } else {
         Some(
-            decide(&slip, &(o.mu.clone() * &impulse * &k_t))
-                .or(given)
+            given
+                .or_else(|| decide(&slip, &(o.mu.clone() * &impulse * &k_t)))
                 .ok_or(Refusal::Undecided)?,
         )
     };

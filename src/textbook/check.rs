@@ -9,6 +9,7 @@ use super::claim::{ClaimedAnswer, ClaimedValue};
 use super::exact::Exact;
 use super::expr::{Budget, Radical};
 use super::formula::{OnRod, on_rod};
+use super::mistakes;
 use super::numeric::decide;
 use super::quantity::Quantity;
 use super::sigfig;
@@ -156,23 +157,41 @@ fn check_numeric(
             None => claim.quantity.motion_value(&params, &out)?,
             Some(o) => claim.quantity.oblique_value(&params, o)?,
         };
-        let exact = match value {
-            Some(x) => Exact::Rational(x),
-            None => {
-                let Some(opt) = optimum(&scene) else {
-                    return Err(Error::new(
-                        format!("claim {}", claim.quantity.name()),
-                        ErrorKind::Invalid(
-                            "the rod turns before the impact, so the approach speed depends on a: the paper's optimum does not apply".into(),
-                        ),
-                    ));
+        if let Some(x) = &value {
+            // A quantity of the impact: exact in Q, and a disagreement tried against the
+            // usual mistakes.
+            let mut answer = decide(claim, &Exact::Rational(x.clone()), sig);
+            if !answer.agrees() {
+                let mistake = match (&oblique, scene.oblique()) {
+                    (Some(solved_oblique), Some(given)) => mistakes::oblique_mistakes(
+                        input,
+                        &params,
+                        &given.params(),
+                        solved_oblique,
+                        claim,
+                        x,
+                        sig,
+                    ),
+                    _ => mistakes::motion_mistakes(input, &params, claim, x, sig, solved),
                 };
-                if claim.quantity == Quantity::AStar {
-                    Exact::Surd(QSqrt::sqrt_of(&opt.squared))
-                } else {
-                    Exact::Surd(opt.omega_max.clone())
-                }
+                answer.notes.extend(mistake);
             }
+            answers.push(answer);
+            continue;
+        }
+        // a* and omega_max: the optimum, in Q(sqrt d).
+        let Some(opt) = optimum(&scene) else {
+            return Err(Error::new(
+                format!("claim {}", claim.quantity.name()),
+                ErrorKind::Invalid(
+                    "the rod turns before the impact, so the approach speed depends on a: the paper's optimum does not apply".into(),
+                ),
+            ));
+        };
+        let exact = if claim.quantity == Quantity::AStar {
+            Exact::Surd(QSqrt::sqrt_of(&opt.squared))
+        } else {
+            Exact::Surd(opt.omega_max.clone())
         };
         answers.push(decide(claim, &exact, sig));
     }

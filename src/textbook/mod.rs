@@ -35,6 +35,7 @@ pub mod expr;
 pub mod formula;
 pub mod impact;
 pub mod impact_run;
+mod mistakes;
 pub mod numeric;
 pub mod problems;
 mod quantity;

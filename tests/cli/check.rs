@@ -608,3 +608,103 @@ fn authors_mistakes_in_writing_are_named_with_their_fix() {
             .contains("a free symbol a for formulas")
     );
 }
+
+/// NEWCOMER capability 3: a disagreeing claim is tried against the usual mistakes, each solved
+/// exactly, and the note names the one that reproduces it. By hand, for m = M = l = v0 = 1,
+/// a = 1/2, e = 1 (I = 1/3): omega = (1 + e) m v0 a/(I (1 + m/M) + m a^2) = 12/11; with e = 0
+/// it is 6/11 = 0.5455; with I about the end (4/3) it is 1/(8/3 + 1/4) = 12/35 = 0.343; twice
+/// 12/11 is 2.18. The author's 50 g taken as 50 kg (l = 0.4, a = 0.3, I = 0.016, e = 1/2,
+/// v0 = 4): 1.5*50*4*0.3/(0.016 (1 + 50/0.3) + 50*0.09) = 12.53. An oblique impact that slides
+/// (mu = 1/5) claimed with its sticking answer vt = 2/3 (the stick impulse does not depend on
+/// mu: `solve ... --mu 10` sticks with vt = 2/3).
+#[test]
+fn the_usual_mistake_that_reproduces_a_claim_is_named() {
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &[
+                "--m",
+                "1",
+                "--M",
+                "1",
+                "--a",
+                "1/2",
+                "--claim",
+                "omega=0.5455",
+            ],
+            "note: a usual mistake reproduces the claim: e = 0 (a sticking impact) instead of e = 1; or a factor 1/2 (the exact value times 1/2)",
+        ),
+        (
+            &[
+                "--m",
+                "1",
+                "--M",
+                "1",
+                "--a",
+                "1/2",
+                "--claim",
+                "omega=0.343",
+            ],
+            "note: a usual mistake reproduces the claim: the moment of inertia about the rod's end (I + M l^2) instead of its centre",
+        ),
+        (
+            &[
+                "--m",
+                "1",
+                "--M",
+                "1",
+                "--a",
+                "1/2",
+                "--claim",
+                "omega=2.18",
+            ],
+            "note: a usual mistake reproduces the claim: a factor 2 (the exact value times 2)",
+        ),
+        (
+            &[
+                "--m",
+                "50g",
+                "--M",
+                "0.30kg",
+                "--length",
+                "80cm",
+                "--from-end",
+                "10cm",
+                "--v0",
+                "4.0m/s",
+                "--e",
+                "1/2",
+                "--claim",
+                "omega=12.53",
+            ],
+            "note: a usual mistake reproduces the claim: the projectile's mass in grams read as kilograms",
+        ),
+        (
+            &[
+                "--m", "1", "--M", "2", "--a", "1/2", "--v0", "3", "--v0t", "2", "--mu", "1/5",
+                "--claim", "vt=0.667",
+            ],
+            "note: a usual mistake reproduces the claim: sticking taken for sliding",
+        ),
+    ];
+    for (flags, note) in cases {
+        let mut args = vec!["check"];
+        args.extend_from_slice(flags);
+        let (code, stdout, stderr) = rodimpact(&args);
+        assert_eq!(code, 1, "{args:?}: {stderr}");
+        assert!(stdout.contains("DISAGREES"), "{stdout}");
+        assert!(stdout.contains(note), "{args:?}:\n{stdout}");
+    }
+    // A claim no usual mistake gives has no such note.
+    let (_, stdout, _) = rodimpact(&[
+        "check",
+        "--m",
+        "1",
+        "--M",
+        "1",
+        "--a",
+        "1/2",
+        "--claim",
+        "omega=0.9",
+    ]);
+    assert!(!stdout.contains("usual mistake"), "{stdout}");
+}

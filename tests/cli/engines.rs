@@ -345,7 +345,8 @@ fn a_nan_from_the_engine_is_a_wrong_claim_and_the_stream_goes_on() {
     assert_eq!(diagnoses, ["ok", "non-finite", "non-finite", "no-contact"]);
     assert!(stderr.contains("  non-finite: 2 (b, c)\n"), "{stderr}");
     assert!(
-        stderr.contains("v: 4 claims, 3 wrong (b, c, d), max rel error inf (2 not a finite number)"),
+        stderr
+            .contains("v: 4 claims, 3 wrong (b, c, d), max rel error inf (2 not a finite number)"),
         "{stderr}"
     );
     std::fs::remove_dir_all(path.parent().expect("in its scratch directory")).unwrap();
