@@ -164,9 +164,9 @@ impl Claimed {
             Some(word) => Ok(Claimed::Word(word)),
             None => {
                 let dimension = match claim {
-                    0 | 1 => Dimension::Speed,
-                    2 => Dimension::AngularSpeed,
-                    3 => Dimension::Impulse,
+                    0 | 1 | 6 | 7 => Dimension::Speed,
+                    2 | 8 => Dimension::AngularSpeed,
+                    3 | 9 => Dimension::Impulse,
                     _ => Dimension::Energy,
                 };
                 parse_si(CLAIMS[claim], cell, dimension).map(Claimed::Exact)

@@ -3,7 +3,9 @@
 
 use super::compare::{Agreement, Claimed};
 use super::expected::Expected;
-use super::plan::{Arithmetic, CLAIMS, OBLIQUE_OUTPUTS, Role, STATE, WORD_SCENE, WordPlan};
+use super::plan::{
+    Arithmetic, CLAIMS, OBLIQUE_CLAIMS, OBLIQUE_OUTPUTS, Role, STATE, WORD_SCENE, WordPlan,
+};
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::scene::{SCENE_KEYS, Scene, SceneInput, SceneKey};
@@ -171,15 +173,25 @@ impl Batch {
             Column::Scene(k) if k.oblique => Some(k.name),
             _ => None,
         });
+        if oblique.is_none()
+            && let Some(k) =
+                (OBLIQUE_CLAIMS..CLAIMS.len()).find(|k| columns.contains(&Column::Claim(*k)))
+        {
+            return Err(bad(format!(
+                "claim column '{}' is an oblique scene's output: it needs a column among v0t, mu, radius, spin, rod-v, rod-vt, rod-omega",
+                CLAIMS[k]
+            )));
+        }
         if let Some(name) = oblique {
             if arithmetic == Arithmetic::F64 {
                 return Err(bad(format!(
                     "column '{name}': oblique and frictional scenes are solved exactly; the f64 arithmetic takes the paper's scene only"
                 )));
             }
-            if let Some(k) = (STATE..CLAIMS.len()).find(|k| columns.contains(&Column::Claim(*k))) {
+            if let Some(k) = (STATE..OBLIQUE_CLAIMS).find(|k| columns.contains(&Column::Claim(*k)))
+            {
                 return Err(bad(format!(
-                    "claim column '{}' with column '{name}': J and the energies are checked for the paper's scene only (claim v, V, omega)",
+                    "claim column '{}' with column '{name}': J and the energies are checked for the paper's scene only (claim v, V, omega, vt, Vt, spin_after, tangential_impulse)",
                     CLAIMS[k]
                 )));
             }
@@ -385,7 +397,7 @@ impl Batch {
     /// ```
     pub fn output_header(&self) -> String {
         let mut out = self.header.clone();
-        for (k, name) in CLAIMS.iter().enumerate() {
+        for (k, name) in CLAIMS[..OBLIQUE_CLAIMS].iter().enumerate() {
             if k >= STATE && !self.claims.contains(&k) {
                 continue;
             }
@@ -397,12 +409,16 @@ impl Batch {
             out.push_str(&format!(",{name}{suffix}"));
         }
         if self.is_oblique() {
-            for name in OBLIQUE_OUTPUTS {
-                // The disc's spin after the impact, beside the input column `spin` (before).
+            for (k, name) in (OBLIQUE_CLAIMS..).zip(OBLIQUE_OUTPUTS) {
+                // A claimed output is `<claim>_exact`; the disc's spin after the impact is
+                // `spin_after` beside the input column `spin` (before).
                 let clash =
                     scene_column(name).is_some_and(|k| self.columns.contains(&Column::Scene(k)));
-                let suffix = if clash { "_after" } else { "" };
-                out.push_str(&format!(",{name}{suffix}"));
+                if self.claims.contains(&k) {
+                    out.push_str(&format!(",{}_exact", CLAIMS[k]));
+                } else {
+                    out.push_str(&format!(",{name}{}", if clash { "_after" } else { "" }));
+                }
             }
         }
         if self.arithmetic == Arithmetic::Exact {
@@ -447,7 +463,7 @@ impl Batch {
         &self,
         number: usize,
         line: &str,
-    ) -> Result<(Scene, [Option<Claimed>; 6]), Error> {
+    ) -> Result<(Scene, [Option<Claimed>; CLAIMS.len()]), Error> {
         let line = line.trim_end_matches(['\n', '\r']);
         let cells: Vec<&str> = line.split(',').map(str::trim).collect();
         if cells.len() != self.columns.len() {
@@ -462,7 +478,7 @@ impl Batch {
         }
         let at = |e: Error| Error::new(format!("row {number}, column {}", e.field), e.kind);
         let mut input = SceneInput::default();
-        let mut claimed: [Option<Claimed>; 6] = Default::default();
+        let mut claimed: [Option<Claimed>; CLAIMS.len()] = Default::default();
         for (&column, &cell) in self.columns.iter().zip(&cells) {
             match column {
                 Column::Scene(k) if ["m", "M"].contains(&k.name) || !cell.is_empty() => {

@@ -8,7 +8,8 @@
 //! in f64), `laws_held` (`-` in f64, which decides no law), and for each claim
 //! `<name>_ok, <name>_rel_error`. A header with an oblique column (`v0t, mu, radius, spin,
 //! rod-v, rod-vt, rod-omega`, exact arithmetic only) also gets `vt, Vt, spin,
-//! tangential_impulse, contact` after `omega`.
+//! tangential_impulse, contact` after `omega`, and may claim `vt, Vt, spin_after,
+//! tangential_impulse` (each then appended as `<claim>_exact`) instead of J and the energies.
 //!
 //! Limits: at most [`MAX_ROWS`] rows and [`MAX_LINE`] bytes per line; each number at most
 //! [`number::MAX_DIGITS`](crate::number::MAX_DIGITS) digits. Memory stays flat in the number of

@@ -47,8 +47,23 @@ impl Arithmetic {
 /// The columns an oblique header appends after `omega` (docs/conventions.md).
 pub(super) const OBLIQUE_OUTPUTS: [&str; 5] = ["vt", "Vt", "spin", "tangential_impulse", "contact"];
 /// The claim columns, in the order of their checks: the state after the impact, the impulse on
-/// the rod, the energies.
-pub(super) const CLAIMS: [&str; 6] = ["v", "V", "omega", "J", "energy_before", "energy_after"];
+/// the rod, the energies, then an oblique scene's outputs along the rod.
+pub(super) const CLAIMS: [&str; 10] = [
+    "v",
+    "V",
+    "omega",
+    "J",
+    "energy_before",
+    "energy_after",
+    "vt",
+    "Vt",
+    "spin_after",
+    "tangential_impulse",
+];
+/// The first claim of an oblique scene's own outputs (`vt, Vt, spin_after,
+/// tangential_impulse`, as `check` names them; `spin_after` because `spin` is the disc's spin
+/// before); J and the energies are claimed for the paper's scene only.
+pub(super) const OBLIQUE_CLAIMS: usize = 6;
 /// The claims that make up the state after the impact (audited when all three are claimed).
 pub(super) const STATE: usize = 3;
 

@@ -6,7 +6,7 @@ use super::compare::{Agreement, Claimed, compare};
 use super::float_row::float_word_row;
 use super::header::Batch;
 use super::plan::{
-    Arithmetic, Diagnosis, OutputCheck, RowExpectation, STATE, SolvedRow, write_float,
+    Arithmetic, CLAIMS, Diagnosis, OutputCheck, RowExpectation, STATE, SolvedRow, write_float,
 };
 use super::word_row::word_row;
 use crate::error::Error;
@@ -54,13 +54,9 @@ impl Batch {
         let extra = |k: usize| self.claims.contains(&k);
         let (values, laws_held, exact_state) = match self.arithmetic {
             Arithmetic::Exact if self.is_oblique() => {
-                let ([v, rod_v, omega], laws_hold) = oblique_values(&scene, &mut out);
+                let (values, laws_hold) = oblique_values(&scene, &mut out);
                 out.push_str(if laws_hold { ",true" } else { ",false" });
-                (
-                    [Some(v), Some(rod_v), Some(omega), None, None, None],
-                    Some(laws_hold),
-                    None,
-                )
+                (values, Some(laws_hold), None)
             }
             Arithmetic::Exact => {
                 let solved = solve::with::<Q>(&scene, self.arithmetic.route())
@@ -122,8 +118,8 @@ impl Batch {
         &self,
         out: &mut String,
         scene: &Scene,
-        claimed: &[Option<Claimed>; 6],
-        values: &[Option<Q>; 6],
+        claimed: &[Option<Claimed>; CLAIMS.len()],
+        values: &[Option<Q>; CLAIMS.len()],
     ) -> Vec<OutputCheck> {
         let ulps_column = matches!(self.agreement, Agreement::Ulps(..));
         let mut checks = Vec::new();
@@ -175,14 +171,19 @@ impl Batch {
     }
 }
 
-/// The scene's own unit of the claimed output `k` (v, V, omega, J, energy before, after):
-/// |v0|, |v0|, |v0|/l, m |v0|, m v0^2/2, m v0^2/2.
+/// The scene's own unit of the claimed output `k` (v, V, omega, J, energy before, after, vt,
+/// Vt, the disc's spin after, Jt): |v0| for the speeds, |v0|/l for omega, |v0|/r for the
+/// disc's spin, m |v0| for the impulses, m v0^2/2 for the energies.
 fn scene_unit(k: usize, scene: &Scene) -> Q {
     let speed = scene.v0().abs();
     match k {
-        0 | 1 => speed,
+        0 | 1 | 6 | 7 => speed,
         2 => speed / scene.half_length(),
-        3 => scene.m() * &speed,
+        8 => match scene.oblique().and_then(|o| o.disc.as_ref()) {
+            Some(disc) => speed / &disc.radius,
+            None => speed / scene.half_length(),
+        },
+        3 | 9 => scene.m() * &speed,
         _ => scene.m() * &speed * &speed / Q::from_integer(2.into()),
     }
 }
@@ -191,7 +192,7 @@ fn scene_unit(k: usize, scene: &Scene) -> Q {
 fn diagnose(
     scene: &Scene,
     exact: &Motion<Q>,
-    claimed: &[Option<Claimed>; 6],
+    claimed: &[Option<Claimed>; CLAIMS.len()],
     checks: &[OutputCheck],
 ) -> (String, Diagnosis) {
     let state: Vec<Option<Option<Q>>> = claimed[..STATE]
@@ -251,7 +252,7 @@ fn exact_values(
     scene: &Scene,
     after: &Motion<Q>,
     wanted: impl Fn(usize) -> bool,
-) -> [Option<Q>; 6] {
+) -> [Option<Q>; CLAIMS.len()] {
     // The exact parameters (the rod's inertia among them) only when an energy is claimed:
     // building them cost more than the whole solve. Over dashu's rationals, whose GCD is
     // cheaper than num-bigint's on an engine's 17-digit decimals.
@@ -270,14 +271,19 @@ fn exact_values(
             .then(|| energy(&Motion::before(scene.v0().clone())))
             .flatten(),
         wanted(5).then(|| energy(after)).flatten(),
+        None,
+        None,
+        None,
+        None,
     ]
 }
 
 /// Writes v, V, omega and the oblique columns (`vt, Vt, spin, tangential_impulse, contact`;
 /// `spin` empty for a point projectile, `contact` empty without friction) of an oblique
-/// header's row, solved exactly by [`Impact::on_both_axes`]; returns v, V, omega and whether every law
-/// held.
-fn oblique_values(scene: &Scene, out: &mut String) -> ([Q; 3], bool) {
+/// header's row, solved exactly by [`Impact::on_both_axes`]; returns the values a claim may be
+/// compared with (v, V, omega, vt, Vt, the spin after and Jt, in [`CLAIMS`] order) and whether
+/// every law held.
+fn oblique_values(scene: &Scene, out: &mut String) -> ([Option<Q>; CLAIMS.len()], bool) {
     let impact = Impact::on_both_axes(scene);
     let done = impact.oblique.as_ref().expect("answered on both axes");
     let after = &done.after;
@@ -299,9 +305,16 @@ fn oblique_values(scene: &Scene, out: &mut String) -> ([Q; 3], bool) {
     out.push(',');
     out.push_str(done.contact.map_or("", |c| c.as_str()));
     let exact = [
-        after.v.clone(),
-        after.rod.v.clone(),
-        after.rod.omega.clone(),
+        Some(after.v.clone()),
+        Some(after.rod.v.clone()),
+        Some(after.rod.omega.clone()),
+        None,
+        None,
+        None,
+        Some(after.vt.clone()),
+        Some(after.rod.vt.clone()),
+        after.spin.clone(),
+        Some(done.tangential_impulse.clone()),
     ];
     (exact, impact.laws_hold)
 }
@@ -315,7 +328,7 @@ fn float_values(
     route: Route,
     wanted: impl Fn(usize) -> bool,
     compared: bool,
-) -> ([Option<Q>; 6], [Option<String>; 6]) {
+) -> ([Option<Q>; CLAIMS.len()], [Option<String>; CLAIMS.len()]) {
     let m = match solve::with::<f64>(scene, route) {
         Ok(solved) => solved.after,
         Err(e) if e.why == Why::Singular => Motion {
@@ -340,6 +353,10 @@ fn float_values(
         wanted(5)
             .then(|| with(&|p| kinetic_energy(p, &m)))
             .flatten(),
+        None,
+        None,
+        None,
+        None,
     ];
     let exact = xs.map(|x| {
         x.filter(|_| compared)

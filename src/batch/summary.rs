@@ -27,7 +27,7 @@ pub struct Summary {
     pub laws_failed: usize,
     /// Rows whose laws were not checked (f64 arithmetic).
     pub laws_unchecked: usize,
-    outputs: [OutputStats; 6],
+    outputs: [OutputStats; CLAIMS.len()],
     /// Audited rows per finding (in [`Finding::ALL`] order), rows found `ok`, rows not audited.
     findings: [usize; Finding::ALL.len()],
     audited_ok: usize,

@@ -201,7 +201,7 @@ fn read_expected(path: &Path) -> Result<Expected, Error> {
 /// The help of the FILE argument: every scene column, the claims, and the rest passed through.
 fn file_help() -> String {
     format!(
-        "CSV file: header among {} (m and M required), claimed v,V,omega,J,energy_before,energy_after, and any other columns (passed through)",
+        "CSV file: header among {} (m and M required), claimed v,V,omega,J,energy_before,energy_after (an oblique scene: v,V,omega,vt,Vt,spin_after,tangential_impulse), and any other columns (passed through)",
         scene_columns()
     )
 }

@@ -512,3 +512,51 @@ fn a_baseline_lets_known_findings_pass_and_fails_new_ones() {
     assert!(!json.exists());
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// NEWCOMER M2: an oblique log that claims `vt, Vt, tangential_impulse` in `check`'s words has
+/// them checked (before, they passed through, and the output named them twice). By hand, m = M
+/// = l = 1, a = 1/2, v0 = v0t = 3, mu = 1/10: the normal problem gives v = 9/11, so J = 24/11; the
+/// contact slides (the stick impulse 3/2 is more than mu J), Jt = mu J = 12/55, vt = 3 - 12/55 =
+/// 153/55, Vt = 12/55. A wrong Jt = 0.5 fails (exit 1); a claim along the rod needs an oblique
+/// column.
+#[test]
+fn friction_claims_are_checked() {
+    let dir = scratch("friction-claims");
+    let file = dir.join("oblique.csv");
+    std::fs::write(
+        &file,
+        "id,m,M,l,a,v0,v0t,mu,v,V,omega,vt,Vt,tangential_impulse\n\
+         right,1,1,1,1/2,3,3,1/10,9/11,24/11,36/11,153/55,12/55,12/55\n\
+         wrong,1,1,1,1/2,3,3,1/10,9/11,24/11,36/11,153/55,12/55,0.5\n",
+    )
+    .unwrap();
+    let (code, out, err) = rodimpact(&["batch", file.to_str().unwrap()]);
+    assert_eq!(code, 1, "{err}");
+    let header: Vec<&str> = out.lines().next().unwrap().split(',').collect();
+    let mut names = header.clone();
+    names.sort_unstable();
+    names.dedup();
+    assert_eq!(names.len(), header.len(), "a name twice: {header:?}");
+    assert!(header.contains(&"tangential_impulse_exact") && header.contains(&"vt_ok"));
+    assert!(
+        out.contains(
+            "\nwrong,1,1,1,1/2,3,3,1/10,9/11,24/11,36/11,153/55,12/55,0.5,9/11,24/11,36/11,153/55,12/55,,12/55,slide,true,"
+        ),
+        "{out}"
+    );
+    assert!(out.contains(",false,1.29\n"), "{out}");
+    assert!(
+        err.contains("tangential_impulse: 2 claims, 1 wrong (wrong), max rel error 1.29"),
+        "{err}"
+    );
+    assert!(err.contains("vt: 2 claims, 0 wrong"), "{err}");
+    let paper = dir.join("paper.csv");
+    std::fs::write(&paper, "m,M,vt\n1,1,1\n").unwrap();
+    let (code, _, err) = rodimpact(&["batch", paper.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert_eq!(
+        err,
+        "error: header: claim column 'vt' is an oblique scene's output: it needs a column among v0t, mu, radius, spin, rod-v, rod-vt, rod-omega\n"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
