@@ -72,14 +72,26 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   check(lost !== null, `e = 1/2 shows the energy lost (${lost})`);
   await page.screenshot({ path: `${shots}/${name}-explore-heavy-rod.png`, fullPage: true });
 
-  // A bad entry: named, marked invalid, no script error.
+  // A bad entry: named, marked invalid, no script error; the last scene's answer is cleared,
+  // not left standing beside the request to correct the field (NEWCOMER m8).
   await type("#ratio", "-2");
   check((await text("#ratio-error")).includes("M/m: must be > 0") && (await page.$eval("#ratio", (e) => e.getAttribute("aria-invalid"))) === "true", "M/m = -2 is refused with its reason");
-  // a* typed where it is beyond the end (M = 3m): refused with the reason, not clamped.
+  const stale = await page.evaluate(() => ["curve", "threshold", "values-body"].map((id) => document.getElementById(id).childElementCount));
+  check(stale.every((n) => n === 0) && (await text("#summary")).startsWith("Correct the highlighted field"), `while a field is wrong no chart or value of the last scene is shown (${stale})`);
+  // a* typed where it is beyond the end (M = 3m): struck at the end, with a note (m8).
   await type("#ratio", "3");
   await type("#a", "a*");
-  check((await text("#a-error")).includes("a* = 2√3/3 ≈ 1.155 lies beyond the end of the rod"), `a = a* at M = 3m is refused: "${await text("#a-error")}"`);
+  check((await text("#a-error")) === "" && (await text("#a-note")).includes("a* = 2√3/3 ≈ 1.155 lies beyond the end of the rod: struck at the end, a/l = 1"), `a = a* at M = 3m is struck at the end, with a note: "${await text("#a-note")}"`);
+  check((await cell("ω")) === unicode(solved.omega.exact) && (await text("#curve-caption")).includes("2√3/3"), "and the answer and the curve are the end's, for M = 3m");
   await type("#a", "1");
+  check((await text("#a-note")) === "", "the note goes with a*");
+
+  // The threshold M = 2m, struck at the end: a* = l is the end, the best point, and nothing
+  // is "faster than at the end" (m7); no coefficient 1 is written ("1 l").
+  await type("#ratio", "2");
+  const threshold = await text("#summary");
+  check(threshold.startsWith("a* = l from the centre: the end is the best point (threshold M = 2 m), ω_max = 3/4 v0/l ≈ 0.7500 v0/l.") && !threshold.includes("faster") && !/(^|[^\d.])1 l/.test(threshold), `at M = 2m: "${threshold}"`);
+  check((await cell("a*")) === "l", `the table: a* = ${await cell("a*")}`);
   // A number past the page's limit (30 digits) is refused; one at it is solved.
   await type("#ratio", "1".repeat(31));
   check((await text("#ratio-error")) === "M/m: more than 30 digits", `31 digits refused: "${await text("#ratio-error")}"`);
@@ -90,6 +102,12 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   await type("#e", "0");
   check((await text("#second")).startsWith("At e = 0 the puck sticks to the rod: they turn together at ω = 3/5 v0/l"), `e = 0 at a = l: "${(await text("#second")).slice(0, 80)}…"`);
   await type("#e", "1");
+
+  // Sweeping M/m after "Hit at a*" (m8): the field keeps a*, struck at the end once a* is beyond it.
+  await page.click("#hit-a-star");
+  await type("#ratio", "3");
+  check((await page.$eval("#a", (e) => e.value)) === "a*" && (await text("#summary")).includes("beyond the end") && (await text("#a-note")).includes("struck at the end"), `Hit at a*, then M/m = 3: "${(await text("#summary")).slice(0, 60)}…"`);
+  await type("#ratio", "1");
 
   // X19: struck at a* exactly, elastic: v = V = m v0/(M + m) = 1/2, omega = v0/a* = √6/2, and
   // the rod meets the puck again half a turn later, t = π a*/v0.
@@ -149,5 +167,9 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   await page.click("#hit-a-star");
   check((await page.$eval("#a", (e) => e.value)) === "p+a*" && (await cell("ω/ωmax")) === "1", `pivoted: "Hit at a*" gives p+a*, ω/ω_max = ${await cell("ω/ωmax")}`);
   await page.screenshot({ path: `${shots}/${name}-explore-pivoted-dumbbell.png`, fullPage: true });
+  // The pivot's threshold: M = 2m puts a* = sqrt(2 M l^2/m) = 2 l from the pivot, the far end.
+  await type("#ratio", "2");
+  const pivotThreshold = await text("#summary");
+  check(pivotThreshold.startsWith("a* = 2 l from the pivot: the end is the best point (the threshold)") && !pivotThreshold.includes("faster"), `pivot at −l, M = 2m: "${pivotThreshold.slice(0, 90)}…"`);
 
 });

@@ -19,10 +19,15 @@
     pivot: { check: (q) => (q.abs().cmp(Q.of(1)) <= 0 ? null : "must lie on the rod, −1 ≤ p/l ≤ 1"), name: "p/l" },
   };
 
+  // What the a field's a* came to when it lies beyond the end (shown under the field).
+  let impactNote = "";
+
   /**
    * The impact point typed in the a field: a fraction or decimal, or the scene's fastest-spin
    * point, exactly: `a*` or `-a*` (from the centre), and on a pivot `p+a*` or `p-a*` (a* is then
-   * measured from the pivot; `a*` alone means `p+a*`). Returns a Q or a Quad.
+   * measured from the pivot; `a*` alone means `p+a*`). Returns a Q or a Quad. An a* beyond the
+   * end of the rod is struck at that end instead (the fastest spin on that side), with a note:
+   * sweeping M/m after "Hit at a*" keeps the field's a* and follows it.
    */
   function parseImpact(text, M, k, p) {
     const star = /^\s*(p\s*)?([+\-−]?)\s*a\s*\*\s*$/i.exec(text);
@@ -31,8 +36,10 @@
     const root = Quad.sqrt(Physics.aStarSquared(M, k, p));
     const signed = star[2] && star[2] !== "+" ? root.neg() : root;
     const at = p === null ? signed : signed.add(p);
-    if (at.abs().cmp(Q.of(1)) > 0) throw new Error(`${text.trim()} = ${at.pretty()} ≈ ${at.decimal(4)} lies beyond the end of the rod`);
-    return at;
+    if (at.abs().cmp(Q.of(1)) <= 0) return at;
+    const end = Q.of(at.sign());
+    impactNote = `${text.trim()} = ${at.pretty()} ≈ ${at.decimal(4)} lies beyond the end of the rod: struck at the end, a/l = ${end.pretty()}, where the spin is fastest on that side.`;
+    return end;
   }
 
   /** The field's exact value (read with `parser`), or null with its error shown. */
@@ -68,7 +75,9 @@
     if (!M || !e || !rg || !p) return null;
     const k = Physics.inertiaFactor(kindName, rg);
     const pivot = pivoted ? p : null;
+    impactNote = "";
     const a = read("a", (text) => parseImpact(text, M, k, pivot));
+    $("a-note").textContent = impactNote;
     if (!a) return null;
     return { M, a, e, k, kind: kindName, rg, pivot };
   }
@@ -151,12 +160,25 @@
   let current = null;
 
   const unicode = (q) => q.pretty();
+  /** `x unit` for people, a coefficient ±1 left out: `l`, `−l`, `2 l`, `√6/3 l`, `1/2 v0/l`. */
+  const times = (x, unit) => {
+    const shown = x.pretty();
+    return shown === "1" ? unit : shown === "−1" ? `−${unit}` : `${shown} ${unit}`;
+  };
+  /** ` ≈ decimal` after an exact value, left out when the value is a whole number. */
+  const approx = (x, unit = "") => {
+    const q = Quad.from(x);
+    return q.isRational() && q.rational().d === 1n ? "" : ` ≈ ${q.decimal(4)}${unit}`;
+  };
   // A row of the table; an answer row says only "hidden" while the student has not guessed
   // (to a screen reader too).
   const row = (name, exact, decimal, meaning, answerOnly = false) => {
     const withheld = answerOnly && hidden();
     return `<tr${answerOnly ? ' class="answer-only"' : ""}><th scope="row">${name}</th><td class="exact">${withheld ? "hidden" : exact}</td><td class="decimal">${withheld ? "" : decimal}</td><td>${meaning}</td></tr>`;
   };
+
+  /** a* is exactly the end of the struck arm: the threshold, where the end is the best point. */
+  const atEnd = (out) => out.A.cmp(out.arm.mul(out.arm)) === 0;
 
   function thresholdText(s, out) {
     if (s.pivot) return "";
@@ -165,10 +187,20 @@
     return `a* is on the rod exactly when M/m ≤ ${unicode(t)}`;
   }
 
+  /** No scene (a field to correct): the answer of the last one is cleared, not left standing. */
+  function clearAnswer() {
+    current = null;
+    setPlaying(false);
+    $("summary").textContent = "Correct the highlighted field to see the answer.";
+    for (const id of ["curve", "threshold"]) $(id).replaceChildren();
+    for (const id of ["curve-caption", "threshold-caption", "values-body", "second", "bars"]) $(id).replaceChildren();
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+  }
+
   function update() {
     const s = scene();
     if (!s) {
-      $("summary").textContent = "Correct the highlighted field to see the answer.";
+      clearAnswer();
       return;
     }
     const out = Physics.solve(s);
@@ -194,21 +226,27 @@
       const lost = out.lost.div(out.K0);
       rows += row("Δ<i>K</i>/<i>K</i><sub>0</sub>", unicode(lost), lost.decimal(), "fraction of the kinetic energy lost");
     }
-    rows += row("<i>a</i>*", `${out.aStar.pretty()} <i>l</i>`, out.aStar.decimal(), `the fastest-spin point, ${from}${out.inside || hidden() ? "" : " (beyond the end)"}`, true);
-    rows += row("<i>ω</i><sub>max</sub>", out.omegaMax.pretty(), out.omegaMax.decimal(), `fastest spin over the rod (× ${v0l})${hidden() ? "" : out.inside ? ", at a*" : ", at the end"}`, true);
+    const where = hidden() ? "" : atEnd(out) ? " (the end)" : out.inside ? "" : " (beyond the end)";
+    rows += row("<i>a</i>*", times(out.aStar, "<i>l</i>"), out.aStar.decimal(), `the fastest-spin point, ${from}${where}`, true);
+    rows += row("<i>ω</i><sub>max</sub>", out.omegaMax.pretty(), out.omegaMax.decimal(), `fastest spin over the rod (× ${v0l})${hidden() ? "" : out.inside && !atEnd(out) ? ", at a*" : ", at the end"}`, true);
     rows += row("<i>ω</i>/<i>ω</i><sub>max</sub>", ratioToMax.pretty(), ratioToMax.decimal(), "this hit against the best one", true);
     $("values-body").innerHTML = rows;
 
-    const aStar = `a* = ${out.aStar.pretty()} l ≈ ${out.aStar.decimal(4)} l`;
+    const aStar = `a* = ${times(out.aStar, "l")}${approx(out.aStar, " l")}`;
+    const omegaMax = `ω_max = ${times(out.omegaMax, "v0/l")}${approx(out.omegaMax, " v0/l")}`;
     let summary;
     if (hidden()) {
-      summary = `M/m = ${unicode(s.M)}, a/l = ${unicode(s.a)}, e = ${unicode(s.e)}: ω = ${unicode(out.omega)} v0/l ≈ ${out.omega.decimal(4)}. Where is the fastest spin? Make your guess, then reveal.`;
+      summary = `M/m = ${unicode(s.M)}, a/l = ${unicode(s.a)}, e = ${unicode(s.e)}: ω = ${times(out.omega, "v0/l")}${approx(out.omega)}. Where is the fastest spin? Make your guess, then reveal.`;
+    } else if (atEnd(out)) {
+      // The threshold itself: a* is the end, which is then the best point (and no better one).
+      const threshold = s.pivot ? "the threshold" : `threshold M = ${times(out.threshold, "m")}`;
+      summary = `${aStar} ${from}: the end is the best point (${threshold}), ${omegaMax}.`;
     } else if (out.inside) {
-      summary = `${aStar} ${from} lies on the rod: hitting there spins it fastest, ω_max = ${out.omegaMax.pretty()} v0/l ≈ ${out.omegaMax.decimal(4)} v0/l, faster than at the end (${unicode(out.omegaEnd)} v0/l).`;
+      summary = `${aStar} ${from} lies on the rod: hitting there spins it fastest, ${omegaMax}, faster than at the end (${times(out.omegaEnd, "v0/l")}).`;
     } else {
-      summary = `${aStar} ${from} lies beyond the end: the end is the best place after all, ω_max = ω(end) = ${out.omegaMax.pretty()} v0/l.`;
+      summary = `${aStar} ${from} lies beyond the end: the end is the best place after all, ω_max = ω(end) = ${times(out.omegaMax, "v0/l")}.`;
     }
-    if (!s.pivot && !hidden()) summary += ` (${thresholdText(s, out)}.)`;
+    if (!s.pivot && !hidden() && !atEnd(out)) summary += ` (${thresholdText(s, out)}.)`;
     if (guess && !hidden()) {
       const lever = s.pivot ? guess.sub(s.pivot) : guess;
       const atGuess = Q.of(1).add(s.e).mul(lever.abs()).div(out.A.add(lever.mul(lever)));
@@ -229,7 +267,7 @@
     let second;
     if (motion.second === null) {
       second = motion.stuck
-        ? `At e = 0 the puck sticks to the rod: they turn together at ω = ${unicode(out.omega)} v0/l about ${s.pivot ? "the pivot" : "their common centre of mass, which moves on at m v0/(M + m)"}.`
+        ? `At e = 0 the puck sticks to the rod: they turn together at ω = ${times(out.omega, "v0/l")} about ${s.pivot ? "the pivot" : "their common centre of mass, which moves on at m v0/(M + m)"}.`
         : "The puck and the rod do not meet again (within 12 l/v0).";
     } else {
       second = `Second impact: the rod comes round and meets the puck again at t ≈ ${motion.second.toFixed(3)} l/v0`;
@@ -327,8 +365,8 @@
       svg.append(el("text", { x: X(g) + (nearRight ? -4 : 4), y: Y(ys[1]) + 30, class: "note guess-label", "text-anchor": nearRight ? "end" : "start" }, "my guess"));
     }
     const caption = hidden()
-      ? `|ω| against the impact point; the dot is the chosen point, ω = ${unicode(out.omega)} v0/l.`
-      : `|ω| against the impact point: the dot is the chosen point (ω = ${unicode(out.omega)} v0/l); a* = ${out.aStar.pretty()} l ≈ ${out.aStar.decimal(4)} l ${out.inside ? "is on the rod" : "is beyond the end (dashed)"}; ω_max = ${out.omegaMax.pretty()} v0/l.`;
+      ? `|ω| against the impact point; the dot is the chosen point, ω = ${times(out.omega, "v0/l")}.`
+      : `|ω| against the impact point: the dot is the chosen point (ω = ${times(out.omega, "v0/l")}); a* = ${times(out.aStar, "l")}${approx(out.aStar, " l")} ${atEnd(out) ? "is the end" : out.inside ? "is on the rod" : "is beyond the end (dashed)"}; ω_max = ${times(out.omegaMax, "v0/l")}.`;
     $("curve-caption").textContent = caption;
   }
 
