@@ -1,11 +1,12 @@
 // The interactive page of `rodimpact explore` in headless Chromium, driven as a student would:
 // by keyboard and by typing into the fields.
-// Usage: node explore.mjs PAGE.html SCREENSHOT_DIR SOLVE_JSON
+// Usage: node explore.mjs PAGE.html SCREENSHOT_DIR SOLVE_JSON PRESET.html
 //   SOLVE_JSON: `rodimpact solve --m 1 --M 3 --a 1 --e 1/2 --json` (the page must agree).
+//   PRESET.html: `rodimpact explore --M 1/2 --a 1 --rod dumbbell --no-predict --frame lab`.
 import { readFileSync } from "node:fs";
 import { inBrowser } from "./common.mjs";
 
-const [file, shots, solveJson] = process.argv.slice(2);
+const [file, shots, solveJson, presetFile] = process.argv.slice(2);
 const solved = JSON.parse(readFileSync(solveJson, "utf8"));
 
 await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, url, check, name }) => {
@@ -172,4 +173,45 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   const pivotThreshold = await text("#summary");
   check(pivotThreshold.startsWith("a* = 2 l from the pivot: the end is the best point (the threshold)") && !pivotThreshold.includes("faster"), `pivot at −l, M = 2m: "${pivotThreshold.slice(0, 90)}…"`);
 
+});
+
+// The page as a teacher hands it out: preset by explore's flags, and by the link after `#`.
+await inBrowser("explore preset", presetFile, { width: 1200, height: 1000 }, async ({ page, url, check, name }) => {
+  const text = (id) => page.$eval(id, (e) => e.textContent);
+  const state = () => page.evaluate(() => ({
+    M: document.getElementById("ratio").value,
+    a: document.getElementById("a").value,
+    rod: document.querySelector("input[name=kind]:checked").value,
+    pivot: document.getElementById("pivoted").checked ? document.getElementById("pivot").value : null,
+    predict: document.getElementById("predict").checked,
+    frame: document.querySelector("input[name=frame]:checked").value,
+    frameDisabled: document.querySelector("input[name=frame]").disabled,
+    hidden: document.body.classList.contains("answer-hidden"),
+  }));
+  // --M 1/2 --a 1 --rod dumbbell --no-predict --frame lab: a*^2 = (M + m) l^2/m = 3/2 l^2, beyond the end.
+  const opened = await state();
+  check(JSON.stringify(opened) === JSON.stringify({ M: "1/2", a: "1", rod: "dumbbell", pivot: null, predict: false, frame: "lab", frameDisabled: false, hidden: false }), `explore's flags preset the page: ${JSON.stringify(opened)}`);
+  check((await text("#summary")).startsWith("a* = √6/2 l ≈ 1.225 l from the centre lies beyond the end"), `and it shows that scene: "${(await text("#summary")).slice(0, 70)}…"`);
+  check((await text("#scene-link")).endsWith("#M=1/2&a=1&e=1&rod=dumbbell&predict=0&frame=lab"), `the scene's link: ${await text("#scene-link")}`);
+  // The two views differ once the rod has moved: from the table it has drifted on.
+  const picture = async (frame) => page.evaluate((frame) => {
+    document.querySelector(`input[name=frame][value=${frame}]`).click();
+    const time = document.getElementById("time");
+    time.value = time.max;
+    time.dispatchEvent(new Event("input"));
+    return document.getElementById("stage").toDataURL();
+  }, frame);
+  const lab = await picture("lab");
+  await page.evaluate(() => document.getElementById("motion").scrollIntoView());
+  await page.screenshot({ path: `${shots}/${name}-explore-lab-frame.png` });
+  check(lab !== (await picture("centre-of-mass")), "the lab frame and the centre-of-mass frame draw different pictures");
+  // A link overrides the preset; a* may be given (p+a* written p%2Ba*).
+  await page.goto(`${url}#M=2&pivot=-1&a=p%2Ba*&predict=1`, { waitUntil: "load" });
+  const linked = await state();
+  check(linked.M === "2" && linked.pivot === "-1" && linked.a === "p+a*" && linked.predict && linked.hidden && linked.frameDisabled, `the link #M=2&pivot=-1&a=p%2Ba*&predict=1 presets the page: ${JSON.stringify(linked)}`);
+  // A bad link: the number refused by its field, the unknown keys and words named.
+  await page.goto(`${url.split("#")[0]}#M=-1&colour=red&rod=steel`, { waitUntil: "load" });
+  check((await text("#ratio-error")) === "M/m: must be > 0", `#M=-1: "${await text("#ratio-error")}"`);
+  const linkError = await text("#link-error");
+  check(linkError.startsWith("The link's colour, rod=steel is not understood"), `unknown keys named: "${linkError.slice(0, 60)}…"`);
 });

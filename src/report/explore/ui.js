@@ -94,17 +94,23 @@
     const step = 10 ** (magnitude - 1); // two significant digits
     return tidy(Math.round(x / step) * step, Math.max(0, 1 - magnitude));
   };
+  // Each slider follows its field (when the field is typed in, or preset by a link).
+  const followers = [];
   const link = (slider, field, toText, toSlider) => {
-    $(slider).addEventListener("input", () => {
-      $(field).value = toText($(slider).value);
-      update();
-    });
-    $(field).addEventListener("input", () => {
+    const follow = () => {
       try {
         $(slider).value = toSlider(parse($(field).value).toNumber());
       } catch (_) {
         // An unfinished entry: the slider stays where it was.
       }
+    };
+    followers.push(follow);
+    $(slider).addEventListener("input", () => {
+      $(field).value = toText($(slider).value);
+      update();
+    });
+    $(field).addEventListener("input", () => {
+      follow();
       update();
     });
   };
@@ -128,10 +134,14 @@
   let revealed = !$("predict").checked;
   let guess = null;
   const hidden = () => $("predict").checked && !revealed;
-  $("predict").addEventListener("change", () => {
-    revealed = !$("predict").checked;
+  function setPredict(on) {
+    $("predict").checked = on;
+    revealed = !on;
     guess = null;
-    $("guess-box").hidden = !$("predict").checked;
+    $("guess-box").hidden = !on;
+  }
+  $("predict").addEventListener("change", () => {
+    setPredict($("predict").checked);
     update();
   });
   $("guess").addEventListener("input", () => {
@@ -153,6 +163,73 @@
     const { out, scene: s } = current;
     const sign = out.side > 0 ? "" : "-";
     $("a").value = !out.inside ? `${sign}1` : s.pivot ? `p${sign || "+"}a*` : `${sign}a*`;
+    update();
+  });
+
+  // ---- the view of the motion ------------------------------------------------------------
+  const frames = document.querySelectorAll("input[name=frame]");
+  const frame = () => document.querySelector("input[name=frame]:checked").value;
+  for (const r of frames) r.addEventListener("change", update);
+
+  // ---- a link that opens the page on a scene (explore.html#M=1/2&a=1) --------------------------
+  // The keys are those of `rodimpact explore`'s preset (the flags, in the page's units): the
+  // values go into the controls as if typed, so a bad number is refused by its field.
+  const LINK_KEYS = ["M", "a", "e", "rod", "pivot", "predict", "frame"];
+  const check = (name) => {
+    const radio = document.querySelector(`input[name=${name}]:checked`);
+    return radio ? radio.value : null;
+  };
+  function applyLink(text) {
+    const wrong = [];
+    for (const part of text.split("&").filter((p) => p !== "")) {
+      const at = part.indexOf("=");
+      const key = at < 0 ? part : part.slice(0, at);
+      let value = "";
+      try {
+        value = decodeURIComponent(at < 0 ? "" : part.slice(at + 1));
+      } catch (_) {
+        wrong.push(part);
+        continue;
+      }
+      const pick = (name, choice) => {
+        const radio = [...document.querySelectorAll(`input[name=${name}]`)].find((r) => r.value === choice);
+        if (radio) radio.checked = true;
+        return Boolean(radio);
+      };
+      if (key === "M") $("ratio").value = value;
+      else if (key === "a" || key === "e") $(key).value = value;
+      else if (key === "rod") {
+        const rg = /^rg=(.*)$/.exec(value);
+        if (rg) $("rg").value = rg[1];
+        if (!pick("kind", rg ? "gyration" : value === "gyration" ? "" : value)) wrong.push(`rod=${value}`);
+      } else if (key === "pivot") {
+        $("pivoted").checked = value !== "none";
+        if (value !== "none") $("pivot").value = value;
+      } else if (key === "predict" && (value === "1" || value === "0")) setPredict(value === "1");
+      else if (key === "frame" && pick("frame", value)) continue;
+      else wrong.push(LINK_KEYS.includes(key) ? `${key}=${value}` : key);
+    }
+    $("rg").disabled = check("kind") !== "gyration";
+    $("pivot").disabled = !$("pivoted").checked;
+    for (const follow of followers) follow();
+    $("link-error").textContent = wrong.length
+      ? `The link's ${wrong.join(", ")} is not understood: it takes M, a, e, rod (uniform, dumbbell, rg=…), pivot (a position or none), predict (1 or 0) and frame (centre-of-mass or lab).`
+      : "";
+    $("link-error").hidden = !wrong.length;
+  }
+  /** The link to the scene on the controls (what the fields hold, as typed). */
+  function sceneLink() {
+    const value = (text) => encodeURIComponent(text.trim()).replace(/%2F/g, "/");
+    const parts = [`M=${value($("ratio").value)}`, `a=${value($("a").value)}`, `e=${value($("e").value)}`];
+    const kindName = check("kind");
+    parts.push(`rod=${kindName === "gyration" ? `rg=${value($("rg").value)}` : kindName}`);
+    if ($("pivoted").checked) parts.push(`pivot=${value($("pivot").value)}`);
+    if (!$("predict").checked) parts.push("predict=0");
+    if (frame() === "lab") parts.push("frame=lab");
+    return parts.join("&");
+  }
+  window.addEventListener("hashchange", () => {
+    applyLink(location.hash.slice(1));
     update();
   });
 
@@ -205,6 +282,12 @@
     }
     const out = Physics.solve(s);
     current = { scene: s, out };
+    const link = sceneLink();
+    const file = decodeURIComponent(location.pathname.split("/").pop() || "") || "explore.html";
+    $("scene-link").href = `#${link}`;
+    $("scene-link").textContent = `${file}#${link}`;
+    for (const r of frames) r.disabled = Boolean(s.pivot);
+    $("frame-note").textContent = s.pivot ? "On a pivot the rod is seen from the table." : "";
     $("a-slider").value = s.a.toNumber();
     $("hit-a-star").hidden = hidden();
     $("guess").min = s.pivot ? "-1" : "0";
@@ -264,6 +347,7 @@
     const end = motion.second !== null ? min + Math.ceil((motion.second - min) / step) * step : 6;
     $("time").max = end.toFixed(2);
     if (Number($("time").value) > end) $("time").value = end;
+    view = s.pivot || frame() === "lab" ? fitView(min, end) : null;
     let second;
     if (motion.second === null) {
       second = motion.stuck
@@ -413,6 +497,9 @@
 
   // ---- the motion ------------------------------------------------------------------------
   let motion = null;
+  // The table's view (scale and origin of x) fitted to the whole motion, or null: the view
+  // moving with the centre of mass.
+  let view = null;
   let playing = false;
   let last = null;
   const canvas = $("stage");
@@ -427,11 +514,12 @@
     const state = motion.at(t);
     const W = canvas.width;
     const H = canvas.height;
-    const scale = 110;
-    // A free rod is shown from the system's centre of mass (it moves at m v0/(m + M)); a
-    // pivoted one from the table.
-    const camera = s.pivot ? 0 : t / (1 + s.M.toNumber());
-    const px = (x) => W * 0.42 + (x - camera) * scale;
+    // From the system's centre of mass (it moves at m v0/(m + M)), or from the table, where
+    // the view holds the whole motion (a pivoted rod is always seen from the table).
+    const scale = view ? view.scale : 110;
+    const camera = view ? 0 : t / (1 + s.M.toNumber());
+    const origin = view ? view.origin : W * 0.42;
+    const px = (x) => origin + (x - camera) * scale;
     const py = (y) => H / 2 - y * scale;
     ctx.clearRect(0, 0, W, H);
     ctx.fillStyle = "#f4efe4";
@@ -479,7 +567,7 @@
     ctx.font = "15px sans-serif";
     const atSecond = motion.second !== null && t >= motion.second;
     ctx.fillText(t < 0 ? "before the impact" : atSecond ? "second impact: the motion of one impact ends here" : "after the impact", 12, 22);
-    ctx.fillText(s.pivot ? "view: the table" : "view: moving with the centre of mass", 12, H - 12);
+    ctx.fillText(view ? "view: the table (lab frame)" : "view: moving with the centre of mass", 12, H - 12);
     if (atSecond) {
       ctx.strokeStyle = "#d55e00";
       ctx.lineWidth = 3;
@@ -488,6 +576,25 @@
       ctx.stroke();
     }
     drawBars(t);
+  }
+
+  /** The table's view of the motion from time `from` to `to`: puck and rod in the picture throughout. */
+  function fitView(from, to) {
+    const margin = 30;
+    let lo = Infinity;
+    let hi = -Infinity;
+    let high = 1;
+    for (let i = 0; i <= 300; i++) {
+      const state = motion.at(from + ((to - from) * i) / 300);
+      // The rod's ends are at centre ± (−sin φ, cos φ); the puck is about 0.2 l across.
+      const [dx, dy] = [Math.abs(Math.sin(state.phi)), Math.abs(Math.cos(state.phi))];
+      lo = Math.min(lo, state.ball[0] - 0.2, state.centre[0] - dx);
+      hi = Math.max(hi, state.ball[0] + 0.1, state.centre[0] + dx);
+      high = Math.max(high, Math.abs(state.ball[1]), Math.abs(state.centre[1]) + dy);
+    }
+    const width = canvas.width - 2 * margin;
+    const scale = Math.min(110, width / (hi - lo), (canvas.height / 2 - margin) / high);
+    return { scale, origin: margin + (width - (hi - lo) * scale) / 2 - lo * scale };
   }
 
   function drawBars(t) {
@@ -594,5 +701,8 @@
   }
 
   selfCheck();
+  // The preset `rodimpact explore` wrote, then the link's (explore.html#M=1/2&a=1).
+  applyLink(JSON.parse($("preset").textContent));
+  applyLink(location.hash.slice(1));
   update();
 })();
