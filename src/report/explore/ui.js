@@ -373,20 +373,29 @@
     return e;
   };
 
+  // The smallest size a label is drawn at on the screen, in CSS px: a chart or the stage drawn
+  // narrower than its own width (a phone) scales its labels up by textScale to keep to it.
+  const LEAST_TEXT = 11;
+  /** How much to enlarge text of `size` units in an element `units` wide, drawn `shown` px wide. */
+  const textScale = (size, units, shown) => (shown > 0 ? Math.max(1, (LEAST_TEXT * units) / (size * shown)) : 1);
+
   function axes(svg, box, xs, ys, xlabel, ylabel, xticks, yticks, xfmt) {
     const [x0, y0, w, h] = box;
+    // The chart's labels (12 units and up) at LEAST_TEXT px at least, their offsets with them.
+    const k = textScale(12, svg.viewBox.baseVal.width, svg.getBoundingClientRect().width);
+    svg.style.setProperty("--text", k.toFixed(3));
     const X = (x) => x0 + ((x - xs[0]) / (xs[1] - xs[0])) * w;
     const Y = (y) => y0 + h - ((y - ys[0]) / (ys[1] - ys[0])) * h;
     for (const t of xticks) {
       svg.append(el("line", { x1: X(t), x2: X(t), y1: y0, y2: y0 + h, class: "grid" }));
-      svg.append(el("text", { x: X(t), y: y0 + h + 16, class: "tick", "text-anchor": "middle" }, xfmt(t)));
+      svg.append(el("text", { x: X(t), y: y0 + h + 4 + 12 * k, class: "tick", "text-anchor": "middle" }, xfmt(t)));
     }
     for (const t of yticks) {
       svg.append(el("line", { x1: x0, x2: x0 + w, y1: Y(t), y2: Y(t), class: "grid" }));
       svg.append(el("text", { x: x0 - 6, y: Y(t) + 4, class: "tick", "text-anchor": "end" }, t.toFixed(1)));
     }
     svg.append(el("rect", { x: x0, y: y0, width: w, height: h, class: "frame" }));
-    svg.append(el("text", { x: x0 + w / 2, y: y0 + h + 34, class: "label", "text-anchor": "middle" }, xlabel));
+    svg.append(el("text", { x: x0 + w / 2, y: y0 + h + 8 + 26 * k, class: "label", "text-anchor": "middle" }, xlabel));
     svg.append(el("text", { x: 14, y: y0 + h / 2, class: "label", "text-anchor": "middle", transform: `rotate(-90 14 ${y0 + h / 2})` }, ylabel));
     return { X, Y };
   }
@@ -483,7 +492,9 @@
       const lt = Math.log10(out.threshold.toNumber());
       if (lt > -2 && lt < 2) {
         svg.append(el("line", { x1: X(lt), x2: X(lt), y1: Y(0), y2: Y(top), class: "threshold" }));
-        svg.append(el("text", { x: X(lt) + 5, y: Y(0) - 8, class: "note threshold-label" }, `M = ${unicode(out.threshold)} m: a* reaches the end`));
+        // Written away from the right edge: to the left of the line when it is right of centre.
+        const right = lt > 0;
+        svg.append(el("text", { x: X(lt) + (right ? -5 : 5), y: Y(0) - 8, class: "note threshold-label", "text-anchor": right ? "end" : "start" }, `M = ${unicode(out.threshold)} m: a* reaches the end`));
       }
     }
     const mu = s.M.toNumber();
@@ -564,9 +575,10 @@
     ctx.fill();
     // Labels.
     ctx.fillStyle = "#222";
-    ctx.font = "15px sans-serif";
+    const k = textScale(15, W, canvas.getBoundingClientRect().width);
+    ctx.font = `${(15 * k).toFixed(1)}px sans-serif`;
     const atSecond = motion.second !== null && t >= motion.second;
-    ctx.fillText(t < 0 ? "before the impact" : atSecond ? "second impact: the motion of one impact ends here" : "after the impact", 12, 22);
+    ctx.fillText(t < 0 ? "before the impact" : atSecond ? "second impact: the motion of one impact ends here" : "after the impact", 12, 7 + 15 * k);
     ctx.fillText(view ? "view: the table (lab frame)" : "view: moving with the centre of mass", 12, H - 12);
     if (atSecond) {
       ctx.strokeStyle = "#d55e00";
@@ -664,6 +676,8 @@
     drawStage();
   });
   $("time").addEventListener("input", drawStage);
+  // A narrower or wider window: the labels are sized again.
+  window.addEventListener("resize", draw);
 
   // ---- the self-check against rodimpact ----------------------------------------------------
   function selfCheck() {
