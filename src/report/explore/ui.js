@@ -376,14 +376,19 @@
   // The smallest size a label is drawn at on the screen, in CSS px: a chart or the stage drawn
   // narrower than its own width (a phone) scales its labels up by textScale to keep to it.
   const LEAST_TEXT = 11;
-  /** How much to enlarge text of `size` units in an element `units` wide, drawn `shown` px wide. */
-  const textScale = (size, units, shown) => (shown > 0 ? Math.max(1, (LEAST_TEXT * units) / (size * shown)) : 1);
+  /**
+   * How much to enlarge text of `size` units in an element `units` wide, drawn `shown` px wide:
+   * from 1 to 2 at most (narrower than a phone, or not laid out yet, the labels stay in).
+   */
+  const textScale = (size, units, shown) => (shown > 0 ? Math.min(2, Math.max(1, (LEAST_TEXT * units) / (size * shown))) : 1);
 
   function axes(svg, box, xs, ys, xlabel, ylabel, xticks, yticks, xfmt) {
-    const [x0, y0, w, h] = box;
-    // The chart's labels (12 units and up) at LEAST_TEXT px at least, their offsets with them.
+    // The chart's labels (12 units and up) at LEAST_TEXT px at least, their offsets with them
+    // (the frame moves right to make room for larger labels at its left).
     const k = textScale(12, svg.viewBox.baseVal.width, svg.getBoundingClientRect().width);
     svg.style.setProperty("--text", k.toFixed(3));
+    const inset = 16 * (k - 1);
+    const [x0, y0, w, h] = [box[0] + inset, box[1], box[2] - inset, box[3]];
     const X = (x) => x0 + ((x - xs[0]) / (xs[1] - xs[0])) * w;
     const Y = (y) => y0 + h - ((y - ys[0]) / (ys[1] - ys[0])) * h;
     for (const t of xticks) {
@@ -396,7 +401,8 @@
     }
     svg.append(el("rect", { x: x0, y: y0, width: w, height: h, class: "frame" }));
     svg.append(el("text", { x: x0 + w / 2, y: y0 + h + 8 + 26 * k, class: "label", "text-anchor": "middle" }, xlabel));
-    svg.append(el("text", { x: 14, y: y0 + h / 2, class: "label", "text-anchor": "middle", transform: `rotate(-90 14 ${y0 + h / 2})` }, ylabel));
+    const left = 2 + 13 * k; // the rotated label's baseline, its letters to the left of it
+    svg.append(el("text", { x: left, y: y0 + h / 2, class: "label", "text-anchor": "middle", transform: `rotate(-90 ${left} ${y0 + h / 2})` }, ylabel));
     return { X, Y };
   }
 
