@@ -41,3 +41,20 @@ await inBrowser("explore on a phone", explore, phone, async ({ page, url, check,
   check(table.rows >= 7 && table.tallest <= 2.5 && table.width <= phone.width, `the table of values stacked: ${table.rows} rows, meanings at most ${table.tallest.toFixed(1)} lines`);
   await page.screenshot({ path: `${shots}/${name}-explore-phone.png`, fullPage: true });
 });
+
+await inBrowser("paper on a phone", paper, phone, async ({ page, check, name }) => {
+  check((await sideways(page)) <= 0, `no sideways scroll at 390 px (${await sideways(page)} px too wide)`);
+  // The wide tables scroll in their own boxes instead.
+  const boxes = await page.evaluate(() => [...document.querySelectorAll(".wide")].map((b) => ({
+    name: b.getAttribute("aria-label"),
+    scrolls: b.scrollWidth > b.clientWidth,
+    fits: b.getBoundingClientRect().right <= window.innerWidth,
+  })));
+  check(boxes.length === 6 && boxes.every((b) => b.fits), `the formulas and the 5 tables each in a box within the screen (${boxes.length})`);
+  check(boxes.some((b) => b.scrolls), `a wide table scrolls in its box: ${boxes.filter((b) => b.scrolls).map((b) => b.name).join(", ")}`);
+  // The formulas' case split in MathML, not ASCII (NEWCOMER m6).
+  const meaning = await page.$eval("table.formulas tbody tr:last-child td:last-child", (td) => ({ text: td.textContent, maths: td.querySelectorAll("math").length }));
+  check(meaning.maths === 2 && !meaning.text.includes("*m*"), `omega_max's case split in MathML (${meaning.maths} formulas): "${meaning.text.slice(0, 60)}…"`);
+  await page.evaluate(() => document.getElementById("tables").scrollIntoView());
+  await page.screenshot({ path: `${shots}/${name}-paper-phone-tables.png` });
+});
