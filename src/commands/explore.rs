@@ -12,10 +12,8 @@ pub(crate) struct ExploreArgs {
     /// output). It opens from disk in a browser and needs no network.
     #[arg(long, value_name = "FILE.html")]
     pub(crate) out: Option<PathBuf>,
-    /// The scene the page opens on, with solve's flags (the page shows it in units m = l = v0
-    /// = 1, so only the ratios matter: M/m, a/l, r_G/l, p/l; m defaults to 1 and M to m). A
-    /// control not given keeps the page's default; the page's link (`explore.html#M=1/2&a=1`)
-    /// overrides both.
+    // The scene the page opens on, with solve's flags (their help is solve's: the subcommand's
+    // after_help says how the page reads them).
     #[command(flatten)]
     pub(crate) scene: SceneFlags,
     /// Open with "predict first" on: the answer hidden until the student guesses (the default).
