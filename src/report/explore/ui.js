@@ -175,9 +175,11 @@
   // The keys are those of `rodimpact explore`'s preset (the flags, in the page's units): the
   // values go into the controls as if typed, so a bad number is refused by its field.
   const LINK_KEYS = ["M", "a", "e", "rod", "pivot", "predict", "frame"];
-  const check = (name) => {
-    const radio = document.querySelector(`input[name=${name}]:checked`);
-    return radio ? radio.value : null;
+  /** Checks the radio button `choice` of the group `name`; false when there is none. */
+  const pick = (name, choice) => {
+    const radio = [...document.querySelectorAll(`input[name=${name}]`)].find((r) => r.value === choice);
+    if (radio) radio.checked = true;
+    return Boolean(radio);
   };
   function applyLink(text) {
     const wrong = [];
@@ -191,11 +193,6 @@
         wrong.push(part);
         continue;
       }
-      const pick = (name, choice) => {
-        const radio = [...document.querySelectorAll(`input[name=${name}]`)].find((r) => r.value === choice);
-        if (radio) radio.checked = true;
-        return Boolean(radio);
-      };
       if (key === "M") $("ratio").value = value;
       else if (key === "a" || key === "e") $(key).value = value;
       else if (key === "rod") {
@@ -209,7 +206,7 @@
       else if (key === "frame" && pick("frame", value)) continue;
       else wrong.push(LINK_KEYS.includes(key) ? `${key}=${value}` : key);
     }
-    $("rg").disabled = check("kind") !== "gyration";
+    $("rg").disabled = kind() !== "gyration";
     $("pivot").disabled = !$("pivoted").checked;
     for (const follow of followers) follow();
     $("link-error").textContent = wrong.length
@@ -221,7 +218,7 @@
   function sceneLink() {
     const value = (text) => encodeURIComponent(text.trim()).replace(/%2F/g, "/");
     const parts = [`M=${value($("ratio").value)}`, `a=${value($("a").value)}`, `e=${value($("e").value)}`];
-    const kindName = check("kind");
+    const kindName = kind();
     parts.push(`rod=${kindName === "gyration" ? `rg=${value($("rg").value)}` : kindName}`);
     if ($("pivoted").checked) parts.push(`pivot=${value($("pivot").value)}`);
     if (!$("predict").checked) parts.push("predict=0");
@@ -269,8 +266,7 @@
     current = null;
     setPlaying(false);
     $("summary").textContent = "Correct the highlighted field to see the answer.";
-    for (const id of ["curve", "threshold"]) $(id).replaceChildren();
-    for (const id of ["curve-caption", "threshold-caption", "values-body", "second", "bars"]) $(id).replaceChildren();
+    for (const id of ["curve", "threshold", "curve-caption", "threshold-caption", "values-body", "second", "bars"]) $(id).replaceChildren();
     ctx.clearRect(0, 0, canvas.width, canvas.height);
   }
 
@@ -444,7 +440,7 @@
     if (!hidden()) {
       const omax = out.omegaMax.toNumber();
       svg.append(el("line", { x1: X(xs[0]), x2: X(xs[1]), y1: Y(omax), y2: Y(omax), class: "max" }));
-      svg.append(el("text", { x: X(xs[0]) + 6, y: Y(omax) - 5, class: "note max-label" }, `ω_max = ${out.omegaMax.pretty()} ≈ ${out.omegaMax.decimal(4)}`));
+      svg.append(el("text", { x: X(xs[0]) + 6, y: Y(omax) - 5, class: "note max-label" }, `ω_max = ${out.omegaMax.pretty()}${approx(out.omegaMax)}`));
       for (const side of s.pivot ? [-1, 1] : [1]) {
         const at = p + side * aStar;
         if (at < xs[0] - 1e-9 || at > xs[1] + 1e-9) continue;
