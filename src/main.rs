@@ -49,6 +49,13 @@ enum Command {
     Formula(Box<commands::formula::FormulaArgs>),
     /// An interactive page (one self-contained HTML file) on which a student predicts where to
     /// hit the rod, then finds the exact answer, the curve and the motion.
+    #[command(
+        after_help = "The scene flags are solve's, read the same way; the page shows the \
+        scene in units m = l = v0 = 1 (M/m, a/l, r_G/l, p/l). A flag not given keeps the page's \
+        own default, not solve's: M = m, a = l/2, e = 1, a uniform rod, no pivot, predict first, \
+        the centre-of-mass view. The page's link takes the same keys: explore.html#M=1/2&a=1&e=1/2\
+        &rod=dumbbell&pivot=-1&predict=0&frame=lab (docs/explore.md)."
+    )]
     Explore(commands::explore::ExploreArgs),
     /// Float error against run time for every backend and formula on the stiff/extreme suite.
     Stability(commands::stability::StabilityArgs),

@@ -1,11 +1,12 @@
 // The interactive page of `rodimpact explore` in headless Chromium, driven as a student would:
 // by keyboard and by typing into the fields.
-// Usage: node explore.mjs PAGE.html SCREENSHOT_DIR SOLVE_JSON
+// Usage: node explore.mjs PAGE.html SCREENSHOT_DIR SOLVE_JSON PRESET.html
 //   SOLVE_JSON: `rodimpact solve --m 1 --M 3 --a 1 --e 1/2 --json` (the page must agree).
+//   PRESET.html: `rodimpact explore --M 1/2 --a 1 --rod dumbbell --no-predict --frame lab`.
 import { readFileSync } from "node:fs";
 import { inBrowser } from "./common.mjs";
 
-const [file, shots, solveJson] = process.argv.slice(2);
+const [file, shots, solveJson, presetFile] = process.argv.slice(2);
 const solved = JSON.parse(readFileSync(solveJson, "utf8"));
 
 await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, url, check, name }) => {
@@ -72,14 +73,26 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   check(lost !== null, `e = 1/2 shows the energy lost (${lost})`);
   await page.screenshot({ path: `${shots}/${name}-explore-heavy-rod.png`, fullPage: true });
 
-  // A bad entry: named, marked invalid, no script error.
+  // A bad entry: named, marked invalid, no script error; the last scene's answer is cleared,
+  // not left standing beside the request to correct the field (NEWCOMER m8).
   await type("#ratio", "-2");
   check((await text("#ratio-error")).includes("M/m: must be > 0") && (await page.$eval("#ratio", (e) => e.getAttribute("aria-invalid"))) === "true", "M/m = -2 is refused with its reason");
-  // a* typed where it is beyond the end (M = 3m): refused with the reason, not clamped.
+  const stale = await page.evaluate(() => ["curve", "threshold", "values-body"].map((id) => document.getElementById(id).childElementCount));
+  check(stale.every((n) => n === 0) && (await text("#summary")).startsWith("Correct the highlighted field"), `while a field is wrong no chart or value of the last scene is shown (${stale})`);
+  // a* typed where it is beyond the end (M = 3m): struck at the end, with a note (m8).
   await type("#ratio", "3");
   await type("#a", "a*");
-  check((await text("#a-error")).includes("a* = 2√3/3 ≈ 1.155 lies beyond the end of the rod"), `a = a* at M = 3m is refused: "${await text("#a-error")}"`);
+  check((await text("#a-error")) === "" && (await text("#a-note")).includes("a* = 2√3/3 ≈ 1.155 lies beyond the end of the rod: struck at the end, a/l = 1"), `a = a* at M = 3m is struck at the end, with a note: "${await text("#a-note")}"`);
+  check((await cell("ω")) === unicode(solved.omega.exact) && (await text("#curve-caption")).includes("2√3/3"), "and the answer and the curve are the end's, for M = 3m");
   await type("#a", "1");
+  check((await text("#a-note")) === "", "the note goes with a*");
+
+  // The threshold M = 2m, struck at the end: a* = l is the end, the best point, and nothing
+  // is "faster than at the end" (m7); no coefficient 1 is written ("1 l").
+  await type("#ratio", "2");
+  const threshold = await text("#summary");
+  check(threshold.startsWith("a* = l from the centre: the end is the best point (threshold M = 2 m), ω_max = 3/4 v0/l ≈ 0.7500 v0/l.") && !threshold.includes("faster") && !/(^|[^\d.])1 l/.test(threshold), `at M = 2m: "${threshold}"`);
+  check((await cell("a*")) === "l", `the table: a* = ${await cell("a*")}`);
   // A number past the page's limit (30 digits) is refused; one at it is solved.
   await type("#ratio", "1".repeat(31));
   check((await text("#ratio-error")) === "M/m: more than 30 digits", `31 digits refused: "${await text("#ratio-error")}"`);
@@ -90,6 +103,12 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   await type("#e", "0");
   check((await text("#second")).startsWith("At e = 0 the puck sticks to the rod: they turn together at ω = 3/5 v0/l"), `e = 0 at a = l: "${(await text("#second")).slice(0, 80)}…"`);
   await type("#e", "1");
+
+  // Sweeping M/m after "Hit at a*" (m8): the field keeps a*, struck at the end once a* is beyond it.
+  await page.click("#hit-a-star");
+  await type("#ratio", "3");
+  check((await page.$eval("#a", (e) => e.value)) === "a*" && (await text("#summary")).includes("beyond the end") && (await text("#a-note")).includes("struck at the end"), `Hit at a*, then M/m = 3: "${(await text("#summary")).slice(0, 60)}…"`);
+  await type("#ratio", "1");
 
   // X19: struck at a* exactly, elastic: v = V = m v0/(M + m) = 1/2, omega = v0/a* = √6/2, and
   // the rod meets the puck again half a turn later, t = π a*/v0.
@@ -149,5 +168,50 @@ await inBrowser("explore", file, { width: 1200, height: 1000 }, async ({ page, u
   await page.click("#hit-a-star");
   check((await page.$eval("#a", (e) => e.value)) === "p+a*" && (await cell("ω/ωmax")) === "1", `pivoted: "Hit at a*" gives p+a*, ω/ω_max = ${await cell("ω/ωmax")}`);
   await page.screenshot({ path: `${shots}/${name}-explore-pivoted-dumbbell.png`, fullPage: true });
+  // The pivot's threshold: M = 2m puts a* = sqrt(2 M l^2/m) = 2 l from the pivot, the far end.
+  await type("#ratio", "2");
+  const pivotThreshold = await text("#summary");
+  check(pivotThreshold.startsWith("a* = 2 l from the pivot: the end is the best point (the threshold)") && !pivotThreshold.includes("faster"), `pivot at −l, M = 2m: "${pivotThreshold.slice(0, 90)}…"`);
 
+});
+
+// The page as a teacher hands it out: preset by explore's flags, and by the link after `#`.
+await inBrowser("explore preset", presetFile, { width: 1200, height: 1000 }, async ({ page, url, check, name }) => {
+  const text = (id) => page.$eval(id, (e) => e.textContent);
+  const state = () => page.evaluate(() => ({
+    M: document.getElementById("ratio").value,
+    a: document.getElementById("a").value,
+    rod: document.querySelector("input[name=kind]:checked").value,
+    pivot: document.getElementById("pivoted").checked ? document.getElementById("pivot").value : null,
+    predict: document.getElementById("predict").checked,
+    frame: document.querySelector("input[name=frame]:checked").value,
+    frameDisabled: document.querySelector("input[name=frame]").disabled,
+    hidden: document.body.classList.contains("answer-hidden"),
+  }));
+  // --M 1/2 --a 1 --rod dumbbell --no-predict --frame lab: a*^2 = (M + m) l^2/m = 3/2 l^2, beyond the end.
+  const opened = await state();
+  check(JSON.stringify(opened) === JSON.stringify({ M: "1/2", a: "1", rod: "dumbbell", pivot: null, predict: false, frame: "lab", frameDisabled: false, hidden: false }), `explore's flags preset the page: ${JSON.stringify(opened)}`);
+  check((await text("#summary")).startsWith("a* = √6/2 l ≈ 1.225 l from the centre lies beyond the end"), `and it shows that scene: "${(await text("#summary")).slice(0, 70)}…"`);
+  check((await text("#scene-link")).endsWith("#M=1/2&a=1&e=1&rod=dumbbell&predict=0&frame=lab"), `the scene's link: ${await text("#scene-link")}`);
+  // The two views differ once the rod has moved: from the table it has drifted on.
+  const picture = async (frame) => page.evaluate((frame) => {
+    document.querySelector(`input[name=frame][value=${frame}]`).click();
+    const time = document.getElementById("time");
+    time.value = time.max;
+    time.dispatchEvent(new Event("input"));
+    return document.getElementById("stage").toDataURL();
+  }, frame);
+  const lab = await picture("lab");
+  await page.evaluate(() => document.getElementById("motion").scrollIntoView());
+  await page.screenshot({ path: `${shots}/${name}-explore-lab-frame.png` });
+  check(lab !== (await picture("centre-of-mass")), "the lab frame and the centre-of-mass frame draw different pictures");
+  // A link overrides the preset; a* may be given (p+a* written p%2Ba*).
+  await page.goto(`${url}#M=2&pivot=-1&a=p%2Ba*&predict=1`, { waitUntil: "load" });
+  const linked = await state();
+  check(linked.M === "2" && linked.pivot === "-1" && linked.a === "p+a*" && linked.predict && linked.hidden && linked.frameDisabled, `the link #M=2&pivot=-1&a=p%2Ba*&predict=1 presets the page: ${JSON.stringify(linked)}`);
+  // A bad link: the number refused by its field, the unknown keys and words named.
+  await page.goto(`${url.split("#")[0]}#M=-1&colour=red&rod=steel`, { waitUntil: "load" });
+  check((await text("#ratio-error")) === "M/m: must be > 0", `#M=-1: "${await text("#ratio-error")}"`);
+  const linkError = await text("#link-error");
+  check(linkError.startsWith("The link's colour, rod=steel is not understood"), `unknown keys named: "${linkError.slice(0, 60)}…"`);
 });

@@ -1,8 +1,25 @@
-// The report page of `rodimpact paper --format html` in headless Chromium.
-// Usage: node paper.mjs PAGE.html CLAIMS SCREENSHOT_DIR
+// The report page of `rodimpact paper --format html` in headless Chromium, and its summary
+// edition (`--summary`), as printed.
+// Usage: node paper.mjs PAGE.html CLAIMS SCREENSHOT_DIR SUMMARY.html
 import { inBrowser } from "./common.mjs";
 
-const [file, claimCount, shots] = process.argv.slice(2);
+const [file, claimCount, shots, summaryFile] = process.argv.slice(2);
+
+/** Prints the page to A4 at `path`: its page count (0 when the PDF's page tree is compressed, Firefox). */
+async function printed(page, path) {
+  const pdf = Buffer.from(await page.pdf({ format: "A4", path }));
+  // The page count from the PDF's page tree (Chromium writes it plainly; Firefox compresses it).
+  const counts = [...pdf.toString("latin1").matchAll(/\/Type\s*\/Pages[^>]*?\/Count\s+(\d+)|\/Count\s+(\d+)[^>]*?\/Type\s*\/Pages/g)].map((m) => Number(m[1] || m[2]));
+  return { pages: counts.length ? Math.max(...counts) : 0, bytes: pdf.length };
+}
+
+/** The ids of the certificates open while the page is being printed (the print events sent by hand). */
+const openInPrint = (page) => page.evaluate(() => {
+  window.dispatchEvent(new Event("beforeprint"));
+  const open = [...document.querySelectorAll("details.claim")].filter((d) => d.open).length;
+  window.dispatchEvent(new Event("afterprint"));
+  return open;
+});
 
 await inBrowser("paper", file, { width: 1100, height: 1400 }, async ({ page, url, check, name }) => {
 
@@ -49,23 +66,32 @@ await inBrowser("paper", file, { width: 1100, height: 1400 }, async ({ page, url
     await page.screenshot({ path: `${shots}/${name}-paper-${id}.png` });
   }
 
-  // Print: every certificate unfolded on paper, and folded back after.
-  const pdf = Buffer.from(await page.pdf({ format: "A4", path: `${shots}/${name}-paper.pdf` }));
-  // The page count from the PDF's page tree (Chromium writes it plainly; Firefox compresses it).
-  const counts = [...pdf.toString("latin1").matchAll(/\/Type\s*\/Pages[^>]*?\/Count\s+(\d+)|\/Count\s+(\d+)[^>]*?\/Type\s*\/Pages/g)].map((m) => Number(m[1] || m[2]));
-  const pages = counts.length ? Math.max(...counts) : 0;
-  if (pages > 0) {
-    check(pages > 60, `printed on ${pages} A4 pages, every certificate unfolded`);
-  } else {
-    check(pdf.length > 100000, `printed (${(pdf.length / 1e6).toFixed(1)} MB of PDF; its page tree is compressed)`);
-    const unfolded = await page.evaluate(() => {
-      window.dispatchEvent(new Event("beforeprint"));
-      const all = [...document.querySelectorAll("details.claim")].every((d) => d.open);
-      window.dispatchEvent(new Event("afterprint"));
-      return all;
-    });
-    check(unfolded, "before printing every certificate is unfolded");
-  }
+  // Print as shown (NEWCOMER M9): a folded certificate prints as its line, C15 unfolded.
+  check((await openInPrint(page)) === 1, "printing leaves the folded certificates folded");
+  const shown = await printed(page, `${shots}/${name}-paper.pdf`);
+  if (shown.pages > 0) check(shown.pages < 30, `printed as shown on ${shown.pages} A4 pages`);
+  // Ticked, the box unfolds every certificate for print, and folds them back after.
+  await page.click("#print-all");
+  check((await openInPrint(page)) === Number(claimCount), "with the box ticked, printing unfolds every certificate");
+  const whole = await printed(page, `${shots}/${name}-paper-whole.pdf`);
+  check(whole.pages > 60 || (whole.pages === 0 && whole.bytes > 2 * shown.bytes), `printed whole on ${whole.pages || "(compressed page tree)"} A4 pages, ${(whole.bytes / 1e6).toFixed(1)} MB (as shown: ${(shown.bytes / 1e6).toFixed(2)} MB)`);
   check(await page.$$eval("details.claim", (ds) => ds.filter((d) => d.open).map((d) => d.id).join(",")) === "C15", "after printing, only C15 is open again");
 
+});
+
+// The summary edition: a handout of a dozen pages, every verdict, the formulas, tables and figures.
+await inBrowser("paper summary", summaryFile, { width: 1100, height: 1400 }, async ({ page, check, name }) => {
+  const facts = await page.evaluate(() => ({
+    claims: document.querySelectorAll("ul.verdicts li.claim").length,
+    details: document.querySelectorAll("details").length,
+    tables: [...document.querySelectorAll("main table[id]")].map((t) => t.id),
+    figures: document.querySelectorAll("figure svg").length,
+    formulas: document.querySelectorAll("table.formulas math").length,
+  }));
+  check(facts.claims === Number(claimCount) && facts.details === 0, `every claim's verdict on its line (${facts.claims}), no certificate`);
+  check(JSON.stringify(facts.tables) === JSON.stringify(["T1", "T2", "T3", "T4", "T5"]) && facts.figures === 3 && facts.formulas > 10, `tables ${facts.tables}, ${facts.figures} figures, ${facts.formulas} formulas`);
+  const handout = await printed(page, `${shots}/${name}-paper-summary.pdf`);
+  if (handout.pages > 0) check(handout.pages <= 15, `the summary prints on ${handout.pages} A4 pages`);
+  else check(handout.bytes > 10000, `the summary printed (${(handout.bytes / 1e6).toFixed(1)} MB of PDF)`);
+  await page.screenshot({ path: `${shots}/${name}-paper-summary.png` });
 });

@@ -41,6 +41,10 @@ pub(crate) struct PaperArgs {
     /// SVG figures; no network), written to --out FILE.html, or to standard output without --out.
     #[arg(long, value_enum, default_value_t = PaperFormat::Text)]
     pub(crate) format: PaperFormat,
+    /// With --format html: the summary, to print or hand out (about a dozen A4 pages): each claim's
+    /// verdict on one line, the formulas, tables and figures, without the certificates.
+    #[arg(long)]
+    pub(crate) summary: bool,
 }
 
 /// The forms of the paper's report.
@@ -199,12 +203,26 @@ pub(crate) fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     let paper = Paper::as_printed();
     let decided = claims::decide_all(&paper);
     let tables = report::all_tables(&TableOptions::default())?;
+    if args.summary && args.format != PaperFormat::Html {
+        return Err(Error::new(
+            "summary",
+            rodimpact::ErrorKind::Conflict(
+                "the summary is a web page to print: add --format html".into(),
+            ),
+        )
+        .into());
+    }
     if args.format == PaperFormat::Html {
         let page = report::paper_html(
             &decided,
             &formulas(&SceneInput::default())?,
             &tables,
             &paper_figures()?,
+            if args.summary {
+                report::PaperEdition::Summary
+            } else {
+                report::PaperEdition::Full
+            },
         );
         match &args.out {
             Some(file) => write_atomic("out", file, &page)?,

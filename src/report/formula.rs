@@ -335,7 +335,7 @@ fn rational_latex(c: &Q) -> String {
 }
 
 /// A polynomial in LaTeX: terms joined by + and -, products juxtaposed.
-fn poly_latex(p: &Poly) -> String {
+pub(super) fn poly_latex(p: &Poly) -> String {
     let mut out = String::new();
     // Largest term first, as the text form prints them.
     let terms: Vec<_> = p.terms().collect();
@@ -374,7 +374,7 @@ fn poly_latex(p: &Poly) -> String {
 }
 
 /// A rational function in LaTeX: `\frac{num}{den}`, or the numerator alone over 1.
-fn ratfn_latex(f: &RatFn) -> String {
+pub(super) fn ratfn_latex(f: &RatFn) -> String {
     if f.den().is_one() {
         return poly_latex(f.num());
     }

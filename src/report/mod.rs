@@ -38,7 +38,7 @@ pub use explain::{ExplainFormat, explain};
 pub use formula::{formula_json, formula_latex, formula_markdown, formula_text};
 pub use impact::{impact_audit_json, impact_json, impact_text, models_json, models_text};
 pub use impact_run::{impact_run_json, impact_run_text};
-pub use paper_html::paper_html;
+pub use paper_html::{PaperEdition, paper_html};
 pub use paper_tables::{
     ALL_TABLE_IDS, TABLE_IDS, TableOptions, all_tables, t1, t2, t3, t4, t5, t6, tables,
 };

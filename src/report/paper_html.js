@@ -4,9 +4,11 @@
   const setAll = (open) => claims().forEach((d) => { d.open = open; });
   document.getElementById("unfold").addEventListener("click", () => setAll(true));
   document.getElementById("fold").addEventListener("click", () => setAll(false));
-  // Print every certificate, then restore what the reader had open.
+  // Printed as shown: a folded certificate prints as its one line. With the box ticked, every
+  // certificate is unfolded for print, and what the reader had open is restored after.
   let before = null;
   window.addEventListener("beforeprint", () => {
+    if (!document.getElementById("print-all").checked) return;
     before = claims().map((d) => d.open);
     setAll(true);
   });

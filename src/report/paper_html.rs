@@ -1,9 +1,11 @@
 //! `paper --format html`: the verification report as one self-contained web page. The verdicts
 //! grouped as the paper runs, each certificate folded under its claim, the paper's results as
 //! MathML formulas, every table, the figures as inline SVG; no request leaves the page (no
-//! font, script or image from the network), and it prints whole (every certificate unfolded).
+//! font, script or image from the network). It prints as it is shown (folded certificates stay
+//! folded, unless the reader ticks the box that unfolds them all for print); the summary
+//! edition (`paper --format html --summary`) leaves the certificates out, a handout to print.
 
-use super::formula::{key_latex, meaning, radical_latex};
+use super::formula::{key_latex, meaning, poly_latex, radical_latex, ratfn_latex};
 use super::mathml::{self, escape};
 use super::page::{Page, document, inline_svg};
 use super::proofs::{
@@ -11,32 +13,51 @@ use super::proofs::{
 };
 use super::{PaperFigure, Table, claim_markdown, hand_step_note, markup};
 use crate::claims::Decided;
-use crate::textbook::formula::Formulas;
+use crate::textbook::formula::{AnswerFormula, Condition, Formulas};
 use pulldown_cmark::{Event, HeadingLevel, Parser, Tag, TagEnd};
 use std::fmt::Write as _;
 
-/// The page's style: readable on screen, every certificate unfolded and no controls in print.
+/// The page's style: readable on screen and on a phone (wide tables scroll in their own box),
+/// no controls in print.
 const STYLE: &str = include_str!("paper_html.css");
 
-/// The page's only script: unfold every certificate before printing (and fold them back after),
-/// open the claim a link points to, and the two buttons that unfold or fold them all.
+/// The full page's only script: open the claim a link points to, the two buttons that unfold or
+/// fold every certificate, and, when its box is ticked, every certificate unfolded for print
+/// (and folded back after).
 const SCRIPT: &str = include_str!("paper_html.js");
 
+/// Which report the page is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PaperEdition {
+    /// Every claim with its certificate folded under it (printed as shown, or every certificate
+    /// unfolded when the reader asks).
+    Full,
+    /// A handout: the verdicts one line each, the formulas, tables and figures; no certificate
+    /// and no script.
+    Summary,
+}
+
 /// The whole page: the verdicts of `all` grouped as the paper runs, `formulas` (the paper's
-/// results for its own scene), the `tables` and the `figures`.
+/// results for its own scene), the `tables` and the `figures`; with each claim's certificate
+/// folded under it ([`PaperEdition::Full`]) or without the certificates
+/// ([`PaperEdition::Summary`]).
 ///
 /// # Examples
 /// ```
 /// use rodimpact::claims::{decide, Paper};
-/// use rodimpact::report::paper_html;
+/// use rodimpact::report::{PaperEdition, paper_html};
 /// use rodimpact::scene::SceneInput;
 /// use rodimpact::textbook::formula::formulas;
 /// let d = decide("C15", &Paper::as_printed()).unwrap();
-/// let page = paper_html(&[d], &formulas(&SceneInput::default())?, &[], &[]);
+/// let f = formulas(&SceneInput::default())?;
+/// let page = paper_html(&[d.clone()], &f, &[], &[], PaperEdition::Full);
 /// assert!(page.starts_with("<!DOCTYPE html>"));
 /// assert!(page.contains("<details id=\"C15\" class=\"claim proved\">"));
 /// assert!(page.contains("<math display=\"block\">"));
 /// assert!(!page.contains("http://") && !page.contains("https://"));
+/// let summary = paper_html(&[d], &f, &[], &[], PaperEdition::Summary);
+/// assert!(summary.contains("<li id=\"C15\" class=\"claim proved\">"));
+/// assert!(!summary.contains("<details") && !summary.contains("<script"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn paper_html(
@@ -44,22 +65,32 @@ pub fn paper_html(
     formulas: &Formulas,
     tables: &[Table],
     figures: &[PaperFigure],
+    edition: PaperEdition,
 ) -> String {
+    let full = edition == PaperEdition::Full;
     let mut body = String::new();
     let _ = write!(
         body,
-        "<header>\n<h1>{}</h1>\n<p class=\"summary\">{} {}</p>\n",
+        "<header>\n<h1>{}{}</h1>\n<p class=\"summary\">{} {}</p>\n",
         escape(TITLE),
+        if full { "" } else { ": summary" },
         escape(&summary_line(all)),
         escape(METHOD)
     );
     if let Some(note) = hand_step_note(all) {
         let _ = writeln!(body, "<p class=\"hand\">{}</p>", escape(&note));
     }
-    body.push_str(
+    body.push_str(if full {
         "<p class=\"controls\"><button type=\"button\" id=\"unfold\">Unfold every certificate</button> \
-         <button type=\"button\" id=\"fold\">Fold them</button></p>\n</header>\n",
-    );
+         <button type=\"button\" id=\"fold\">Fold them</button> <label><input type=\"checkbox\" \
+         id=\"print-all\"> unfold every certificate when printing (over 150 A4 pages; folded, \
+         a certificate prints as its one line)</label></p>\n</header>\n"
+    } else {
+        "<p class=\"edition\">The summary, to print or hand out: each claim's verdict, the \
+         formulas, tables and figures. Each claim's certificate is in the full report \
+         (<code>rodimpact paper --format html</code>) and is checked again by <code>rodimpact \
+         prove ID</code>.</p>\n</header>\n"
+    });
     body.push_str(&contents(all, tables, figures));
     body.push_str("<main>\n");
     body.push_str(&formula_section(formulas));
@@ -70,8 +101,20 @@ pub fn paper_html(
             group_anchor(group.title()),
             escape(group.title())
         );
-        for d in all.iter().filter(|d| d.claim.group == group) {
-            body.push_str(&claim_details(d));
+        let claims = all.iter().filter(|d| d.claim.group == group);
+        if full {
+            claims.for_each(|d| body.push_str(&claim_details(d)));
+        } else {
+            body.push_str("<ul class=\"verdicts\">\n");
+            for d in claims {
+                let (class, line) = claim_line(d);
+                let _ = writeln!(
+                    body,
+                    "<li id=\"{}\" class=\"claim {class}\">{line}</li>",
+                    d.claim.id
+                );
+            }
+            body.push_str("</ul>\n");
         }
         body.push_str("</section>\n");
     }
@@ -82,7 +125,7 @@ pub fn paper_html(
              its decimal, correctly rounded.</p>\n",
         );
         for t in tables {
-            body.push_str(&t.html());
+            body.push_str(&wide(&format!("Table {}", t.id), &t.html()));
         }
         body.push_str("</section>\n");
     }
@@ -112,8 +155,17 @@ pub fn paper_html(
         title: TITLE,
         style: STYLE,
         body: &body,
-        script: SCRIPT,
+        script: if full { SCRIPT } else { "" },
     })
+}
+
+/// `html` (a table) in a box of its own that scrolls sideways when the screen is narrower than
+/// the table (a phone), instead of the whole page; reachable by keyboard, named `label`.
+fn wide(label: &str, html: &str) -> String {
+    format!(
+        "<div class=\"wide\" role=\"region\" tabindex=\"0\" aria-label=\"{}\">\n{html}</div>\n",
+        escape(label)
+    )
 }
 
 /// The anchor of a group's section: its title in lower case, words joined by `-`.
@@ -164,51 +216,98 @@ fn formula_section(f: &Formulas) -> String {
          <code>rodimpact formula</code> for the paper's scene",
     );
     if !f.defaults.is_empty() {
-        let _ = write!(out, " ({})", escape(&f.defaults.join("; ")));
-    }
-    let _ = write!(
-        out,
-        ", in the symbols {}.</p>\n<table class=\"formulas\">\n<thead><tr><th scope=\"col\">quantity</th>\
-         <th scope=\"col\">formula</th><th scope=\"col\">meaning</th></tr></thead>\n<tbody>\n",
-        escape(&f.free.join(", "))
-    );
-    for x in &f.formulas {
-        let mut what = escape(&markup::ascii_math(meaning(x.key)));
-        if let Some(c) = &x.condition {
-            let _ = write!(what, "; {}", escape(&markup::ascii_math(c)));
-        }
-        let _ = writeln!(
+        let _ = write!(
             out,
-            "<tr><th scope=\"row\">{}</th><td>{}</td><td>{what}</td></tr>",
-            mathml::math(key_latex(x.key), false),
-            mathml::math(&radical_latex(&x.value), true)
+            " ({})",
+            escape(&markup::ascii_math(&f.defaults.join("; ")))
         );
     }
-    out.push_str("</tbody>\n</table>\n</section>\n");
+    let _ = writeln!(out, ", in the symbols {}.</p>", escape(&f.free.join(", ")));
+    let mut table = String::from(
+        "<table class=\"formulas\">\n<thead><tr><th scope=\"col\">quantity</th>\
+         <th scope=\"col\">formula</th><th scope=\"col\">meaning</th></tr></thead>\n<tbody>\n",
+    );
+    for x in &f.formulas {
+        let _ = writeln!(
+            table,
+            "<tr><th scope=\"row\">{}</th><td>{}</td><td>{}{}</td></tr>",
+            mathml::math(key_latex(x.key), false),
+            mathml::math(&radical_latex(&x.value), true),
+            escape(&markup::ascii_math(meaning(x.key))),
+            condition_html(x)
+        );
+    }
+    table.push_str("</tbody>\n</table>\n");
+    out.push_str(&wide("The results as formulas", &table));
+    out.push_str("</section>\n");
     out
+}
+
+/// When a formula holds (omega_max's case split), after its meaning: the inequality and the
+/// value otherwise in MathML, as the formula beside it; empty for a formula that always holds.
+fn condition_html(x: &AnswerFormula) -> String {
+    let Some(p) = &x.piecewise else {
+        return x
+            .condition
+            .as_deref()
+            .map(|c| format!("; {}", escape(&markup::ascii_math(c))))
+            .unwrap_or_default();
+    };
+    let when = match &p.when {
+        None => "; never: a* lies beyond the end for every value of the symbols".to_string(),
+        Some(Condition::Inequality(c)) => format!(
+            "; when {} (a* on the rod)",
+            mathml::math(
+                &format!("{} \\le {}", poly_latex(&c.lhs), poly_latex(&c.rhs)),
+                false
+            )
+        ),
+        Some(Condition::Words(w)) => format!("; when {}", escape(w)),
+    };
+    let otherwise = match &p.otherwise {
+        Some(end) => format!(
+            "; otherwise {}",
+            mathml::math(
+                &format!("\\omega_{{\\max}} = \\omega(l) = {}", ratfn_latex(end)),
+                false
+            )
+        ),
+        None => "; otherwise ω is largest at the end of the rod".to_string(),
+    };
+    when + &otherwise
 }
 
 /// One claim: a `<details>` whose summary is the id, verdict and statement, and whose body is
 /// its certificate (the formalisation, the reason, the evidence, how to re-check it).
 fn claim_details(d: &Decided) -> String {
+    let (class, line) = claim_line(d);
+    let mut out = format!(
+        "<details id=\"{id}\" class=\"claim {class}\">\n<summary>{line}</summary>\n<div class=\"body\">\n",
+        id = d.claim.id
+    );
+    out.push_str(&certificate_html(&claim_markdown(d)));
+    out.push_str("</div>\n</details>\n");
+    out
+}
+
+/// A claim's class (its verdict, `as-paper` for an intuition refuted as the paper argues) and
+/// its line: the id, verdict, where it stands in the paper and its statement.
+fn claim_line(d: &Decided) -> (String, String) {
     let c = &d.claim;
     let class = if refutes_intuition_as_paper(d) {
         "as-paper".to_string()
     } else {
         verdict_label(d).to_ascii_lowercase()
     };
-    let mut out = format!(
-        "<details id=\"{id}\" class=\"claim {class}\">\n<summary><span class=\"id\">{id}</span> \
-         <span class=\"verdict\">{}</span> <span class=\"where\">{}</span> \
-         <span class=\"statement\">{}</span></summary>\n<div class=\"body\">\n",
+    let line = format!(
+        "<span class=\"id\">{}</span> <span class=\"verdict\">{}</span> \
+         <span class=\"where\">{}</span> <span class=\"statement\">{}</span>",
+        c.id,
         escape(&verdict_mark(d)),
         escape(c.location),
         escape(&markup::ascii_math(c.statement)),
-        id = c.id
     );
-    out.push_str(&certificate_html(&claim_markdown(d)));
-    out.push_str("</div>\n</details>\n");
-    out
+    (class, line)
 }
 
 /// A certificate's Markdown as HTML inside its claim: its title line left out (the summary

@@ -166,3 +166,123 @@ fn the_page_opens_asking_not_answering() {
         );
     }
 }
+
+/// The preset the page opens on, as `explore` wrote it (the link's keys, after `#`).
+fn preset(args: &[&str]) -> String {
+    let mut all = vec!["explore"];
+    all.extend_from_slice(args);
+    let (code, page, stderr) = rodimpact(&all);
+    assert_eq!(code, 0, "{stderr}");
+    let start = "<script type=\"application/json\" id=\"preset\">";
+    let json = &page[page.find(start).expect("the preset") + start.len()..];
+    serde_json::from_str(&json[..json.find("</script>").unwrap()]).unwrap()
+}
+
+/// NEWCOMER m10: a teacher presets the page with solve's own flags, in the page's units
+/// (m = l = v0 = 1: the ratios), and "predict first" and the view of the motion with their own.
+#[test]
+fn flags_preset_the_page_in_its_units() {
+    assert_eq!(preset(&[]), "", "nothing given, nothing preset");
+    assert_eq!(
+        preset(&[
+            "--M",
+            "1/2",
+            "--a",
+            "1",
+            "--e",
+            "1/2",
+            "--rod",
+            "dumbbell",
+            "--pivot",
+            "-1",
+            "--no-predict",
+            "--frame",
+            "lab",
+        ]),
+        "M=1/2&a=1&e=1/2&rod=dumbbell&pivot=-1&predict=0&frame=lab"
+    );
+    // Units and lengths, read exactly as solve reads them: M/m = 0.3 kg/100 g = 3; a rod 2 m
+    // long has l = 1 m, so a = l - 1/2 = 1/2, r_G = 50 cm = l/2 and p = -0.5 = -l/2.
+    assert_eq!(
+        preset(&[
+            "--m",
+            "100 g",
+            "--M",
+            "0.3kg",
+            "--length",
+            "2",
+            "--from-end",
+            "1/2",
+            "--rod",
+            "rg=50 cm",
+            "--pivot",
+            "-0.5",
+        ]),
+        "M=3&a=1/2&rod=rg=1/2&pivot=-1/2"
+    );
+    // m defaults to 1 and M to m; l scales a; a moment of inertia with a rational r_G is taken.
+    assert_eq!(preset(&["--m", "2"]), "M=1");
+    assert_eq!(preset(&["--l", "2", "--a", "-1"]), "a=-1/2");
+    assert_eq!(preset(&["--M", "2", "--rod", "I=1/2"]), "M=2&rod=rg=1/2");
+    assert_eq!(preset(&["--inelastic", "--predict"]), "e=0&predict=1");
+    assert_eq!(
+        preset(&["--predict", "--no-predict"]),
+        "predict=0",
+        "the last wins"
+    );
+}
+
+/// A bad preset is refused as solve refuses it: one line naming the flag, exit 2, no page.
+#[test]
+fn a_bad_preset_is_one_line_naming_its_flag() {
+    for (args, message) in [
+        (&["--M", "-1"][..], "error: M: must be > 0, got -1"),
+        (
+            &["--a", "2"],
+            "error: a: must lie on the rod, |a| <= l = 1, got 2",
+        ),
+        (
+            &["--e", "3/2"],
+            "error: e: coefficient of restitution must lie in [0, 1], got 3/2",
+        ),
+        (
+            &["--rod", "steel"],
+            "error: rod: expected uniform, dumbbell, rg=<radius> or I=<inertia>, got 'steel'",
+        ),
+        (
+            &["--pivot", "2"],
+            "error: pivot: must lie on the rod, |pivot| <= l = 1, got 2",
+        ),
+        (&["--m", "1/0"], "error: m: division by zero"),
+        (
+            &["--a", "1", "--from-end", "0"],
+            "error: from-end: give either --a or --from-end, not both",
+        ),
+        (
+            &["--rod", "I=1/2"],
+            "error: rod: the page takes uniform, dumbbell or rg=<radius>; this moment of inertia \
+             gives r_G = sqrt(2)/2 l, not a fraction",
+        ),
+        (
+            &["--M", "1e40"],
+            "error: M: the page takes at most 30 digits above and below the fraction bar, got \
+             1000000000000000000000000000000000000000...",
+        ),
+        (
+            &["--frame", "sideways"],
+            "error: invalid value 'sideways' for '--frame <VIEW>' [possible values: \
+             centre-of-mass, lab] (try --help)",
+        ),
+    ] {
+        let mut all = vec!["explore"];
+        all.extend_from_slice(args);
+        let (code, stdout, stderr) = rodimpact(&all);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(stdout.is_empty(), "{args:?}: no page");
+        assert_eq!(stderr.trim_end(), message, "{args:?}");
+    }
+    // The same flags, the same messages as solve's.
+    let (_, _, solve) = rodimpact(&["solve", "--m", "1", "--M", "1", "--pivot", "2"]);
+    let (_, _, explore) = rodimpact(&["explore", "--pivot", "2"]);
+    assert_eq!(solve, explore);
+}

@@ -107,3 +107,60 @@ fn out_writes_the_same_page_and_refuses_a_bad_path() {
     assert_eq!(code, 2);
     assert!(err.contains("possible values: text, html"));
 }
+
+/// NEWCOMER M9: a teacher's handout. `--summary` keeps every verdict (one line each), the
+/// formulas, tables and figures, and leaves the certificates out (the full page prints as
+/// shown, its certificates folded unless the reader ticks the box: the browser run counts the
+/// pages); without --format html it is refused.
+#[test]
+fn the_summary_is_the_page_without_its_certificates() {
+    let (code, summary, stderr) = rodimpact(&["paper", "--format", "html", "--summary"]);
+    assert_eq!(code, 0, "{stderr}");
+    let full = page_to_stdout();
+    assert!(summary.len() * 3 < full.len(), "{} bytes", summary.len());
+    assert!(!summary.contains("<details") && !summary.contains("<script"));
+    assert!(summary.contains(": summary</h1>"));
+    assert!(
+        summary.contains("<li id=\"C3\" class=\"claim as-paper\"><span class=\"id\">C3</span>")
+    );
+    let ids = rodimpact::claims::registry().len();
+    assert_eq!(summary.matches("<li id=\"").count(), ids);
+    for t in ["T1", "T2", "T3", "T4", "T5"] {
+        assert!(summary.contains(&format!("<table id=\"{t}\">")), "{t}");
+    }
+    assert_eq!(summary.matches("<figure id=").count(), 3);
+    // The full page: printed as shown, with a box to unfold every certificate for print.
+    assert!(full.contains(
+        "<input type=\"checkbox\" id=\"print-all\"> unfold every certificate when printing"
+    ));
+    let (code, _, err) = rodimpact(&["paper", "--summary"]);
+    assert_eq!(code, 2);
+    assert_eq!(
+        err.trim_end(),
+        "error: summary: the summary is a web page to print: add --format html"
+    );
+}
+
+/// NEWCOMER m6: on a phone the wide tables scroll in their own boxes (the browser run checks
+/// that the page does not), and omega_max's case split is MathML like the formula beside it,
+/// not ASCII (`6*m*v0/(M*l + 4*l*m)`).
+#[test]
+fn wide_tables_scroll_in_boxes_and_the_case_split_is_mathml() {
+    let page = page_to_stdout();
+    assert_eq!(
+        page.matches("<div class=\"wide\" role=\"region\" tabindex=\"0\"")
+            .count(),
+        6
+    );
+    assert!(page.contains("aria-label=\"Table T2\">\n<table id=\"T2\">"));
+    let formulas = &page[page.find("<section id=\"formulas\">").unwrap()..];
+    let formulas = &formulas[..formulas.find("</section>").unwrap()];
+    assert!(
+        !formulas.contains("*m*") && !formulas.contains("l^2"),
+        "ASCII math left"
+    );
+    assert!(formulas.contains("(I = M l²/3)"), "{formulas}");
+    assert!(formulas.contains(
+        "; when <math><mrow><mi>M</mi><mo>≤</mo><mn>2</mn><mi>m</mi></mrow></math> (a* on the rod); otherwise <math>"
+    ), "{formulas}");
+}

@@ -17,8 +17,9 @@ use super::page::{Page, document, json_script};
 use super::paper_tables::solve_at;
 use super::solution_json;
 use crate::Error;
-use crate::field::{QSqrt, q};
-use crate::scene::{SceneInput, Support};
+use crate::error::ErrorKind;
+use crate::field::{Q, QSqrt, q};
+use crate::scene::{RodInertia, SceneInput, Support};
 use crate::solve::Answer;
 use crate::solve::optimum::a_star_squared;
 use serde_json::{Value, json};
@@ -135,25 +136,200 @@ pub fn reference_answers() -> Result<Vec<Value>, Error> {
         .collect()
 }
 
-/// The page, complete: its body with the reference answers, its style and scripts, in the
-/// shared shell ([`document`]).
+/// How the animation is viewed: moving with the centre of mass of puck and rod (the default),
+/// or from the table (the lab frame). A rod on a pivot is always seen from the table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Frame {
+    /// Moving with the system's centre of mass: the rod turns in place.
+    CentreOfMass,
+    /// From the table: the struck rod drifts away as it turns.
+    Lab,
+}
+
+impl Frame {
+    /// The name the page's link (`#frame=lab`) and `explore --frame` take.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::explore::Frame;
+    /// assert_eq!(Frame::Lab.name(), "lab");
+    /// assert_eq!(Frame::CentreOfMass.name(), "centre-of-mass");
+    /// ```
+    pub fn name(self) -> &'static str {
+        match self {
+            Frame::CentreOfMass => "centre-of-mass",
+            Frame::Lab => "lab",
+        }
+    }
+}
+
+/// How the page opens: the controls it presets, in the page's units m = l = v0 = 1, as the
+/// fields take them, with the keys of the page's link (`explore.html#M=1/2&a=1`): `M` (the mass
+/// ratio M/m), `a` (a/l), `e`, `rod` (`uniform`, `dumbbell`, `rg=r_G/l`), `pivot` (p/l),
+/// `predict` (`1` or `0`) and `frame`. A control not preset keeps the page's default (M = m,
+/// a = l/2, elastic, uniform, free, predict first, the centre-of-mass view).
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Preset {
+    fields: Vec<(&'static str, String)>,
+}
+
+/// The most digits the page takes in a numerator or a denominator (its fields refuse more).
+const PAGE_DIGITS: usize = 30;
+
+impl Preset {
+    /// The preset of a scene given as `solve` takes it (any units; m defaults to 1 and M to m):
+    /// each of M/m, a, e, the rod and the pivot preset when `input` gives it, the others left to
+    /// the page; `predict` and `frame` when given.
+    ///
+    /// # Errors
+    /// The scene's own errors, naming the flag (`M: must be > 0`); `rod` when its moment of
+    /// inertia has no rational radius of gyration (the page takes `rg=`); a ratio with more
+    /// than 30 digits in its numerator or denominator, which the page would refuse, naming its
+    /// flag.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::report::explore::{Frame, Preset};
+    /// use rodimpact::scene::SceneInput;
+    /// let input = SceneInput {
+    ///     rod_mass: Some("500 g".into()),
+    ///     m: Some("1 kg".into()),
+    ///     a: Some("1".into()),
+    ///     rod: Some("rg=1/2".into()),
+    ///     ..Default::default()
+    /// };
+    /// let preset = Preset::of_scene(&input, Some(false), Some(Frame::Lab))?;
+    /// assert_eq!(preset.link(), "M=1/2&a=1&rod=rg=1/2&predict=0&frame=lab");
+    /// let heavy = SceneInput { rod_mass: Some("-1".into()), ..Default::default() };
+    /// assert_eq!(Preset::of_scene(&heavy, None, None).unwrap_err().to_string(), "M: must be > 0, got -1");
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn of_scene(
+        input: &SceneInput,
+        predict: Option<bool>,
+        frame: Option<Frame>,
+    ) -> Result<Preset, Error> {
+        let m = input.m.clone().unwrap_or_else(|| "1".into());
+        let scene = SceneInput {
+            rod_mass: input.rod_mass.clone().or_else(|| Some(m.clone())),
+            m: Some(m),
+            ..input.clone()
+        }
+        .build()?;
+        let l = scene.half_length();
+        let mut fields = Vec::new();
+        let mut number = |key: &'static str, flag: &str, given: bool, value: Q| {
+            if given {
+                fields.push((key, page_number(flag, &value)?));
+            }
+            Ok::<_, Error>(())
+        };
+        let mass_flag = if input.rod_mass.is_some() { "M" } else { "m" };
+        number(
+            "M",
+            mass_flag,
+            input.m.is_some() || input.rod_mass.is_some(),
+            scene.rod_mass() / scene.m(),
+        )?;
+        let a_flag = if input.from_end.is_some() {
+            "from-end"
+        } else {
+            "a"
+        };
+        number(
+            "a",
+            a_flag,
+            input.a.is_some() || input.from_end.is_some(),
+            scene.a() / l,
+        )?;
+        number("e", "e", input.e.is_some(), scene.e().clone())?;
+        if input.rod.is_some() {
+            let rod = match scene.rod() {
+                RodInertia::Uniform => "uniform".to_string(),
+                RodInertia::Dumbbell => "dumbbell".to_string(),
+                RodInertia::Gyration(r) => format!("rg={}", page_number("rod", &(r / l))?),
+                RodInertia::Moment(i) => {
+                    let squared = i / (scene.rod_mass() * l * l);
+                    let root = QSqrt::sqrt_of(&squared);
+                    if root.d().is_some() {
+                        return Err(Error::new(
+                            "rod",
+                            ErrorKind::Invalid(format!(
+                                "the page takes uniform, dumbbell or rg=<radius>; this moment of \
+                                 inertia gives r_G = {root} l, not a fraction"
+                            )),
+                        ));
+                    }
+                    format!("rg={}", page_number("rod", root.x())?)
+                }
+            };
+            fields.push(("rod", rod));
+        }
+        if let (Some(_), Support::Pivot(p)) = (&input.pivot, scene.support()) {
+            fields.push(("pivot", page_number("pivot", &(p / l))?));
+        }
+        if let Some(on) = predict {
+            fields.push(("predict", if on { "1" } else { "0" }.into()));
+        }
+        if let Some(frame) = frame {
+            fields.push(("frame", frame.name().into()));
+        }
+        Ok(Preset { fields })
+    }
+
+    /// The preset as the page's link spells it after `#` (`M=1/2&a=1`; empty: nothing preset).
+    /// Its values need no escaping: numbers, `/`, `-`, `.`, `=` and the words above.
+    pub fn link(&self) -> String {
+        self.fields
+            .iter()
+            .map(|(key, value)| format!("{key}={value}"))
+            .collect::<Vec<_>>()
+            .join("&")
+    }
+}
+
+/// A ratio as the page's fields take it (`3/2`, `-1`), or the error naming `flag` when its
+/// numerator or denominator has more digits than the page reads.
+fn page_number(flag: &str, value: &Q) -> Result<String, Error> {
+    let digits = |n: String| n.trim_start_matches('-').len();
+    if digits(value.numer().to_string()) > PAGE_DIGITS
+        || digits(value.denom().to_string()) > PAGE_DIGITS
+    {
+        return Err(Error::out_of_range(
+            flag,
+            format!(
+                "the page takes at most {PAGE_DIGITS} digits above and below the fraction bar, got {}",
+                crate::echo::echo(&value.to_string())
+            ),
+        ));
+    }
+    Ok(value.to_string())
+}
+
+/// The page, complete: its body with the reference answers and the `preset` it opens with
+/// (a link's `#...` still overrides it), its style and scripts, in the shared shell
+/// ([`document`]).
 ///
 /// # Errors
 /// As [`reference_answers`].
 ///
 /// # Examples
 /// ```
-/// let page = rodimpact::report::explore::explore_html()?;
+/// use rodimpact::report::explore::{Preset, explore_html};
+/// let page = explore_html(&Preset::default())?;
 /// assert!(page.starts_with("<!DOCTYPE html>"));
 /// assert!(page.contains("\"a_star\":\"sqrt(6)/3\""));
+/// assert!(page.contains("<script type=\"application/json\" id=\"preset\">\"\"</script>"));
 /// assert!(!page.contains("{{"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn explore_html() -> Result<String, Error> {
+pub fn explore_html(preset: &Preset) -> Result<String, Error> {
     let reference = serde_json::to_string(&reference_answers()?).expect("JSON of strings");
+    let preset = serde_json::to_string(&preset.link()).expect("JSON of a string");
     let body = BODY
         .replace("{{VERSION}}", env!("CARGO_PKG_VERSION"))
-        .replace("{{REFERENCE}}", &json_script("reference", &reference));
+        .replace("{{REFERENCE}}", &json_script("reference", &reference))
+        .replace("{{PRESET}}", &json_script("preset", &preset));
     Ok(document(&Page {
         title: "Where should you hit the rod? An exact explorer",
         style: STYLE,

@@ -19,10 +19,15 @@
     pivot: { check: (q) => (q.abs().cmp(Q.of(1)) <= 0 ? null : "must lie on the rod, −1 ≤ p/l ≤ 1"), name: "p/l" },
   };
 
+  // What the a field's a* came to when it lies beyond the end (shown under the field).
+  let impactNote = "";
+
   /**
    * The impact point typed in the a field: a fraction or decimal, or the scene's fastest-spin
    * point, exactly: `a*` or `-a*` (from the centre), and on a pivot `p+a*` or `p-a*` (a* is then
-   * measured from the pivot; `a*` alone means `p+a*`). Returns a Q or a Quad.
+   * measured from the pivot; `a*` alone means `p+a*`). Returns a Q or a Quad. An a* beyond the
+   * end of the rod is struck at that end instead (the fastest spin on that side), with a note:
+   * sweeping M/m after "Hit at a*" keeps the field's a* and follows it.
    */
   function parseImpact(text, M, k, p) {
     const star = /^\s*(p\s*)?([+\-−]?)\s*a\s*\*\s*$/i.exec(text);
@@ -31,8 +36,10 @@
     const root = Quad.sqrt(Physics.aStarSquared(M, k, p));
     const signed = star[2] && star[2] !== "+" ? root.neg() : root;
     const at = p === null ? signed : signed.add(p);
-    if (at.abs().cmp(Q.of(1)) > 0) throw new Error(`${text.trim()} = ${at.pretty()} ≈ ${at.decimal(4)} lies beyond the end of the rod`);
-    return at;
+    if (at.abs().cmp(Q.of(1)) <= 0) return at;
+    const end = Q.of(at.sign());
+    impactNote = `${text.trim()} = ${at.pretty()} ≈ ${at.decimal(4)} lies beyond the end of the rod: struck at the end, a/l = ${end.pretty()}, where the spin is fastest on that side.`;
+    return end;
   }
 
   /** The field's exact value (read with `parser`), or null with its error shown. */
@@ -68,7 +75,9 @@
     if (!M || !e || !rg || !p) return null;
     const k = Physics.inertiaFactor(kindName, rg);
     const pivot = pivoted ? p : null;
+    impactNote = "";
     const a = read("a", (text) => parseImpact(text, M, k, pivot));
+    $("a-note").textContent = impactNote;
     if (!a) return null;
     return { M, a, e, k, kind: kindName, rg, pivot };
   }
@@ -85,17 +94,23 @@
     const step = 10 ** (magnitude - 1); // two significant digits
     return tidy(Math.round(x / step) * step, Math.max(0, 1 - magnitude));
   };
+  // Each slider follows its field (when the field is typed in, or preset by a link).
+  const followers = [];
   const link = (slider, field, toText, toSlider) => {
-    $(slider).addEventListener("input", () => {
-      $(field).value = toText($(slider).value);
-      update();
-    });
-    $(field).addEventListener("input", () => {
+    const follow = () => {
       try {
         $(slider).value = toSlider(parse($(field).value).toNumber());
       } catch (_) {
         // An unfinished entry: the slider stays where it was.
       }
+    };
+    followers.push(follow);
+    $(slider).addEventListener("input", () => {
+      $(field).value = toText($(slider).value);
+      update();
+    });
+    $(field).addEventListener("input", () => {
+      follow();
       update();
     });
   };
@@ -119,10 +134,14 @@
   let revealed = !$("predict").checked;
   let guess = null;
   const hidden = () => $("predict").checked && !revealed;
-  $("predict").addEventListener("change", () => {
-    revealed = !$("predict").checked;
+  function setPredict(on) {
+    $("predict").checked = on;
+    revealed = !on;
     guess = null;
-    $("guess-box").hidden = !$("predict").checked;
+    $("guess-box").hidden = !on;
+  }
+  $("predict").addEventListener("change", () => {
+    setPredict($("predict").checked);
     update();
   });
   $("guess").addEventListener("input", () => {
@@ -147,16 +166,93 @@
     update();
   });
 
+  // ---- the view of the motion ------------------------------------------------------------
+  const frames = document.querySelectorAll("input[name=frame]");
+  const frame = () => document.querySelector("input[name=frame]:checked").value;
+  for (const r of frames) r.addEventListener("change", update);
+
+  // ---- a link that opens the page on a scene (explore.html#M=1/2&a=1) --------------------------
+  // The keys are those of `rodimpact explore`'s preset (the flags, in the page's units): the
+  // values go into the controls as if typed, so a bad number is refused by its field.
+  const LINK_KEYS = ["M", "a", "e", "rod", "pivot", "predict", "frame"];
+  /** Checks the radio button `choice` of the group `name`; false when there is none. */
+  const pick = (name, choice) => {
+    const radio = [...document.querySelectorAll(`input[name=${name}]`)].find((r) => r.value === choice);
+    if (radio) radio.checked = true;
+    return Boolean(radio);
+  };
+  function applyLink(text) {
+    const wrong = [];
+    for (const part of text.split("&").filter((p) => p !== "")) {
+      const at = part.indexOf("=");
+      const key = at < 0 ? part : part.slice(0, at);
+      let value = "";
+      try {
+        value = decodeURIComponent(at < 0 ? "" : part.slice(at + 1));
+      } catch (_) {
+        wrong.push(part);
+        continue;
+      }
+      if (key === "M") $("ratio").value = value;
+      else if (key === "a" || key === "e") $(key).value = value;
+      else if (key === "rod") {
+        const rg = /^rg=(.*)$/.exec(value);
+        if (rg) $("rg").value = rg[1];
+        if (!pick("kind", rg ? "gyration" : value === "gyration" ? "" : value)) wrong.push(`rod=${value}`);
+      } else if (key === "pivot") {
+        $("pivoted").checked = value !== "none";
+        if (value !== "none") $("pivot").value = value;
+      } else if (key === "predict" && (value === "1" || value === "0")) setPredict(value === "1");
+      else if (key === "frame" && pick("frame", value)) continue;
+      else wrong.push(LINK_KEYS.includes(key) ? `${key}=${value}` : key);
+    }
+    $("rg").disabled = kind() !== "gyration";
+    $("pivot").disabled = !$("pivoted").checked;
+    for (const follow of followers) follow();
+    $("link-error").textContent = wrong.length
+      ? `The link's ${wrong.join(", ")} is not understood: it takes M, a, e, rod (uniform, dumbbell, rg=…), pivot (a position or none), predict (1 or 0) and frame (centre-of-mass or lab).`
+      : "";
+    $("link-error").hidden = !wrong.length;
+  }
+  /** The link to the scene on the controls (what the fields hold, as typed). */
+  function sceneLink() {
+    const value = (text) => encodeURIComponent(text.trim()).replace(/%2F/g, "/");
+    const parts = [`M=${value($("ratio").value)}`, `a=${value($("a").value)}`, `e=${value($("e").value)}`];
+    const kindName = kind();
+    parts.push(`rod=${kindName === "gyration" ? `rg=${value($("rg").value)}` : kindName}`);
+    if ($("pivoted").checked) parts.push(`pivot=${value($("pivot").value)}`);
+    if (!$("predict").checked) parts.push("predict=0");
+    if (frame() === "lab") parts.push("frame=lab");
+    return parts.join("&");
+  }
+  window.addEventListener("hashchange", () => {
+    applyLink(location.hash.slice(1));
+    update();
+  });
+
   // ---- the answer ----------------------------------------------------------------------
   let current = null;
 
   const unicode = (q) => q.pretty();
+  /** `x unit` for people, a coefficient ±1 left out: `l`, `−l`, `2 l`, `√6/3 l`, `1/2 v0/l`. */
+  const times = (x, unit) => {
+    const shown = x.pretty();
+    return shown === "1" ? unit : shown === "−1" ? `−${unit}` : `${shown} ${unit}`;
+  };
+  /** ` ≈ decimal` after an exact value, left out when the value is a whole number. */
+  const approx = (x, unit = "") => {
+    const q = Quad.from(x);
+    return q.isRational() && q.rational().d === 1n ? "" : ` ≈ ${q.decimal(4)}${unit}`;
+  };
   // A row of the table; an answer row says only "hidden" while the student has not guessed
   // (to a screen reader too).
   const row = (name, exact, decimal, meaning, answerOnly = false) => {
     const withheld = answerOnly && hidden();
     return `<tr${answerOnly ? ' class="answer-only"' : ""}><th scope="row">${name}</th><td class="exact">${withheld ? "hidden" : exact}</td><td class="decimal">${withheld ? "" : decimal}</td><td>${meaning}</td></tr>`;
   };
+
+  /** a* is exactly the end of the struck arm: the threshold, where the end is the best point. */
+  const atEnd = (out) => out.A.cmp(out.arm.mul(out.arm)) === 0;
 
   function thresholdText(s, out) {
     if (s.pivot) return "";
@@ -165,14 +261,29 @@
     return `a* is on the rod exactly when M/m ≤ ${unicode(t)}`;
   }
 
+  /** No scene (a field to correct): the answer of the last one is cleared, not left standing. */
+  function clearAnswer() {
+    current = null;
+    setPlaying(false);
+    $("summary").textContent = "Correct the highlighted field to see the answer.";
+    for (const id of ["curve", "threshold", "curve-caption", "threshold-caption", "values-body", "second", "bars"]) $(id).replaceChildren();
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+  }
+
   function update() {
     const s = scene();
     if (!s) {
-      $("summary").textContent = "Correct the highlighted field to see the answer.";
+      clearAnswer();
       return;
     }
     const out = Physics.solve(s);
     current = { scene: s, out };
+    const link = sceneLink();
+    const file = decodeURIComponent(location.pathname.split("/").pop() || "") || "explore.html";
+    $("scene-link").href = `#${link}`;
+    $("scene-link").textContent = `${file}#${link}`;
+    for (const r of frames) r.disabled = Boolean(s.pivot);
+    $("frame-note").textContent = s.pivot ? "On a pivot the rod is seen from the table." : "";
     $("a-slider").value = s.a.toNumber();
     $("hit-a-star").hidden = hidden();
     $("guess").min = s.pivot ? "-1" : "0";
@@ -194,21 +305,27 @@
       const lost = out.lost.div(out.K0);
       rows += row("Δ<i>K</i>/<i>K</i><sub>0</sub>", unicode(lost), lost.decimal(), "fraction of the kinetic energy lost");
     }
-    rows += row("<i>a</i>*", `${out.aStar.pretty()} <i>l</i>`, out.aStar.decimal(), `the fastest-spin point, ${from}${out.inside || hidden() ? "" : " (beyond the end)"}`, true);
-    rows += row("<i>ω</i><sub>max</sub>", out.omegaMax.pretty(), out.omegaMax.decimal(), `fastest spin over the rod (× ${v0l})${hidden() ? "" : out.inside ? ", at a*" : ", at the end"}`, true);
+    const where = hidden() ? "" : atEnd(out) ? " (the end)" : out.inside ? "" : " (beyond the end)";
+    rows += row("<i>a</i>*", times(out.aStar, "<i>l</i>"), out.aStar.decimal(), `the fastest-spin point, ${from}${where}`, true);
+    rows += row("<i>ω</i><sub>max</sub>", out.omegaMax.pretty(), out.omegaMax.decimal(), `fastest spin over the rod (× ${v0l})${hidden() ? "" : out.inside && !atEnd(out) ? ", at a*" : ", at the end"}`, true);
     rows += row("<i>ω</i>/<i>ω</i><sub>max</sub>", ratioToMax.pretty(), ratioToMax.decimal(), "this hit against the best one", true);
     $("values-body").innerHTML = rows;
 
-    const aStar = `a* = ${out.aStar.pretty()} l ≈ ${out.aStar.decimal(4)} l`;
+    const aStar = `a* = ${times(out.aStar, "l")}${approx(out.aStar, " l")}`;
+    const omegaMax = `ω_max = ${times(out.omegaMax, "v0/l")}${approx(out.omegaMax, " v0/l")}`;
     let summary;
     if (hidden()) {
-      summary = `M/m = ${unicode(s.M)}, a/l = ${unicode(s.a)}, e = ${unicode(s.e)}: ω = ${unicode(out.omega)} v0/l ≈ ${out.omega.decimal(4)}. Where is the fastest spin? Make your guess, then reveal.`;
+      summary = `M/m = ${unicode(s.M)}, a/l = ${unicode(s.a)}, e = ${unicode(s.e)}: ω = ${times(out.omega, "v0/l")}${approx(out.omega)}. Where is the fastest spin? Make your guess, then reveal.`;
+    } else if (atEnd(out)) {
+      // The threshold itself: a* is the end, which is then the best point (and no better one).
+      const threshold = s.pivot ? "the threshold" : `threshold M = ${times(out.threshold, "m")}`;
+      summary = `${aStar} ${from}: the end is the best point (${threshold}), ${omegaMax}.`;
     } else if (out.inside) {
-      summary = `${aStar} ${from} lies on the rod: hitting there spins it fastest, ω_max = ${out.omegaMax.pretty()} v0/l ≈ ${out.omegaMax.decimal(4)} v0/l, faster than at the end (${unicode(out.omegaEnd)} v0/l).`;
+      summary = `${aStar} ${from} lies on the rod: hitting there spins it fastest, ${omegaMax}, faster than at the end (${times(out.omegaEnd, "v0/l")}).`;
     } else {
-      summary = `${aStar} ${from} lies beyond the end: the end is the best place after all, ω_max = ω(end) = ${out.omegaMax.pretty()} v0/l.`;
+      summary = `${aStar} ${from} lies beyond the end: the end is the best place after all, ω_max = ω(end) = ${times(out.omegaMax, "v0/l")}.`;
     }
-    if (!s.pivot && !hidden()) summary += ` (${thresholdText(s, out)}.)`;
+    if (!s.pivot && !hidden() && !atEnd(out)) summary += ` (${thresholdText(s, out)}.)`;
     if (guess && !hidden()) {
       const lever = s.pivot ? guess.sub(s.pivot) : guess;
       const atGuess = Q.of(1).add(s.e).mul(lever.abs()).div(out.A.add(lever.mul(lever)));
@@ -226,10 +343,11 @@
     const end = motion.second !== null ? min + Math.ceil((motion.second - min) / step) * step : 6;
     $("time").max = end.toFixed(2);
     if (Number($("time").value) > end) $("time").value = end;
+    view = s.pivot || frame() === "lab" ? fitView(min, end) : null;
     let second;
     if (motion.second === null) {
       second = motion.stuck
-        ? `At e = 0 the puck sticks to the rod: they turn together at ω = ${unicode(out.omega)} v0/l about ${s.pivot ? "the pivot" : "their common centre of mass, which moves on at m v0/(M + m)"}.`
+        ? `At e = 0 the puck sticks to the rod: they turn together at ω = ${times(out.omega, "v0/l")} about ${s.pivot ? "the pivot" : "their common centre of mass, which moves on at m v0/(M + m)"}.`
         : "The puck and the rod do not meet again (within 12 l/v0).";
     } else {
       second = `Second impact: the rod comes round and meets the puck again at t ≈ ${motion.second.toFixed(3)} l/v0`;
@@ -251,21 +369,36 @@
     return e;
   };
 
+  // The smallest size a label is drawn at on the screen, in CSS px: a chart or the stage drawn
+  // narrower than its own width (a phone) scales its labels up by textScale to keep to it.
+  const LEAST_TEXT = 11;
+  /**
+   * How much to enlarge text of `size` units in an element `units` wide, drawn `shown` px wide:
+   * from 1 to 2 at most (narrower than a phone, or not laid out yet, the labels stay in).
+   */
+  const textScale = (size, units, shown) => (shown > 0 ? Math.min(2, Math.max(1, (LEAST_TEXT * units) / (size * shown))) : 1);
+
   function axes(svg, box, xs, ys, xlabel, ylabel, xticks, yticks, xfmt) {
-    const [x0, y0, w, h] = box;
+    // The chart's labels (12 units and up) at LEAST_TEXT px at least, their offsets with them
+    // (the frame moves right to make room for larger labels at its left).
+    const k = textScale(12, svg.viewBox.baseVal.width, svg.getBoundingClientRect().width);
+    svg.style.setProperty("--text", k.toFixed(3));
+    const inset = 16 * (k - 1);
+    const [x0, y0, w, h] = [box[0] + inset, box[1], box[2] - inset, box[3]];
     const X = (x) => x0 + ((x - xs[0]) / (xs[1] - xs[0])) * w;
     const Y = (y) => y0 + h - ((y - ys[0]) / (ys[1] - ys[0])) * h;
     for (const t of xticks) {
       svg.append(el("line", { x1: X(t), x2: X(t), y1: y0, y2: y0 + h, class: "grid" }));
-      svg.append(el("text", { x: X(t), y: y0 + h + 16, class: "tick", "text-anchor": "middle" }, xfmt(t)));
+      svg.append(el("text", { x: X(t), y: y0 + h + 4 + 12 * k, class: "tick", "text-anchor": "middle" }, xfmt(t)));
     }
     for (const t of yticks) {
       svg.append(el("line", { x1: x0, x2: x0 + w, y1: Y(t), y2: Y(t), class: "grid" }));
       svg.append(el("text", { x: x0 - 6, y: Y(t) + 4, class: "tick", "text-anchor": "end" }, t.toFixed(1)));
     }
     svg.append(el("rect", { x: x0, y: y0, width: w, height: h, class: "frame" }));
-    svg.append(el("text", { x: x0 + w / 2, y: y0 + h + 34, class: "label", "text-anchor": "middle" }, xlabel));
-    svg.append(el("text", { x: 14, y: y0 + h / 2, class: "label", "text-anchor": "middle", transform: `rotate(-90 14 ${y0 + h / 2})` }, ylabel));
+    svg.append(el("text", { x: x0 + w / 2, y: y0 + h + 8 + 26 * k, class: "label", "text-anchor": "middle" }, xlabel));
+    const left = 2 + 13 * k; // the rotated label's baseline, its letters to the left of it
+    svg.append(el("text", { x: left, y: y0 + h / 2, class: "label", "text-anchor": "middle", transform: `rotate(-90 ${left} ${y0 + h / 2})` }, ylabel));
     return { X, Y };
   }
 
@@ -307,7 +440,7 @@
     if (!hidden()) {
       const omax = out.omegaMax.toNumber();
       svg.append(el("line", { x1: X(xs[0]), x2: X(xs[1]), y1: Y(omax), y2: Y(omax), class: "max" }));
-      svg.append(el("text", { x: X(xs[0]) + 6, y: Y(omax) - 5, class: "note max-label" }, `ω_max = ${out.omegaMax.pretty()} ≈ ${out.omegaMax.decimal(4)}`));
+      svg.append(el("text", { x: X(xs[0]) + 6, y: Y(omax) - 5, class: "note max-label" }, `ω_max = ${out.omegaMax.pretty()}${approx(out.omegaMax)}`));
       for (const side of s.pivot ? [-1, 1] : [1]) {
         const at = p + side * aStar;
         if (at < xs[0] - 1e-9 || at > xs[1] + 1e-9) continue;
@@ -327,8 +460,8 @@
       svg.append(el("text", { x: X(g) + (nearRight ? -4 : 4), y: Y(ys[1]) + 30, class: "note guess-label", "text-anchor": nearRight ? "end" : "start" }, "my guess"));
     }
     const caption = hidden()
-      ? `|ω| against the impact point; the dot is the chosen point, ω = ${unicode(out.omega)} v0/l.`
-      : `|ω| against the impact point: the dot is the chosen point (ω = ${unicode(out.omega)} v0/l); a* = ${out.aStar.pretty()} l ≈ ${out.aStar.decimal(4)} l ${out.inside ? "is on the rod" : "is beyond the end (dashed)"}; ω_max = ${out.omegaMax.pretty()} v0/l.`;
+      ? `|ω| against the impact point; the dot is the chosen point, ω = ${times(out.omega, "v0/l")}.`
+      : `|ω| against the impact point: the dot is the chosen point (ω = ${times(out.omega, "v0/l")}); a* = ${times(out.aStar, "l")}${approx(out.aStar, " l")} ${atEnd(out) ? "is the end" : out.inside ? "is on the rod" : "is beyond the end (dashed)"}; ω_max = ${times(out.omegaMax, "v0/l")}.`;
     $("curve-caption").textContent = caption;
   }
 
@@ -361,7 +494,9 @@
       const lt = Math.log10(out.threshold.toNumber());
       if (lt > -2 && lt < 2) {
         svg.append(el("line", { x1: X(lt), x2: X(lt), y1: Y(0), y2: Y(top), class: "threshold" }));
-        svg.append(el("text", { x: X(lt) + 5, y: Y(0) - 8, class: "note threshold-label" }, `M = ${unicode(out.threshold)} m: a* reaches the end`));
+        // Written away from the right edge: to the left of the line when it is right of centre.
+        const right = lt > 0;
+        svg.append(el("text", { x: X(lt) + (right ? -5 : 5), y: Y(0) - 8, class: "note threshold-label", "text-anchor": right ? "end" : "start" }, `M = ${unicode(out.threshold)} m: a* reaches the end`));
       }
     }
     const mu = s.M.toNumber();
@@ -375,6 +510,9 @@
 
   // ---- the motion ------------------------------------------------------------------------
   let motion = null;
+  // The table's view (scale and origin of x) fitted to the whole motion, or null: the view
+  // moving with the centre of mass.
+  let view = null;
   let playing = false;
   let last = null;
   const canvas = $("stage");
@@ -389,11 +527,12 @@
     const state = motion.at(t);
     const W = canvas.width;
     const H = canvas.height;
-    const scale = 110;
-    // A free rod is shown from the system's centre of mass (it moves at m v0/(m + M)); a
-    // pivoted one from the table.
-    const camera = s.pivot ? 0 : t / (1 + s.M.toNumber());
-    const px = (x) => W * 0.42 + (x - camera) * scale;
+    // From the system's centre of mass (it moves at m v0/(m + M)), or from the table, where
+    // the view holds the whole motion (a pivoted rod is always seen from the table).
+    const scale = view ? view.scale : 110;
+    const camera = view ? 0 : t / (1 + s.M.toNumber());
+    const origin = view ? view.origin : W * 0.42;
+    const px = (x) => origin + (x - camera) * scale;
     const py = (y) => H / 2 - y * scale;
     ctx.clearRect(0, 0, W, H);
     ctx.fillStyle = "#f4efe4";
@@ -438,10 +577,11 @@
     ctx.fill();
     // Labels.
     ctx.fillStyle = "#222";
-    ctx.font = "15px sans-serif";
+    const k = textScale(15, W, canvas.getBoundingClientRect().width);
+    ctx.font = `${(15 * k).toFixed(1)}px sans-serif`;
     const atSecond = motion.second !== null && t >= motion.second;
-    ctx.fillText(t < 0 ? "before the impact" : atSecond ? "second impact: the motion of one impact ends here" : "after the impact", 12, 22);
-    ctx.fillText(s.pivot ? "view: the table" : "view: moving with the centre of mass", 12, H - 12);
+    ctx.fillText(t < 0 ? "before the impact" : atSecond ? "second impact: the motion of one impact ends here" : "after the impact", 12, 7 + 15 * k);
+    ctx.fillText(view ? "view: the table (lab frame)" : "view: moving with the centre of mass", 12, H - 12);
     if (atSecond) {
       ctx.strokeStyle = "#d55e00";
       ctx.lineWidth = 3;
@@ -450,6 +590,25 @@
       ctx.stroke();
     }
     drawBars(t);
+  }
+
+  /** The table's view of the motion from time `from` to `to`: puck and rod in the picture throughout. */
+  function fitView(from, to) {
+    const margin = 30;
+    let lo = Infinity;
+    let hi = -Infinity;
+    let high = 1;
+    for (let i = 0; i <= 300; i++) {
+      const state = motion.at(from + ((to - from) * i) / 300);
+      // The rod's ends are at centre ± (−sin φ, cos φ); the puck is about 0.2 l across.
+      const [dx, dy] = [Math.abs(Math.sin(state.phi)), Math.abs(Math.cos(state.phi))];
+      lo = Math.min(lo, state.ball[0] - 0.2, state.centre[0] - dx);
+      hi = Math.max(hi, state.ball[0] + 0.1, state.centre[0] + dx);
+      high = Math.max(high, Math.abs(state.ball[1]), Math.abs(state.centre[1]) + dy);
+    }
+    const width = canvas.width - 2 * margin;
+    const scale = Math.min(110, width / (hi - lo), (canvas.height / 2 - margin) / high);
+    return { scale, origin: margin + (width - (hi - lo) * scale) / 2 - lo * scale };
   }
 
   function drawBars(t) {
@@ -519,6 +678,8 @@
     drawStage();
   });
   $("time").addEventListener("input", drawStage);
+  // A narrower or wider window: the labels are sized again.
+  window.addEventListener("resize", draw);
 
   // ---- the self-check against rodimpact ----------------------------------------------------
   function selfCheck() {
@@ -556,5 +717,8 @@
   }
 
   selfCheck();
+  // The preset `rodimpact explore` wrote, then the link's (explore.html#M=1/2&a=1).
+  applyLink(JSON.parse($("preset").textContent));
+  applyLink(location.hash.slice(1));
   update();
 })();
