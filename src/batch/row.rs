@@ -426,7 +426,7 @@ mod tests {
             Batch::new("m,M,mu,J", Arithmetic::Exact)
                 .unwrap_err()
                 .to_string(),
-            "header: claim column 'J' with column 'mu': J and the energies are checked for the paper's scene only (claim v, V, omega)"
+            "header: claim column 'J' with column 'mu': J and the energies are checked for the paper's scene only (claim v, V, omega, vt, Vt, spin_after, tangential_impulse)"
         );
         let audited = Batch::new("m,M,mu,v,V,omega", Arithmetic::Exact).unwrap();
         assert!(!audited.output_header().contains("diagnosis"));

@@ -261,7 +261,8 @@ impl Summary {
     }
 
     /// The statistics of each claimed output, named (`v`, `V`, `omega`, `J`, `energy_before`,
-    /// `energy_after`), in that order;
+    /// `energy_after`, and an oblique scene's `vt`, `Vt`, `spin_after`, `tangential_impulse`),
+    /// in that order;
     /// outputs without a claim column have nothing compared.
     ///
     /// # Examples
@@ -271,7 +272,8 @@ impl Summary {
     /// let mut s = Summary::default();
     /// s.add(&b.row(1, "1,1,6/5").unwrap());
     /// let compared: Vec<(&str, usize)> = s.outputs().map(|(name, o)| (name, o.compared())).collect();
-    /// assert_eq!(compared, [("v", 0), ("V", 0), ("omega", 1), ("J", 0), ("energy_before", 0), ("energy_after", 0)]);
+    /// assert_eq!(compared, [("v", 0), ("V", 0), ("omega", 1), ("J", 0), ("energy_before", 0),
+    ///     ("energy_after", 0), ("vt", 0), ("Vt", 0), ("spin_after", 0), ("tangential_impulse", 0)]);
     /// ```
     pub fn outputs(&self) -> impl Iterator<Item = (&'static str, &OutputStats)> {
         CLAIMS.into_iter().zip(&self.outputs)
