@@ -12,7 +12,7 @@ use std::path::PathBuf;
 // In check a quantity not given stays a free symbol when the claims are formulas (solve's
 // defaults hold for numeric claims), so --a's help says both.
 #[command(mut_arg("a", |a| a.help(
-    "Signed impact distance a from the rod's centre, |a| <= l [default: l, the end, for numeric claims; a free symbol a for formulas]"
+    "Signed impact distance a from the rod's centre, |a| <= l, or a* (-a*) to strike exactly at the optimum [default: l, the end, for numeric claims; a free symbol a for formulas]"
 )))]
 pub(crate) struct CheckArgs {
     /// A problem collection (TOML) to check instead of one scene.

@@ -204,6 +204,14 @@ impl SceneInput {
                     "give either --a or --from-end, not both",
                 ));
             }
+            (Some(a), None) if a.replace(' ', "").trim_start_matches(['+', '-']) == "a*" => {
+                return Err(Error::new(
+                    "a",
+                    ErrorKind::Invalid(
+                        "a* is not a number here: solve prints a* and omega_max for the scene; `check --a a*` and `explore` strike at a* exactly".into(),
+                    ),
+                ));
+            }
             (Some(a), None) => builder = builder.a(number_of("a", a)?),
             (None, Some(d)) => {
                 let d = number_of("from-end", d)?;

@@ -21,7 +21,7 @@ use crate::solve::Outcome;
 use crate::solve::linear::solve;
 use crate::solve::oblique;
 use crate::solve::optimum::{a_star_squared, optimum};
-use num_traits::One;
+use num_traits::{One, Signed, Zero};
 
 /// Checks the claims `specs` (each `NAME=VALUE` as typed: `omega=1.2`, `v=3/5`,
 /// `omega=6*m*v0*a/(...)`) about one scene: what `rodimpact check` does with scene flags and
@@ -114,6 +114,9 @@ pub fn check_scene_within(
     if let Some(n) = sig {
         sigfig::check_sig(n)?;
     }
+    if let Some(side) = input.a.as_deref().and_then(optimum_side) {
+        return check_at_optimum(input, claims, sig, side);
+    }
     let given = GivenScene::read(input, budget)?;
     if given.has_formula() || claims.iter().any(ClaimedAnswer::is_symbolic) {
         if let Some(field) = input.first_oblique() {
@@ -195,6 +198,90 @@ fn check_numeric(
         };
         answers.push(decide(claim, &exact, sig));
     }
+    Ok(SceneCheck {
+        symbolic: None,
+        answers,
+    })
+}
+
+/// The side of `a*` a claim's `--a` names: `a*` or `+a*` (1), `-a*` (-1); `None` for
+/// anything else.
+fn optimum_side(a: &str) -> Option<i64> {
+    match a.replace(' ', "").as_str() {
+        "a*" | "+a*" => Some(1),
+        "-a*" => Some(-1),
+        _ => None,
+    }
+}
+
+/// Checks claims about a scene of numbers struck exactly at its optimum `a*` on `side` (from
+/// the centre, or from the pivot on a pivoted rod), solved in Q(sqrt d): there omega is
+/// omega_max and, on a free rod, the projectile and the rod's centre leave together (X19).
+///
+/// # Errors
+/// The scene's own errors; an oblique scene (its optimum is the normal problem's); `a*`
+/// beyond the rod's end (then the end is the best point, and has a number).
+fn check_at_optimum(
+    input: &SceneInput,
+    claims: &[ClaimedAnswer],
+    sig: Option<u32>,
+    side: i64,
+) -> Result<SceneCheck, Error> {
+    let at_end = SceneInput {
+        a: None,
+        ..input.clone()
+    };
+    let scene = at_end
+        .build()
+        .map_err(|e| numeric_scene_needed(e, claims))?;
+    if let Some(field) = input.first_oblique() {
+        return Err(Error::new(
+            field,
+            ErrorKind::Invalid(
+                "--a a* strikes the paper's scene at its optimum; an oblique or frictional scene takes a number for a".into(),
+            ),
+        ));
+    }
+    let p = scene.params::<Q>();
+    let squared = a_star_squared(&p);
+    let pivot = match &p.support {
+        Support::Free => Q::zero(),
+        Support::Pivot(at) => at.clone(),
+    };
+    // The rod's end on that side, as a distance from the centre or the pivot.
+    let room = if side > 0 {
+        p.half_length.clone() - &pivot
+    } else {
+        p.half_length.clone() + &pivot
+    };
+    if !room.is_positive() || squared > room.clone() * &room {
+        let end = p.half_length.clone() * Q::from_integer(side.into());
+        return Err(Error::out_of_range(
+            "a",
+            format!(
+                "a* = sqrt({squared}) from the {} lies beyond the rod's end on that side: the end is the best point there (--a {end})",
+                if pivot.is_zero() { "centre" } else { "pivot" }
+            ),
+        ));
+    }
+    let arm = QSqrt::sqrt_of(&squared) * &QSqrt::rational(Q::from_integer(side.into()));
+    let mut lifted = scene.params::<QSqrt>();
+    lifted.a = arm + &QSqrt::rational(pivot);
+    let out = solved(&lifted);
+    let opt = optimum(&scene).expect("a rod at rest before the impact has an optimum");
+    let answers = claims
+        .iter()
+        .map(|claim| {
+            let exact = match claim.quantity.motion_value(&lifted, &out)? {
+                Some(x) => Exact::Surd(x),
+                None if claim.quantity == Quantity::AStar => {
+                    Exact::Surd(QSqrt::sqrt_of(&opt.squared))
+                }
+                None => Exact::Surd(opt.omega_max.clone()),
+            };
+            Ok(decide(claim, &exact, sig))
+        })
+        .collect::<Result<Vec<_>, Error>>()?;
     Ok(SceneCheck {
         symbolic: None,
         answers,

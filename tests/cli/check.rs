@@ -708,3 +708,76 @@ fn the_usual_mistake_that_reproduces_a_claim_is_named() {
     ]);
     assert!(!stdout.contains("usual mistake"), "{stdout}");
 }
+
+/// NEWCOMER m13 and M6: `--a a*` strikes the scene exactly at its optimum, solved in Q(sqrt d).
+/// By hand, m = M = l = v0 = 1, e = 1, uniform rod: a*^2 = (M + m) I/(m M) = 2/3; there omega
+/// is omega_max = (1 + e) v0/(2 a*) = sqrt(6)/2 and the two leave together, v = V = 1/2 (X19);
+/// on the other side omega is negative. A pivot at the end -1: d*^2 = I_p/m = 1/3 + 1 = 4/3,
+/// omega = 2/(2 d*) = sqrt(3)/2. M = 3m puts a*^2 = 4/3 beyond the end: refused, naming the
+/// end. `solve` says where a* is taken.
+#[test]
+fn a_star_is_an_impact_point() {
+    let (code, stdout, stderr) = rodimpact(&[
+        "check",
+        "--m",
+        "1",
+        "--M",
+        "1",
+        "--a",
+        "a*",
+        "--claim",
+        "omega=1.22",
+        "--claim",
+        "omega=sqrt(6)/2",
+        "--claim",
+        "v=1/2",
+        "--claim",
+        "V=0.5",
+    ]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    assert!(
+        stdout.contains("omega  sqrt(6)/2 ≈ 1.22474  sqrt(6)/2  0 %"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("4 of 4 claims agree"), "{stdout}");
+    let (code, stdout, _) = rodimpact(&[
+        "check",
+        "--m",
+        "1",
+        "--M",
+        "1",
+        "--a",
+        "-a*",
+        "--claim",
+        "omega=-1.22",
+    ]);
+    assert_eq!(code, 0, "{stdout}");
+    let (code, stdout, _) = rodimpact(&[
+        "check",
+        "--m",
+        "1",
+        "--M",
+        "1",
+        "--pivot",
+        "-1",
+        "--a",
+        "a*",
+        "--claim",
+        "omega=sqrt(3)/2",
+    ]);
+    assert_eq!(code, 0, "{stdout}");
+    let (code, _, stderr) = rodimpact(&[
+        "check", "--m", "1", "--M", "3", "--a", "a*", "--claim", "omega=1",
+    ]);
+    assert_eq!(code, 2);
+    assert_eq!(
+        stderr,
+        "error: a: a* = sqrt(4/3) from the centre lies beyond the rod's end on that side: the end is the best point there (--a 1)\n"
+    );
+    let (code, _, stderr) = rodimpact(&["solve", "--m", "1", "--M", "1", "--a", "a*"]);
+    assert_eq!(code, 2);
+    assert!(
+        stderr.starts_with("error: a: a* is not a number here"),
+        "{stderr}"
+    );
+}
