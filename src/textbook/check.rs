@@ -320,11 +320,36 @@ fn exact_value(
             RatFn::one(),
             a_star_squared(&scene.params),
         )),
-        _ => Err(Error::new(
-            field,
-            ErrorKind::Invalid(
-                "omega_max is checked for numeric scenes only: it is omega(a*) when a* <= l and omega(l) otherwise, a different formula on each side; claim a_star or omega instead".into(),
-            ),
+        _ => omega_max_value(field, &scene.params),
+    }
+}
+
+/// omega_max of a symbolic free rod where the symbols decide which side of the end a* lies:
+/// (1 + e) v0/(2 a*) = (1 + e) v0 sqrt(A)/(2 A) (A = a*^2) when a* lies on the rod for every
+/// value of the symbols, omega(l) when it never does.
+///
+/// # Errors
+/// A pivoted rod, or a* on the rod for some values of the symbols only (then two formulas).
+fn omega_max_value(field: &str, p: &Params<RatFn>) -> Result<Radical, Error> {
+    let refuse = |why: String| Err(Error::new(field, ErrorKind::Invalid(why)));
+    if p.support != Support::Free {
+        return refuse("omega_max on a pivoted rod is checked for numeric scenes only: claim omega with --a a* instead".into());
+    }
+    let squared = a_star_squared(p);
+    match on_rod(&squared, &p.half_length) {
+        OnRod::Always => {
+            let coeff = (RatFn::one() + &p.e) * &p.v0 / &(RatFn::from_i64(2) * &squared);
+            Ok(Radical::normalized(coeff, squared))
+        }
+        OnRod::Never => {
+            let at_end = Params {
+                a: p.half_length.clone(),
+                ..p.clone()
+            };
+            Ok(Radical::rational(solved(&at_end).after.omega))
+        }
+        OnRod::When(c) => refuse(format!(
+            "omega_max is omega(a*) when {c} and omega(l) otherwise, two formulas: fix the case in the scene (--M 2*m, ...) or claim a_star or omega"
         )),
     }
 }
@@ -353,8 +378,8 @@ fn a_star_on_rod(p: &Params<RatFn>) -> Option<String> {
 /// Checks claims about a symbolic scene; every formula's work is charged to `budget`.
 ///
 /// # Errors
-/// Bad input; `omega_max` (piecewise, not one formula); rpm against a formula; an exhausted
-/// budget.
+/// Bad input; `omega_max` where the symbols leave a* on either side of the end (two
+/// formulas), or on a pivot; rpm against a formula; an exhausted budget.
 fn check_symbolic(
     given: &GivenScene,
     claims: &[ClaimedAnswer],
@@ -407,7 +432,8 @@ fn check_symbolic(
         // formula refuted only because a is free says so.
         let a_free = scene.free.iter().any(|s| s.name() == "a");
         let uses_a = matches!(&claim.value, ClaimedValue::Formula(r) if r.mentions(crate::field::Sym::new("a")));
-        if answer.agreement == AnswerAgreement::Disagrees && a_free && !uses_a {
+        let depends_on_a = !matches!(claim.quantity, Quantity::AStar | Quantity::OmegaMax);
+        if answer.agreement == AnswerAgreement::Disagrees && a_free && !uses_a && depends_on_a {
             answer.notes.push(
                 "a is a free symbol here (not the end, solve's default): add --a l for a hit at the end".into(),
             );

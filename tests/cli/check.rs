@@ -258,12 +258,12 @@ fn rod_formulas_make_the_check_symbolic_with_i_and_r() {
     // Uniform rod by default: I = M l^2/3 in a claim; M = m puts a* at sqrt(2/3) l.
     let (code, out, _) = check(&["--M", "m", "--claim", "a_star=sqrt(2/3)*l"]);
     assert_eq!(code, 0, "{out}");
-    // What stays numeric-only is named, with what to claim instead.
+    // omega_max where the symbols leave the case open is named, with what to claim instead.
     let (code, _, err) = check(&["--claim", "omega_max=v0/l"]);
     assert_eq!(code, 2);
     assert!(
-        err.contains("omega_max is checked for numeric scenes only")
-            && err.contains("claim a_star or omega instead"),
+        err.contains("omega_max is omega(a*) when M <= 2*m and omega(l) otherwise")
+            && err.contains("claim a_star or omega"),
         "{err}"
     );
     let (code, _, err) = check(&["--claim", "a_star=r"]);
@@ -779,5 +779,41 @@ fn a_star_is_an_impact_point() {
     assert!(
         stderr.starts_with("error: a: a* is not a number here"),
         "{stderr}"
+    );
+}
+
+/// NEWCOMER M6: omega_max in symbols where the scene decides the case. By hand, a uniform rod
+/// (I = M l^2/3) with M = m: a*^2 = (M + m) I/(m M) = 2 l^2/3 < l^2 always, so omega_max =
+/// (1 + e) v0/(2 a*) = sqrt(6)/2 v0/l at e = 1 and (3/8) sqrt(6) v0/l at e = 1/2. With M = 3m,
+/// a*^2 = 4 l^2/3 > l^2 always: omega_max is omega at the end, 2 m v0 l/(I (1 + m/M) + m l^2)
+/// = 6/7 v0/l. With M free the case depends on M <= 2m: refused, naming the condition.
+#[test]
+fn omega_max_in_symbols_where_the_case_is_decided() {
+    for (flags, claim) in [
+        (&["--M", "m"][..], "omega_max=sqrt(6)/2*v0/l"),
+        (
+            &["--M", "m", "--e", "1/2"][..],
+            "omega_max=3/8*sqrt(6)*v0/l",
+        ),
+        (&["--M", "3*m"][..], "omega_max=6*m*v0/((M+4*m)*l)"),
+    ] {
+        let mut args = vec!["check"];
+        args.extend_from_slice(flags);
+        args.extend(["--claim", claim]);
+        let (code, stdout, stderr) = rodimpact(&args);
+        assert_eq!(code, 0, "{args:?}: {stdout}{stderr}");
+        assert!(stdout.contains("1 claim, it agrees"), "{stdout}");
+    }
+    let (code, stdout, _) = rodimpact(&["check", "--M", "m", "--claim", "omega_max=v0/l"]);
+    assert_eq!(code, 1);
+    assert!(
+        stdout.contains("counterexample") && !stdout.contains("add --a l"),
+        "{stdout}"
+    );
+    let (code, _, stderr) = rodimpact(&["check", "--claim", "omega_max=v0/l"]);
+    assert_eq!(code, 2);
+    assert_eq!(
+        stderr,
+        "error: claim omega_max: omega_max is omega(a*) when M <= 2*m and omega(l) otherwise, two formulas: fix the case in the scene (--M 2*m, ...) or claim a_star or omega\n"
     );
 }
