@@ -107,11 +107,20 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
             "latex" => ExplainFormat::Latex,
             _ => ExplainFormat::Text,
         };
-        if scene.oblique().is_some() || args.json || backend != Backend::Exact {
+        if args.json || backend != Backend::Exact {
             return Err(rodimpact::Error::new(
                 "explain",
                 rodimpact::error::ErrorKind::Conflict(
-                    "the working is written for the paper's scene, exactly: not with --json, --backend or oblique flags".into(),
+                    "the working is written exactly: not with --json or --backend".into(),
+                ),
+            )
+            .into());
+        }
+        if scene.rod_before() != Default::default() {
+            return Err(rodimpact::Error::new(
+                "explain",
+                rodimpact::error::ErrorKind::Conflict(
+                    "the working is written for a rod at rest before the impact: not with --rod-v, --rod-vt or --rod-omega".into(),
                 ),
             )
             .into());

@@ -9,7 +9,7 @@ use crate::mechanics::Groups;
 use crate::scene::{Scene, Support};
 use crate::solve::linear::solve;
 use crate::solve::optimum::{Arm, Placement, optimum, struck_end};
-use num_traits::{One, Signed};
+use num_traits::{One, Signed, Zero};
 
 /// The output format of [`explain`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -114,8 +114,16 @@ fn render(
 /// `sqrt(x)` -> `\sqrt{x}`, `<=` -> `\le`, `=>` -> `\Rightarrow`, wide gaps -> `\qquad`.
 fn latex(e: &str) -> String {
     // Names first, into placeholders that the operator rules below cannot touch.
-    const NAMES: [(&str, &str); 9] = [
+    const NAMES: [(&str, &str); 17] = [
         ("omega_max", "\\omega_{\\max}"),
+        ("Jt_stick", "J_t^{\\text{stick}}"),
+        ("Jt", "J_t"),
+        ("v0t", "v_{0t}"),
+        ("vt", "v_t"),
+        ("Vt", "V_t"),
+        ("mu* ", "\\mu^{*} "),
+        ("mu", "\\mu"),
+        ("spin", "\\text{spin}"),
         ("max |omega| over the rod", "\\max_{\\text{rod}} |\\omega|"),
         ("omega", "\\omega"),
         ("v0", "v_0"),
@@ -133,6 +141,7 @@ fn latex(e: &str) -> String {
         .replace("   ", " \\qquad ")
         .replace("=>", "\\Rightarrow")
         .replace("<=", "\\le")
+        .replace(">=", "\\ge")
         .replace('*', " \\cdot ");
     while let Some(i) = s.find("sqrt(") {
         let rest = &s[i + 5..];
@@ -158,6 +167,22 @@ fn latex(e: &str) -> String {
 }
 
 fn steps(scene: &Scene) -> Vec<Step> {
+    // An oblique scene: the normal problem's working (a rod at rest meets the projectile's
+    // normal speed v0), then the step along the rod.
+    let normal = scene.normal_problem();
+    let mut steps = normal_steps(if scene.oblique().is_some() {
+        &normal
+    } else {
+        scene
+    });
+    if let Some(o) = scene.oblique() {
+        steps.insert(steps.len() - 1, along_the_rod(scene, o));
+    }
+    steps
+}
+
+/// The working of the paper's scene: the balances, their solution, and where omega is largest.
+fn normal_steps(scene: &Scene) -> Vec<Step> {
     let (m, big_m, a, v0, e) = numbers(scene);
     let inertia = scene.inertia();
     let out = solve(&scene.params::<Q>()).expect("a valid scene is nonsingular");
@@ -181,6 +206,86 @@ fn steps(scene: &Scene) -> Vec<Step> {
     }
     steps.push(a_star_step(scene));
     steps
+}
+
+/// The step along the rod of an oblique impact (a rod at rest): the slip, the impulse that
+/// would stop it, Coulomb's bound, stick or slide, and the velocities along the rod after.
+fn along_the_rod(scene: &Scene, o: &crate::scene::Oblique) -> Step {
+    let (p, op) = (scene.params::<Q>(), o.params::<Q>());
+    let out = crate::solve::oblique::solve(&p, &op, None)
+        .expect("Q decides stick or slide, and a valid scene is nonsingular");
+    let slip = op.slip(&p.support);
+    let free = matches!(p.support, Support::Free);
+    let (m, big_m) = (scene.m(), scene.rod_mass());
+    let one = Q::one();
+    let mut terms = vec![("1/m".to_string(), &one / m)];
+    if o.disc.is_some() {
+        terms.push(("2/m".into(), Q::from_integer(2.into()) / m));
+    }
+    if free {
+        terms.push(("1/M".into(), &one / big_m));
+    }
+    let k_t: Q = terms.iter().map(|(_, x)| x.clone()).sum();
+    let names: Vec<&str> = terms.iter().map(|(t, _)| t.as_str()).collect();
+    let mut prose = vec![format!(
+        "Along the rod the projectile slips at `u_t = {slip}` before the impact{}. A tangential impulse `Jt` changes that slip by `-k_t*Jt`, `k_t = {}`{}{}, so stopping it takes `Jt_stick = u_t/k_t`. Coulomb's law allows at most `mu` times the normal impulse `J = m*(v0 - v)`.",
+        if o.disc.is_some() {
+            " (the disc's rim turning with it)"
+        } else {
+            ""
+        },
+        names.join(" + "),
+        if o.disc.is_some() {
+            " (2/m: the solid disc's rim, r^2/I_disc = 2/m)"
+        } else {
+            ""
+        },
+        if free {
+            ""
+        } else {
+            " (the pivot holds the rod along its length)"
+        },
+    )];
+    let mut equations = vec![
+        format!("J = m*(v0 - v) = {}", out.impulse),
+        format!("k_t = {} = {k_t}", names.join(" + ")),
+        format!("Jt_stick = u_t/k_t = {}", out.stick_impulse),
+    ];
+    let jt = &out.tangential_impulse;
+    if op.mu.is_zero() {
+        prose.push("Without friction (`mu = 0`) nothing acts along the rod: `Jt = 0`.".into());
+    } else {
+        let mu_star = out.stick_impulse.abs() / &out.impulse;
+        equations.push(format!(
+            "mu* = |Jt_stick|/J = ({})/({}) = {mu_star}",
+            out.stick_impulse.abs(),
+            out.impulse
+        ));
+        prose.push(if matches!(out.contact, Some(crate::solve::oblique::ContactMode::Stick)) {
+            format!(
+                "`mu = {} >= mu* = {mu_star}`: the slip stops, and `Jt = Jt_stick = {jt}`.",
+                op.mu
+            )
+        } else {
+            format!(
+                "`mu = {} < mu* = {mu_star}`: the projectile slides throughout, and friction gives `|Jt| = mu*J = {}`, against the slip.",
+                op.mu,
+                jt.abs()
+            )
+        });
+    }
+    equations.push(format!("vt = v0t - Jt/m = {}", out.after.vt));
+    if free {
+        equations.push(format!("Vt = Jt/M = {}", out.after.rod.vt));
+    }
+    if let Some(spin) = &out.after.spin {
+        equations.push(format!("spin after = {spin}"));
+    }
+    Step {
+        title: "Along the rod: stick or slide",
+        prose,
+        equations,
+    }
 }
 
 /// m, M, a, v0 and e of `scene`, the numbers every equation is written with.

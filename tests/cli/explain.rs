@@ -84,7 +84,21 @@ fn markdown_and_latex_and_refusals() {
         ),
         (
             &["--m", "1", "--M", "1", "--explain", "--json"][..],
-            "error: explain: the working is written for the paper's scene, exactly: not with --json, --backend or oblique flags\n",
+            "error: explain: the working is written exactly: not with --json or --backend\n",
+        ),
+        (
+            &[
+                "--m",
+                "1",
+                "--M",
+                "1",
+                "--v0t",
+                "1",
+                "--rod-vt",
+                "1",
+                "--explain",
+            ][..],
+            "error: explain: the working is written for a rod at rest before the impact: not with --rod-v, --rod-vt or --rod-omega\n",
         ),
     ] {
         let (code, _, err) = run(args);
@@ -143,5 +157,48 @@ fn a_pivots_working_speaks_of_d_star() {
     assert!(
         other.contains("    max |omega| over the rod = 2*sqrt(21)/7\n"),
         "{other}"
+    );
+}
+
+/// NEWCOMER m12: the working of an oblique impact: the normal problem as for the paper's scene,
+/// then the step along the rod. By hand, m = 1, M = 2, l = 1, a = 1/2, v0 = 3, v0t = 2: the
+/// normal problem gives v = -1/5, so J = m (v0 - v) = 16/5; k_t = 1/m + 1/M = 3/2, the slip 2
+/// is stopped by Jt = 2/(3/2) = 4/3, so mu* = (4/3)/(16/5) = 5/12. With mu = 1/5 it slides:
+/// |Jt| = mu J = 16/25, vt = 2 - 16/25 = 34/25, Vt = 16/50 = 8/25. With mu = 10 it sticks:
+/// Jt = 4/3, vt = 2/3, Vt = 2/3.
+#[test]
+fn the_working_along_the_rod() {
+    let scene = [
+        "--m", "1", "--M", "2", "--a", "1/2", "--v0", "3", "--v0t", "2",
+    ];
+    let with = |mu: &str, format: &str| {
+        let mut args = scene.to_vec();
+        args.extend(["--mu", mu, "--explain", format]);
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 0, "{err}");
+        out
+    };
+    let slide = with("1/5", "text");
+    for line in [
+        "5. Along the rod: stick or slide",
+        "mu = 1/5 < mu* = 5/12: the projectile slides throughout, and friction gives |Jt| = mu*J = 16/25, against the slip.",
+        "    J = m*(v0 - v) = 16/5",
+        "    mu* = |Jt_stick|/J = (4/3)/(16/5) = 5/12",
+        "    vt = v0t - Jt/m = 34/25",
+        "    Vt = Jt/M = 8/25",
+        "6. Where omega is largest",
+    ] {
+        assert!(slide.contains(line), "{line}\n{slide}");
+    }
+    let stick = with("10", "text");
+    assert!(
+        stick.contains("mu = 10 >= mu* = 5/12: the slip stops, and Jt = Jt_stick = 4/3."),
+        "{stick}"
+    );
+    assert!(stick.contains("    vt = v0t - Jt/m = 2/3") && stick.contains("    Vt = Jt/M = 2/3"));
+    let tex = with("10", "latex");
+    assert!(
+        tex.contains(r"\mu  = 10 \ge \mu^{*}") && tex.contains(r"J_t^{\text{stick}}"),
+        "{tex}"
     );
 }
