@@ -31,7 +31,7 @@ import os
 from typing import Any, Dict, Iterable, List, Mapping, Optional, Tuple, Union
 
 from . import _native
-from ._values import Exact, Record, Surd, as_text, exact
+from ._values import Exact, Record, Report, Surd, as_text, exact
 from ._audit import AuditSummary, audit
 
 __all__ = [
@@ -82,7 +82,7 @@ def _digits(digits: Any) -> Optional[str]:
     return str(digits)
 
 
-class Solution(Record):
+class Solution(Report):
     """The whole answer to one scene, as ``rodimpact solve --json`` gives it.
 
     Attributes are the JSON keys with exact values: ``v``, ``V``, ``omega`` (``Fraction``),
@@ -93,20 +93,12 @@ class Solution(Record):
     JSON, and Jupyter shows a table.
     """
 
-    __slots__ = ("_laws_hold", "_text")
-
-    def __init__(self, data: Dict[str, Any], laws_hold: bool, text: str) -> None:
-        super().__init__(data)
-        object.__setattr__(self, "_laws_hold", laws_hold)
-        object.__setattr__(self, "_text", text)
+    __slots__ = ()
 
     @property
     def laws_hold(self) -> bool:
         """Whether every conservation law that applies held exactly (the CLI's exit 0)."""
-        return self._laws_hold
-
-    def __str__(self) -> str:
-        return self._text
+        return self._verdict
 
 
 def solve(m: Any = None, M: Any = None, *, digits: Any = None, **scene: Any) -> Solution:

@@ -7,12 +7,12 @@ import os
 from typing import Any, Dict, Iterable, Mapping, Optional, Union
 
 from . import _native
-from ._values import Record, as_text
+from ._values import Record, Report, as_text
 
 __all__ = ["check", "Check"]
 
 
-class Check(Record):
+class Check(Report):
     """Claims checked against the exact answers, as ``rodimpact check --json`` gives them.
 
     For scene inputs with claims: ``claims`` (one record per claim: ``name``, ``claim``,
@@ -23,23 +23,15 @@ class Check(Record):
     claim's exact value is a formula).
     """
 
-    __slots__ = ("_agree", "_text")
-
-    def __init__(self, data: Dict[str, Any], agree: bool, text: str) -> None:
-        super().__init__(data)
-        object.__setattr__(self, "_agree", agree)
-        object.__setattr__(self, "_text", text)
+    __slots__ = ()
 
     @property
     def all_agree(self) -> bool:
         """Whether every claim agrees with the exact answer (the CLI's exit 0)."""
-        return self._agree
-
-    def __str__(self) -> str:
-        return self._text
+        return self._verdict
 
     def __repr__(self) -> str:
-        return f"Check(all_agree={self._agree})"
+        return f"Check(all_agree={self._verdict})"
 
     def _repr_html_(self) -> str:
         import html

@@ -9,12 +9,12 @@ import os
 from typing import Any, Dict, Mapping, Optional, Union
 
 from . import _native
-from ._values import Record
+from ._values import Record, Report
 
 __all__ = ["impact", "Impact"]
 
 
-class Impact(Record):
+class Impact(Report):
     """A planar impact answered, as ``rodimpact impact --format json`` gives it.
 
     One contact: ``laws``, one record per restitution law (``law``, ``bodies`` with each
@@ -25,17 +25,12 @@ class Impact(Record):
     ``str()`` is the CLI's text report and ``to_dict()`` its JSON.
     """
 
-    __slots__ = ("_agree", "_text")
-
-    def __init__(self, data: Dict[str, Any], agree: bool, text: str) -> None:
-        super().__init__(data)
-        object.__setattr__(self, "_agree", agree)
-        object.__setattr__(self, "_text", text)
+    __slots__ = ()
 
     @property
     def all_agree(self) -> bool:
         """Whether the scene's published answers all agree (true when it has none)."""
-        return self._agree
+        return self._verdict
 
     def law(self, name: str) -> Record:
         """The answer under the law ``name`` (``"newton"``, ``"poisson"``, ``"energetic"``)."""
@@ -43,9 +38,6 @@ class Impact(Record):
             if answer.get("law") == name:
                 return Record(answer)
         raise KeyError(f"no law {name!r} in this answer")
-
-    def __str__(self) -> str:
-        return self._text
 
     def __repr__(self) -> str:
         kind = "laws" if "laws" in self._data else "models"

@@ -14,7 +14,7 @@ import sys
 from fractions import Fraction
 from typing import Any, Dict, Iterator, Mapping, Optional, Union
 
-__all__ = ["Surd", "Record", "Exact", "exact", "as_text"]
+__all__ = ["Surd", "Record", "Report", "Exact", "exact", "as_text"]
 
 _RATIONAL = re.compile(r"-?[0-9]+(?:/[0-9]+)?")
 
@@ -292,3 +292,18 @@ def as_text(name: str, value: Any, symbols: bool = False) -> str:
         f"{name}: expected a number as a string ('3/7', '0.25'), an int or a Fraction, "
         f"got {type(value).__name__}"
     )
+
+
+class Report(Record):
+    """A :class:`Record` that also carries the CLI's text report (``str()``) and its verdict
+    (the CLI's exit 0): the base of ``Solution``, ``Check`` and ``Impact``."""
+
+    __slots__ = ("_verdict", "_text")
+
+    def __init__(self, data: Dict[str, Any], verdict: bool, text: str) -> None:
+        super().__init__(data)
+        object.__setattr__(self, "_verdict", verdict)
+        object.__setattr__(self, "_text", text)
+
+    def __str__(self) -> str:
+        return self._text
