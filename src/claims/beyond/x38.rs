@@ -113,6 +113,12 @@ fn formalise(_paper: &Paper) -> Formalised {
         &total(&t2, &q2),
     ]);
     let [un1f, _, un2f, ut2f] = at_the_pegs(&end);
+    let [_, ut1_before, _, _] =
+        at_the_pegs(&the_box_after([&k(0, 1), &k(0, 1), &k(0, 1), &k(0, 1)]));
+    let mean = |x: &RatFn, y: &RatFn| (x.clone() + y) / &k(2, 1);
+    // Each impulse's work in a phase: the impulse times the mean of its velocity before and after.
+    let friction_work = t1.clone() * &mean(&ut1_before, &ut1c);
+    let restitution_work = p2.clone() * &mean(&k(0, 1), &un2f);
     let gain = energy(&end) - &k(1, 4);
     let solver_gain = match parse_toml("X38", SCENE)
         .map(|system| solve_several::<Q>(&system, &Model::SimultaneousPoisson))
@@ -137,9 +143,13 @@ fn formalise(_paper: &Paper) -> Formalised {
          plastic one (which leaves at 2397/44800 > 0) satisfy every condition, and that the \
          energy rises by 989587/25088000. rodimpact's solver, which tries every mode of both \
          contacts in both phases, finds this answer and no other; z3 decides from the \
-         conditions alone that it is the only one and that every solution gains energy. The \
-         normal impulses do negative work; friction in the expansion, driven by the elastic \
-         peg's restitution impulse, is what adds energy.",
+         conditions alone that it is the only one and that every solution gains energy. Where \
+         the energy comes from (each impulse's work is the impulse times the mean of its \
+         velocity before and after the phase): in the compression the friction at the lower peg \
+         does positive work, +20999/627200, because that peg's slip reverses within the phase \
+         and the phase's friction opposes the slip at its end; in the expansion the elastic \
+         peg's normal impulse does +6938469/25088000, more than twice the -141/1120 its \
+         compression impulse did.",
         "the one Poisson answer satisfies every condition of both phases and leaves the box with 989587/25088000 more kinetic energy",
         vec![
             id(
@@ -168,6 +178,16 @@ fn formalise(_paper: &Paper) -> Formalised {
                 "the elastic peg's slip at the end is negative, so its expansion friction is +mu p",
                 n("ut2f", ut2f),
                 k(-321, 11200),
+            ),
+            id(
+                "the work of the lower peg's friction in the compression, t1 (ut1 before + ut1c)/2, is positive",
+                n("W_t1", friction_work),
+                k(20999, 627200),
+            ),
+            id(
+                "the work of the elastic peg's normal impulse in the expansion, p2 (un2c + un2f)/2",
+                n("W_p2", restitution_work),
+                k(6938469, 25088000),
             ),
             id(
                 "the energy change: (vx^2 + vy^2)/2 + (5/12) w^2 - 1/4",
