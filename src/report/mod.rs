@@ -11,6 +11,7 @@ mod claims_doc;
 mod explain;
 pub mod explore;
 mod formula;
+mod handout;
 mod impact;
 mod impact_run;
 pub mod markup;
@@ -36,6 +37,7 @@ pub use check::{
 pub use claims_doc::claims_markdown;
 pub use explain::{ExplainFormat, explain};
 pub use formula::{formula_json, formula_latex, formula_markdown, formula_text};
+pub use handout::handout_html;
 pub use impact::{impact_audit_json, impact_json, impact_text, models_json, models_text};
 pub use impact_run::{impact_run_json, impact_run_text};
 pub use paper_html::{PaperEdition, paper_html};
