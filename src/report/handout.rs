@@ -9,7 +9,7 @@ use super::mathml::escape;
 use super::page::{Page, document, inline_svg};
 use super::paper_html::{formula_table, wide};
 use super::{
-    ExplainFormat, Table, TableOptions, explain, markup, omega_figure, solution_text, t1, t2,
+    ExplainFormat, Table, TableOptions, explain, markup, omega_figure, solution_html, t1, t2,
 };
 use crate::error::Error;
 use crate::scene::{RodInertia, Scene, Support};
@@ -38,7 +38,7 @@ const DIGITS: usize = 6;
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let page = rodimpact::report::handout_html(&s, &formulas(&SceneInput::default())?)?;
 /// assert!(page.starts_with("<!DOCTYPE html>") && !page.contains("<script"));
-/// assert!(page.contains("12/11 rad/s") && page.contains("<svg role=\"img\""));
+/// assert!(page.contains("<td>12/11 rad/s</td>") && page.contains("<svg role=\"img\""));
 /// assert!(page.contains("<table id=\"T2\">") && !page.contains("https://"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
@@ -65,13 +65,13 @@ pub fn handout_html(scene: &Scene, formulas: &Formulas) -> Result<String, Error>
     );
     let _ = write!(
         body,
-        "<section id=\"answer\">\n<h2>1. The scene and its exact answer</h2>\n\
-         <pre>{}</pre>\n</section>\n",
-        escape(&solution_text(&answer, DIGITS))
+        "<section id=\"answer\">\n<h2>The scene and its exact answer</h2>\n\
+         {}</section>\n",
+        solution_html(&answer, DIGITS)
     );
     let _ = write!(
         body,
-        "<section id=\"working\">\n<h2>2. The working</h2>\n<div class=\"working\">\n{}</div>\n\
+        "<section id=\"working\">\n<h2>The working</h2>\n<div class=\"working\">\n{}</div>\n\
          </section>\n",
         explain(scene, ExplainFormat::Html)
     );
@@ -80,14 +80,14 @@ pub fn handout_html(scene: &Scene, formulas: &Formulas) -> Result<String, Error>
                    for this scene; a* and the end of the rod marked.";
     let _ = write!(
         body,
-        "<section id=\"figure\">\n<h2>4. The spin along the rod</h2>\n<figure>\n{}\
+        "<section id=\"figure\">\n<h2>The spin along the rod</h2>\n<figure>\n{}\
          <figcaption><b>Figure.</b> {}</figcaption>\n</figure>\n</section>\n",
         inline_svg(&figure.svg, caption),
         escape(caption)
     );
     let _ = write!(
         body,
-        "<section id=\"table\">\n<h2>5. The table</h2>\n{}</section>\n</main>\n",
+        "<section id=\"table\">\n<h2>The table</h2>\n{}</section>\n</main>\n",
         wide(&format!("Table {}", table.id), &table.html())
     );
     let _ = writeln!(
@@ -110,7 +110,7 @@ pub fn handout_html(scene: &Scene, formulas: &Formulas) -> Result<String, Error>
 /// The formulas in the scene's free symbols, with the defaults they rest on.
 fn formula_section(f: &Formulas) -> String {
     let mut out = String::from(
-        "<section id=\"formulas\">\n<h2>3. The formulas</h2>\n<p>The answer for any scene of \
+        "<section id=\"formulas\">\n<h2>The formulas</h2>\n<p>The answer for any scene of \
          this kind, as <code>rodimpact formula</code> gives it",
     );
     if !f.defaults.is_empty() {

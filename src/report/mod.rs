@@ -55,7 +55,7 @@ pub use proofs::{
 pub use simulate::{
     simulation_json, simulation_passes, simulation_text, sweep_json, sweep_passes, sweep_text,
 };
-pub use solution::{solution_json, solution_text};
+pub use solution::{solution_html, solution_json, solution_text};
 pub use stability::{stability_json, stability_markdown};
 pub use table::{Cell, Column, Format, Table, render_document};
 

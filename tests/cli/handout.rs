@@ -36,13 +36,12 @@ fn handout_holds_the_exact_answer_the_working_the_formulas_figure_and_table() {
     // The answer, as solve states it.
     let answer = section(&page, "answer");
     for exact in [
-        "v      projectile velocity",
-        "3/11 m/s",
-        "8/11 m/s",
-        "12/11 rad/s",
-        "sqrt(6)/3 m",
-        "sqrt(6)/2 rad/s",
-        "M ≤ 2m (here M = m)",
+        "<th scope=\"row\">v</th><td>projectile velocity</td><td>3/11 m/s</td>",
+        "<td>8/11 m/s</td>",
+        "<th scope=\"row\">omega</th><td>rod angular velocity</td><td>12/11 rad/s</td>",
+        "<td>sqrt(6)/3 m</td>",
+        "<td>sqrt(6)/2 rad/s</td>",
+        "<td>M ≤ 2m (here M = m)</td>",
     ] {
         assert!(answer.contains(exact), "{exact}");
     }
