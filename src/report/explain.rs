@@ -3,7 +3,7 @@
 //! (f(x) = x/(b^2 + c^2 x^2) is largest at x = b/c), with whether a* lies on the rod. One list
 //! of steps, rendered as text, Markdown or LaTeX.
 
-use super::mathml;
+use super::{markup, mathml};
 use crate::field::notation::{Notation, surd};
 use crate::field::{Q, QSqrt};
 use crate::mechanics::Groups;
@@ -56,6 +56,7 @@ fn n(x: &Q) -> String {
 /// assert!(text.contains("a*^2 = b^2/c^2 = 2/3"));
 /// let html = explain(&s, ExplainFormat::Html);
 /// assert!(html.starts_with("<h3>1. The scene</h3>\n<p><math>"));
+/// assert!(html.contains("<h3>5. Where ω is largest</h3>"));
 /// assert!(html.contains("<math display=\"block\">") && !html.contains("merror"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
@@ -92,14 +93,19 @@ pub fn explain(scene: &Scene, format: ExplainFormat) -> String {
         ),
         ExplainFormat::Html => render(
             &steps,
-            |t| format!("<h3>{}</h3>\n", mathml::escape(t)),
+            |t| format!("<h3>{}</h3>\n", words_html(t)),
             |e| format!("{}\n", mathml::math(&latex(e), true)),
             |p| {
-                let html = prose(p, mathml::escape, |m| mathml::math(&latex(m), false));
+                let html = prose(p, words_html, |m| mathml::math(&latex(m), false));
                 format!("<p>{html}</p>\n")
             },
         ),
     }
+}
+
+/// Words for a web page: the ASCII math among them in Unicode (`omega` is `ω`), escaped.
+fn words_html(words: &str) -> String {
+    mathml::escape(&markup::ascii_math(words))
 }
 
 /// A sentence whose math is marked with backticks: the words written by `words`, the math by
