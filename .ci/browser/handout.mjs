@@ -12,7 +12,7 @@ for (const [i, file] of files.entries()) {
       const frac = document.querySelector("#working mfrac, #formulas mfrac");
       return {
         sections: [...document.querySelectorAll("main section[id]")].map((s) => s.id),
-        answer: document.querySelector("#answer pre")?.textContent ?? "",
+        answer: document.querySelector("#answer table.answer")?.textContent ?? "",
         maths: document.querySelectorAll("#working math, #formulas math").length,
         fracHeight: frac ? frac.getBoundingClientRect().height : 0,
         numerHeight: frac ? frac.firstElementChild.getBoundingClientRect().height : 0,
