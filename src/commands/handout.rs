@@ -1,5 +1,6 @@
 //! `rodimpact handout`: one scene for a class, on one page to print or hand out.
 
+use super::plot::check_extension;
 use super::{Failure, SceneFlags, print_out};
 use clap::Args;
 use rodimpact::io::write_atomic;
@@ -19,6 +20,14 @@ pub(crate) struct HandoutArgs {
 }
 
 pub(crate) fn run_handout(args: &HandoutArgs) -> Result<(), Failure> {
+    if let Some(file) = &args.out {
+        check_extension(
+            "out",
+            file,
+            "html",
+            " (handout writes HTML; a browser prints it to PDF, 2-5 A4 pages)",
+        )?;
+    }
     let given = args.scene.input();
     let scene = given.build()?;
     // The formulas of a scene of this kind: the rod, the law and the pivot as given, m, M, a

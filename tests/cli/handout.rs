@@ -112,6 +112,17 @@ fn handout_out_writes_the_page_whole_and_a_bad_flag_is_one_line() {
         .collect();
     left.sort();
     assert_eq!(left, ["h.html"]);
+    // A name that promises another format (a PDF) is refused before anything is written.
+    let pdf = dir.join("h.pdf");
+    let mut args = SCENE.to_vec();
+    args.extend(["--out", pdf.to_str().unwrap()]);
+    let (code, _, err) = rodimpact(&args);
+    assert_eq!(code, 2);
+    assert!(
+        err.starts_with("error: out: the file name must end in .html") && err.lines().count() == 1,
+        "{err}"
+    );
+    assert!(!pdf.exists());
     // The scene flags' own errors, one line, exit 2.
     for (bad, field) in [
         (["--m", "x", "--a", "1/2"], "error: m:"),
