@@ -57,6 +57,10 @@ enum Command {
         &rod=dumbbell&pivot=-1&predict=0&frame=lab (docs/explore.md)."
     )]
     Explore(commands::explore::ExploreArgs),
+    /// One scene as a handout to print: the exact answer, the working, the formulas with their
+    /// conditions, omega along the rod and a table, on one self-contained HTML page (2-5 A4
+    /// pages).
+    Handout(Box<commands::handout::HandoutArgs>),
     /// Float error against run time for every backend and formula on the stiff/extreme suite.
     Stability(commands::stability::StabilityArgs),
     /// Many scenes from a CSV file, exactly, streamed and in parallel; claimed v, V, omega,
@@ -107,6 +111,7 @@ fn main() -> ExitCode {
         Command::Impact(args) => commands::impact::run_impact(args),
         Command::Formula(args) => commands::formula::run_formula(args),
         Command::Explore(args) => commands::explore::run_explore(args),
+        Command::Handout(args) => commands::handout::run_handout(args),
         Command::Stability(args) => commands::stability::run_stability(args),
         Command::Batch(args) => commands::batch::run_batch(args),
         Command::Scenes(args) => commands::scenes::run_scenes(args),

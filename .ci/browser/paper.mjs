@@ -2,16 +2,9 @@
 // edition (`--summary`), as printed.
 // Usage: node paper.mjs PAGE.html CLAIMS SCREENSHOT_DIR SUMMARY.html
 import { inBrowser } from "./common.mjs";
+import { printed } from "./print.mjs";
 
 const [file, claimCount, shots, summaryFile] = process.argv.slice(2);
-
-/** Prints the page to A4 at `path`: its page count (0 when the PDF's page tree is compressed, Firefox). */
-async function printed(page, path) {
-  const pdf = Buffer.from(await page.pdf({ format: "A4", path }));
-  // The page count from the PDF's page tree (Chromium writes it plainly; Firefox compresses it).
-  const counts = [...pdf.toString("latin1").matchAll(/\/Type\s*\/Pages[^>]*?\/Count\s+(\d+)|\/Count\s+(\d+)[^>]*?\/Type\s*\/Pages/g)].map((m) => Number(m[1] || m[2]));
-  return { pages: counts.length ? Math.max(...counts) : 0, bytes: pdf.length };
-}
 
 /** The ids of the certificates open while the page is being printed (the print events sent by hand). */
 const openInPrint = (page) => page.evaluate(() => {

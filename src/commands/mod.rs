@@ -6,6 +6,7 @@ pub(crate) mod check;
 pub(crate) mod claims;
 pub(crate) mod explore;
 pub(crate) mod formula;
+pub(crate) mod handout;
 pub(crate) mod impact;
 pub(crate) mod plot;
 pub(crate) mod scenes;

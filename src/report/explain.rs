@@ -3,6 +3,7 @@
 //! (f(x) = x/(b^2 + c^2 x^2) is largest at x = b/c), with whether a* lies on the rod. One list
 //! of steps, rendered as text, Markdown or LaTeX.
 
+use super::{markup, mathml};
 use crate::field::notation::{Notation, surd};
 use crate::field::{Q, QSqrt};
 use crate::mechanics::Groups;
@@ -20,6 +21,9 @@ pub enum ExplainFormat {
     Markdown,
     /// A LaTeX fragment (equations in `align*`).
     Latex,
+    /// An HTML fragment for a web page: each step an `<h3>` and paragraphs, the math in MathML
+    /// (no script or font needed).
+    Html,
 }
 
 /// A step: a heading, sentences, and equations written in the crate's ASCII math (`*`, `/`,
@@ -50,6 +54,10 @@ fn n(x: &Q) -> String {
 /// assert!(text.contains("D = 1 + q = 5"));
 /// assert!(text.contains("omega = (1 + e)*(m*a/I)/D*v0 = 6/5"));
 /// assert!(text.contains("a*^2 = b^2/c^2 = 2/3"));
+/// let html = explain(&s, ExplainFormat::Html);
+/// assert!(html.starts_with("<h3>1. The scene</h3>\n<p><math>"));
+/// assert!(html.contains("<h3>5. Where ω is largest</h3>"));
+/// assert!(html.contains("<math display=\"block\">") && !html.contains("merror"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn explain(scene: &Scene, format: ExplainFormat) -> String {
@@ -59,34 +67,57 @@ pub fn explain(scene: &Scene, format: ExplainFormat) -> String {
             &steps,
             |t| format!("{t}\n"),
             |e| format!("    {e}\n"),
-            |p| format!("{}\n", prose(p, |m| m.to_string())),
+            |p| format!("{}\n", prose(p, str::to_string, |m| m.to_string())),
         ),
         ExplainFormat::Markdown => render(
             &steps,
             |t| format!("### {t}\n\n"),
             |e| format!("$$ {} $$\n\n", latex(e)),
-            |p| format!("{}\n\n", prose(p, |m| format!("${}$", latex(m)))),
+            |p| {
+                format!(
+                    "{}\n\n",
+                    prose(p, str::to_string, |m| format!("${}$", latex(m)))
+                )
+            },
         ),
         ExplainFormat::Latex => render(
             &steps,
             |t| format!("\\paragraph{{{t}}}\n"),
             |e| format!("\\[ {} \\]\n", latex(e)),
-            |p| format!("{}\n\n", prose(p, |m| format!("${}$", latex(m)))),
+            |p| {
+                format!(
+                    "{}\n\n",
+                    prose(p, str::to_string, |m| format!("${}$", latex(m)))
+                )
+            },
+        ),
+        ExplainFormat::Html => render(
+            &steps,
+            |t| format!("<h3>{}</h3>\n", words_html(t)),
+            |e| format!("{}\n", mathml::math(&latex(e), true)),
+            |p| {
+                let html = prose(p, words_html, |m| mathml::math(&latex(m), false));
+                format!("<p>{html}</p>\n")
+            },
         ),
     }
 }
 
-/// A sentence whose math is marked with backticks, the math written by `math`.
-fn prose(p: &str, math: impl Fn(&str) -> String) -> String {
+/// Words for a web page: the ASCII math among them in Unicode (`omega` is `ω`), escaped.
+fn words_html(words: &str) -> String {
+    mathml::escape(&markup::ascii_math(words))
+}
+
+/// A sentence whose math is marked with backticks: the words written by `words`, the math by
+/// `math`.
+fn prose(p: &str, words: impl Fn(&str) -> String, math: impl Fn(&str) -> String) -> String {
     p.split('`')
         .enumerate()
-        .map(|(i, part)| {
-            if i % 2 == 1 {
-                math(part)
-            } else {
-                part.to_string()
-            }
-        })
+        .map(
+            |(i, part)| {
+                if i % 2 == 1 { math(part) } else { words(part) }
+            },
+        )
         .collect()
 }
 

@@ -120,10 +120,12 @@ fn command(name: &str) -> Option<Symbol> {
         "times" => Operator("×"),
         "infty" => Identifier("∞"),
         "to" => Operator("→"),
+        "Rightarrow" => Operator("⇒"),
         "pm" => Operator("±"),
         "," => Space("0.1667em"),
         ";" => Space("0.2778em"),
         "quad" => Space("1em"),
+        "qquad" => Space("2em"),
         _ => return None,
     })
 }

@@ -11,6 +11,7 @@ mod claims_doc;
 mod explain;
 pub mod explore;
 mod formula;
+mod handout;
 mod impact;
 mod impact_run;
 pub mod markup;
@@ -36,6 +37,7 @@ pub use check::{
 pub use claims_doc::claims_markdown;
 pub use explain::{ExplainFormat, explain};
 pub use formula::{formula_json, formula_latex, formula_markdown, formula_text};
+pub use handout::handout_html;
 pub use impact::{impact_audit_json, impact_json, impact_text, models_json, models_text};
 pub use impact_run::{impact_run_json, impact_run_text};
 pub use paper_html::{PaperEdition, paper_html};
@@ -53,7 +55,7 @@ pub use proofs::{
 pub use simulate::{
     simulation_json, simulation_passes, simulation_text, sweep_json, sweep_passes, sweep_text,
 };
-pub use solution::{solution_json, solution_text};
+pub use solution::{solution_html, solution_json, solution_text};
 pub use stability::{stability_json, stability_markdown};
 pub use table::{Cell, Column, Format, Table, render_document};
 

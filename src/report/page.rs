@@ -1,4 +1,4 @@
-//! The shell every rodimpact web page shares (`paper --format html`, `explore`): one complete
+//! The shell every rodimpact web page shares (`paper --format html`, `explore`, `handout`): one complete
 //! HTML5 document that needs nothing beyond itself. Style, scripts, data and figures all go
 //! inline and nothing is fetched (no font, stylesheet, script or image from the network), so
 //! the file opens from disk, offline, and prints.

@@ -161,7 +161,7 @@ pub fn paper_html(
 
 /// `html` (a table) in a box of its own that scrolls sideways when the screen is narrower than
 /// the table (a phone), instead of the whole page; reachable by keyboard, named `label`.
-fn wide(label: &str, html: &str) -> String {
+pub(super) fn wide(label: &str, html: &str) -> String {
     format!(
         "<div class=\"wide\" role=\"region\" tabindex=\"0\" aria-label=\"{}\">\n{html}</div>\n",
         escape(label)
@@ -223,6 +223,15 @@ fn formula_section(f: &Formulas) -> String {
         );
     }
     let _ = writeln!(out, ", in the symbols {}.</p>", escape(&f.free.join(", ")));
+    out.push_str(&formula_table(f));
+    out.push_str("</section>\n");
+    out
+}
+
+/// The formulas of `f` as a table (in its own sideways-scrolling box): each quantity, its
+/// formula in MathML, what it means and when it applies (omega_max's case split typeset as
+/// the formula beside it). The paper page and the handout both show it.
+pub(super) fn formula_table(f: &Formulas) -> String {
     let mut table = String::from(
         "<table class=\"formulas\">\n<thead><tr><th scope=\"col\">quantity</th>\
          <th scope=\"col\">formula</th><th scope=\"col\">meaning</th></tr></thead>\n<tbody>\n",
@@ -238,9 +247,7 @@ fn formula_section(f: &Formulas) -> String {
         );
     }
     table.push_str("</tbody>\n</table>\n");
-    out.push_str(&wide("The results as formulas", &table));
-    out.push_str("</section>\n");
-    out
+    wide("The results as formulas", &table)
 }
 
 /// When a formula holds (omega_max's case split), after its meaning: the inequality and the

@@ -1,6 +1,7 @@
 //! The answer to one scene, as `rodimpact solve` prints it: JSON (the keys of docs/conventions.md)
 //! and an aligned text report.
 
+use super::mathml::escape;
 use super::{surd_json, value_json};
 use crate::field::Q;
 use crate::field::decimal::{self, Rounding};
@@ -131,6 +132,34 @@ fn paper_json(answer: &Answer, out: &mut Map<String, Value>, value: &impl Fn(&Q)
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn solution_text(answer: &Answer, digits: usize) -> String {
+    let (head, table) = solution_parts(answer, digits);
+    head + "\n" + &table.render()
+}
+
+/// The same report as [`solution_text`] for a web page: the scene's lines as a paragraph, the
+/// values as an HTML table (one heading row per section; exact value and decimal in columns
+/// of their own), every word and value as `solve` prints it.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{report::solution_html, scene::Scene, solve::Answer, field::q};
+/// let html = solution_html(&Answer::of(&Scene::builder(q(1, 1), q(1, 1)).build()?), 6);
+/// assert!(html.starts_with("<p class=\"scene\">Scene: free rod"));
+/// assert!(html.contains("<tr><th scope=\"row\">omega</th><td>rod angular velocity</td><td>6/5 rad/s</td><td class=\"decimal\">~ 1.20000</td></tr>"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn solution_html(answer: &Answer, digits: usize) -> String {
+    let (head, table) = solution_parts(answer, digits);
+    let head: Vec<String> = head.lines().map(|l| escape(l.trim())).collect();
+    format!(
+        "<p class=\"scene\">{}</p>\n{}",
+        head.join("<br>\n"),
+        table.html()
+    )
+}
+
+/// The report's scene lines (ending in a newline) and its table of values.
+fn solution_parts(answer: &Answer, digits: usize) -> (String, Table) {
     let s = &answer.scene;
     let mut t = Table::default();
     let mut out = String::new();
@@ -148,7 +177,7 @@ pub fn solution_text(answer: &Answer, digits: usize) -> String {
     if let Some(o) = s.oblique() {
         out.push_str(&format!("  {}\n", describe_oblique(o)));
     }
-    out.push_str("  (SI units; a number given without a unit is read in SI)\n\n");
+    out.push_str("  (SI units; a number given without a unit is read in SI)\n");
     let value = |x: &Q, unit: &str| rational_cells(x, unit, digits);
     match &answer.impact.oblique {
         None => paper_rows(answer, &mut t, &value),
@@ -161,8 +190,7 @@ pub fn solution_text(answer: &Answer, digits: usize) -> String {
             "not reported",
             plain("the rod turns before the impact, so the approach speed depends on a".into()),
         );
-        out.push_str(&t.render());
-        return out;
+        return (out, t);
     };
     let (symbol, formula) = match s.support() {
         Support::Free => ("a*^2", "I (M + m)/(m M)"),
@@ -233,8 +261,7 @@ pub fn solution_text(answer: &Answer, digits: usize) -> String {
             cells(max.to_string(), max.decimal(digits), "rad/s"),
         );
     }
-    out.push_str(&t.render());
-    out
+    (out, t)
 }
 /// The paper scene's rows: velocities after, impulses, energy and residuals.
 fn paper_rows(answer: &Answer, t: &mut Table, value: &impl Fn(&Q, &str) -> [String; 2]) {
@@ -610,6 +637,31 @@ impl Table {
             out.push_str(row.trim_end());
             out.push('\n');
         }
+        out
+    }
+
+    /// The table in HTML: a heading row per section, a row per line (the symbol as its header
+    /// cell), the decimal after `~` in a cell of its own.
+    fn html(&self) -> String {
+        let mut out = String::from("<table class=\"answer\">\n");
+        for (i, line) in self.lines.iter().enumerate() {
+            for (_, title) in self.headings.iter().filter(|(at, _)| *at == i) {
+                out.push_str(&format!(
+                    "<tr class=\"section\"><th colspan=\"4\" scope=\"colgroup\">{}</th></tr>\n",
+                    escape(title)
+                ));
+            }
+            let [sym, meaning, exact, decimal] = line.each_ref().map(|x| escape(x));
+            let approx = if decimal.is_empty() {
+                String::new()
+            } else {
+                format!("~ {decimal}")
+            };
+            out.push_str(&format!(
+                "<tr><th scope=\"row\">{sym}</th><td>{meaning}</td><td>{exact}</td><td class=\"decimal\">{approx}</td></tr>\n"
+            ));
+        }
+        out.push_str("</table>\n");
         out
     }
 }

@@ -16,6 +16,7 @@ mod engines;
 mod explain;
 mod explore;
 mod formula;
+mod handout;
 mod impact;
 mod no_half_written;
 mod oblique;
