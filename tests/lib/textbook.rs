@@ -387,7 +387,10 @@ fn symbolic_input_errors_name_the_field() {
         ..end_hit_elastic()
     };
     assert!(run(s, "v=m").starts_with("m: -1 is outside the domain"));
-    assert!(run(end_hit_elastic(), "omega_max=l").contains("numeric scenes only"));
+    assert!(
+        run(end_hit_elastic(), "omega_max=l")
+            .contains("omega(a*) when M <= 2*m and omega(l) otherwise, two formulas")
+    );
     assert!(run(end_hit_elastic(), "omega=30 rpm").contains("rpm cannot be compared"));
 }
 
