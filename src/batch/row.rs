@@ -144,14 +144,15 @@ impl Batch {
     /// The row, named when the summary lists it (a finding, or a wrong claim), and checked
     /// against the baseline of `--expect`.
     fn labelled(&self, mut row: SolvedRow, line: &str) -> SolvedRow {
-        let findings: Vec<&'static str> = match &row.diagnosis {
-            Some(Diagnosis::Findings(f)) => f.iter().map(|f| f.name()).collect(),
-            _ => Vec::new(),
-        };
+        let found = matches!(&row.diagnosis, Some(Diagnosis::Findings(f)) if !f.is_empty());
         let wrong = row.checks.iter().any(|c| !c.ok);
-        if !findings.is_empty() || wrong {
+        if found || wrong {
             let label = self.label(row.number, line);
             if let Some(expected) = &self.expected {
+                let findings: Vec<&'static str> = match &row.diagnosis {
+                    Some(Diagnosis::Findings(f)) => f.iter().map(|f| f.name()).collect(),
+                    _ => Vec::new(),
+                };
                 let (used, unexpected) = expected.check(&label, &findings, wrong);
                 row.expectation = Some(RowExpectation { used, unexpected });
             }

@@ -2,6 +2,7 @@
 //! the median relative error (from a bounded histogram, so memory stays flat in the rows).
 
 use super::audit::Finding;
+use super::expected::{Expected, ExpectedEntry};
 use super::plan::{CLAIMS, Diagnosis, SolvedRow};
 use crate::field::Q;
 use num_traits::Zero;
@@ -51,6 +52,29 @@ pub struct Baseline {
     pub unexpected: Vec<(String, Vec<&'static str>)>,
     /// The entries (0-based, in file order) that allowed some row's finding.
     pub used: std::collections::BTreeSet<usize>,
+}
+
+impl Baseline {
+    /// The baseline's entries that allowed no row's finding (known differences that are gone),
+    /// in file order.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::{Baseline, Expected};
+    /// let known = Expected::parse("known.csv", "id,finding\nend,off\nold,off\n")?;
+    /// let tally = Baseline { used: [0].into(), ..Baseline::default() };
+    /// let lines: Vec<usize> = tally.unmatched(&known).map(|e| e.line).collect();
+    /// assert_eq!(lines, [3]);
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn unmatched<'a>(&self, expected: &'a Expected) -> impl Iterator<Item = &'a ExpectedEntry> {
+        expected
+            .entries
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| !self.used.contains(k))
+            .map(|(_, entry)| entry)
+    }
 }
 
 /// How many rows (by `id`, or number) the summary names per finding.

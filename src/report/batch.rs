@@ -229,12 +229,9 @@ pub fn expected_report(summary: &Summary, expected: &Expected, file: &std::path:
         }
     }
     out.push('\n');
-    let unseen: Vec<String> = expected
-        .entries
-        .iter()
-        .enumerate()
-        .filter(|(k, _)| !tally.used.contains(k))
-        .map(|(_, e)| format!("{} ({},{})", e.line, e.id, e.finding))
+    let unseen: Vec<String> = tally
+        .unmatched(expected)
+        .map(|e| format!("{} ({},{})", e.line, e.id, e.finding))
         .collect();
     if !unseen.is_empty() {
         out.push_str(&format!(

@@ -78,9 +78,8 @@ pub fn batch_summary_json(summary: &Summary, expected: Option<&Expected>) -> Val
             "rows_expected": tally.rows_expected,
             "rows_unexpected": tally.rows_unexpected,
             "unexpected": tally.unexpected.iter().map(|(id, names)| json!({"id": id, "findings": names})).collect::<Vec<_>>(),
-            "unmatched_lines": expected.entries.iter().enumerate()
-                .filter(|(k, _)| !tally.used.contains(k))
-                .map(|(_, e)| json!({"line": e.line, "id": e.id, "finding": e.finding}))
+            "unmatched_lines": tally.unmatched(expected)
+                .map(|e| json!({"line": e.line, "id": e.id, "finding": e.finding}))
                 .collect::<Vec<_>>(),
         });
     }

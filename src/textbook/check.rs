@@ -243,7 +243,8 @@ fn check_at_optimum(
         ));
     }
     let p = scene.params::<Q>();
-    let squared = a_star_squared(&p);
+    let opt = optimum(&scene).expect("a rod at rest before the impact has an optimum");
+    let squared = opt.squared.clone();
     let pivot = match &p.support {
         Support::Free => Q::zero(),
         Support::Pivot(at) => at.clone(),
@@ -268,7 +269,6 @@ fn check_at_optimum(
     let mut lifted = scene.params::<QSqrt>();
     lifted.a = arm + &QSqrt::rational(pivot);
     let out = solved(&lifted);
-    let opt = optimum(&scene).expect("a rod at rest before the impact has an optimum");
     let answers = claims
         .iter()
         .map(|claim| {
