@@ -213,7 +213,7 @@ function update() {
   $("angle-exact").textContent = `tan(θ/2) = ${tanHalf.replace("-", "−")}: cos θ = ${s.cos.pretty}, sin θ = ${s.sin.pretty}`;
   $("angle").setAttribute("aria-valuetext", `tan(θ/2) = ${tanHalf}, θ ≈ ${s.degrees.toFixed(1)} degrees`);
   $("scene-facts").innerHTML = `Before the impact the end meets the floor at <i>u</i><sub>n</sub> = ${exact(s.u0[0])}
-    and slips at <i>u</i><sub>t</sub> = ${exact(s.u0[1])}; kinetic energy ${exact(s.energy_before)}.
+    and slips at <i>u</i><sub>t</sub> = ${exact(s.u0[1])} (along the floor's tangent <i>t</i>); kinetic energy ${exact(s.energy_before)}.
     The contact's matrix <i>W</i> = [${s.W.nn.pretty}, ${s.W.nt.pretty}; ${s.W.nt.pretty}, ${s.W.tt.pretty}]
     couples the directions when <i>W</i><sub>nt</sub> ≠ 0. Once the slip stops the end sticks if
     <i>μ</i> ≥ |<i>W</i><sub>nt</sub>|/<i>W</i><sub>tt</sub> = ${exact(s.mu_stick)}; with less friction it slides back.`;
@@ -241,7 +241,7 @@ function showLaws(res) {
     box.classList.toggle("gains", gain);
     const badge = gain
       ? `<strong class="badge gain" role="status">creates energy: ${esc(positive(L.energy_change))} <span class="share">(${esc(percent(L, before))} of the energy before)</span></strong>`
-      : `<span class="badge loss">creates no energy</span>`;
+      : `<span class="badge loss">${/^[−-]/.test(L.energy_change.pretty) ? "loses energy" : "keeps its energy exactly"}</span>`;
     const work = L.work;
     body.innerHTML = `<p class="kind">${esc(L.kind)}</p>${badge}
       <dl>
@@ -250,11 +250,11 @@ function showLaws(res) {
         <dt>end after</dt><dd><i>u</i><sub>n</sub> = ${exact(L.u_after[0])}<br><i>u</i><sub>t</sub> = ${exact(L.u_after[1])}</dd>
         <dt>rod after</dt><dd><i>v</i><sub>x</sub> = ${exact(L.rod.vx)}<br><i>v</i><sub>y</sub> = ${exact(L.rod.vy)}<br><i>ω</i> = ${exact(L.rod.omega)}</dd>
         <dt>energy</dt><dd>${exact(before)} → ${exact(L.energy_after)}</dd>
-        <dt>change</dt><dd class="change">${exact(L.energy_change)}<br><span class="approx">${esc(percent(L, before))} of the energy before</span></dd>
+        <dt>change</dt><dd class="change">${exact(L.energy_change)}<br><span class="share">${esc(percent(L, before))} of the energy before</span></dd>
       </dl>
       <table><caption>Work done on the rod</caption><tbody>
-        <tr><th scope="row">floor's push, compression</th><td>${exact(work.compression)}</td></tr>
-        <tr><th scope="row">floor's push, restitution</th><td>${exact(work.restitution)}</td></tr>
+        <tr><th scope="row">normal push, compression</th><td>${exact(work.compression)}</td></tr>
+        <tr><th scope="row">normal push, restitution</th><td>${exact(work.restitution)}</td></tr>
         <tr><th scope="row">friction</th><td>${exact(work.friction)}</td></tr>
       </tbody></table>`;
   }
@@ -282,7 +282,18 @@ const el = (name, attrs, text) => {
 // The smallest size a label is drawn at on the screen, in CSS px: a chart drawn narrower than
 // its own width (a phone) scales its labels up by textScale to keep to it.
 const LEAST_TEXT = 11;
-const textScale = (size, units, shown) => (shown > 0 ? Math.min(2.2, Math.max(1, (LEAST_TEXT * units) / (size * shown))) : 1);
+const textScale = (size, units, shown) => (shown > 0 ? Math.min(2, Math.max(1, (LEAST_TEXT * units) / (size * shown))) : 1);
+/**
+ * Sizes a chart's drawing to the width it is shown at: `wide` [width, height] in units, or on a
+ * narrow screen (a phone) `narrow`, taller for its width, so that its labels need less enlarging.
+ * Returns the size chosen.
+ */
+function fit(svg, wide, narrow) {
+  const shown = svg.getBoundingClientRect().width;
+  const [w, h] = shown > 0 && shown < 560 ? narrow : wide;
+  svg.setAttribute("viewBox", `0 0 ${w} ${h}`);
+  return [w, h];
+}
 /** The label scale of an SVG chart as drawn now (also set as its --text for the CSS). */
 function scaleOf(svg) {
   const k = textScale(12, svg.viewBox.baseVal.width, svg.getBoundingClientRect().width);
@@ -360,8 +371,9 @@ function drawSketch() {
     const uy = (end[1] - mid[1]) / len;
     svg.append(el("line", { x1: mid[0], y1: mid[1], x2: end[0] - 8 * ux, y2: end[1] - 8 * uy, class: "arrow" }));
     svg.append(el("path", { d: `M${end[0]},${end[1]} L${end[0] - 11 * ux - 5 * uy},${end[1] - 11 * uy + 5 * ux} L${end[0] - 11 * ux + 5 * uy},${end[1] - 11 * uy - 5 * ux} Z`, class: "arrow-head" }));
+    const right = end[0] >= mid[0];
+    svg.append(el("text", { x: end[0] + (right ? 6 : -6), y: end[1] + 4 * k, class: "note", "text-anchor": right ? "start" : "end" }, `v = (${current.req.slip.replace("-", "−")}, −1)`));
   }
-  svg.append(el("text", { x: 310, y: 16 * k, class: "note", "text-anchor": "end" }, `v = (${current.req.slip.replace("-", "−")}, −1)`));
   $("sketch-caption").textContent = `The rod (length 2, mass 1) just before its lower end meets the floor, at θ ≈ ${s.degrees.toFixed(2)}° (cos θ = ${s.cos.pretty}); its centre moves at (${current.req.slip}, −1), not spinning.`;
 }
 
@@ -375,7 +387,8 @@ function lawEnds(svg, k, a, laws, dots) {
     row = x - lastX < 70 * k ? row + 1 : 0;
     lastX = x;
     svg.append(el("line", { x1: x, x2: x, y1: a.y0, y2: a.y0 + a.h, class: `end-mark ${L.law}` }));
-    const nearRight = x > a.x0 + a.w - 40 * k;
+    // Left of its line when the name (about 7.5 units a letter) would pass the frame's right edge.
+    const nearRight = x + 4 + 7.5 * k * L.name.length > a.x0 + a.w;
     const label = el("text", { x: x + (nearRight ? -4 : 4), y: a.y0 + 14 * k + row * 15 * k, class: `note end-label ${L.law}`, "text-anchor": nearRight ? "end" : "start" }, L.name);
     svg.append(label);
     for (const [y, what] of dots(L)) {
@@ -424,10 +437,11 @@ function drawRouth() {
   svg.replaceChildren();
   const { res } = current;
   const path = res.path;
+  const [W, H] = fit(svg, [640, 360], [420, 340]);
   const k = scaleOf(svg);
   const xs = lamRange(res);
   const ys = valueRange(path.flatMap((p) => [p.u_n.f64, p.u_t.f64]));
-  const a = axes(svg, k, [58, 12, 566, 290], xs, ys, "normal impulse λ", "velocity of the end", ticks(xs[0], xs[1], 6), ticks(ys[0], ys[1], 6));
+  const a = axes(svg, k, [58, 12, W - 74, H - 70], xs, ys, "normal impulse λ", "velocity of the end", ticks(xs[0], xs[1], 6), ticks(ys[0], ys[1], 6));
   shadePhases(svg, a, path);
   svg.append(a.grid);
   svg.append(el("line", { x1: a.x0, x2: a.x0 + a.w, y1: a.Y(0), y2: a.Y(0), class: "zero" }));
@@ -437,11 +451,14 @@ function drawRouth() {
   svg.append(el("text", { x: xc - 4, y: a.y0 + a.h - 8, class: "note", "text-anchor": "end" }, `λc = ${res.lam_c.pretty}`));
   segments(svg, a, path, "u_n", "un");
   segments(svg, a, path, "u_t", "ut");
-  const last = path[path.length - 1];
-  const lx = Math.min(a.X(last.lam.f64) + 6, a.x0 + a.w - 4);
-  const anchor = a.X(last.lam.f64) + 6 > a.x0 + a.w - 30 * k ? "end" : "start";
-  svg.append(el("text", { x: anchor === "end" ? a.X(last.lam.f64) - 8 : lx, y: a.Y(last.u_n.f64) - 8, class: "note", "text-anchor": anchor, fill: "#0072b2" }, "u_n"));
-  svg.append(el("text", { x: anchor === "end" ? a.X(last.lam.f64) - 8 : lx, y: a.Y(last.u_t.f64) + 16 * k, class: "note", "text-anchor": anchor, fill: "#a34700" }, "u_t"));
+  // The lines' names along the last segment, the upper one above its line, the lower below.
+  const [p, q] = path.length > 1 ? path.slice(-2) : [path[0], path[0]];
+  const along = (key) => [a.X(p.lam.f64 + 0.35 * (q.lam.f64 - p.lam.f64)), a.Y(p[key].f64 + 0.35 * (q[key].f64 - p[key].f64))];
+  const [xn, yn] = along("u_n");
+  const [xt, yt] = along("u_t");
+  const unAbove = yn <= yt;
+  svg.append(el("text", { x: xn, y: unAbove ? yn - 8 : yn + 16 * k, class: "note line-label un", "text-anchor": "middle" }, "u_n"));
+  svg.append(el("text", { x: xt, y: unAbove ? yt + 16 * k : yt - 8, class: "note line-label ut", "text-anchor": "middle" }, "u_t"));
   lawEnds(svg, k, a, res.laws, (L) => [[L.u_after[0], "u_n"], [L.u_after[1], "u_t"]]);
   svg.append(a.frame);
   svg.append(a.labels);
@@ -455,10 +472,11 @@ function drawTau() {
   svg.replaceChildren();
   const { res } = current;
   const path = res.path;
+  const [W, H] = fit(svg, [640, 260], [420, 240]);
   const k = scaleOf(svg);
   const xs = lamRange(res);
   const ys = valueRange(path.map((p) => p.tau.f64).concat(res.laws.filter((L) => !L.error).map((L) => L.tau.f64)));
-  const a = axes(svg, k, [58, 10, 566, 190], xs, ys, "normal impulse λ", "friction τ", ticks(xs[0], xs[1], 6), ticks(ys[0], ys[1], 4));
+  const a = axes(svg, k, [58, 10, W - 74, H - 70], xs, ys, "normal impulse λ", "friction τ", ticks(xs[0], xs[1], 6), ticks(ys[0], ys[1], 4));
   shadePhases(svg, a, path);
   svg.append(a.grid);
   svg.append(el("line", { x1: a.x0, x2: a.x0 + a.w, y1: a.Y(0), y2: a.Y(0), class: "zero" }));
@@ -512,9 +530,10 @@ function drawMap() {
   if (!map) return;
   const law = mapLaw();
   const grid = map.data[law];
+  const [W, H] = fit(svg, [640, 362], [420, 330]);
   const k = scaleOf(svg);
   // Cell k (tan(θ/2) = k/40) spans k ± 1/2 across; slip s spans s ± 1/10 down.
-  const a = axes(svg, k, [58, 10, 566, 300], [0.5 / 40, 39.5 / 40], [-2.1, 2.1], "tilt θ of the rod (tan(θ/2) = k/40)", "slip", [], [-2, -1, 0, 1, 2]);
+  const a = axes(svg, k, [58, 10, W - 74, H - 62], [0.5 / 40, 39.5 / 40], [-2.1, 2.1], "tilt θ of the rod (tan(θ/2) = k/40)", "slip", [], [-2, -1, 0, 1, 2]);
   const cells = el("g", { id: "map-cells" });
   let gains = 0;
   let jams = 0;
