@@ -196,6 +196,11 @@ function clearAnswer(message) {
 function update() {
   const req = request();
   scheduleMap(req);
+  // The link holds the fields as typed, right or wrong (to be corrected after opening it).
+  const file = decodeURIComponent(location.pathname.split("/").pop() || "") || "tilted.html";
+  const link = sceneLink();
+  $("scene-link").href = `#${link}`;
+  $("scene-link").textContent = `${file}#${link}`;
   const res = call("tilted", req);
   showErrors(res.error);
   if (res.error) {
@@ -205,10 +210,6 @@ function update() {
   }
   current = { req, res };
   const s = res.scene;
-  const file = decodeURIComponent(location.pathname.split("/").pop() || "") || "tilted.html";
-  const link = sceneLink();
-  $("scene-link").href = `#${link}`;
-  $("scene-link").textContent = `${file}#${link}`;
   $("angle-value").value = `θ ≈ ${s.degrees.toFixed(2)}°`;
   $("angle-exact").textContent = `tan(θ/2) = ${tanHalf.replace("-", "−")}: cos θ = ${s.cos.pretty}, sin θ = ${s.sin.pretty}`;
   $("angle").setAttribute("aria-valuetext", `tan(θ/2) = ${tanHalf}, θ ≈ ${s.degrees.toFixed(1)} degrees`);
@@ -288,15 +289,17 @@ const textScale = (size, units, shown) => (shown > 0 ? Math.min(2, Math.max(1, (
  * narrow screen (a phone) `narrow`, taller for its width, so that its labels need less enlarging.
  * Returns the size chosen.
  */
+/** The width a chart is shown at: its figure's (an empty chart is not laid out). */
+const shownWidth = (svg) => svg.parentElement.getBoundingClientRect().width;
 function fit(svg, wide, narrow) {
-  const shown = svg.getBoundingClientRect().width;
+  const shown = shownWidth(svg);
   const [w, h] = shown > 0 && shown < 560 ? narrow : wide;
   svg.setAttribute("viewBox", `0 0 ${w} ${h}`);
   return [w, h];
 }
 /** The label scale of an SVG chart as drawn now (also set as its --text for the CSS). */
 function scaleOf(svg) {
-  const k = textScale(12, svg.viewBox.baseVal.width, svg.getBoundingClientRect().width);
+  const k = textScale(12, svg.viewBox.baseVal.width, shownWidth(svg));
   svg.style.setProperty("--text", k.toFixed(3));
   return k;
 }
@@ -504,7 +507,7 @@ function scheduleMap(req) {
   if (key === mapKey) return;
   mapKey = key;
   clearTimeout(mapTimer);
-  $("map-caption").classList.remove("none");
+  $("map-caption").classList.remove("none", "error");
   $("map-caption").textContent = `Working out the map at μ = ${req.mu}, e = ${req.e}…`;
   $("map").setAttribute("aria-busy", "true");
   mapTimer = setTimeout(() => computeMap(req.mu, req.e, key), map ? 300 : 0);
@@ -518,9 +521,11 @@ function computeMap(mu, e, key) {
     map = null;
     $("map").replaceChildren();
     $("map-caption").textContent = `No map: ${data.error.message}`;
+    $("map-caption").classList.add("error");
     return;
   }
   map = { mu, e, data };
+  $("map-caption").classList.remove("error");
   drawMap();
 }
 
