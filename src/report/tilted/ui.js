@@ -149,6 +149,7 @@ const mode = (m) => MODE[m] || { long: m, short: m, cls: "other", label: m };
 
 /** The phases as a sentence: "slides backward until λ = 75/181, then forward until λ = 725/724". */
 function phaseSentence(phases) {
+  if (!phases.length) return "";
   const words = phases.map((p, i) => {
     const prev = i > 0 ? phases[i - 1].mode : null;
     const slideAfterSlide = prev && prev.startsWith("slide") && p.mode.startsWith("slide");
