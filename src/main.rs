@@ -48,13 +48,17 @@ enum Command {
     /// Any scene flag may be a symbol or an expression.
     Formula(Box<commands::formula::FormulaArgs>),
     /// An interactive page (one self-contained HTML file) on which a student predicts where to
-    /// hit the rod, then finds the exact answer, the curve and the motion.
+    /// hit the rod, then finds the exact answer, the curve and the motion; or, with --scene
+    /// tilted-rod, the three restitution laws side by side on a rod landing on a rough floor.
     #[command(
         after_help = "The scene flags are solve's, read the same way; the page shows the \
         scene in units m = l = v0 = 1 (M/m, a/l, r_G/l, p/l). A flag not given keeps the page's \
         own default, not solve's: M = m, a = l/2, e = 1, a uniform rod, no pivot, predict first, \
         the centre-of-mass view. The page's link takes the same keys: explore.html#M=1/2&a=1&e=1/2\
-        &rod=dumbbell&pivot=-1&predict=0&frame=lab (docs/explore.md)."
+        &rod=dumbbell&pivot=-1&predict=0&frame=lab (docs/explore.md). --scene tilted-rod writes \
+        the second page (a rod landing on a rough floor under Newton's, Poisson's and Stronge's \
+        laws), preset by --tilt, --slip, --mu and --e. Both pages compute with rodimpact's \
+        library compiled to WebAssembly, inside the file."
     )]
     Explore(commands::explore::ExploreArgs),
     /// One scene as a handout to print: the exact answer, the working, the formulas with their

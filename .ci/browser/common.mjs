@@ -31,6 +31,7 @@ export async function inBrowser(what, file, viewport, body) {
     });
     await page.setViewport(viewport);
     await page.goto(url, { waitUntil: "load" });
+    await moduleReady(page);
     await body({ page, url, check, name });
     for (const p of problems) check(false, p);
   } finally {
@@ -40,4 +41,19 @@ export async function inBrowser(what, file, viewport, body) {
     console.log(`${failures.length} browser checks failed`);
     process.exit(1);
   }
+}
+
+/**
+ * Waits until a page that computes with rodimpact's WebAssembly module has started it and shown
+ * its first answer (or said that it could not): at once for a page without the module.
+ */
+export async function moduleReady(page) {
+  await page.waitForFunction(
+    () => {
+      const check = document.getElementById("self-check");
+      return !document.getElementById("rodimpact-wasm") || document.querySelector(".load-error")
+        || (document.documentElement.dataset.firstAnswerMs && (!check || check.textContent));
+    },
+    { timeout: 30000 },
+  );
 }

@@ -38,7 +38,7 @@ await inBrowser("tilted", file, { width: 1200, height: 1000 }, async ({ page, ur
     const col = await column(page, law);
     check(!col.includes("creates energy") && !(await page.$eval(`#law-${law}`, (e) => e.classList.contains("gains"))), `${law}'s column does not create energy`);
   }
-  check(newton.includes("725/724") && newton.includes("slides backward until λ = 75/181, then forward until λ = 725/724"), "Newton's end, λ = 725/724, and the slip's phases as a sentence");
+  check(newton.includes("725/724") && newton.includes("slides right until λ = 75/181, then left until λ = 725/724"), "Newton's end, λ = 725/724, and the slip's phases as a sentence");
   check((await column(page, "poisson")).includes("25/32") && (await column(page, "poisson")).includes("−87039275/603850752"), "Poisson's end λ = 25/32 and its loss −87039275/603850752");
   check((await column(page, "energetic")).includes("√20521"), "Stronge's end in Q(√20521)");
   check((await text("#summary")).startsWith("Newton's rule creates energy"), `the summary: "${(await text("#summary")).slice(0, 70)}…"`);
@@ -75,7 +75,7 @@ await inBrowser("tilted", file, { width: 1200, height: 1000 }, async ({ page, ur
   await type(page, "#mu", "1/2");
   await type(page, "#e", "1/2");
   const stick = await column(page, "newton");
-  check(stick.includes("slides backward until λ = 10/29, then sticks until λ = 147/200") && stick.includes("−139/800"), `mu = e = 1/2: Newton's end sticks, λ = 147/200, loses 139/800 (${stick.slice(0, 80)}…)`);
+  check(stick.includes("slides right until λ = 10/29, then sticks until λ = 147/200") && stick.includes("−139/800"), `mu = e = 1/2: Newton's end sticks, λ = 147/200, loses 139/800 (${stick.slice(0, 80)}…)`);
   check((await page.$$("#routh rect.phase.stick")).length === 1, "Routh's diagram shows the sticking phase");
   check(!(await column(page, "newton")).includes("creates energy") && (await text("#summary")).startsWith("No rule creates energy"), "no law creates energy at mu = e = 1/2");
   await mapReady(page);

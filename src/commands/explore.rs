@@ -4,6 +4,7 @@ use super::{Failure, SceneFlags, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::io::write_atomic;
 use rodimpact::report::explore::{Frame, Preset, explore_html};
+use rodimpact::report::tilted::{TiltedPreset, tilted_html};
 use std::path::PathBuf;
 
 #[derive(Args, Debug)]
@@ -26,6 +27,34 @@ pub(crate) struct ExploreArgs {
     /// default], or from the table (a rod on a pivot is always seen from the table).
     #[arg(long, value_enum, value_name = "VIEW")]
     pub(crate) frame: Option<FrameArg>,
+    /// Which page: the paper's rod struck by a puck [default], or a rod tilted above a rough
+    /// floor under Newton's, Poisson's and Stronge's laws (with --tilt, --slip, --mu, --e).
+    #[arg(
+        long = "scene",
+        value_enum,
+        value_name = "SCENE",
+        default_value = "paper"
+    )]
+    pub(crate) scene_page: ScenePage,
+    /// tilted-rod: the tilt theta of the rod above the floor, as tan(theta/2) in (0, 1)
+    /// [default 1/2: cos = 3/5].
+    #[arg(long, value_name = "T")]
+    pub(crate) tilt: Option<String>,
+    /// tilted-rod: the rod's sideways velocity before the impact (it falls at 1) [default 1].
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    pub(crate) slip: Option<String>,
+    /// tilted-rod: Coulomb friction at the floor, >= 0 [default 1/3].
+    #[arg(long, value_name = "MU", allow_hyphen_values = true)]
+    pub(crate) mu: Option<String>,
+}
+
+/// The pages of `--scene`.
+#[derive(ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum ScenePage {
+    /// The paper's scene: where to strike a rod to spin it fastest.
+    Paper,
+    /// A tilted rod landing on a rough floor: where Newton's law creates energy.
+    TiltedRod,
 }
 
 /// The views of `--frame`.
@@ -38,6 +67,59 @@ pub(crate) enum FrameArg {
 }
 
 pub(crate) fn run_explore(args: &ExploreArgs) -> Result<(), Failure> {
+    let page = match args.scene_page {
+        ScenePage::Paper => paper_page(args)?,
+        ScenePage::TiltedRod => tilted_page(args)?,
+    };
+    match &args.out {
+        Some(file) => write_atomic("out", file, &page)?,
+        None => print_out(&page),
+    }
+    Ok(())
+}
+
+/// The tilted-rod page: --tilt, --slip, --mu and --e; the paper's scene flags are refused.
+fn tilted_page(args: &ExploreArgs) -> Result<String, Failure> {
+    let input = args.scene.input();
+    let foreign = input
+        .inputs()
+        .find(|(key, value)| value.is_some() && key.name != "e")
+        .map(|(key, _)| key.name)
+        .or(args.frame.map(|_| "frame"))
+        .or((args.predict || args.no_predict).then_some("predict"));
+    if let Some(flag) = foreign {
+        return Err(rodimpact::Error::new(
+            flag,
+            rodimpact::ErrorKind::Invalid(
+                "not a setting of the tilted-rod page, which takes --tilt, --slip, --mu and --e"
+                    .into(),
+            ),
+        )
+        .into());
+    }
+    let preset = TiltedPreset::of(
+        args.tilt.as_deref(),
+        args.slip.as_deref(),
+        args.mu.as_deref(),
+        input.e.as_deref(),
+    )?;
+    Ok(tilted_html(&preset)?)
+}
+
+/// The paper's page, preset by the scene flags, --predict and --frame.
+fn paper_page(args: &ExploreArgs) -> Result<String, Failure> {
+    if let Some(flag) = [("tilt", &args.tilt), ("slip", &args.slip), ("mu", &args.mu)]
+        .into_iter()
+        .find_map(|(flag, value)| value.as_ref().map(|_| flag))
+    {
+        return Err(rodimpact::Error::new(
+            flag,
+            rodimpact::ErrorKind::Invalid(
+                "a setting of the tilted-rod page (--scene tilted-rod)".into(),
+            ),
+        )
+        .into());
+    }
     let predict = match (args.predict, args.no_predict) {
         (true, _) => Some(true),
         (_, true) => Some(false),
@@ -48,10 +130,5 @@ pub(crate) fn run_explore(args: &ExploreArgs) -> Result<(), Failure> {
         FrameArg::Lab => Frame::Lab,
     });
     let preset = Preset::of_scene(&args.scene.input(), predict, frame)?;
-    let page = explore_html(&preset)?;
-    match &args.out {
-        Some(file) => write_atomic("out", file, &page)?,
-        None => print_out(&page),
-    }
-    Ok(())
+    Ok(explore_html(&preset)?)
 }

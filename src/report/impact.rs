@@ -368,7 +368,7 @@ pub fn impact_text(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize)
     out
 }
 
-fn law_name(law: crate::solve::impact::Law) -> &'static str {
+pub(crate) fn law_name(law: crate::solve::impact::Law) -> &'static str {
     use crate::solve::impact::Law;
     match law {
         Law::Newton => "Newton",
@@ -377,7 +377,7 @@ fn law_name(law: crate::solve::impact::Law) -> &'static str {
     }
 }
 
-fn law_heading(law: crate::solve::impact::Law) -> &'static str {
+pub(crate) fn law_heading(law: crate::solve::impact::Law) -> &'static str {
     use crate::solve::impact::Law;
     match law {
         Law::Newton => "Newton (kinematic: u_n after = -e u_n before)",

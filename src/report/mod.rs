@@ -17,6 +17,7 @@ mod impact_run;
 pub mod markup;
 pub mod mathml;
 pub mod page;
+pub mod pages;
 mod paper_html;
 mod paper_tables;
 mod plot;
@@ -25,6 +26,7 @@ mod simulate;
 mod solution;
 mod stability;
 mod table;
+pub mod tilted;
 
 pub use backend::{ERROR_BOUND, backend_values};
 pub use batch::{batch_passed, batch_report, batch_summary, expected_report};

@@ -286,3 +286,83 @@ fn a_bad_preset_is_one_line_naming_its_flag() {
     let (_, _, explore) = rodimpact(&["explore", "--pivot", "2"]);
     assert_eq!(solve, explore);
 }
+
+/// The second page: `--scene tilted-rod`, preset by `--tilt`, `--slip`, `--mu` and `--e` (read
+/// exactly, as the page reads them); the paper's flags refused there, and its flags refused on the
+/// paper's page, each in one line naming the flag.
+#[test]
+fn the_tilted_rod_page_and_its_flags() {
+    let (code, page, err) = rodimpact(&[
+        "explore",
+        "--scene",
+        "tilted-rod",
+        "--tilt",
+        "1/4",
+        "--slip",
+        "-0.5",
+        "--mu",
+        "0.5",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(page.starts_with("<!DOCTYPE html>") && page.contains("Routh"));
+    assert!(page.contains(
+        "<script type=\"application/json\" id=\"preset\">\"tan_half=1/4&slip=-1/2&mu=1/2\"</script>"
+    ));
+    for (args, message) in [
+        (
+            vec!["--scene", "tilted-rod", "--M", "2"],
+            "error: M: not a setting of the tilted-rod page, which takes --tilt, --slip, --mu and --e\n",
+        ),
+        (
+            vec!["--scene", "tilted-rod", "--frame", "lab"],
+            "error: frame: not a setting of the tilted-rod page, which takes --tilt, --slip, --mu and --e\n",
+        ),
+        (
+            vec!["--scene", "tilted-rod", "--tilt", "1"],
+            "error: tilt: must lie in 0 < tan(θ/2) < 1 (a tilt between 0 and 90 degrees)\n",
+        ),
+        (
+            vec!["--scene", "tilted-rod", "--mu", "-1"],
+            "error: mu: must be ≥ 0\n",
+        ),
+        (
+            vec!["--slip", "1"],
+            "error: slip: a setting of the tilted-rod page (--scene tilted-rod)\n",
+        ),
+    ] {
+        let mut all = vec!["explore"];
+        all.extend(args);
+        let (code, out, err) = rodimpact(&all);
+        assert_eq!(
+            (code, out.as_str(), err.as_str()),
+            (2, "", message),
+            "{all:?}"
+        );
+    }
+}
+
+/// Both pages compute with the library compiled to WebAssembly, inlined: no arithmetic of their
+/// own (the BigInt rationals and the JavaScript physics are gone) and no request beyond the page.
+#[test]
+fn the_pages_carry_the_library_not_a_copy_of_the_physics() {
+    for args in [vec!["explore"], vec!["explore", "--scene", "tilted-rod"]] {
+        let (code, page, err) = rodimpact(&args);
+        assert_eq!(code, 0, "{err}");
+        let module = page
+            .split("<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">")
+            .nth(1)
+            .and_then(|rest| rest.split("</script>").next())
+            .expect("the module is inlined");
+        assert!(
+            module.len() > 100_000
+                && module
+                    .bytes()
+                    .all(|b| b.is_ascii_alphanumeric() || b"+/=".contains(&b))
+        );
+        for copy in ["BigInt", "const Physics", "const Exact", "fetch("] {
+            assert!(!page.contains(copy), "{args:?}: {copy}");
+        }
+        assert!(page.contains("rodimpactPage(function (api) {"));
+        assert!(page.len() < 1_000_000, "{} bytes", page.len());
+    }
+}

@@ -16,6 +16,7 @@ mod impact_paper;
 mod impact_several;
 mod msrv;
 mod mutation;
+mod pages;
 mod simulate;
 mod solve_exact;
 mod stability;

@@ -1,7 +1,7 @@
 //! `rodimpact explore`: one self-contained interactive page on which a student finds the
 //! paper's surprise: sliders for M/m, a, e, the rod and the pivot; the exact answer (fractions
-//! and surds, computed in the page with JavaScript BigInt); |omega| along the rod with a* and the
-//! end marked; a* against M/m with the threshold; an animation of the impact and of the second
+//! and surds, computed in the page by this library compiled to WebAssembly, [`super::pages`]);
+//! |omega| along the rod with a* and the end marked; a* against M/m with the threshold; an animation of the impact and of the second
 //! impact that follows a hit beyond the stop point (X19), with energy bars; and a predict-first
 //! mode.
 //!
@@ -10,10 +10,11 @@
 //! omega a* = v0, not their decimals).
 //!
 //! The page carries rodimpact's own exact answers for a set of reference scenes
-//! ([`REFERENCE_SCENES`], those at a* solved in Q(sqrt d)), and checks its arithmetic against
-//! them each time it opens.
+//! ([`REFERENCE_SCENES`], those at a* solved in Q(sqrt d)), computed natively when the page is
+//! written, and checks its WebAssembly module against them each time it opens.
 
 use super::page::{Page, document, json_script};
+use super::pages;
 use super::paper_tables::solve_at;
 use super::solution_json;
 use crate::Error;
@@ -27,8 +28,7 @@ use serde_json::{Value, json};
 /// The page's body, with `{{VERSION}}` and `{{REFERENCE}}` (the reference answers) to fill.
 const BODY: &str = include_str!("page.html");
 const STYLE: &str = include_str!("page.css");
-const EXACT: &str = include_str!("exact.js");
-const PHYSICS: &str = include_str!("physics.js");
+/// The page's script: reads the controls, asks the library (compiled to WebAssembly) and draws.
 const UI: &str = include_str!("ui.js");
 
 /// The scenes (M/m, a/l, e, rod, pivot p/l; m = l = v0 = 1) whose exact answers the page
@@ -329,11 +329,12 @@ pub fn explore_html(preset: &Preset) -> Result<String, Error> {
     let body = BODY
         .replace("{{VERSION}}", env!("CARGO_PKG_VERSION"))
         .replace("{{REFERENCE}}", &json_script("reference", &reference))
-        .replace("{{PRESET}}", &json_script("preset", &preset));
+        .replace("{{PRESET}}", &json_script("preset", &preset))
+        + &pages::module_element()?;
     Ok(document(&Page {
         title: "Where should you hit the rod? An exact explorer",
         style: STYLE,
         body: &body,
-        script: &format!("{EXACT}\n{PHYSICS}\n{UI}"),
+        script: &pages::page_script(UI),
     }))
 }

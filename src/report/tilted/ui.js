@@ -28,14 +28,12 @@ const MAP_SLIPS = ["-2", "-9/5", "-8/5", "-7/5", "-6/5", "-1", "-4/5", "-3/5", "
   "1/5", "2/5", "3/5", "4/5", "1", "6/5", "7/5", "8/5", "9/5", "2"];
 
 /**
- * Roughly the number typed (a decimal or a fraction), only to place its slider or a mark on a
- * chart: never shown, never computed with. NaN when it is not a number.
+ * The number typed (a decimal or a fraction) as a float, read by the library, only to place its
+ * slider or a mark on a chart: never shown, never computed with. NaN when it is not a number.
  */
 function roughly(text) {
-  const m = /^\s*([+\-−]?[0-9.]+(?:e[+\-]?\d+)?)\s*(?:\/\s*([0-9.]+(?:e[+\-]?\d+)?))?\s*$/i.exec(String(text));
-  if (!m) return NaN;
-  const n = Number(m[1].replace("−", "-"));
-  return m[2] === undefined ? n : n / Number(m[2]);
+  const answer = api.call("number", { text: String(text) });
+  return answer.value ? answer.value.f64 : NaN;
 }
 /** The stop of `stops` (exact strings) nearest the text typed: itself when it is one. */
 function nearestStop(stops, text) {
@@ -140,14 +138,16 @@ const exact = (x) => `<span class="exact">${esc(x.pretty)}</span>${whole(x) ? ""
 const plain = (x) => `${x.pretty}${whole(x) ? "" : ` ≈ ${x.approx}`}`;
 const positive = (x) => (x.pretty.startsWith("−") || x.pretty.startsWith("-") ? x.pretty : `+${x.pretty}`);
 
+// The floor's tangent t is (−1, 0) (the API's scene.tangent): a slip u_t < 0 moves the end to
+// the right (+x, the side the rod leans to), u_t > 0 to the left.
 const MODE = {
-  "slide-": { long: "slides backward", short: "backward", cls: "slide-minus", label: "slides backward (u_t < 0)" },
-  "slide+": { long: "slides forward", short: "forward", cls: "slide-plus", label: "slides forward (u_t > 0)" },
+  "slide-": { long: "slides right", short: "right", cls: "slide-minus", label: "slides right (u_t < 0)" },
+  "slide+": { long: "slides left", short: "left", cls: "slide-plus", label: "slides left (u_t > 0)" },
   stick: { long: "sticks", short: "sticks", cls: "stick", label: "sticks (u_t = 0)" },
 };
 const mode = (m) => MODE[m] || { long: m, short: m, cls: "other", label: m };
 
-/** The phases as a sentence: "slides backward until λ = 75/181, then forward until λ = 725/724". */
+/** The phases as a sentence: "slides right until λ = 75/181, then left until λ = 725/724". */
 function phaseSentence(phases) {
   if (!phases.length) return "";
   const words = phases.map((p, i) => {
@@ -496,12 +496,8 @@ let map = null; // { key, mu, e, data } of the last map drawn
 let mapTimer = null;
 let mapKey = null;
 const mapLaw = () => document.querySelector("input[name=map-law]:checked").value;
-// The tilts of a few columns in degrees, from the API (the map's tick labels).
-const columnDegrees = {};
-for (const kk of [8, 16, 24, 32]) {
-  const res = call("tilted", { tan_half: `${kk}/40`, slip: "1", mu: "0", e: "1" });
-  if (!res.error) columnDegrees[kk] = res.scene.degrees;
-}
+// The tilts of a few columns in degrees, from the map's answer (its tick labels).
+const TICK_COLUMNS = [8, 16, 24, 32];
 
 function scheduleMap(req) {
   const key = `${req.mu}|${req.e}`;
@@ -514,9 +510,24 @@ function scheduleMap(req) {
   mapTimer = setTimeout(() => computeMap(req.mu, req.e, key), map ? 300 : 0);
 }
 
-function computeMap(mu, e, key) {
-  const data = call("tilted_map", { mu, e, tan_halves: MAP_TAN_HALVES, slips: MAP_SLIPS });
+/**
+ * The map, a row (one slip) per call and a pause between rows, so that the page answers the
+ * controls while it works; abandoned when mu or e change meanwhile.
+ */
+function computeMap(mu, e, key, rows = 0, data = { newton: [], poisson: [], energetic: [], degrees: [] }) {
   if (key !== mapKey) return;
+  const row = call("tilted_map", { mu, e, tan_halves: MAP_TAN_HALVES, slips: [MAP_SLIPS[rows]] });
+  if (!row.error) {
+    for (const law of ["newton", "poisson", "energetic"]) data[law].push(row[law][0]);
+    data.degrees = row.degrees;
+    if (rows + 1 < MAP_SLIPS.length) {
+      $("map-caption").textContent = `Working out the map at μ = ${mu}, e = ${e}… (${rows + 1} of ${MAP_SLIPS.length} rows)`;
+      mapTimer = setTimeout(() => computeMap(mu, e, key, rows + 1, data), 0);
+      return;
+    }
+  } else {
+    data = row;
+  }
   $("map").setAttribute("aria-busy", "false");
   if (data.error) {
     map = null;
@@ -556,8 +567,8 @@ function drawMap() {
   svg.append(cells);
   svg.append(a.frame);
   svg.append(a.labels);
-  for (const [kk, deg] of Object.entries(columnDegrees)) {
-    svg.append(el("text", { x: a.X(Number(kk) / 40), y: a.y0 + a.h + 4 + 12 * k, class: "tick", "text-anchor": "middle" }, `${Math.round(deg)}°`));
+  for (const kk of TICK_COLUMNS) {
+    svg.append(el("text", { x: a.X(kk / 40), y: a.y0 + a.h + 4 + 12 * k, class: "tick", "text-anchor": "middle" }, `${Math.round(map.data.degrees[kk - 1])}°`));
   }
   svg.append(el("g", { id: "map-here" }));
   const total = MAP_TAN_HALVES.length * MAP_SLIPS.length;

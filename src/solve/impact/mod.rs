@@ -310,6 +310,70 @@ pub fn solve_contact<F: Roots>(system: &System, law: Law) -> Result<LawAnswer<F>
     })
 }
 
+/// A point of Routh's path: the contact's relative velocity and the tangential impulse at one
+/// value of the normal impulse, and what friction does from there on.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PathPoint<F> {
+    /// The normal impulse lam.
+    pub lam: F,
+    /// The relative velocity at the contact (A's point minus B's), along n and t.
+    pub u: [F; 2],
+    /// The tangential impulse tau.
+    pub tau: F,
+    /// The phase that starts here (at the last point: the phase it ends).
+    pub mode: Mode,
+}
+
+/// Routh's path of the system's one contact from lam = 0 to lam = `upto`: the start, each
+/// phase change before `upto`, and `upto` itself. The contact velocity and tau are linear in
+/// lam between two points, and the path is the same under every law (a law only chooses where
+/// it ends: [`LawAnswer::lam`]).
+///
+/// # Errors
+/// [`ImpactError::SeveralContacts`], or [`ImpactError::Jam`] when the path is undecided.
+///
+/// # Examples
+/// The tilted rod on a rough floor: it slides backward (u_t < 0) until lam = 75/181, then
+/// forward; Newton's law ends at lam = 725/724.
+/// ```
+/// use rodimpact::{field::{q, Q}, model::parse_toml};
+/// use rodimpact::solve::impact::{contact_path, Mode};
+/// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/tilted-rod-rough-floor.toml")).unwrap();
+/// let path = contact_path::<Q>(&parse_toml("tilted", &text)?, &q(725, 724))?;
+/// let lams: Vec<Q> = path.iter().map(|p| p.lam.clone()).collect();
+/// assert_eq!(lams, [q(0, 1), q(75, 181), q(725, 724)]);
+/// assert_eq!(path[1].u[1], q(0, 1));
+/// assert_eq!((path[0].mode, path[1].mode), (Mode::Slide { forward: false }, Mode::Slide { forward: true }));
+/// assert_eq!(path[2].u[0], q(1, 1)); // Newton's end: u_n after = -e u_n before
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn contact_path<F: Roots>(system: &System, upto: &F) -> Result<Vec<PathPoint<F>>, ImpactError> {
+    if system.contacts.len() != 1 {
+        return Err(ImpactError::SeveralContacts(system.contacts.len()));
+    }
+    let lifted: Lifted<F> = Lifted::of(system, &system.contacts[0]);
+    let (w, u0) = contact_matrix::<F>(system);
+    let segments = path(&w, u0, &lifted.mu).map_err(ImpactError::Jam)?;
+    let point = |segment: &Segment<F>, lam: &F| {
+        let [u_n, u_t, tau] = segment.at(lam);
+        PathPoint {
+            lam: lam.clone(),
+            u: [u_n, u_t],
+            tau,
+            mode: segment.mode,
+        }
+    };
+    let mut points: Vec<PathPoint<F>> = segments
+        .iter()
+        .take_while(|s| (s.from.clone() - upto).sign() == Some(Ordering::Less) || s.from.is_zero())
+        .map(|s| point(s, &s.from))
+        .collect();
+    if points.last().map(|p| &p.lam) != Some(upto) {
+        points.push(point(segment_at(&segments, upto), upto));
+    }
+    Ok(points)
+}
+
 /// Answers the system's one contact under `law` exactly: in Q where the answer is rational
 /// (always under Newton's and Poisson's laws), about three times faster, and in Q(sqrt d)
 /// where the energetic law's end is a surd; the answer is the same either way.

@@ -1,0 +1,159 @@
+//! The web pages' computing core: what the pages ask of the library, answered in JSON, and the
+//! WebAssembly module that carries it into the page.
+//!
+//! The pages (`explore`, and `explore --scene tilted-rod`) compute every number they show with
+//! this library compiled to WebAssembly (`wasm/`, built by `build.rs` and inlined compressed in
+//! each page), never with a second implementation of the physics in JavaScript. The page's
+//! script calls [`call`] through the module (`api.call(name, request)`); the same function
+//! answers here natively, so `cargo test` checks what the pages compute.
+//!
+//! | name | answers |
+//! |---|---|
+//! | `number` | a field's text read as an exact number (or its error) |
+//! | `explore` | the paper's scene on the explore page: the exact answer, a*, omega_max, the curves |
+//! | `explore_motion` | the rod and puck after the impact at given times, for the animation |
+//! | `tilted` | a tilted rod on a rough floor under the three laws, with Routh's path |
+//! | `tilted_map` | where each law creates energy, over a grid of tilted-rod scenes |
+
+mod explore_api;
+mod tilted;
+mod value;
+
+pub use explore_api::{explore, explore_motion};
+pub use tilted::{tilted, tilted_map};
+pub use value::exact;
+
+use crate::Error;
+use crate::error::ErrorKind;
+use serde_json::{Value, json};
+
+/// The WebAssembly module (zlib-compressed, in base64) that `build.rs` built for the pages:
+/// empty when this build has none (without the feature `pages`, or without the wasm32 target).
+const MODULE: &str = include_str!(concat!(env!("OUT_DIR"), "/pages.wasm.b64"));
+
+/// Unpacks the module in the page and runs the page's script with the API.
+const LOADER: &str = include_str!("loader.js");
+
+/// Answers one request of a page: `name` is the function, `request` its argument.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::pages::call;
+/// use serde_json::json;
+/// let answer = call("number", &json!({"text": "0.25"}));
+/// assert_eq!(answer["value"]["text"], "1/4");
+/// assert_eq!(call("nothing", &json!({}))["error"]["message"], "no page function 'nothing'");
+/// ```
+pub fn call(name: &str, request: &Value) -> Value {
+    match name {
+        "number" => number(request),
+        "explore" => explore(request),
+        "explore_motion" => explore_motion(request),
+        "tilted" => tilted(request),
+        "tilted_map" => tilted_map(request),
+        _ => field_error(
+            "name",
+            format!("no page function '{}'", crate::echo::echo(name)),
+        ),
+    }
+}
+
+/// [`call`] on the text the WebAssembly module receives: `{"name": ..., "request": ...}`; the
+/// answer as JSON text.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::pages::call_json;
+/// assert!(call_json(r#"{"name": "number", "request": {"text": "3/6"}}"#).contains(r#""text":"1/2""#));
+/// assert!(call_json("{").contains("error"));
+/// ```
+pub fn call_json(text: &str) -> String {
+    let answer = match serde_json::from_str::<Value>(text) {
+        Ok(message) => call(
+            message["name"].as_str().unwrap_or_default(),
+            &message["request"],
+        ),
+        Err(e) => field_error("request", format!("not JSON: {e}")),
+    };
+    answer.to_string()
+}
+
+/// `number`: `{"text": "0.25"}` read as an exact number: `{"value": X}` or an error.
+fn number(request: &Value) -> Value {
+    match read(request, "text", "number") {
+        Ok(q) => json!({ "value": exact(&crate::field::QSqrt::rational(q)) }),
+        Err(e) => e,
+    }
+}
+
+/// The text of `request[key]` read as an exact rational, or the error object naming `field`.
+fn read(request: &Value, key: &str, field: &str) -> Result<crate::field::Q, Value> {
+    let text = request[key].as_str().unwrap_or_default();
+    crate::number::parse(text).map_err(|kind| field_error(field, kind_message(&kind)))
+}
+
+/// An error's reason as the pages show it (without the field's name, which the page shows).
+fn kind_message(kind: &ErrorKind) -> String {
+    Error::new("x", kind.clone())
+        .to_string()
+        .trim_start_matches("x: ")
+        .to_string()
+}
+
+/// `{"error": {"field": field, "message": message}}`.
+fn field_error(field: &str, message: String) -> Value {
+    json!({ "error": { "field": field, "message": message } })
+}
+
+/// The element that carries the WebAssembly module in a page (compressed, in base64): part of
+/// the page's body, read by the loader of [`page_script`].
+///
+/// # Errors
+/// When this build has no WebAssembly module (built without the feature `pages` or without
+/// the `wasm32-unknown-unknown` target), naming the fix.
+///
+/// # Examples
+/// ```
+/// let element = rodimpact::report::pages::module_element()?;
+/// assert!(element.starts_with("<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn module_element() -> Result<String, Error> {
+    if MODULE.is_empty() {
+        return Err(Error::new(
+            "explore",
+            ErrorKind::Invalid(
+                "this build has no WebAssembly module for the pages: install the target \
+                 (rustup target add wasm32-unknown-unknown) and build again with the feature \
+                 `pages` (on by default)"
+                    .into(),
+            ),
+        ));
+    }
+    Ok(format!(
+        "<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">{MODULE}</script>\n"
+    ))
+}
+
+/// The script of a page that computes with the library: the loader, which unpacks the module
+/// of [`module_element`] and then runs `ui` as the body of a function of `api`
+/// (`api.call(name, request)` answers as [`call`] does).
+///
+/// # Examples
+/// ```
+/// let script = rodimpact::report::pages::page_script("api.call('number', {text: '1'});");
+/// assert!(script.contains("rodimpactPage(function (api) {"));
+/// ```
+pub fn page_script(ui: &str) -> String {
+    format!("{LOADER}\nrodimpactPage(function (api) {{\n{ui}\n}});\n")
+}
+
+/// The size in bytes of the module as a page carries it (compressed, in base64).
+///
+/// # Examples
+/// ```
+/// assert!(rodimpact::report::pages::module_size() < 1_000_000);
+/// ```
+pub fn module_size() -> usize {
+    MODULE.len()
+}
