@@ -4,7 +4,7 @@
 
 use super::{exact, kind_message};
 use crate::field::{Field, Q, QSqrt, q};
-use crate::scene::{Params, RodInertia, Scene, Support};
+use crate::scene::{Params, RodInertia, Scene, SceneBuilder, Support};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
 use crate::solve::optimum::{Optimum, Placement, a_star_squared, optimum};
@@ -13,68 +13,106 @@ use serde_json::{Map, Value, json};
 use std::cmp::Ordering;
 
 /// The page's name of each field, as its error messages start.
-const FIELD_NAMES: [(&str, &str); 6] = [
+const FIELD_NAMES: [(&str, &str); 10] = [
     ("ratio", "M/m"),
     ("a", "a/l"),
     ("e", "e"),
     ("rg", "r_G/l"),
     ("pivot", "p/l"),
     ("guess", "guess"),
+    ("v0t", "v0t"),
+    ("mu", "μ"),
+    ("radius", "r/l"),
+    ("spin", "spin"),
 ];
 
 /// A scene as the page's fields give it.
-struct PageScene {
+pub(super) struct PageScene {
     /// The scene, struck at a rational point: `a` itself, or the end on a*'s side.
-    scene: Scene,
+    pub(super) scene: Scene,
     /// Where it is struck, exactly (a*, irrational, included).
-    a: QSqrt,
+    pub(super) a: QSqrt,
     /// The pivot's position, on a pivot.
-    pivot: Option<Q>,
+    pub(super) pivot: Option<Q>,
     /// Why the a field's a* was struck at the end instead ("" otherwise).
     note: String,
 }
 
 /// The fields' errors, by field id (`{"ratio": "M/m: must be > 0"}`).
-type FieldErrors = Map<String, Value>;
+pub(super) type FieldErrors = Map<String, Value>;
+
+/// The field `id` of the request read as an exact number within the page's limits and checked
+/// by `check` (which returns why a value is refused); `None` with the error recorded by field.
+pub(super) fn read_field(
+    request: &Value,
+    id: &str,
+    check: &dyn Fn(&Q) -> Option<&'static str>,
+    errors: &mut FieldErrors,
+) -> Option<Q> {
+    let text = request[id].as_str().unwrap_or_default();
+    let message = match page_limits(text).and_then(|()| crate::number::parse(text)) {
+        Ok(value) => match check(&value) {
+            None => return Some(value),
+            Some(why) => why.to_string(),
+        },
+        Err(kind) => kind_message(&kind),
+    };
+    errors.insert(id.into(), json!(format!("{}: {message}", name_of(id))));
+    None
+}
 
 /// Reads the page's fields (`ratio`, `a`, `e`, `kind` = uniform|dumbbell|gyration, `rg`,
 /// `pivoted`, `pivot`); the errors by field when one is wrong.
 fn page_scene(request: &Value) -> Result<PageScene, FieldErrors> {
-    let mut errors = FieldErrors::new();
-    let mut field = |id: &str, check: &dyn Fn(&Q) -> Option<&'static str>| -> Option<Q> {
-        let text = request[id].as_str().unwrap_or_default();
-        let message = match page_limits(text).and_then(|()| crate::number::parse(text)) {
-            Ok(value) => match check(&value) {
-                None => return Some(value),
-                Some(why) => why.to_string(),
-            },
-            Err(kind) => kind_message(&kind),
-        };
-        errors.insert(id.into(), json!(format!("{}: {message}", name_of(id))));
-        None
-    };
+    page_scene_with(request, FieldErrors::new(), &|b| b)
+}
+
+/// [`page_scene`] with more of the scene set by `extend` (the oblique tab's fields, read by the
+/// caller, whose errors come in `errors`).
+pub(super) fn page_scene_with(
+    request: &Value,
+    mut errors: FieldErrors,
+    extend: &dyn Fn(SceneBuilder) -> SceneBuilder,
+) -> Result<PageScene, FieldErrors> {
     let one = Q::from_i64(1);
     let on_rod = |x: &Q| x.abs() <= one;
-    let ratio = field("ratio", &|x| {
-        (x.sign() != Some(Ordering::Greater)).then_some("must be > 0")
-    });
-    let e = field("e", &|x| {
-        (x.sign() == Some(Ordering::Less) || *x > Q::from_i64(1)).then_some("must lie in 0 ≤ e ≤ 1")
-    });
+    let ratio = read_field(
+        request,
+        "ratio",
+        &|x| (x.sign() != Some(Ordering::Greater)).then_some("must be > 0"),
+        &mut errors,
+    );
+    let e = read_field(
+        request,
+        "e",
+        &|x| {
+            (x.sign() == Some(Ordering::Less) || *x > Q::from_i64(1))
+                .then_some("must lie in 0 ≤ e ≤ 1")
+        },
+        &mut errors,
+    );
     let kind = request["kind"].as_str().unwrap_or("uniform");
     let rod = match kind {
         "dumbbell" => Some(RodInertia::Dumbbell),
-        "gyration" => field("rg", &|x| {
-            (x.sign() != Some(Ordering::Greater) || *x > Q::from_i64(1))
-                .then_some("must lie in 0 < r_G/l ≤ 1")
-        })
+        "gyration" => read_field(
+            request,
+            "rg",
+            &|x| {
+                (x.sign() != Some(Ordering::Greater) || *x > Q::from_i64(1))
+                    .then_some("must lie in 0 < r_G/l ≤ 1")
+            },
+            &mut errors,
+        )
         .map(RodInertia::Gyration),
         _ => Some(RodInertia::Uniform),
     };
     let pivot = if request["pivoted"].as_bool().unwrap_or(false) {
-        field("pivot", &|x| {
-            (!on_rod(x)).then_some("must lie on the rod, −1 ≤ p/l ≤ 1")
-        })
+        read_field(
+            request,
+            "pivot",
+            &|x| (!on_rod(x)).then_some("must lie on the rod, −1 ≤ p/l ≤ 1"),
+            &mut errors,
+        )
         .map(Some)
     } else {
         Some(None)
@@ -82,18 +120,35 @@ fn page_scene(request: &Value) -> Result<PageScene, FieldErrors> {
     let (Some(ratio), Some(e), Some(rod), Some(pivot)) = (ratio, e, rod, pivot) else {
         return Err(errors);
     };
-    let builder = |a: Q| {
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    // A scene the extension refuses (a spin without a disc, no approach): the error by its field.
+    let built = |a: Q| {
         let b = Scene::builder(one.clone(), ratio.clone())
             .rod(rod.clone())
             .e(e.clone())
             .a(a);
-        match &pivot {
+        extend(match &pivot {
             Some(p) => b.pivot(p.clone()),
             None => b,
-        }
+        })
         .build()
-        .expect("every field was checked")
     };
+    if let Err(e) = built(Q::default()) {
+        let mut errors = FieldErrors::new();
+        let field = e.field.clone();
+        let message = e.to_string();
+        let reason = message
+            .split_once(": ")
+            .map_or(message.as_str(), |(_, why)| why);
+        errors.insert(
+            field.clone(),
+            json!(format!("{}: {reason}", name_of(&field))),
+        );
+        return Err(errors);
+    }
+    let builder = |a: Q| built(a).expect("every field was checked");
     let text = request["a"].as_str().unwrap_or_default();
     match star(text) {
         Some((from_pivot, side)) => {
@@ -136,9 +191,12 @@ fn page_scene(request: &Value) -> Result<PageScene, FieldErrors> {
             })
         }
         None => {
-            let a = field("a", &|x| {
-                (!on_rod(x)).then_some("must lie on the rod, −1 ≤ a/l ≤ 1")
-            });
+            let a = read_field(
+                request,
+                "a",
+                &|x| (!on_rod(x)).then_some("must lie on the rod, −1 ≤ a/l ≤ 1"),
+                &mut errors,
+            );
             match a {
                 Some(a) => Ok(PageScene {
                     scene: builder(a.clone()),
@@ -222,7 +280,7 @@ fn star(text: &str) -> Option<(bool, i64)> {
 }
 
 /// The scene's parameters in the field `F`, struck at `a`.
-fn params_at<F: Field>(scene: &Scene, a: F) -> Params<F> {
+pub(super) fn params_at<F: Field>(scene: &Scene, a: F) -> Params<F> {
     Params {
         a,
         ..scene.params::<F>()

@@ -12,14 +12,17 @@
 //! | `number` | a field's text read as an exact number (or its error) |
 //! | `explore` | the paper's scene on the explore page: the exact answer, a*, omega_max, the curves |
 //! | `explore_motion` | the rod and puck after the impact at given times, for the animation |
+//! | `oblique` | the explore page's oblique tab: the puck also sliding along the rod, with friction |
 //! | `tilted` | a tilted rod on a rough floor under the three laws, with Routh's path |
 //! | `tilted_map` | where each law creates energy, over a grid of tilted-rod scenes |
 
 mod explore_api;
+mod oblique;
 mod tilted;
 mod value;
 
 pub use explore_api::{explore, explore_motion};
+pub use oblique::oblique;
 pub use tilted::{tilted, tilted_map};
 pub use value::exact;
 
@@ -49,6 +52,7 @@ pub fn call(name: &str, request: &Value) -> Value {
         "number" => number(request),
         "explore" => explore(request),
         "explore_motion" => explore_motion(request),
+        "oblique" => oblique(request),
         "tilted" => tilted(request),
         "tilted_map" => tilted_map(request),
         _ => field_error(
