@@ -345,34 +345,77 @@ fn the_energy_map_marks_where_newton_gains() {
 #[test]
 fn the_oblique_tab_answers_as_solve_does() {
     use rodimpact::report::pages::oblique;
-    let slide = oblique(&json!({"ratio": "1", "a": "1/2", "e": "1", "kind": "uniform", "v0t": "1", "mu": "1/4"}));
-    let text = |answer: &Value, key: &str| answer["values"][key]["text"].as_str().unwrap().to_string();
-    assert_eq!(
-        ["v", "V", "omega", "vt", "Vt", "Jt", "mu_star", "energy_lost", "lost_friction"].map(|k| text(&slide, k)),
-        ["3/11", "8/11", "12/11", "9/11", "2/11", "2/11", "11/16", "18/121", "18/121"]
+    let slide = oblique(
+        &json!({"ratio": "1", "a": "1/2", "e": "1", "kind": "uniform", "v0t": "1", "mu": "1/4"}),
     );
-    assert_eq!((&slide["contact"], &slide["same_spin"]), (&json!("slide"), &json!(true)));
-    let stick = oblique(&json!({"ratio": "1", "a": "1/2", "e": "1", "kind": "uniform", "v0t": "1", "mu": "1"}));
-    assert_eq!(["vt", "Vt", "Jt"].map(|k| text(&stick, k)), ["1/2", "1/2", "1/2"]);
+    let text =
+        |answer: &Value, key: &str| answer["values"][key]["text"].as_str().unwrap().to_string();
+    assert_eq!(
+        [
+            "v",
+            "V",
+            "omega",
+            "vt",
+            "Vt",
+            "Jt",
+            "mu_star",
+            "energy_lost",
+            "lost_friction"
+        ]
+        .map(|k| text(&slide, k)),
+        [
+            "3/11", "8/11", "12/11", "9/11", "2/11", "2/11", "11/16", "18/121", "18/121"
+        ]
+    );
+    assert_eq!(
+        (&slide["contact"], &slide["same_spin"]),
+        (&json!("slide"), &json!(true))
+    );
+    let stick = oblique(
+        &json!({"ratio": "1", "a": "1/2", "e": "1", "kind": "uniform", "v0t": "1", "mu": "1"}),
+    );
+    assert_eq!(
+        ["vt", "Vt", "Jt"].map(|k| text(&stick, k)),
+        ["1/2", "1/2", "1/2"]
+    );
     assert_eq!(stick["contact"], "stick");
     // M = 2m, a = l/3, e = 1/2, v0t = -1/2, mu = 1/5, a disc of radius l/10 spinning at 3 v0/l.
-    let disc = oblique(&json!({"ratio": "2", "a": "1/3", "e": "1/2", "kind": "uniform", "v0t": "-1/2",
-        "mu": "1/5", "radius": "1/10", "spin": "3"}));
+    let disc = oblique(
+        &json!({"ratio": "2", "a": "1/3", "e": "1/2", "kind": "uniform", "v0t": "-1/2",
+        "mu": "1/5", "radius": "1/10", "spin": "3"}),
+    );
     assert_eq!(
         ["v", "V", "omega", "vt", "Vt", "spin_after", "Jt", "mu_star"].map(|k| text(&disc, k)),
-        ["1/10", "9/20", "9/20", "-31/70", "-1/35", "29/7", "-2/35", "4/63"]
+        [
+            "1/10", "9/20", "9/20", "-31/70", "-1/35", "29/7", "-2/35", "4/63"
+        ]
     );
-    assert_eq!((&disc["contact"], &disc["same_spin"]), (&json!("stick"), &json!(true)));
+    assert_eq!(
+        (&disc["contact"], &disc["same_spin"]),
+        (&json!("stick"), &json!(true))
+    );
     // The loss curve: no loss to friction at mu = 0; from mu* on, the sticking loss.
     let curve = &slide["loss_curve"];
     let friction = curve["friction"].as_array().unwrap();
     assert_eq!((friction.len(), friction[0].as_f64()), (101, Some(0.0)));
     assert_eq!(curve["mu_max"], 1.1);
     let stuck_share = friction[100].as_f64().unwrap();
-    assert!(friction[70..].iter().all(|f| f.as_f64() == Some(stuck_share)), "constant once it sticks");
+    assert!(
+        friction[70..]
+            .iter()
+            .all(|f| f.as_f64() == Some(stuck_share)),
+        "constant once it sticks"
+    );
     // Errors by field, the disc's too; a spin without a disc is not a field the tab sends.
-    let wrong = oblique(&json!({"ratio": "1", "a": "1/2", "e": "1", "v0t": "x", "mu": "-1", "radius": "0"}));
+    let wrong = oblique(
+        &json!({"ratio": "1", "a": "1/2", "e": "1", "v0t": "x", "mu": "-1", "radius": "0"}),
+    );
     assert_eq!(wrong["errors"]["mu"], "μ: must be ≥ 0");
     assert_eq!(wrong["errors"]["radius"], "r/l: must be > 0");
-    assert!(wrong["errors"]["v0t"].as_str().unwrap().starts_with("v0t: not a number"));
+    assert!(
+        wrong["errors"]["v0t"]
+            .as_str()
+            .unwrap()
+            .starts_with("v0t: not a number")
+    );
 }
