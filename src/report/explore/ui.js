@@ -532,8 +532,10 @@
       // Where the contact sticks: from μ* on, friction takes no more.
       svg.append(el("rect", { x: X(muStar), y: Y(ys[1]), width: X(xs[1]) - X(muStar), height: Y(0) - Y(ys[1]), class: "stick-zone" }));
       svg.append(el("line", { x1: X(muStar), x2: X(muStar), y1: Y(0), y2: Y(ys[1]), class: "mustar" }));
-      const right = muStar > xs[1] * 0.6;
-      svg.append(el("text", { x: X(muStar) + (right ? -5 : 5), y: Y(ys[1]) + 16, class: "note mustar-label", "text-anchor": right ? "end" : "start" }, `μ* = ${out.values.mu_star ? out.values.mu_star.pretty : tidy(muStar, 3)}: sticks from here`));
+      // Its name beside the line, on the side with more room; "sticks" in the shaded part.
+      const right = muStar > xs[1] * 0.55;
+      svg.append(el("text", { x: X(muStar) + (right ? -5 : 5), y: Y(ys[1]) + 16, class: "note mustar-label", "text-anchor": right ? "end" : "start" }, `μ* = ${out.values.mu_star ? out.values.mu_star.pretty : tidy(muStar, 3)}`));
+      if (X(xs[1]) - X(muStar) > 70) svg.append(el("text", { x: (X(muStar) + X(xs[1])) / 2, y: Y(0) - 8, class: "note mustar-label", "text-anchor": "middle" }, "sticks"));
     }
     // The library's curves (its f64 backend), as polylines.
     const points = (ys) => curve.mu.map((m, i) => [X(m), Y(ys[i])]);
