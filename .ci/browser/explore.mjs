@@ -319,7 +319,7 @@ await inBrowser("explore oblique", file, { width: 1200, height: 1000 }, async ({
     chart: document.getElementById("loss").childElementCount,
     verdict: document.getElementById("oblique-verdict").textContent,
   }));
-  check(refused.error.startsWith("mu:") && refused.error.includes("≥ 0") && refused.invalid === "true" && refused.rows === 0 && refused.chart === 0 && refused.verdict.startsWith("Correct the highlighted field"), `μ = −1 is refused and the tab cleared: ${JSON.stringify(refused)}`);
+  check(refused.error.includes("must be ≥ 0") && refused.invalid === "true" && refused.rows === 0 && refused.chart === 0 && refused.verdict.startsWith("Correct the highlighted field"), `μ = −1 is refused and the tab cleared: ${JSON.stringify(refused)}`);
   await type("#mu", "1/4");
   check((await page.$eval("#mu", (e) => e.getAttribute("aria-invalid"))) === "false" && (await text("#mu-error")) === "" && (await cell("μ*")) === "11/16", "corrected, the answer is back");
   // A disc of radius l/10 that may spin: its spin after, and less friction needed to stick.

@@ -542,8 +542,9 @@
     const path = (pts) => pts.map(([x, y], i) => `${i ? "L" : "M"}${x.toFixed(1)},${y.toFixed(1)}`).join("");
     const friction = points(curve.friction);
     const total = points(curve.total);
-    svg.append(el("path", { d: path(total), class: "curve total" }));
+    // The loss in all dashed over the loss to friction (they are one line when e = 1).
     svg.append(el("path", { d: path(friction), class: "curve friction" }));
+    svg.append(el("path", { d: path(total), class: "curve total" }));
     // The legend, top left.
     svg.append(el("text", { x: X(0) + 8, y: Y(ys[1]) + 34, class: "note legend-total" }, "– – lost in all"));
     svg.append(el("text", { x: X(0) + 8, y: Y(ys[1]) + 50, class: "note legend-friction" }, "—— lost to friction"));
