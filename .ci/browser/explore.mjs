@@ -249,3 +249,113 @@ await inBrowser("explore preset", presetFile, { width: 1200, height: 1000 }, asy
   const linkError = await text("#link-error");
   check(linkError.startsWith("The link's colour, rod=steel is not understood"), `unknown keys named: "${linkError.slice(0, 60)}…"`);
 });
+
+// The oblique tab: the puck also slides along the rod, with Coulomb friction at the contact.
+// For a thin rod friction acts along the rod's axis: the spin is exactly the frictionless one.
+await inBrowser("explore oblique", file, { width: 1200, height: 1000 }, async ({ page, url, check, name }) => {
+  const text = (id) => page.$eval(id, (e) => e.textContent);
+  const cell = (name) => page.$$eval("#oblique-body tr", (rows, name) => {
+    const row = rows.find((r) => r.querySelector("th").textContent === name);
+    return row ? row.querySelector("td.exact").textContent : null;
+  }, name);
+  const type = async (id, value) => {
+    await page.$eval(id, (e) => { e.value = ""; });
+    await page.type(id, value);
+  };
+  const unicode = (s) => s.replace(/-/g, "−");
+  const solve = (...flags) => JSON.parse(execFileSync(rodimpact, ["solve", "--m", "1", "--M", "1", "--a", "1/2", "--v0t", "1", ...flags, "--json"], { encoding: "utf8" }));
+  const tabs = () => page.evaluate(() => ({
+    square: document.getElementById("tab-square").getAttribute("aria-selected"),
+    oblique: document.getElementById("tab-oblique").getAttribute("aria-selected"),
+    squareHidden: document.getElementById("panel-square").hidden,
+    obliqueHidden: document.getElementById("panel-oblique").hidden,
+    fieldsIn: document.getElementById("ratio").closest("[role=tabpanel]").id,
+    focused: document.activeElement.id,
+  }));
+
+  // The page opens on the paper's tab; a click opens the oblique one, with the scene's fields.
+  check(JSON.stringify(await tabs()).startsWith('{"square":"true","oblique":"false","squareHidden":false,"obliqueHidden":true,"fieldsIn":"panel-square"'), `the page opens on the square-on tab: ${JSON.stringify(await tabs())}`);
+  await page.click("#tab-oblique");
+  const opened = await tabs();
+  check(opened.oblique === "true" && opened.square === "false" && opened.obliqueHidden === false && opened.squareHidden === true && opened.fieldsIn === "panel-oblique", `a click opens the oblique tab, the scene's fields with it: ${JSON.stringify(opened)}`);
+  // Predict first: the spin waits for a guess.
+  check((await cell("ω")) === "hidden" && (await text("#oblique-verdict")).startsWith("Will friction change how fast the rod spins?"), `before a guess the spin is withheld: "${(await text("#oblique-verdict")).slice(0, 60)}…"`);
+  await page.click("#oblique-guess button[data-guess=same]");
+  // M = m, a = l/2, v0t = v0, mu = 1/4 (the tab's defaults): solve says the same.
+  const cli = solve("--mu", "1/4");
+  const verdict = await text("#oblique-verdict");
+  check(verdict.startsWith("Your guess is right: ω = 12/11 v0/l ≈ 1.091, exactly as without friction."), `the verdict: "${verdict.slice(0, 90)}…"`);
+  const shown = {};
+  for (const n of ["ω", "ω (μ = 0)", "vt", "Vt", "J", "Jt", "μ*", "contact", "K0", "ΔKe", "ΔKμ", "ΔK"]) shown[n] = await cell(n);
+  const expected = {
+    "ω": cli.omega.exact, "ω (μ = 0)": "12/11", vt: cli.vt.exact, Vt: cli.Vt.exact, J: cli.impulse.exact,
+    Jt: cli.tangential_impulse.exact, "μ*": cli.mu_star.exact, contact: "slides", K0: cli.energy.before.exact,
+    "ΔKe": cli.energy.lost_restitution.exact, "ΔKμ": cli.energy.lost_friction.exact, "ΔK": cli.energy.lost.exact,
+  };
+  const differ = Object.keys(expected).filter((k) => shown[k] !== unicode(expected[k]));
+  check(differ.length === 0 && shown["ω"] === "12/11" && shown["μ*"] === "11/16" && shown["ΔKμ"] === "18/121" && shown.K0 === "1", `the table agrees with rodimpact solve --v0t 1 --mu 1/4: ${JSON.stringify(shown)}${differ.length ? ` (differs: ${differ.join(", ")})` : ""}`);
+  const contact = await text("#oblique-contact");
+  check(contact.startsWith("The contact slides throughout: μ = 1/4 is less than μ* = 11/16") && contact.includes("18/121 m v0²"), `contact slides: "${contact.slice(0, 80)}…"`);
+  // The chart: the energy lost to friction and in all against μ, μ* marked, μ = 1/4 a dot.
+  const chart = await page.evaluate(() => {
+    const svg = document.getElementById("loss");
+    const points = (sel) => (svg.querySelector(sel)?.getAttribute("d") || "").split(/[ML]/).filter(Boolean).length;
+    return { friction: points("path.friction"), total: points("path.total"), mustar: svg.querySelectorAll("line.mustar").length, label: [...svg.querySelectorAll("text.mustar-label")].map((t) => t.textContent).join(" | "), dot: svg.querySelectorAll("circle.here.friction").length, width: svg.getBoundingClientRect().width };
+  });
+  check(chart.friction > 50 && chart.total > 50 && chart.mustar === 1 && chart.label.startsWith("μ* = 11/16") && chart.dot === 1, `the loss chart has its curves, μ* and the dot: ${JSON.stringify(chart)}`);
+  await page.screenshot({ path: `${shots}/${name}-explore-oblique.png`, fullPage: true });
+
+  // mu = 1 >= mu* = 11/16: the contact sticks; the spin still the frictionless one.
+  await type("#mu", "1");
+  const stuck = solve("--mu", "1");
+  check((await cell("contact")) === "sticks" && (await cell("Jt")) === unicode(stuck.tangential_impulse.exact) && (await cell("ΔKμ")) === unicode(stuck.energy.lost_friction.exact) && (await cell("ω")) === "12/11", `μ = 1 sticks: Jt = ${await cell("Jt")}, lost to friction ${await cell("ΔKμ")}, ω = ${await cell("ω")}`);
+  check((await text("#oblique-contact")).startsWith("The contact sticks: μ = 1 is at least μ* = 11/16"), `"${(await text("#oblique-contact")).slice(0, 70)}…"`);
+  // A bad mu: refused under its field, and nothing of the last answer left standing.
+  await type("#mu", "-1");
+  const refused = await page.evaluate(() => ({
+    error: document.getElementById("mu-error").textContent,
+    invalid: document.getElementById("mu").getAttribute("aria-invalid"),
+    rows: document.getElementById("oblique-body").childElementCount,
+    chart: document.getElementById("loss").childElementCount,
+    verdict: document.getElementById("oblique-verdict").textContent,
+  }));
+  check(refused.error.includes("must be ≥ 0") && refused.invalid === "true" && refused.rows === 0 && refused.chart === 0 && refused.verdict.startsWith("Correct the highlighted field"), `μ = −1 is refused and the tab cleared: ${JSON.stringify(refused)}`);
+  await type("#mu", "1/4");
+  check((await page.$eval("#mu", (e) => e.getAttribute("aria-invalid"))) === "false" && (await text("#mu-error")) === "" && (await cell("μ*")) === "11/16", "corrected, the answer is back");
+  // A disc of radius l/10 that may spin: its spin after, and less friction needed to stick.
+  await page.click("#disc");
+  await type("#radius", "1/10");
+  const disc = solve("--mu", "1/4", "--radius", "1/10", "--spin", "0");
+  check((await cell("ωd")) === unicode(disc.spin.exact) && (await cell("μ*")) === unicode(disc.mu_star.exact) && (await cell("ω")) === "12/11", `a disc r = l/10: its spin after ${await cell("ωd")}, μ* = ${await cell("μ*")} (solve: ${disc.spin.exact}, ${disc.mu_star.exact})`);
+  await page.click("#disc");
+
+  // The scene's fields are one: M typed on this tab is the first tab's M too.
+  await type("#ratio", "3");
+  await page.focus("#tab-oblique");
+  await page.keyboard.press("ArrowLeft");
+  const left = await tabs();
+  check(left.square === "true" && left.focused === "tab-square" && left.fieldsIn === "panel-square" && (await page.$eval("#ratio", (e) => e.value)) === "3", `ArrowLeft opens the square-on tab, with M/m = 3 from the other: ${JSON.stringify(left)}`);
+  await page.keyboard.press("ArrowRight");
+  const right = await tabs();
+  check(right.oblique === "true" && right.focused === "tab-oblique", `ArrowRight goes back: ${JSON.stringify(right)}`);
+  await type("#ratio", "1");
+
+  // The scene's link opens this tab on this scene, from a fresh load.
+  const link = await text("#oblique-link");
+  check(link.endsWith("#tab=oblique&M=1&a=1/2&e=1&rod=uniform&v0t=1&mu=1/4"), `the oblique scene's link: ${link}`);
+  await page.goto(`${url.split("#")[0]}#tab=oblique&M=1&a=1/2&v0t=1&mu=1&predict=0`, { waitUntil: "load" });
+  await page.reload({ waitUntil: "load" });
+  await moduleReady(page);
+  const linked = await tabs();
+  check(linked.oblique === "true" && linked.obliqueHidden === false && (await cell("contact")) === "sticks" && (await text("#oblique-verdict")).startsWith("ω = 12/11 v0/l ≈ 1.091, exactly as without friction"), `#tab=oblique&…&mu=1&predict=0 opens the oblique tab, contact sticks: ${JSON.stringify(linked)}`);
+  await page.goto(`${url.split("#")[0]}#tab=oblique&mu=1/2&colour=red&tab=sideways`, { waitUntil: "load" });
+  await moduleReady(page);
+  check((await text("#link-error")).startsWith("The link's colour, tab=sideways is not understood"), `unknown keys named: "${(await text("#link-error")).slice(0, 60)}…"`);
+
+  // A phone: no sideways scroll, the chart's labels readable.
+  await page.setViewport({ width: 390, height: 844 });
+  await page.evaluate(() => window.dispatchEvent(new Event("resize")));
+  const phone = await page.evaluate(() => ({ scroll: document.documentElement.scrollWidth, label: Math.min(...[...document.querySelectorAll("#loss text")].map((t) => t.getBoundingClientRect().height)) }));
+  check(phone.scroll <= 390 && phone.label >= 10, `390 px wide: no sideways scroll (${phone.scroll} px), the chart's labels ${phone.label.toFixed(1)} px high at least`);
+  await page.screenshot({ path: `${shots}/${name}-explore-oblique-phone.png`, fullPage: true });
+});

@@ -13,6 +13,8 @@
   // ---- reading the controls ------------------------------------------------------------
   // The fields are read by the library (api.call): the page only gathers their text.
   const FIELDS = ["ratio", "a", "e", "rg", "pivot"];
+  // The oblique tab's own fields (the fields above are shared by both tabs).
+  const OBLIQUE_FIELDS = ["v0t", "mu", "radius", "spin"];
 
   function kind() {
     return document.querySelector("input[name=kind]:checked").value;
@@ -32,9 +34,15 @@
     };
   }
 
+  /** The oblique tab's request: the scene's fields and the sliding, the friction and the disc. */
+  function obliqueRequest() {
+    const disc = $("disc").checked;
+    return request({ v0t: $("v0t").value, mu: $("mu").value, radius: disc ? $("radius").value : "", spin: disc ? $("spin").value : "" });
+  }
+
   /** Shows each field's error (the library's message, naming the field), or clears it. */
   function showErrors(errors) {
-    for (const id of FIELDS) {
+    for (const id of [...FIELDS, ...OBLIQUE_FIELDS]) {
       const message = errors[id] || "";
       $(`${id}-error`).textContent = message;
       $(id).setAttribute("aria-invalid", message ? "true" : "false");
@@ -84,7 +92,13 @@
   link("ratio-slider", "ratio", ratioFromSlider, (x) => Math.log10(x));
   link("a-slider", "a", (s) => tidy(s, 2), (x) => x);
   link("e-slider", "e", (s) => tidy(s, 2), (x) => x);
-  for (const id of ["rg", "pivot"]) $(id).addEventListener("input", update);
+  link("v0t-slider", "v0t", (s) => tidy(s, 2), (x) => x);
+  link("mu-slider", "mu", (s) => tidy(s, 2), (x) => x);
+  for (const id of ["rg", "pivot", "radius", "spin"]) $(id).addEventListener("input", update);
+  $("disc").addEventListener("change", () => {
+    $("radius").disabled = $("spin").disabled = !$("disc").checked;
+    update();
+  });
   for (const r of document.querySelectorAll("input[name=kind]")) {
     r.addEventListener("change", () => {
       $("rg").disabled = kind() !== "gyration";
@@ -123,6 +137,57 @@
     $("summary").focus();
   });
 
+  // ---- the tabs: the square-on impact (the paper) and the oblique one -----------------------
+  // One scene: the fields of the rod and the impact (#shared-fields) go with the open tab.
+  const TABS = ["square", "oblique"];
+  let tab = "square";
+  function showTab(name) {
+    tab = name;
+    for (const t of TABS) {
+      const on = t === name;
+      $(`tab-${t}`).setAttribute("aria-selected", on ? "true" : "false");
+      $(`tab-${t}`).tabIndex = on ? 0 : -1;
+      $(`panel-${t}`).hidden = !on;
+    }
+    if (name === "oblique") $("oblique-controls").prepend($("shared-fields"));
+    else $("controls").insertBefore($("shared-fields"), $("controls").querySelector(".predict"));
+    // The animation of the first tab stops while it is out of sight.
+    if (name !== "square") setPlaying(false);
+  }
+  for (const t of TABS) {
+    $(`tab-${t}`).addEventListener("click", () => {
+      if (tab === t) return;
+      showTab(t);
+      update();
+    });
+  }
+  // Arrow keys (and Home, End) move between the tabs, opening the one they reach.
+  $("tab-square").parentElement.addEventListener("keydown", (event) => {
+    const at = TABS.indexOf(tab);
+    const next = { ArrowRight: at + 1, ArrowLeft: at - 1, Home: 0, End: TABS.length - 1 }[event.key];
+    if (next === undefined) return;
+    event.preventDefault();
+    const name = TABS[(next + TABS.length) % TABS.length];
+    if (name !== tab) {
+      showTab(name);
+      update();
+    }
+    $(`tab-${name}`).focus();
+  });
+
+  // ---- the oblique tab's guess ----------------------------------------------------------------
+  // With predict first on, the answer (the spin, with and without friction) waits for a guess.
+  let obliqueGuess = null;
+  const GUESSES = { faster: "faster", same: "just as fast", slower: "slower" };
+  const obliqueHidden = () => $("predict").checked && obliqueGuess === null;
+  for (const button of document.querySelectorAll("#oblique-guess button")) {
+    button.addEventListener("click", () => {
+      obliqueGuess = button.dataset.guess;
+      update();
+      $("oblique-verdict").focus();
+    });
+  }
+
   // a* exactly (the field then reads `a*`, irrational or not), on the side already struck; the
   // end of that side when a* lies beyond it.
   $("hit-a-star").addEventListener("click", () => {
@@ -141,7 +206,8 @@
   // ---- a link that opens the page on a scene (explore.html#M=1/2&a=1) --------------------------
   // The keys are those of `rodimpact explore`'s preset (the flags, in the page's units): the
   // values go into the controls as if typed, so a bad number is refused by its field.
-  const LINK_KEYS = ["M", "a", "e", "rod", "pivot", "predict", "frame"];
+  // The oblique tab's: tab (square or oblique), v0t, mu, radius (the disc's, or none) and spin.
+  const LINK_KEYS = ["M", "a", "e", "rod", "pivot", "predict", "frame", "tab", "v0t", "mu", "radius", "spin"];
   /** Checks the radio button `choice` of the group `name`; false when there is none. */
   const pick = (name, choice) => {
     const radio = [...document.querySelectorAll(`input[name=${name}]`)].find((r) => r.value === choice);
@@ -169,15 +235,24 @@
       } else if (key === "pivot") {
         $("pivoted").checked = value !== "none";
         if (value !== "none") $("pivot").value = value;
-      } else if (key === "predict" && (value === "1" || value === "0")) setPredict(value === "1");
-      else if (key === "frame" && pick("frame", value)) continue;
+      } else if (key === "predict" && (value === "1" || value === "0")) {
+        setPredict(value === "1");
+        obliqueGuess = null;
+      } else if (key === "frame" && pick("frame", value)) continue;
+      else if (key === "tab" && TABS.includes(value)) showTab(value);
+      else if (key === "v0t" || key === "mu" || key === "spin") $(key).value = value;
+      else if (key === "radius") {
+        $("disc").checked = value !== "none";
+        if (value !== "none") $("radius").value = value;
+      }
       else wrong.push(LINK_KEYS.includes(key) ? `${key}=${value}` : key);
     }
     $("rg").disabled = kind() !== "gyration";
     $("pivot").disabled = !$("pivoted").checked;
+    $("radius").disabled = $("spin").disabled = !$("disc").checked;
     for (const follow of followers) follow();
     $("link-error").textContent = wrong.length
-      ? `The link's ${wrong.join(", ")} is not understood: it takes M, a, e, rod (uniform, dumbbell, rg=…), pivot (a position or none), predict (1 or 0) and frame (centre-of-mass or lab).`
+      ? `The link's ${wrong.join(", ")} is not understood: it takes M, a, e, rod (uniform, dumbbell, rg=…), pivot (a position or none), predict (1 or 0), frame (centre-of-mass or lab), tab (square or oblique), and for the oblique tab v0t, mu, radius (a disc's, or none) and spin.`
       : "";
     $("link-error").hidden = !wrong.length;
   }
@@ -190,6 +265,12 @@
     if ($("pivoted").checked) parts.push(`pivot=${value($("pivot").value)}`);
     if (!$("predict").checked) parts.push("predict=0");
     if (frame() === "lab") parts.push("frame=lab");
+    if (tab === "oblique") {
+      // The oblique tab's scene: its tab first, then the same keys and its own.
+      parts.unshift("tab=oblique");
+      parts.push(`v0t=${value($("v0t").value)}`, `mu=${value($("mu").value)}`);
+      if ($("disc").checked) parts.push(`radius=${value($("radius").value)}`, `spin=${value($("spin").value)}`);
+    }
     return parts.join("&");
   }
   window.addEventListener("hashchange", () => {
@@ -230,7 +311,19 @@
     ctx.clearRect(0, 0, canvas.width, canvas.height);
   }
 
+  /** Shows the link to the scene on the controls in the anchor `id` (`explore.html#M=1&…`). */
+  function showLink(id) {
+    const link = sceneLink();
+    const file = decodeURIComponent(location.pathname.split("/").pop() || "") || "explore.html";
+    $(id).href = `#${link}`;
+    $(id).textContent = `${file}#${link}`;
+  }
+
   function update() {
+    if (tab === "oblique") {
+      updateOblique();
+      return;
+    }
     const out = api.call("explore", request(guess !== null && !hidden() ? { guess } : {}));
     showErrors(out.errors || {});
     $("a-note").textContent = out.note || "";
@@ -241,10 +334,7 @@
     current = { request: request(), out };
     const s = out.scene;
     const v = out.values;
-    const link = sceneLink();
-    const file = decodeURIComponent(location.pathname.split("/").pop() || "") || "explore.html";
-    $("scene-link").href = `#${link}`;
-    $("scene-link").textContent = `${file}#${link}`;
+    showLink("scene-link");
     for (const r of frames) r.disabled = out.pivoted;
     $("frame-note").textContent = out.pivoted ? "On a pivot the rod is seen from the table." : "";
     $("a-slider").value = s.a.f64;
@@ -318,6 +408,165 @@
     draw();
   }
 
+  // ---- the oblique tab ---------------------------------------------------------------------
+  let oblique = null;
+
+  /** No oblique answer (a field to correct): nothing of the last scene is left standing. */
+  function clearOblique(message) {
+    oblique = null;
+    $("oblique-verdict").textContent = message;
+    $("oblique-verdict").className = "summary";
+    for (const id of ["oblique-contact", "oblique-body", "loss", "loss-caption"]) $(id).replaceChildren();
+  }
+
+  /** A typed number's exact value for the page ({pretty, f64, …}), or null. */
+  const exactOf = (text) => api.call("number", { text }).value || null;
+
+  function updateOblique() {
+    const out = api.call("oblique", obliqueRequest());
+    showErrors(out.errors || {});
+    $("a-note").textContent = "";
+    const hide = obliqueHidden();
+    document.body.classList.toggle("oblique-hidden", hide);
+    $("oblique-guess").hidden = !$("predict").checked;
+    $("oblique-guess").querySelector(".choices").hidden = !hide;
+    $("oblique-guessed").hidden = hide || !GUESSES[obliqueGuess];
+    $("oblique-guessed").textContent = GUESSES[obliqueGuess] ? `Your guess: the rod spins ${GUESSES[obliqueGuess]}.` : "";
+    if (out.errors) {
+      clearOblique("Correct the highlighted field to see the answer.");
+      return;
+    }
+    if (!out.values) {
+      // A module that cannot answer (an older build): said, not hidden.
+      clearOblique(`This page's computing module cannot answer the oblique impact: ${out.error ? out.error.message : "no answer"}.`);
+      return;
+    }
+    oblique = { out, mu: exactOf($("mu").value) };
+    showLink("oblique-link");
+    for (const [slider, field, label] of [["v0t-slider", "v0t", "v0t"], ["mu-slider", "mu", "μ"]]) {
+      const x = exactOf($(field).value);
+      if (x) $(slider).setAttribute("aria-valuetext", `${label} = ${x.pretty}`);
+    }
+    const v = out.values;
+    const disc = $("disc").checked;
+    const v0 = "<i>v</i><sub>0</sub>";
+    const v0l = `${v0}/<i>l</i>`;
+    const withheld = (x) => (hide ? ["hidden", ""] : [x.pretty, x.decimal]);
+    const answerRow = (name, x, meaning) => row(name, ...withheld(x), meaning).replace("<tr>", '<tr class="answer-only">');
+    let rows = "";
+    rows += row("<i>v</i>", v.v.pretty, v.v.decimal, `the puck across the rod after (× ${v0})`);
+    rows += row("<i>V</i>", v.V.pretty, v.V.decimal, `the rod's centre across the rod after (× ${v0})`);
+    rows += answerRow("<i>ω</i>", v.omega, `the rod's spin after (× ${v0l})`);
+    rows += answerRow("<i>ω</i> (<i>μ</i> = 0)", v.omega_frictionless, `the rod's spin in the same scene without friction (× ${v0l})`);
+    rows += row("<i>v</i><sub>t</sub>", v.vt.pretty, v.vt.decimal, `the puck along the rod after (× ${v0}; before: <i>v</i><sub>0t</sub>)`);
+    rows += row("<i>V</i><sub>t</sub>", v.Vt.pretty, v.Vt.decimal, `the rod's centre along the rod after (× ${v0}; before: 0)`);
+    rows += row("<i>J</i>", v.J.pretty, v.J.decimal, `normal impulse of the puck on the rod (× <i>m</i> ${v0})`);
+    rows += row("<i>J</i><sub>t</sub>", v.Jt.pretty, v.Jt.decimal, `friction impulse on the rod, along it (× <i>m</i> ${v0})`);
+    if (disc && v.spin_after) rows += row("<i>ω</i><sub>d</sub>", v.spin_after.pretty, v.spin_after.decimal, `the disc's spin after (× ${v0l}, counterclockwise)`);
+    if (out.pivot_impulse) {
+      const [across, along] = out.pivot_impulse;
+      rows += row("<i>J</i><sub>p</sub>", `${across.pretty}, ${along.pretty}`, `${across.decimal}, ${along.decimal}`, `impulse of the pivot on the rod, across and along it (× <i>m</i> ${v0})`);
+    }
+    rows += v.mu_star
+      ? row("<i>μ</i>*", v.mu_star.pretty, v.mu_star.decimal, "the friction needed to stop the sliding: the contact sticks when μ ≥ μ*")
+      : row("<i>μ</i>*", "—", "", out.contact === "frictionless" ? "no friction to stop the sliding (μ = 0)" : "nothing slides at the contact: it sticks whatever μ");
+    const contactWords = { stick: "sticks: the sliding stops during the impact", slide: "slides throughout the impact (|J<sub>t</sub>| = μ J)", frictionless: "frictionless (μ = 0)" };
+    const contactShort = { stick: "sticks", slide: "slides", frictionless: "no friction" };
+    rows += row("contact", contactShort[out.contact] || out.contact, "", contactWords[out.contact] || "");
+    rows += row("<i>K</i><sub>0</sub>", v.energy_before.pretty, v.energy_before.decimal, `kinetic energy before (× <i>m</i> ${v0}²)`);
+    rows += row("Δ<i>K</i><sub>e</sub>", v.lost_restitution.pretty, v.lost_restitution.decimal, `energy lost to restitution (× <i>m</i> ${v0}²; 0 when e = 1)`);
+    rows += row("Δ<i>K</i><sub>μ</sub>", v.lost_friction.pretty, v.lost_friction.decimal, `energy lost to friction (× <i>m</i> ${v0}²)`);
+    rows += row("Δ<i>K</i>", v.energy_lost.pretty, v.energy_lost.decimal, `energy lost in all (× <i>m</i> ${v0}²)`);
+    $("oblique-body").innerHTML = rows;
+
+    // The verdict, from the library's own comparison of the two spins (same_spin).
+    const omega = `ω = ${times(v.omega, "v0/l")}${approx(v.omega)}`;
+    const verdict = $("oblique-verdict");
+    if (hide) {
+      verdict.className = "summary";
+      verdict.textContent = "Will friction change how fast the rod spins? Make your guess above: faster, just as fast, or slower than without friction.";
+    } else if (out.same_spin) {
+      verdict.className = "summary verdict-same";
+      const right = obliqueGuess === "same" ? "Your guess is right: " : GUESSES[obliqueGuess] ? `Not ${GUESSES[obliqueGuess]}: ` : "";
+      verdict.textContent = `${right}${omega}, exactly as without friction. Friction acts at the contact along the rod, and for a thin rod that line runs through the rod's centre: it has no lever arm, so it cannot change the spin. It changes only the motion along the rod, and it costs energy.`;
+    } else {
+      verdict.className = "summary verdict-differs";
+      verdict.textContent = `${omega}, but without friction ω = ${times(v.omega_frictionless, "v0/l")}${approx(v.omega_frictionless)}: here friction changes the spin.`;
+    }
+    const mu = oblique.mu ? oblique.mu.pretty : $("mu").value;
+    const lost = `friction takes ${times(v.lost_friction, "m v0²")}${approx(v.lost_friction)} of the energy (K0 = ${times(v.energy_before, "m v0²")})`;
+    const contact = {
+      slide: `The contact slides throughout: μ = ${mu} is less than μ* = ${v.mu_star ? v.mu_star.pretty : "?"}, the friction it would take to stop the sliding, so the friction impulse is μ J = ${v.Jt.pretty}; ${lost}.`,
+      stick: v.mu_star
+        ? `The contact sticks: μ = ${mu} is at least μ* = ${v.mu_star.pretty}, so the sliding stops during the impact and the friction impulse is only μ* J = ${v.Jt.pretty}; ${lost}, as much as any friction can take.`
+        : `Nothing slides at the contact, so it sticks whatever μ and friction takes no energy.`,
+      frictionless: `μ = 0: no friction, the puck keeps its ${times(v.vt, "v0")} along the rod and the rod does not move along itself.`,
+    }[out.contact] || "";
+    $("oblique-contact").textContent = contact;
+    drawLoss();
+  }
+
+  /** A tick step for a range of `span`: 1, 2, 2.5 or 5 times a power of 10, 4 to 8 ticks. */
+  const tickStep = (span) => {
+    const power = 10 ** Math.floor(Math.log10(span / 4));
+    return [1, 2, 2.5, 5, 10].map((k) => k * power).find((step) => span / step <= 8);
+  };
+  const ticks = (top, step) => Array.from({ length: Math.floor(top / step + 1e-9) + 1 }, (_, i) => i * step);
+
+  /** The energy lost (to friction, and in all) against μ, with μ* and the chosen μ. */
+  function drawLoss() {
+    const svg = $("loss");
+    svg.replaceChildren();
+    if (!oblique) return;
+    const { out } = oblique;
+    const curve = out.loss_curve;
+    const xs = [0, curve.mu_max];
+    const peak = Math.max(...curve.total, ...curve.friction);
+    const ystep = tickStep(Math.max(0.1, peak * 1.15));
+    const ys = [0, Math.min(1, Math.ceil((Math.max(0.1, peak * 1.15)) / ystep) * ystep)];
+    const xstep = tickStep(curve.mu_max);
+    const digits = (step) => Math.max(0, -Math.floor(Math.log10(step) + 1e-9) + (String(step).includes("25") ? 1 : 0));
+    const { X, Y } = axes(svg, [58, 18, 440, 220], xs, ys, "friction coefficient μ", "lost / K0", ticks(curve.mu_max, xstep), ticks(ys[1], ystep), (t) => tidy(t, digits(xstep)), (t) => tidy(t, digits(ystep)));
+    const muStar = curve.mu_star;
+    if (muStar !== null && muStar <= curve.mu_max) {
+      // Where the contact sticks: from μ* on, friction takes no more.
+      svg.append(el("rect", { x: X(muStar), y: Y(ys[1]), width: X(xs[1]) - X(muStar), height: Y(0) - Y(ys[1]), class: "stick-zone" }));
+      svg.append(el("line", { x1: X(muStar), x2: X(muStar), y1: Y(0), y2: Y(ys[1]), class: "mustar" }));
+      // Its name beside the line, on the side with more room; "sticks" in the shaded part.
+      const right = muStar > xs[1] * 0.55;
+      svg.append(el("text", { x: X(muStar) + (right ? -5 : 5), y: Y(ys[1]) + 16, class: "note mustar-label", "text-anchor": right ? "end" : "start" }, `μ* = ${out.values.mu_star ? out.values.mu_star.pretty : tidy(muStar, 3)}`));
+      if (X(xs[1]) - X(muStar) > 70) svg.append(el("text", { x: (X(muStar) + X(xs[1])) / 2, y: Y(0) - 8, class: "note mustar-label", "text-anchor": "middle" }, "sticks"));
+    }
+    // The library's curves (its f64 backend), as polylines.
+    const points = (ys) => curve.mu.map((m, i) => [X(m), Y(ys[i])]);
+    const path = (pts) => pts.map(([x, y], i) => `${i ? "L" : "M"}${x.toFixed(1)},${y.toFixed(1)}`).join("");
+    const friction = points(curve.friction);
+    const total = points(curve.total);
+    // The loss in all dashed over the loss to friction (they are one line when e = 1).
+    svg.append(el("path", { d: path(friction), class: "curve friction" }));
+    svg.append(el("path", { d: path(total), class: "curve total" }));
+    // The legend, top left.
+    svg.append(el("text", { x: X(0) + 8, y: Y(ys[1]) + 34, class: "note legend-total" }, "– – lost in all"));
+    svg.append(el("text", { x: X(0) + 8, y: Y(ys[1]) + 50, class: "note legend-friction" }, "—— lost to friction"));
+    // The chosen μ on each curve (at its pixel column; at the right edge when beyond the chart).
+    if (oblique.mu) {
+      const x = X(Math.min(oblique.mu.f64, curve.mu_max));
+      const at = (pts) => {
+        const i = pts.findIndex(([px]) => px >= x);
+        if (i <= 0) return pts[Math.max(0, i)][1];
+        const [[x0, y0], [x1, y1]] = [pts[i - 1], pts[i]];
+        return x1 === x0 ? y1 : y0 + ((x - x0) / (x1 - x0)) * (y1 - y0);
+      };
+      svg.append(el("circle", { cx: x, cy: at(total), r: 4, class: "here" }));
+      svg.append(el("circle", { cx: x, cy: at(friction), r: 6, class: "here friction" }));
+      if (oblique.mu.f64 > curve.mu_max) svg.append(el("text", { x: x - 8, y: at(friction) - 10, class: "note", "text-anchor": "end" }, `μ = ${oblique.mu.pretty} →`));
+    }
+    const mu = oblique.mu ? oblique.mu.pretty : $("mu").value;
+    $("loss-caption").textContent = muStar === null
+      ? "The energy lost against μ: nothing slides at the contact, so friction takes none at any μ (the dashed line is the loss to restitution)."
+      : `The energy lost to friction (solid) and in all (dashed), as a share of the energy before, against μ: friction takes more as μ grows while the contact slides, and no more from μ* = ${out.values.mu_star ? out.values.mu_star.pretty : tidy(muStar, 3)} on, where the contact sticks (shaded). The dots are μ = ${mu}.`;
+  }
+
   // ---- drawing: the curve and the threshold ----------------------------------------------
   const el = (name, attrs, text) => {
     const e = document.createElementNS(SVG, name);
@@ -335,7 +584,7 @@
    */
   const textScale = (size, units, shown) => (shown > 0 ? Math.min(2, Math.max(1, (LEAST_TEXT * units) / (size * shown))) : 1);
 
-  function axes(svg, box, xs, ys, xlabel, ylabel, xticks, yticks, xfmt) {
+  function axes(svg, box, xs, ys, xlabel, ylabel, xticks, yticks, xfmt, yfmt = (t) => t.toFixed(1)) {
     // The chart's labels (12 units and up) at LEAST_TEXT px at least, their offsets with them
     // (the frame moves right to make room for larger labels at its left).
     const k = textScale(12, svg.viewBox.baseVal.width, svg.getBoundingClientRect().width);
@@ -350,7 +599,7 @@
     }
     for (const t of yticks) {
       svg.append(el("line", { x1: x0, x2: x0 + w, y1: Y(t), y2: Y(t), class: "grid" }));
-      svg.append(el("text", { x: x0 - 6, y: Y(t) + 4, class: "tick", "text-anchor": "end" }, t.toFixed(1)));
+      svg.append(el("text", { x: x0 - 6, y: Y(t) + 4, class: "tick", "text-anchor": "end" }, yfmt(t)));
     }
     svg.append(el("rect", { x: x0, y: y0, width: w, height: h, class: "frame" }));
     svg.append(el("text", { x: x0 + w / 2, y: y0 + h + 8 + 26 * k, class: "label", "text-anchor": "middle" }, xlabel));
@@ -621,7 +870,7 @@
   });
   $("time").addEventListener("input", drawStage);
   // A narrower or wider window: the labels are sized again.
-  window.addEventListener("resize", draw);
+  window.addEventListener("resize", () => (tab === "oblique" ? drawLoss() : draw()));
 
   // ---- the self-check against rodimpact ----------------------------------------------------
   function selfCheck() {
