@@ -1,6 +1,6 @@
 //! `rodimpact explore`: the interactive page, optionally opening on a scene.
 
-use super::{Failure, SceneFlags, print_out};
+use super::{Failure, ObliqueFlags, SceneFlags, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::io::write_atomic;
 use rodimpact::report::explore::{Frame, Preset, explore_html};
@@ -43,9 +43,10 @@ pub(crate) struct ExploreArgs {
     /// tilted-rod: the rod's sideways velocity before the impact (it falls at 1) [default 1].
     #[arg(long, value_name = "S", allow_hyphen_values = true)]
     pub(crate) slip: Option<String>,
-    /// tilted-rod: Coulomb friction at the floor, >= 0 [default 1/3].
-    #[arg(long, value_name = "MU", allow_hyphen_values = true)]
-    pub(crate) mu: Option<String>,
+    // The oblique tab (--v0t, --mu, --radius, --spin: solve's flags); --mu also the tilted rod's
+    // friction at the floor [default 1/3].
+    #[command(flatten)]
+    pub(crate) oblique: ObliqueFlags,
 }
 
 /// The pages of `--scene`.
@@ -80,10 +81,10 @@ pub(crate) fn run_explore(args: &ExploreArgs) -> Result<(), Failure> {
 
 /// The tilted-rod page: --tilt, --slip, --mu and --e; the paper's scene flags are refused.
 fn tilted_page(args: &ExploreArgs) -> Result<String, Failure> {
-    let input = args.scene.input();
+    let input = args.oblique.input(&args.scene);
     let foreign = input
         .inputs()
-        .find(|(key, value)| value.is_some() && key.name != "e")
+        .find(|(key, value)| value.is_some() && !["e", "mu"].contains(&key.name))
         .map(|(key, _)| key.name)
         .or(args.frame.map(|_| "frame"))
         .or((args.predict || args.no_predict).then_some("predict"));
@@ -100,7 +101,7 @@ fn tilted_page(args: &ExploreArgs) -> Result<String, Failure> {
     let preset = TiltedPreset::of(
         args.tilt.as_deref(),
         args.slip.as_deref(),
-        args.mu.as_deref(),
+        input.mu.as_deref(),
         input.e.as_deref(),
     )?;
     Ok(tilted_html(&preset)?)
@@ -108,7 +109,7 @@ fn tilted_page(args: &ExploreArgs) -> Result<String, Failure> {
 
 /// The paper's page, preset by the scene flags, --predict and --frame.
 fn paper_page(args: &ExploreArgs) -> Result<String, Failure> {
-    if let Some(flag) = [("tilt", &args.tilt), ("slip", &args.slip), ("mu", &args.mu)]
+    if let Some(flag) = [("tilt", &args.tilt), ("slip", &args.slip)]
         .into_iter()
         .find_map(|(flag, value)| value.as_ref().map(|_| flag))
     {
@@ -129,6 +130,6 @@ fn paper_page(args: &ExploreArgs) -> Result<String, Failure> {
         FrameArg::CentreOfMass => Frame::CentreOfMass,
         FrameArg::Lab => Frame::Lab,
     });
-    let preset = Preset::of_scene(&args.scene.input(), predict, frame)?;
+    let preset = Preset::of_scene(&args.oblique.input(&args.scene), predict, frame)?;
     Ok(explore_html(&preset)?)
 }

@@ -230,6 +230,48 @@ fn flags_preset_the_page_in_its_units() {
         "predict=0",
         "the last wins"
     );
+    // a* itself, as the page's a field takes it (NEWCOMER capability 2), and from a pivot.
+    assert_eq!(preset(&["--a", "a*"]), "a=a*");
+    assert_eq!(
+        preset(&["--a", "p - a*", "--pivot", "-1"]),
+        "a=p-a*&pivot=-1"
+    );
+    // The oblique tab, opened by solve's oblique flags, in the page's units (v0 = 2: v0t/v0 = 1;
+    // l = 2: r/l = 1/10, spin l/v0 = 3).
+    assert_eq!(
+        preset(&["--v0t", "1", "--mu", "1/4"]),
+        "tab=oblique&v0t=1&mu=1/4"
+    );
+    assert_eq!(
+        preset(&[
+            "--v0", "2", "--l", "2", "--v0t", "2", "--mu", "0.5", "--radius", "0.2", "--spin", "3"
+        ]),
+        "tab=oblique&v0t=1&mu=1/2&radius=1/10&spin=3"
+    );
+}
+
+/// What the page cannot open on is refused, naming the flag.
+#[test]
+fn a_star_and_oblique_presets_refuse_what_the_page_cannot_show() {
+    for (args, message) in [
+        (
+            &["--a", "p+a*"][..],
+            "error: a: 'p+a*' and 'p-a*' are measured from a pivot: give --pivot\n",
+        ),
+        (
+            &["--v0t", "1", "--rod-omega", "1/2"][..],
+            "error: rod-omega: the page's oblique tab takes a rod at rest (--v0t, --mu, --radius and --spin)\n",
+        ),
+    ] {
+        let mut all = vec!["explore"];
+        all.extend_from_slice(args);
+        let (code, out, err) = rodimpact(&all);
+        assert_eq!(
+            (code, out.as_str(), err.as_str()),
+            (2, "", message),
+            "{args:?}"
+        );
+    }
 }
 
 /// A bad preset is refused as solve refuses it: one line naming the flag, exit 2, no page.

@@ -2,8 +2,9 @@
 //! paper's surprise: sliders for M/m, a, e, the rod and the pivot; the exact answer (fractions
 //! and surds, computed in the page by this library compiled to WebAssembly, [`super::pages`]);
 //! |omega| along the rod with a* and the end marked; a* against M/m with the threshold; an animation of the impact and of the second
-//! impact that follows a hit beyond the stop point (X19), with energy bars; and a predict-first
-//! mode.
+//! impact that follows a hit beyond the stop point (X19), with energy bars; a predict-first
+//! mode; and a second tab, the oblique impact (the puck sliding along the rod, friction, a
+//! disc): does sliding change the spin?
 //!
 //! The impact point may be a* itself (the a field takes `a*`, `-a*`, `p+a*`, `p-a*`): the page's
 //! numbers are `x + y*sqrt(r)`, so a scene struck at a* is exact too (X19's v = V and
@@ -210,15 +211,23 @@ impl Preset {
         frame: Option<Frame>,
     ) -> Result<Preset, Error> {
         let m = input.m.clone().unwrap_or_else(|| "1".into());
+        // The impact point a* itself (`a*`, `-a*`, `p+a*`, `p-a*`) goes to the page as typed:
+        // the page strikes it exactly.
+        let star = input.a.as_deref().filter(|a| pages::is_a_star(a));
         let scene = SceneInput {
             rod_mass: input.rod_mass.clone().or_else(|| Some(m.clone())),
             m: Some(m),
+            a: if star.is_some() {
+                None
+            } else {
+                input.a.clone()
+            },
             ..input.clone()
         }
         .build()?;
         let l = scene.half_length();
         let mut fields = Vec::new();
-        let mut number = |key: &'static str, flag: &str, given: bool, value: Q| {
+        let number = |fields: &mut Vec<_>, key: &'static str, flag: &str, given: bool, value: Q| {
             if given {
                 fields.push((key, page_number(flag, &value)?));
             }
@@ -226,6 +235,7 @@ impl Preset {
         };
         let mass_flag = if input.rod_mass.is_some() { "M" } else { "m" };
         number(
+            &mut fields,
             "M",
             mass_flag,
             input.m.is_some() || input.rod_mass.is_some(),
@@ -236,13 +246,27 @@ impl Preset {
         } else {
             "a"
         };
-        number(
-            "a",
-            a_flag,
-            input.a.is_some() || input.from_end.is_some(),
-            scene.a() / l,
-        )?;
-        number("e", "e", input.e.is_some(), scene.e().clone())?;
+        match star {
+            Some(text) => {
+                if text.trim_start().starts_with('p') && input.pivot.is_none() {
+                    return Err(Error::new(
+                        "a",
+                        ErrorKind::Invalid(
+                            "'p+a*' and 'p-a*' are measured from a pivot: give --pivot".into(),
+                        ),
+                    ));
+                }
+                fields.push(("a", text.split_whitespace().collect()));
+            }
+            None => number(
+                &mut fields,
+                "a",
+                a_flag,
+                input.a.is_some() || input.from_end.is_some(),
+                scene.a() / l,
+            )?,
+        }
+        number(&mut fields, "e", "e", input.e.is_some(), scene.e().clone())?;
         if input.rod.is_some() {
             let rod = match scene.rod() {
                 RodInertia::Uniform => "uniform".to_string(),
@@ -267,6 +291,32 @@ impl Preset {
         }
         if let (Some(_), Support::Pivot(p)) = (&input.pivot, scene.support()) {
             fields.push(("pivot", page_number("pivot", &(p / l))?));
+        }
+        if let Some(oblique) = scene.oblique() {
+            if let Some(flag) = [
+                ("rod-v", &input.rod_v),
+                ("rod-vt", &input.rod_vt),
+                ("rod-omega", &input.rod_omega),
+            ]
+            .into_iter()
+            .find_map(|(flag, value)| value.as_ref().map(|_| flag))
+            {
+                return Err(Error::new(
+                    flag,
+                    ErrorKind::Invalid(
+                        "the page's oblique tab takes a rod at rest (--v0t, --mu, --radius and --spin)".into(),
+                    ),
+                ));
+            }
+            // The oblique tab, in the page's units m = l = v0 = 1.
+            fields.push(("tab", "oblique".into()));
+            let v0 = scene.v0();
+            fields.push(("v0t", page_number("v0t", &(oblique.v0t.clone() / v0))?));
+            fields.push(("mu", page_number("mu", &oblique.mu)?));
+            if let Some(disc) = &oblique.disc {
+                fields.push(("radius", page_number("radius", &(disc.radius.clone() / l))?));
+                fields.push(("spin", page_number("spin", &(disc.spin.clone() * l / v0))?));
+            }
         }
         if let Some(on) = predict {
             fields.push(("predict", if on { "1" } else { "0" }.into()));

@@ -263,6 +263,18 @@ fn name_of(id: &str) -> &str {
         .map_or(id, |(_, name)| name)
 }
 
+/// Whether `text` names the impact point a* (`a*`, `-a*`, `p+a*`, `p-a*`, spaces allowed), as
+/// the explore page's a field takes it.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::pages::is_a_star;
+/// assert!(is_a_star("a*") && is_a_star("p - a*") && !is_a_star("1/2"));
+/// ```
+pub fn is_a_star(text: &str) -> bool {
+    star(text).is_some()
+}
+
 /// The impact point `a*`, `-a*` (from the centre), `p+a*`, `p-a*` (from the pivot): whether
 /// it is measured from the pivot, and its side; `None` for a number.
 fn star(text: &str) -> Option<(bool, i64)> {
