@@ -441,6 +441,7 @@ impl AuditStream {
             &summary,
             &passed,
             self.agreement.as_ref(),
+            &[],
             self.atol.as_deref(),
         );
         Ok((

@@ -183,7 +183,7 @@ fn cells(line: &str) -> Vec<&str> {
 }
 
 /// `text` matches `pattern`, in which `*` stands for any text (also none).
-fn matches(pattern: &str, text: &str) -> bool {
+pub(super) fn matches(pattern: &str, text: &str) -> bool {
     let parts: Vec<&str> = pattern.split('*').collect();
     if parts.len() == 1 {
         return pattern == text;

@@ -1,6 +1,7 @@
 //! The header of a batch file (which column feeds which scene field or claim, and the columns
 //! appended to the output) and the cells of a data row, read into a scene and claimed values.
 
+use super::classes::ClassRule;
 use super::compare::{Agreement, Claimed};
 use super::expected::Expected;
 use super::plan::{
@@ -101,6 +102,8 @@ pub struct Batch {
     pub(super) atol: Option<Q>,
     /// `--expect`: the findings the batch is allowed to have.
     pub(super) expected: Option<Arc<Expected>>,
+    /// `--tolerance`: the agreement of classes of rows, the first that takes a row.
+    pub(super) class_rules: Vec<ClassRule>,
     header: String,
 }
 
@@ -206,6 +209,7 @@ impl Batch {
             word_plan,
             atol: None,
             expected: None,
+            class_rules: Vec::new(),
             header: header.to_string(),
         };
         batch.names_each_column_once()?;
@@ -259,20 +263,74 @@ impl Batch {
     /// assert!(f.with_agreement(ulps).is_err());
     /// ```
     pub fn with_agreement(mut self, agreement: Agreement) -> Result<Batch, Error> {
-        if self.arithmetic == Arithmetic::F64 && matches!(agreement, Agreement::Ulps(..)) {
-            return Err(Error::new(
-                "ulps",
-                ErrorKind::Invalid(
-                    "needs the exact backend (the distance is to the correctly rounded exact \
-                     value); use --rtol with --backend f64"
-                        .to_string(),
-                ),
-            ));
-        }
+        self.takes_ulps("ulps", "needs", "--rtol", &agreement)?;
         self.agreement = agreement;
         // `--ulps` adds `<claim>_ulps` columns, which an input column may already hold.
         self.names_each_column_once()?;
         Ok(self)
+    }
+
+    /// Sets the agreement of classes of rows (`--tolerance CLASS=RULE`, in order: the first
+    /// rule that takes a row sets its agreement; the others keep [`Batch::with_agreement`]'s).
+    /// The rows are then solved by the general row, which decides each row's class.
+    ///
+    /// # Errors
+    /// `tolerance: ...` for an ulps rule with the f64 arithmetic; `header: ...` when a
+    /// passed-through column is named like an `<claim>_ulps` column an ulps rule adds.
+    ///
+    /// # Examples
+    /// A pivoted row agrees within a relative 1e-3; the free row is held to exact equality.
+    /// ```
+    /// use rodimpact::batch::{Arithmetic, Batch, ClassRule, FloatFormat};
+    /// let pivots = ClassRule::parse("pivot=rtol:1e-3", FloatFormat::F64)?;
+    /// let b = Batch::new("m,M,a,pivot,omega", Arithmetic::Exact)?.with_class_rules(vec![pivots])?;
+    /// assert!(b.row(1, "1,1,1,-1,0.7501").unwrap().checks[0].ok); // exact 3/4
+    /// assert!(!b.row(2, "1,1,1,,0.6001").unwrap().checks[0].ok); // exact 3/5, free
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn with_class_rules(mut self, rules: Vec<ClassRule>) -> Result<Batch, Error> {
+        for rule in &rules {
+            self.takes_ulps("tolerance", "an ulps rule needs", "rtol:R", &rule.agreement)?;
+        }
+        if !rules.is_empty() {
+            self.word_plan = None;
+        }
+        self.class_rules = rules;
+        self.names_each_column_once()?;
+        Ok(self)
+    }
+
+    /// An ulps count needs the exact arithmetic: refused as `flag` otherwise (`what needs`
+    /// the exact backend; use `instead`).
+    fn takes_ulps(
+        &self,
+        flag: &str,
+        what: &str,
+        instead: &str,
+        agreement: &Agreement,
+    ) -> Result<(), Error> {
+        if self.arithmetic == Arithmetic::F64 && matches!(agreement, Agreement::Ulps(..)) {
+            return Err(Error::new(
+                flag,
+                ErrorKind::Invalid(format!(
+                    "{what} the exact backend (the distance is to the correctly rounded exact \
+                     value); use {instead} with --backend f64"
+                )),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Whether the output has `<claim>_ulps` columns: an ulps agreement for some rows.
+    pub(super) fn ulps_columns(&self) -> bool {
+        std::iter::once(&self.agreement)
+            .chain(self.class_rules.iter().map(|r| &r.agreement))
+            .any(|a| matches!(a, Agreement::Ulps(..)))
+    }
+
+    /// The class rules, in order (`--tolerance`).
+    pub fn class_rules(&self) -> &[ClassRule] {
+        &self.class_rules
     }
 
     /// `--atol X`: a claim also agrees when it lies within X of the exact value in the scene's
@@ -426,7 +484,7 @@ impl Batch {
         }
         for &k in &self.claims {
             out.push_str(&format!(",{0}_ok,{0}_rel_error", CLAIMS[k]));
-            if matches!(self.agreement, Agreement::Ulps(..)) {
+            if self.ulps_columns() {
                 out.push_str(&format!(",{}_ulps", CLAIMS[k]));
             }
         }

@@ -19,11 +19,13 @@
 //!
 //! One job per file: the header and the cells of a row (`header.rs`: [`Batch`]), solving a row
 //! and writing its output line (`row.rs`: [`SolvedRow`]), claimed values against computed ones
-//! (`compare.rs`: [`OutputCheck`]), the known findings of `--expect` (`expected.rs`:
+//! (`compare.rs`: [`OutputCheck`]), the tolerances per class of rows (`classes.rs`:
+//! [`ClassRule`]), the known findings of `--expect` (`expected.rs`:
 //! [`Expected`]), the totals (`summary.rs`: [`Summary`], rendered by
 //! [`crate::report::batch_summary`]) and the chunked, parallel stream (`stream.rs`: [`run`]).
 
 mod audit;
+mod classes;
 mod compare;
 mod expected;
 mod float_row;
@@ -37,6 +39,7 @@ mod ulps;
 mod word_row;
 
 pub use audit::{Audit, Finding, LAW_TOLERANCE, STATE_TOLERANCE, audit};
+pub use classes::{ClassRule, RowClass};
 pub use compare::{Agreement, FLOAT_TOLERANCE, MAX_ULPS};
 pub use expected::{Expected, ExpectedEntry, MAX_EXPECTED_BYTES};
 pub use header::{Batch, read_header, scene_columns};

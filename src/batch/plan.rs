@@ -210,9 +210,11 @@ impl OutputCheck {
         out.push_str(&self.rel_error_text());
         if ulps_column {
             out.push(',');
-            match self.ulps {
-                Some(u) => out.push_str(&u.to_string()),
-                None => out.push_str("nan"),
+            // Empty for a row held to another rule (`--tolerance`): no count was asked of it.
+            match (self.ulps, self.not_finite) {
+                (Some(u), _) => out.push_str(&u.to_string()),
+                (None, true) => out.push_str("nan"),
+                (None, false) => {}
             }
         }
     }

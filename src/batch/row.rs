@@ -84,7 +84,8 @@ impl Batch {
                 (values, None, None)
             }
         };
-        let checks = self.write_checks(&mut out, &scene, &claimed, &values);
+        let agreement = self.agreement_for(&scene, line);
+        let checks = self.write_checks(&mut out, &scene, &claimed, &values, agreement);
         let diagnosis = match (self.audits(), &exact_state) {
             (true, Some(exact)) => {
                 let (change, diagnosis) = diagnose(&scene, exact, &claimed, &checks);
@@ -120,15 +121,16 @@ impl Batch {
         scene: &Scene,
         claimed: &[Option<Claimed>; CLAIMS.len()],
         values: &[Option<Q>; CLAIMS.len()],
+        agreement: &Agreement,
     ) -> Vec<OutputCheck> {
-        let ulps_column = matches!(self.agreement, Agreement::Ulps(..));
+        let ulps_column = self.ulps_columns();
         let mut checks = Vec::new();
         for &k in &self.claims {
             let (Some(claim), Some(value)) = (&claimed[k], &values[k]) else {
                 out.push_str(if ulps_column { ",,," } else { ",," });
                 continue;
             };
-            let mut check = compare(k, claim, value, &self.agreement, self.arithmetic);
+            let mut check = compare(k, claim, value, agreement, self.arithmetic);
             if let Some(atol) = &self.atol
                 && !check.ok
                 && let Some(claimed) = claim.value()
@@ -161,6 +163,21 @@ impl Batch {
             row.expectation = Some(RowExpectation::default());
         }
         row
+    }
+
+    /// The agreement of a row: the first class rule that takes it, else the batch's own.
+    fn agreement_for(&self, scene: &Scene, line: &str) -> &Agreement {
+        if self.class_rules.is_empty() {
+            return &self.agreement;
+        }
+        let id = self
+            .id_column
+            .and_then(|k| line.split(',').nth(k))
+            .map(str::trim);
+        self.class_rules
+            .iter()
+            .find(|rule| rule.takes(scene, id))
+            .map_or(&self.agreement, |rule| &rule.agreement)
     }
 
     /// The row's name in the summary: its `id` cell (escaped), or `row N`.

@@ -4,8 +4,8 @@ use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use rodimpact::batch::{
-    Agreement, Arithmetic, Batch, Expected, FloatFormat, MAX_EXPECTED_BYTES, read_header, run,
-    scene_columns,
+    Agreement, Arithmetic, Batch, ClassRule, Expected, FloatFormat, MAX_EXPECTED_BYTES,
+    read_header, run, scene_columns,
 };
 use rodimpact::echo::{echo, echo_path};
 use rodimpact::io::{AtomicFile, write_atomic};
@@ -35,9 +35,15 @@ pub(crate) struct BatchArgs {
     /// (exact backend).
     #[arg(long, value_name = "N")]
     pub(crate) ulps: Option<String>,
-    /// The float format of --ulps [default: f64].
-    #[arg(long, value_enum, requires = "ulps", value_name = "f32|f64")]
+    /// The float format of --ulps and of the ulps tolerances [default: f64].
+    #[arg(long, value_enum, value_name = "f32|f64")]
     pub(crate) float: Option<FloatArg>,
+    /// A tolerance for a class of rows, CLASS=RULE (repeatable; the first that takes a row
+    /// wins, the other rows keep --rtol/--ulps): CLASS free, pivot, oblique or id:PATTERN (`*`
+    /// for any text); RULE rtol:R, ulps:N or exact. E.g. --tolerance pivot=rtol:1e-6
+    /// --tolerance free=ulps:16.
+    #[arg(long, value_name = "CLASS=RULE")]
+    pub(crate) tolerance: Vec<String>,
     /// A claim also agrees when it lies within X of the exact value in the scene's own units
     /// (X v0 for v and V, X v0/l for omega, X m v0 for J, X m v0^2/2 for the energies; 0 <= X
     /// <= 1): for quantities that vanish exactly, where an engine returns round-off.
@@ -90,6 +96,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     };
     let jobs = args.jobs.as_deref().map(parse_jobs).transpose()?;
     let agreement = agreement(args)?;
+    let rules = class_rules(args)?;
     let expected = args.expect.as_deref().map(read_expected).transpose()?;
     let read_error = |why: std::io::Error| {
         Error::io(
@@ -111,6 +118,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         Some(x) => batch.with_atol(x)?,
         None => batch,
     };
+    let batch = batch.with_class_rules(rules)?;
     let batch = match &expected {
         Some(expected) => batch.with_expected(expected.clone())?,
         None => batch,
@@ -167,6 +175,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         &summary,
         &batch.passed_through(),
         agreement.as_ref(),
+        batch.class_rules(),
         args.atol.as_deref(),
     );
     if let (Some(path), Some(expected)) = (&args.expect, &expected) {
@@ -206,16 +215,43 @@ fn file_help() -> String {
     )
 }
 
+/// The float format of `--float` [default: f64].
+fn float_format(args: &BatchArgs) -> FloatFormat {
+    match args.float {
+        Some(FloatArg::F32) => FloatFormat::F32,
+        Some(FloatArg::F64) | None => FloatFormat::F64,
+    }
+}
+
+/// The rules of `--tolerance`, in order; `--float` refused when no ulps count reads it.
+fn class_rules(args: &BatchArgs) -> Result<Vec<ClassRule>, Error> {
+    let rules: Vec<ClassRule> = args
+        .tolerance
+        .iter()
+        .map(|text| ClassRule::parse(text, float_format(args)))
+        .collect::<Result<_, _>>()?;
+    let ulps_rule = rules
+        .iter()
+        .any(|r| matches!(r.agreement, Agreement::Ulps(..)));
+    if args.float.is_some() && args.ulps.is_none() && !ulps_rule {
+        return Err(Error::new(
+            "float",
+            rodimpact::ErrorKind::Invalid(
+                "the float format of an ulps count: give --ulps N or a --tolerance CLASS=ulps:N"
+                    .into(),
+            ),
+        ));
+    }
+    Ok(rules)
+}
+
 /// The agreement rule of `--rtol` or `--ulps [--float]` (clap refuses both at once), checked
 /// before the file is opened.
 fn agreement(args: &BatchArgs) -> Result<Option<Agreement>, Error> {
     if let Some(r) = &args.rtol {
         return Agreement::parse_rtol(r).map(Some);
     }
-    let format = match args.float {
-        Some(FloatArg::F32) => FloatFormat::F32,
-        Some(FloatArg::F64) | None => FloatFormat::F64,
-    };
+    let format = float_format(args);
     args.ulps
         .as_deref()
         .map(|n| Agreement::parse_ulps(n, format))

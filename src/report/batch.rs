@@ -124,7 +124,8 @@ fn wrong_rows_text(stats: &OutputStats) -> String {
 }
 
 /// Everything `rodimpact batch` prints on standard error after the rows: the columns passed
-/// through, the agreement rule (`claims agree ...`), the `atol` floor, then [`batch_summary`].
+/// through, the agreement rule (`claims agree ...`), the rules per class of rows
+/// (`--tolerance`), the `atol` floor, then [`batch_summary`].
 ///
 /// # Examples
 /// ```
@@ -135,7 +136,7 @@ fn wrong_rows_text(stats: &OutputStats) -> String {
 /// s.add(&b.row(1, "a,1,1,3/5").unwrap());
 /// let rule = Agreement::parse_rtol("1e-9").unwrap();
 /// assert_eq!(
-///     batch_report(&s, &b.passed_through(), Some(&rule), Some("1e-12")),
+///     batch_report(&s, &b.passed_through(), Some(&rule), &[], Some("1e-12")),
 ///     "passed through: id\nclaims agree within a relative 0.000000001\n\
 ///      claims also agree within 1e-12 of the scene's units (v0, v0/l, m v0, m v0^2/2)\n\
 ///      1 row, laws held exactly on 1\nv: 1 claim, 0 wrong, max rel error 0, median 0\n"
@@ -145,6 +146,7 @@ pub fn batch_report(
     summary: &Summary,
     passed: &[&str],
     agreement: Option<&crate::batch::Agreement>,
+    class_rules: &[crate::batch::ClassRule],
     atol: Option<&str>,
 ) -> String {
     use crate::echo::echo;
@@ -155,6 +157,9 @@ pub fn batch_report(
     }
     if let Some(agreement) = agreement {
         out.push_str(&format!("claims agree {}\n", agreement.describe()));
+    }
+    for rule in class_rules {
+        out.push_str(&format!("claims agree, on {}\n", rule.describe()));
     }
     if let Some(x) = atol {
         out.push_str(&format!(

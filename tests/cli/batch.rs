@@ -560,3 +560,94 @@ fn friction_claims_are_checked() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// NEWCOMER m24: tolerances per class of rows. A pivot held by a relative 1e-6 accepts V within
+/// 1.3e-7 of 3/4; free rows held to 2 ulps accept v one float from 3/5 and refuse three; the
+/// report names the rules, and a row under a relative rule has no ulps count.
+#[test]
+fn tolerances_per_class_of_rows() {
+    let dir = scratch("tolerance");
+    let file = dir.join("log.csv");
+    std::fs::write(
+        &file,
+        "id,m,M,a,pivot,v,V,omega\n\
+         free-1,1,1,1,,0.6000000000000001,0.4,1.2\n\
+         piv-1,1,1,1,-1,0.5,0.7500001,0.75\n\
+         free-2,1,1,1,,0.6000000000000003,0.4,1.2\n",
+    )
+    .unwrap();
+    let path = file.to_str().unwrap();
+    let rules = [
+        "--tolerance",
+        "pivot=rtol:1e-6",
+        "--tolerance",
+        "free=ulps:2",
+    ];
+    let (code, out, err) = rodimpact(&[&["batch", path][..], &rules[..]].concat());
+    assert_eq!(code, 1, "{err}");
+    let lines: Vec<&str> = out.lines().collect();
+    assert!(
+        lines[1].ends_with(",true,1.67e-16,1,true,0,0,true,0,0,+1.20e-16,ok"),
+        "{}",
+        lines[1]
+    );
+    assert!(
+        lines[2].ends_with(",true,0,,true,0.000000133,,true,0,,+0.000000150,ok"),
+        "{}",
+        lines[2]
+    );
+    assert!(lines[3].contains(",false,5.00e-16,3,"), "{}", lines[3]);
+    assert!(err.contains(
+        "claims agree, on pivot rows: within a relative 0.000001\n\
+         claims agree, on free-rod rows: within 2 f64 ulps of the exact value\n"
+    ));
+    assert!(err.contains("v: 3 claims, 1 wrong (free-2)"), "{err}");
+    // An id pattern, first rule wins: free-2 now passes too.
+    let (code, _, err) = rodimpact(&[
+        "batch",
+        path,
+        "--tolerance",
+        "id:free-2=rtol:1e-15",
+        "--tolerance",
+        "free=ulps:2",
+        "--tolerance",
+        "pivot=rtol:1e-6",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    // Without the rules, every float claim must be exact.
+    let (code, _, err) = rodimpact(&["batch", path]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("v: 3 claims, 2 wrong (free-1, free-2)"),
+        "{err}"
+    );
+    for (args, message) in [
+        (
+            vec!["--tolerance", "joint=rtol:1"],
+            "error: tolerance: 'joint' is not a class: free, pivot, oblique or id:PATTERN\n",
+        ),
+        (
+            vec!["--tolerance", "pivot"],
+            "error: tolerance: 'pivot' is not CLASS=RULE (e.g. pivot=rtol:1e-6)\n",
+        ),
+        (
+            vec!["--tolerance", "pivot=rtol:2"],
+            "error: rtol: must be a number from 0 to 1, got 2\n",
+        ),
+        (
+            vec!["--float", "f32"],
+            "error: float: the float format of an ulps count: give --ulps N or a --tolerance CLASS=ulps:N\n",
+        ),
+        (
+            vec!["--backend", "f64", "--tolerance", "free=ulps:3"],
+            "error: tolerance: an ulps rule needs the exact backend (the distance is to the correctly rounded exact value); use rtol:R with --backend f64\n",
+        ),
+    ] {
+        let (code, out, err) = rodimpact(&[&["batch", path][..], &args[..]].concat());
+        assert_eq!(
+            (code, out.as_str(), err.as_str()),
+            (2, "", message),
+            "{args:?}"
+        );
+    }
+}
