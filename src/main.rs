@@ -60,7 +60,7 @@ enum Command {
         laws), preset by --tilt, --slip, --mu and --e. Both pages compute with rodimpact's \
         library compiled to WebAssembly, inside the file."
     )]
-    Explore(commands::explore::ExploreArgs),
+    Explore(Box<commands::explore::ExploreArgs>),
     /// One scene as a handout to print: the exact answer, the working, the formulas with their
     /// conditions, omega along the rod and a table, on one self-contained HTML page (2-5 A4
     /// pages).
