@@ -1,6 +1,7 @@
 //! `rodimpact formula` rendered: text, Markdown, LaTeX and JSON, with a LaTeX writer for
 //! rational functions (`\frac`, juxtaposed products, `v_0`, `r_G`).
 
+use crate::field::poly::Monomial;
 use crate::field::{Poly, Q, RatFn};
 use crate::textbook::expr::Radical;
 use crate::textbook::formula::{AnswerFormula, Condition, Formulas};
@@ -334,8 +335,42 @@ fn rational_latex(c: &Q) -> String {
     }
 }
 
-/// A polynomial in LaTeX: terms joined by + and -, products juxtaposed.
+/// A polynomial in LaTeX, factored as a textbook prints it: the factor common to every term
+/// (the largest monomial, with the rational content) in front of the sum in parentheses,
+/// `l^{2} \left(M + m\right)`, `\frac{2}{25} m \mu v_0 \left(-2 \mu v_0 + 5 v_{0t}\right)`; a
+/// sum with no common monomial, or a single term, as its terms.
 pub(super) fn poly_latex(p: &Poly) -> String {
+    let common = common_monomial(p);
+    if common == Monomial::one() {
+        return terms_latex(p);
+    }
+    let factor = Poly::monomial(p.content().abs(), common);
+    let rest = p
+        .div_exact(&factor)
+        .expect("a common monomial and the content divide every term");
+    format!(
+        "{} \\left({}\\right)",
+        terms_latex(&factor),
+        terms_latex(&rest)
+    )
+}
+
+/// The largest monomial that divides every term of `p` (1 for fewer than two terms).
+fn common_monomial(p: &Poly) -> Monomial {
+    let terms: Vec<&Monomial> = p.terms().map(|(m, _)| m).collect();
+    if terms.len() < 2 {
+        return Monomial::one();
+    }
+    p.symbols().into_iter().fold(Monomial::one(), |acc, s| {
+        match terms.iter().map(|m| m.exponent(s)).min() {
+            Some(e) if e > 0 => acc.mul(&Monomial::var(s, e)),
+            _ => acc,
+        }
+    })
+}
+
+/// A polynomial in LaTeX: terms joined by + and -, products juxtaposed.
+fn terms_latex(p: &Poly) -> String {
     let mut out = String::new();
     // Largest term first, as the text form prints them.
     let terms: Vec<_> = p.terms().collect();

@@ -611,9 +611,15 @@ fn latex_typesets_the_case_conditions() {
     };
     let paper = latex(&[]);
     assert!(
-        paper.contains(r"\omega_{\max} &= \begin{cases} \displaystyle \frac{v_0}{l} \sqrt{\frac{3 m}{M + m}} & \text{if } M \le 2 m \\ \displaystyle \frac{6 m v_0}{M l + 4 l m} & \text{otherwise (at the end)} \end{cases}"),
+        paper.contains(r"\omega_{\max} &= \begin{cases} \displaystyle \frac{v_0}{l} \sqrt{\frac{3 m}{M + m}} & \text{if } M \le 2 m \\ \displaystyle \frac{6 m v_0}{l \left(M + 4 m\right)} & \text{otherwise (at the end)} \end{cases}"),
         "{paper}"
     );
+    // NEWCOMER m1: factored as a textbook prints it, the common monomial in front.
+    assert!(
+        paper.contains(r"a^{*2} &= \frac{l^{2} \left(M + m\right)}{3 m}"),
+        "{paper}"
+    );
+    assert!(paper.contains(r"v &= \frac{v_0 \left(-M l^{2} + 3 a^{2} m + l^{2} m\right)}{M l^{2} + 3 a^{2} m + l^{2} m}"), "{paper}");
     assert!(
         !paper.contains("\n%"),
         "no condition left in a comment: {paper}"
@@ -630,6 +636,11 @@ fn latex_typesets_the_case_conditions() {
     assert!(
         open.contains("taken $>$ 0"),
         "the default slip sign is printed: {open}"
+    );
+    // The energy lost while sliding, its common factor (2/25 m mu v0) in front.
+    assert!(
+        open.contains(r"\Delta E &= \frac{2}{25} m \mu v_0 \left(-2 \mu v_0 + 5 v_{0t}\right)"),
+        "{open}"
     );
     let decided = latex(&["--M", "m", "--a", "l", "--v0t", "v0", "--mu", "2"]);
     assert!(
