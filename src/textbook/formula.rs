@@ -10,7 +10,7 @@
 
 use super::expr::OBLIQUE_SYMBOLS;
 use super::expr::{Budget, Radical};
-use super::symbolic::{GivenScene, SymbolicScene, heaviest_field, oblique_params};
+use super::symbolic::{GivenScene, SymbolicScene, contact_endings, heaviest_field, oblique_params};
 use crate::error::Error;
 use crate::field::{Field, Poly, RatFn};
 use crate::scene::{ObliqueParams, Params, SceneInput, Support};
@@ -18,7 +18,7 @@ use crate::solve::linear::{self, solve};
 use crate::solve::oblique::{self, ContactMode, ObliqueOutcome, normal_params};
 use crate::solve::optimum::a_star_squared;
 use num_traits::{One, Signed, Zero};
-use std::cmp::Ordering;
+
 
 /// One formula of the answer.
 #[derive(Debug, Clone, PartialEq)]
@@ -226,79 +226,26 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
         }
         part
     };
+    let endings = contact_endings(scene, o);
+    defaults.extend(endings.slip_taken);
+    if let Some(mu_star) = endings.mu_star {
+        list.push(rational("mu_star", mu_star));
+    }
     let (mut contact, mut cases) = (None, Vec::new());
-    if !friction {
-        list.extend(tangential(&stick));
-    } else {
-        // mu* = |u_t|/(J k_t) = |stick impulse|/J. A slip of open sign is taken with the sign
-        // it has in some valid sample scene (> 0 when it has both): the other sign mirrors
-        // mu* and the sliding answers; the sticking ones hold for either.
-        let slip = o.slip(&p.support);
-        let forward = match slip.sign() {
-            Some(sign) => sign != Ordering::Less,
-            None => {
-                let forward = scene.sign_somewhere(&slip, Ordering::Greater)
-                    || !scene.sign_somewhere(&slip, Ordering::Less);
-                let (taken, other) = if forward { (">", "<") } else { ("<", ">") };
-                defaults.push(format!(
-                    "the slip before the impact, u_t = {slip}, taken {taken} 0 (for u_t {other} 0: mu_star is minus the formula below, and the slide formulas hold with -mu for mu)"
-                ));
-                forward
-            }
-        };
-        let speed = if forward {
-            stick.stick_impulse.clone()
-        } else {
-            -stick.stick_impulse.clone()
-        };
-        let mu_star = speed / &stick.impulse;
-        list.push(rational("mu_star", mu_star.clone()));
-        let decided = if slip.is_zero() {
-            // No slip before the impact: nothing to stop, the contact holds (Jt = 0).
-            Ok(stick.clone())
-        } else {
-            with(None)
-        };
-        match decided {
-            Ok(decided) => {
-                contact = Some(decided.contact.map_or("stick", ContactMode::as_str));
-                list.extend(tangential(&decided));
-            }
-            Err(_) => {
-                let slide = with(Some(ContactMode::Slide { forward }))
-                    .expect("a valid scene's masses are positive");
-                // The symbols may leave the slip's course open while mu - mu* is a number
-                // (mu given, mu* free of symbols): that number decides the contact.
-                match (o.mu.clone() - &mu_star).as_constant() {
-                    Some(margin) => {
-                        let (mode, out) = if margin.is_negative() {
-                            ("slide", &slide)
-                        } else {
-                            ("stick", &stick)
-                        };
-                        contact = Some(mode);
-                        list.extend(tangential(out));
-                    }
-                    None => {
-                        let mu = match o.mu.as_constant() {
-                            Some(c) => format!("mu = {c}"),
-                            None => "mu".to_string(),
-                        };
-                        cases = vec![
-                            ContactCase {
-                                contact: "stick",
-                                condition: format!("{mu} >= mu_star"),
-                                formulas: tangential(&stick),
-                            },
-                            ContactCase {
-                                contact: "slide",
-                                condition: format!("{mu} < mu_star"),
-                                formulas: tangential(&slide),
-                            },
-                        ];
-                    }
-                }
-            }
+    match endings.endings.as_slice() {
+        [one] => {
+            contact = friction.then_some(one.contact);
+            list.extend(tangential(&one.outcome));
+        }
+        both => {
+            cases = both
+                .iter()
+                .map(|e| ContactCase {
+                    contact: e.contact,
+                    condition: e.condition.clone().unwrap_or_default(),
+                    formulas: tangential(&e.outcome),
+                })
+                .collect();
         }
     }
     Formulas {

@@ -25,5 +25,5 @@ mod scene;
 
 pub use given::{GivenScene, heaviest_field};
 pub(crate) use identity::identity;
-pub use oblique::{has_oblique, oblique_params};
+pub use oblique::{ContactEndings, Ending, contact_endings, has_oblique, oblique_params};
 pub use scene::SymbolicScene;

@@ -6,12 +6,13 @@
 use super::SymbolicScene;
 use super::given::value_of;
 use crate::error::{Error, ErrorKind};
-use crate::field::RatFn;
+use crate::field::{Field, RatFn};
 use crate::scene::{
     Disc, ObliqueParams, RodMotion, SceneInput, Support, dimension_of, no_approach,
     spin_without_disc,
 };
-use crate::solve::oblique::normal_params;
+use crate::solve::linear;
+use crate::solve::oblique::{self, ContactMode, ObliqueOutcome, normal_params};
 use crate::textbook::expr::{Budget, OBLIQUE_SYMBOLS, Radical};
 use num_traits::{Signed, Zero};
 use std::cmp::Ordering;
@@ -152,4 +153,122 @@ pub(super) fn mentions_oblique(f: &RatFn) -> Option<&'static str> {
         .iter()
         .copied()
         .find(|name| f.symbols().iter().any(|s| s.name() == *name))
+}
+
+/// How a frictional contact of a symbolic scene ends: one [`Ending`] when the scene decides it
+/// (also without friction: the contact then keeps its slip), or one when it sticks and one when
+/// it slides when the symbols leave it open.
+#[derive(Debug, Clone)]
+pub struct ContactEndings {
+    /// The ways it ends, in that order (stick before slide).
+    pub endings: Vec<Ending>,
+    /// The friction that just stops the slip, mu* = |Jt_stick|/J, with friction (the slip's
+    /// sign taken as [`ContactEndings::slip_taken`] says when the symbols leave it open).
+    pub mu_star: Option<RatFn>,
+    /// `u_t = ..., taken > 0 ...` when the slip's sign is open and was taken (a default to say).
+    pub slip_taken: Option<String>,
+}
+
+/// One way a frictional contact ends.
+#[derive(Debug, Clone)]
+pub struct Ending {
+    /// `stick` or `slide`.
+    pub contact: &'static str,
+    /// When it is the answer, as `mu >= mu_star` or `mu < mu_star`; `None` when the scene
+    /// decides the contact.
+    pub condition: Option<String>,
+    /// The impact's answer ending this way.
+    pub outcome: ObliqueOutcome<RatFn>,
+}
+
+/// The endings of the contact of `scene` with its oblique part `o`: decided by the symbols
+/// where they can (no slip, no friction, Coulomb's law decided in every scene, or mu - mu* a
+/// number), else both, each with its condition.
+///
+/// # Examples
+/// The M = m rod struck at its end by a puck sliding at v0t, mu free: it sticks when
+/// mu >= mu* = 5 v0t/(4 v0), and slides otherwise.
+/// ```
+/// use rodimpact::{scene::SceneInput, textbook::{expr::Budget, symbolic::{GivenScene, SymbolicScene, contact_endings, oblique_params}}};
+/// let input = SceneInput { rod_mass: Some("m".into()), a: Some("l".into()), v0t: Some("v0t".into()), mu: Some("mu".into()), ..Default::default() };
+/// let mut budget = Budget::run();
+/// let scene = SymbolicScene::build(&GivenScene::read(&input, &mut budget)?)?;
+/// let o = oblique_params(&scene, &input, &mut budget)?.unwrap();
+/// let endings = contact_endings(&scene, &o);
+/// assert_eq!(endings.mu_star.unwrap().to_string(), "5/4*v0t/v0");
+/// let cases: Vec<_> = endings.endings.iter().map(|e| (e.contact, e.condition.clone().unwrap())).collect();
+/// assert_eq!(cases, [("stick", "mu >= mu_star".to_string()), ("slide", "mu < mu_star".to_string())]);
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn contact_endings(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> ContactEndings {
+    let p = &scene.params;
+    let normal = linear::solve(&normal_params(p, o))
+        .expect("the impulse equations of a valid scene are nonsingular")
+        .after;
+    let with = |given: Option<ContactMode>| oblique::complete(p, o, normal.clone(), given);
+    let stick = with(Some(ContactMode::Stick)).expect("a valid scene's masses are positive");
+    let decided = |contact: &'static str, outcome: ObliqueOutcome<RatFn>| Ending {
+        contact,
+        condition: None,
+        outcome,
+    };
+    if o.mu.is_zero() {
+        return ContactEndings {
+            endings: vec![decided("slide", stick)],
+            mu_star: None,
+            slip_taken: None,
+        };
+    }
+    // mu* = |u_t|/(J k_t) = |stick impulse|/J. A slip of open sign is taken with the sign it
+    // has in some valid sample scene (> 0 when it has both): the other sign mirrors mu* and
+    // the sliding answers; the sticking ones hold for either.
+    let slip = o.slip(&p.support);
+    let (forward, slip_taken) = match slip.sign() {
+        Some(sign) => (sign != Ordering::Less, None),
+        None => {
+            let forward = scene.sign_somewhere(&slip, Ordering::Greater)
+                || !scene.sign_somewhere(&slip, Ordering::Less);
+            let (taken, other) = if forward { (">", "<") } else { ("<", ">") };
+            let note = format!(
+                "the slip before the impact, u_t = {slip}, taken {taken} 0 (for u_t {other} 0: mu_star is minus the formula below, and the slide formulas hold with -mu for mu)"
+            );
+            (forward, Some(note))
+        }
+    };
+    let speed = if forward {
+        stick.stick_impulse.clone()
+    } else {
+        -stick.stick_impulse.clone()
+    };
+    let mu_star = speed / &stick.impulse;
+    let done = |endings| ContactEndings {
+        endings,
+        mu_star: Some(mu_star.clone()),
+        slip_taken: slip_taken.clone(),
+    };
+    if slip.is_zero() {
+        // No slip before the impact: nothing to stop, the contact holds (Jt = 0).
+        return done(vec![decided("stick", stick)]);
+    }
+    if let Ok(out) = with(None) {
+        let contact = out.contact.map_or("stick", ContactMode::as_str);
+        return done(vec![decided(contact, out)]);
+    }
+    let slide = with(Some(ContactMode::Slide { forward })).expect("a valid scene's masses are positive");
+    // The symbols may leave the slip's course open while mu - mu* is a number (mu given, mu*
+    // free of symbols): that number decides the contact.
+    match (o.mu.clone() - &mu_star).as_constant() {
+        Some(margin) if margin.is_negative() => done(vec![decided("slide", slide)]),
+        Some(_) => done(vec![decided("stick", stick)]),
+        None => {
+            let mu = match o.mu.as_constant() {
+                Some(c) => format!("mu = {c}"),
+                None => "mu".to_string(),
+            };
+            done(vec![
+                Ending { contact: "stick", condition: Some(format!("{mu} >= mu_star")), outcome: stick },
+                Ending { contact: "slide", condition: Some(format!("{mu} < mu_star")), outcome: slide },
+            ])
+        }
+    }
 }
