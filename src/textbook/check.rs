@@ -4,22 +4,26 @@
 //! ([`super::symbolic`]) and each claim decided as an identity, or numerically when both sides
 //! are constants.
 
+use super::answer::CheckedAnswer;
 use super::answer::{AnswerAgreement, SceneCheck, SceneSummary};
 use super::claim::{ClaimedAnswer, ClaimedValue};
 use super::exact::Exact;
 use super::expr::{Budget, Radical};
-use super::formula::{OnRod, on_rod};
+use super::formula::{OnRod, free_symbols, on_rod};
 use super::mistakes;
 use super::numeric::decide;
 use super::quantity::Quantity;
 use super::sigfig;
-use super::symbolic::{GivenScene, SymbolicScene, heaviest_field, identity};
+use super::symbolic::{
+    ContactEndings, Ending, GivenScene, SymbolicScene, contact_endings, heaviest_field, identity,
+    oblique_params,
+};
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, QSqrt, RatFn};
-use crate::scene::{Params, SceneInput, Support};
+use crate::scene::{ObliqueParams, Params, SceneInput, Support};
 use crate::solve::Outcome;
 use crate::solve::linear::solve;
-use crate::solve::oblique;
+use crate::solve::oblique::{self, normal_params};
 use crate::solve::optimum::{a_star_squared, optimum};
 use num_traits::{One, Signed, Zero};
 
@@ -119,17 +123,9 @@ pub fn check_scene_within(
     }
     let given = GivenScene::read(input, budget)?;
     if given.has_formula() || claims.iter().any(ClaimedAnswer::is_symbolic) {
-        if let Some(field) = input.first_oblique() {
-            return Err(Error::new(
-                field,
-                ErrorKind::Invalid(
-                    "an oblique or frictional scene is checked with numbers only (a formula in a scene flag or a claim makes the check symbolic)".into(),
-                ),
-            ));
-        }
         let heaviest = heaviest_field(input).unwrap_or("scene");
         budget.metered(heaviest, |budget| {
-            check_symbolic(&given, claims, sig, budget)
+            check_symbolic(&given, input, claims, sig, budget)
         })
     } else {
         check_numeric(input, claims, sig)
@@ -382,77 +378,185 @@ fn a_star_on_rod(p: &Params<RatFn>) -> Option<String> {
 /// formulas), or on a pivot; rpm against a formula; an exhausted budget.
 fn check_symbolic(
     given: &GivenScene,
+    input: &SceneInput,
     claims: &[ClaimedAnswer],
     sig: Option<u32>,
     budget: &mut Budget,
 ) -> Result<SceneCheck, Error> {
     let scene = SymbolicScene::build(given)?;
+    let oblique = oblique_params(&scene, input, budget)?;
+    let endings = oblique.as_ref().map(|o| contact_endings(&scene, o));
     let out = solved(&scene.params);
     let mut answers = Vec::with_capacity(claims.len());
     for claim in claims {
         let field = format!("claim {}", claim.quantity.name());
-        let exact = exact_value(claim.quantity, &field, &scene, &out)?;
-        let claimed = match &claim.value {
-            ClaimedValue::Printed(m) => {
-                if let Some((c, r)) = exact.constant() {
-                    answers.push(decide(claim, &Exact::radical(c, r), sig));
-                    continue;
-                }
-                let si = m.si().ok_or_else(|| {
-                    Error::new(
-                        field.as_str(),
-                        ErrorKind::Invalid(
-                            "a value in rpm cannot be compared with a formula: give it in rad/s"
-                                .into(),
-                        ),
-                    )
-                })?;
-                Radical::rational(RatFn::from_rational(&si))
+        let answer = match (&oblique, &endings) {
+            (Some(o), Some(endings)) => {
+                check_oblique_claim(claim, o, endings, &scene, sig, budget, &field)?
             }
-            ClaimedValue::Formula(r) => {
-                let resolved = scene.resolve(&field, r, budget)?;
-                if let (Some(_), Some((c, r))) = (resolved.constant(), exact.constant()) {
-                    let numeric = ClaimedAnswer {
-                        value: ClaimedValue::Formula(resolved),
-                        ..claim.clone()
-                    };
-                    answers.push(decide(&numeric, &Exact::radical(c, r), sig));
-                    continue;
-                }
-                resolved
+            _ => {
+                let exact = exact_value(claim.quantity, &field, &scene, &out)?;
+                check_symbolic_claim(claim, &exact, false, &scene, sig, budget, &field)?
             }
         };
-        let mut answer = identity(claim, &claimed, &exact, &scene, budget, &field)?;
-        if claim.quantity == Quantity::AStar
-            && let Some(condition) = a_star_on_rod(&scene.params)
-        {
-            answer.notes.push(condition);
-        }
-        // In check, a quantity not given is a free symbol, not solve's default: an end-hit
-        // formula refuted only because a is free says so.
-        let a_free = scene.free.iter().any(|s| s.name() == "a");
-        let uses_a = matches!(&claim.value, ClaimedValue::Formula(r) if r.mentions(crate::field::Sym::new("a")));
-        let depends_on_a = !matches!(claim.quantity, Quantity::AStar | Quantity::OmegaMax);
-        if answer.agreement == AnswerAgreement::Disagrees && a_free && !uses_a && depends_on_a {
-            answer.notes.push(
-                "a is a free symbol here (not the end, solve's default): add --a l for a hit at the end".into(),
-            );
-        }
-        if matches!(claim.value, ClaimedValue::Printed(_)) {
-            answer.notes.insert(
-                0,
-                "a number against a formula: decided as an identity in the free symbols".into(),
-            );
-        }
         answers.push(answer);
     }
+    // An oblique scene's own symbols are free too; an open slip's sign is a default taken.
+    let free = match &oblique {
+        Some(o) => free_symbols(&scene, o),
+        None => scene.free.iter().map(|s| s.name().to_string()).collect(),
+    };
+    let mut defaults = scene.defaults.clone();
+    defaults.extend(endings.and_then(|e| e.slip_taken));
     Ok(SceneCheck {
-        symbolic: Some(SceneSummary {
-            free: scene.free.iter().map(|s| s.name().to_string()).collect(),
-            defaults: scene.defaults.clone(),
-        }),
+        symbolic: Some(SceneSummary { free, defaults }),
         answers,
     })
+}
+
+/// One claim against one exact value of a symbolic scene: a number against a number, or an
+/// identity in the free symbols.
+fn check_symbolic_claim(
+    claim: &ClaimedAnswer,
+    exact: &Radical,
+    oblique: bool,
+    scene: &SymbolicScene,
+    sig: Option<u32>,
+    budget: &mut Budget,
+    field: &str,
+) -> Result<CheckedAnswer, Error> {
+    let claimed = match &claim.value {
+        ClaimedValue::Printed(m) => {
+            if let Some((c, r)) = exact.constant() {
+                return Ok(decide(claim, &Exact::radical(c, r), sig));
+            }
+            let si = m.si().ok_or_else(|| {
+                Error::new(
+                    field,
+                    ErrorKind::Invalid(
+                        "a value in rpm cannot be compared with a formula: give it in rad/s".into(),
+                    ),
+                )
+            })?;
+            Radical::rational(RatFn::from_rational(&si))
+        }
+        ClaimedValue::Formula(r) => {
+            // An oblique scene's claims may use its symbols (v0t, mu, ...), which stay themselves.
+            let resolved = if oblique {
+                scene.substitute(field, r, budget)?
+            } else {
+                scene.resolve(field, r, budget)?
+            };
+            if let (Some(_), Some((c, r))) = (resolved.constant(), exact.constant()) {
+                let numeric = ClaimedAnswer {
+                    value: ClaimedValue::Formula(resolved),
+                    ..claim.clone()
+                };
+                return Ok(decide(&numeric, &Exact::radical(c, r), sig));
+            }
+            resolved
+        }
+    };
+    let mut answer = identity(claim, &claimed, exact, scene, budget, field)?;
+    if claim.quantity == Quantity::AStar
+        && let Some(condition) = a_star_on_rod(&scene.params)
+    {
+        answer.notes.push(condition);
+    }
+    // In check, a quantity not given is a free symbol, not solve's default: an end-hit
+    // formula refuted only because a is free says so.
+    let a_free = scene.free.iter().any(|s| s.name() == "a");
+    let uses_a =
+        matches!(&claim.value, ClaimedValue::Formula(r) if r.mentions(crate::field::Sym::new("a")));
+    let depends_on_a = !matches!(claim.quantity, Quantity::AStar | Quantity::OmegaMax);
+    if answer.agreement == AnswerAgreement::Disagrees && a_free && !uses_a && depends_on_a {
+        answer.notes.push(
+            "a is a free symbol here (not the end, solve's default): add --a l for a hit at the end".into(),
+        );
+    }
+    if matches!(claim.value, ClaimedValue::Printed(_)) {
+        answer.notes.insert(
+            0,
+            "a number against a formula: decided as an identity in the free symbols".into(),
+        );
+    }
+    Ok(answer)
+}
+
+/// A claim about a symbolic oblique or frictional scene (NEWCOMER M6): against the answer of
+/// the way the contact ends when the symbols decide it, or against both (it sticks when
+/// mu >= mu*, slides otherwise): the claim agrees when it is one of them, and says which.
+fn check_oblique_claim(
+    claim: &ClaimedAnswer,
+    o: &ObliqueParams<RatFn>,
+    endings: &ContactEndings,
+    scene: &SymbolicScene,
+    sig: Option<u32>,
+    budget: &mut Budget,
+    field: &str,
+) -> Result<CheckedAnswer, Error> {
+    let p = &scene.params;
+    let exact_of = |ending: &Ending| -> Result<Radical, Error> {
+        if let Some(x) = claim.quantity.oblique_value(p, &ending.outcome)? {
+            return Ok(Radical::rational(x));
+        }
+        // a* and omega_max: the paper's, for the normal problem (the slide along the rod and
+        // friction never change them, X27-X31).
+        let normal = normal_params(p, o);
+        match claim.quantity {
+            Quantity::AStar => Ok(Radical::normalized(RatFn::one(), a_star_squared(&normal))),
+            _ => omega_max_value(field, &normal),
+        }
+    };
+    let friction = !o.mu.is_zero();
+    let mu_star = endings
+        .mu_star
+        .as_ref()
+        .map(|m| format!(", mu_star = {m}"))
+        .unwrap_or_default();
+    let exacts = endings
+        .endings
+        .iter()
+        .map(|e| exact_of(e).map(|x| (e, x)))
+        .collect::<Result<Vec<_>, _>>()?;
+    // A quantity the contact's ending does not change (v, V, omega, J): one check.
+    if exacts.len() > 1 && exacts.iter().all(|(_, x)| x == &exacts[0].1) {
+        let mut answer =
+            check_symbolic_claim(claim, &exacts[0].1, true, scene, sig, budget, field)?;
+        answer.notes.push(format!(
+            "the same however the contact ends (it sticks when mu >= mu_star{mu_star})"
+        ));
+        return Ok(answer);
+    }
+    let mut tried = Vec::new();
+    for (ending, exact) in exacts {
+        let mut answer = check_symbolic_claim(claim, &exact, true, scene, sig, budget, field)?;
+        match &ending.condition {
+            None if friction => answer.notes.push(format!(
+                "the contact {}s for every value of the symbols{mu_star}",
+                ending.contact
+            )),
+            None => {}
+            Some(condition) => answer.notes.push(format!(
+                "the answer when the contact {}s ({condition}{mu_star})",
+                ending.contact
+            )),
+        }
+        if answer.agreement == AnswerAgreement::Agrees || endings.endings.len() == 1 {
+            return Ok(answer);
+        }
+        tried.push((ending, exact, answer));
+    }
+    // Neither way: the claim against the first, naming the other's formula too.
+    let mut iter = tried.into_iter();
+    let (_, _, mut answer) = iter.next().expect("two endings were tried");
+    for (ending, exact, _) in iter {
+        answer.notes.push(format!(
+            "nor the answer when it {}s: {}",
+            ending.contact, exact
+        ));
+    }
+    Ok(answer)
 }
 
 /// The impulse equations of a valid scene, solved.

@@ -19,7 +19,6 @@ use crate::solve::oblique::{self, ContactMode, ObliqueOutcome, normal_params};
 use crate::solve::optimum::a_star_squared;
 use num_traits::{One, Signed, Zero};
 
-
 /// One formula of the answer.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AnswerFormula {
@@ -258,7 +257,7 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
 }
 
 /// The scene's free symbols, then the oblique ones the formulas use.
-fn free_symbols(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Vec<String> {
+pub(crate) fn free_symbols(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Vec<String> {
     let mut free: Vec<String> = scene.free.iter().map(|s| s.name().to_string()).collect();
     let used: Vec<&RatFn> = [
         &o.v0t,

@@ -817,3 +817,78 @@ fn omega_max_in_symbols_where_the_case_is_decided() {
         "error: claim omega_max: omega_max is omega(a*) when M <= 2*m and omega(l) otherwise, two formulas: fix the case in the scene (--M 2*m, ...) or claim a_star or omega\n"
     );
 }
+
+/// NEWCOMER M6: claims about an oblique, frictional scene in symbols. The end hit on an
+/// equal-mass rod by a puck sliding at v0t with friction mu: Jt = (2/5) mu m v0 is the sliding
+/// answer (mu < mu* = 5 v0t/(4 v0)), Jt = m v0t/2 the sticking one; omega = (6/5) v0/l whatever
+/// the contact does; vt = v0t/3 is neither, refuted at a sample scene.
+#[test]
+fn symbolic_oblique_claims_name_the_contact_they_hold_for() {
+    let (code, out, err) = rodimpact(&[
+        "check",
+        "--M",
+        "m",
+        "--a",
+        "l",
+        "--v0t",
+        "v0t",
+        "--mu",
+        "mu",
+        "--claim",
+        "tangential_impulse=2/5*mu*m*v0",
+        "--claim",
+        "tangential_impulse=1/2*m*v0t",
+        "--claim",
+        "omega=6/5*v0/l",
+        "--claim",
+        "vt=v0t/3",
+        "--json",
+    ]);
+    assert_eq!(code, 1, "{err}");
+    let report: Value = serde_json::from_str(&out).unwrap();
+    let answers = report["claims"].as_array().expect("claims");
+    let verdicts: Vec<&str> = answers
+        .iter()
+        .map(|a| a["verdict"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        verdicts,
+        ["agrees", "agrees", "agrees", "disagrees"],
+        "{out}"
+    );
+    assert_eq!(
+        report["free_symbols"],
+        serde_json::json!(["m", "l", "v0", "v0t", "mu"])
+    );
+    let notes = |i: usize| answers[i]["notes"].to_string();
+    assert!(
+        notes(0)
+            .contains("the answer when the contact slides (mu < mu_star, mu_star = 5/4*v0t/v0)"),
+        "{}",
+        notes(0)
+    );
+    assert!(
+        notes(1).contains("the answer when the contact sticks (mu >= mu_star"),
+        "{}",
+        notes(1)
+    );
+    assert!(
+        notes(2).contains("the same however the contact ends"),
+        "{}",
+        notes(2)
+    );
+    assert!(
+        notes(3).contains("nor the answer when it slides: -2/5*mu*v0 + v0t"),
+        "{}",
+        notes(3)
+    );
+    // Decided by the numbers: mu = 2 >= mu* = 5/4 when v0t = v0, the contact sticks.
+    let (code, out, err) = rodimpact(&[
+        "check", "--M", "m", "--a", "l", "--v0t", "v0", "--mu", "2", "--claim", "vt=v0/2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("the contact sticks for every value of the symbols, mu_star = 5/4"),
+        "{out}"
+    );
+}

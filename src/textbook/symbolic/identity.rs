@@ -5,11 +5,11 @@
 use super::scene::{SAMPLES, SymbolicScene};
 use crate::error::Error;
 use crate::field::decimal;
-use crate::field::{Poly, Q, RatFn};
+use crate::field::{Poly, Q, RatFn, Sym};
 use crate::textbook::answer::{AnswerAgreement, CheckedAnswer, Counterexample, RelError};
 use crate::textbook::claim::ClaimedAnswer;
 use crate::textbook::exact::Exact;
-use crate::textbook::expr::{Budget, Radical, words};
+use crate::textbook::expr::{Budget, OBLIQUE_SYMBOLS, Radical, words};
 use crate::textbook::numeric::{midpoint, radical_matches};
 use crate::textbook::quantity::Quantity;
 use num_traits::Signed;
@@ -24,18 +24,24 @@ pub(crate) fn identity(
     field: &str,
 ) -> Result<CheckedAnswer, Error> {
     let omega = claim.quantity == Quantity::Omega;
+    // The oblique symbols either side uses (v0t, mu, ...) are free too, and sampled with the rest.
+    let extra: Vec<Sym> = OBLIQUE_SYMBOLS
+        .iter()
+        .map(|n| Sym::new(n))
+        .filter(|&s| c.mentions(s) || exact.mentions(s))
+        .collect();
     let mut d = CheckedAnswer::new(claim.quantity.name(), &claim.text, exact.to_string(), None);
     let mut squares_agree = false;
     if c.is_rational() && exact.is_rational() {
         let (claimed, value) = (Fraction::of(&c.coeff), Fraction::of(&exact.coeff));
         if claimed.equals(&value, false, budget, field)? {
             d.agreement = AnswerAgreement::Agrees;
-            d.notes.push(identity_note(scene));
+            d.notes.push(identity_note(scene, &extra));
             return Ok(d);
         }
         if omega && claimed.equals(&value, true, budget, field)? {
             d.agreement = AnswerAgreement::Agrees;
-            d.notes.push(identity_note(scene));
+            d.notes.push(identity_note(scene, &extra));
             d.notes
                 .push("opposite sign: compared by magnitude (rotation conventions differ)".into());
             return Ok(d);
@@ -57,7 +63,7 @@ pub(crate) fn identity(
     }
     // Search a valid scene where the values differ (or, for a root, fix the sign).
     let per_sample = eval_cost(c).saturating_add(eval_cost(exact));
-    for point in scene.samples(SAMPLES) {
+    for point in scene.samples_with(&extra, SAMPLES) {
         budget.charge(field, per_sample)?;
         let at = |f: &RatFn| f.eval::<Q>(&|s| point.get(&s).cloned());
         let (Some(cc), Some(cr), Some(ec), Some(er)) = (
@@ -158,8 +164,8 @@ impl Fraction {
     }
 }
 
-fn identity_note(scene: &SymbolicScene) -> String {
-    let free: Vec<&str> = scene.free.iter().map(|s| s.name()).collect();
+fn identity_note(scene: &SymbolicScene, extra: &[Sym]) -> String {
+    let free: Vec<&str> = scene.free.iter().chain(extra).map(|s| s.name()).collect();
     if free.is_empty() {
         "exact: equal as numbers".into()
     } else {

@@ -254,7 +254,8 @@ pub fn contact_endings(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Conta
         let contact = out.contact.map_or("stick", ContactMode::as_str);
         return done(vec![decided(contact, out)]);
     }
-    let slide = with(Some(ContactMode::Slide { forward })).expect("a valid scene's masses are positive");
+    let slide =
+        with(Some(ContactMode::Slide { forward })).expect("a valid scene's masses are positive");
     // The symbols may leave the slip's course open while mu - mu* is a number (mu given, mu*
     // free of symbols): that number decides the contact.
     match (o.mu.clone() - &mu_star).as_constant() {
@@ -266,8 +267,16 @@ pub fn contact_endings(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Conta
                 None => "mu".to_string(),
             };
             done(vec![
-                Ending { contact: "stick", condition: Some(format!("{mu} >= mu_star")), outcome: stick },
-                Ending { contact: "slide", condition: Some(format!("{mu} < mu_star")), outcome: slide },
+                Ending {
+                    contact: "stick",
+                    condition: Some(format!("{mu} >= mu_star")),
+                    outcome: stick,
+                },
+                Ending {
+                    contact: "slide",
+                    condition: Some(format!("{mu} < mu_star")),
+                    outcome: slide,
+                },
             ])
         }
     }

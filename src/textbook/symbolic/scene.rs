@@ -295,7 +295,7 @@ impl SymbolicScene {
     ///
     /// # Errors
     /// As [`SymbolicScene::resolve`], except for the oblique symbols.
-    pub(super) fn substitute(
+    pub(crate) fn substitute(
         &self,
         field: &str,
         claim: &Radical,
@@ -355,13 +355,9 @@ impl SymbolicScene {
         })
     }
 
-    /// Deterministic sample points that make a valid scene (at most `limit` tried).
-    pub(super) fn samples(&self, limit: usize) -> impl Iterator<Item = BTreeMap<Sym, Q>> + '_ {
-        self.samples_with(&[], limit)
-    }
-
-    /// [`SymbolicScene::samples`] with the `extra` symbols (the oblique ones) sampled too.
-    fn samples_with(
+    /// The valid sample scenes (at most `limit` points of the free symbols' sample grid where
+    /// every constraint holds), with the `extra` symbols (the oblique ones) sampled too.
+    pub(super) fn samples_with(
         &self,
         extra: &[Sym],
         limit: usize,
