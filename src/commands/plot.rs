@@ -6,7 +6,7 @@
 
 use super::{Failure, SceneFlags, parse_ratios};
 use clap::Args;
-use rodimpact::io::write_atomic;
+use rodimpact::io::{write_atomic, write_atomic_bytes};
 use rodimpact::report::{self, Figure};
 use rodimpact::scene::Scene;
 use rodimpact::{Error, ErrorKind};
@@ -36,8 +36,9 @@ pub(crate) struct PlotArgs {
     /// Which figure.
     #[arg(value_enum)]
     pub(crate) figure: Kind,
-    /// The SVG file to write (atomically).
-    #[arg(long, value_name = "FILE.svg")]
+    /// The file to write (atomically): SVG, or PNG for FILE.png (twice the SVG's size, the
+    /// figure's font carried in the program).
+    #[arg(long, value_name = "FILE.svg|FILE.png")]
     pub(crate) out: PathBuf,
     /// Also write the sampled values as CSV, exact beside decimal (omega, optimum, quantities,
     /// energy).
@@ -176,18 +177,33 @@ fn figure(args: &PlotArgs) -> Result<Figure, Error> {
 }
 
 pub(crate) fn run_plot(args: &PlotArgs) -> Result<(), Failure> {
-    check_extension(
-        "out",
-        &args.out,
-        "svg",
-        " (plot writes SVG; for a PNG: rsvg-convert FILE.svg -o FILE.png)",
-    )?;
+    let png = args
+        .out
+        .extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    if !png {
+        check_extension(
+            "out",
+            &args.out,
+            "svg",
+            " (or .png, the figure as a picture)",
+        )?;
+    }
     if let Some(path) = &args.data {
         check_extension("data", path, "csv", "")?;
     }
     refuse_unused(args)?;
     let drawn = figure(args)?;
-    write_atomic("out", &args.out, &drawn.svg)?;
+    if png {
+        write_atomic_bytes(
+            "out",
+            &args.out,
+            &report::svg_to_png(&drawn.svg, report::PNG_SCALE)?,
+        )?;
+    } else {
+        write_atomic("out", &args.out, &drawn.svg)?;
+    }
     if let (Some(path), Some(data)) = (&args.data, &drawn.data) {
         write_atomic("data", path, &data.to_csv())?;
     }

@@ -40,8 +40,25 @@ use std::sync::{Mutex, MutexGuard, PoisonError};
 /// # std::fs::remove_dir_all(&dir).unwrap();
 /// ```
 pub fn write_atomic(field: &str, path: &Path, contents: &str) -> Result<(), Error> {
+    write_atomic_bytes(field, path, contents.as_bytes())
+}
+
+/// [`write_atomic`] for bytes (a PNG): all of `contents` or nothing, at `path`.
+///
+/// # Errors
+/// As [`write_atomic`].
+///
+/// # Examples
+/// ```
+/// let dir = tempfile::tempdir().unwrap();
+/// let path = dir.path().join("x.bin");
+/// rodimpact::io::write_atomic_bytes("out", &path, &[0, 159, 255])?;
+/// assert_eq!(std::fs::read(&path).unwrap(), [0, 159, 255]);
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn write_atomic_bytes(field: &str, path: &Path, contents: &[u8]) -> Result<(), Error> {
     let mut file = AtomicFile::create(field, path)?;
-    file.write_all(contents.as_bytes())
+    file.write_all(contents)
         .map_err(|why| io_error(field, path, why))?;
     file.commit()
 }

@@ -9,5 +9,5 @@ mod output_dir;
 
 #[cfg(feature = "signals")]
 pub use atomic::remove_temporaries_on_signals;
-pub use atomic::{AtomicFile, may_follow_link, write_atomic};
+pub use atomic::{AtomicFile, may_follow_link, write_atomic, write_atomic_bytes};
 pub use output_dir::write_directory;

@@ -50,6 +50,8 @@ pub use plot::{
     Figure, PlotData, PlotValue, energy_figure, mass_ratio_family, omega_figure, optimum_figure,
     plot_figure1, plot_omega, plot_optimum, plot_stability, quantities_figure, velocity_figure,
 };
+#[cfg(feature = "png")]
+pub use plot::{PNG_SCALE, svg_to_png};
 pub use proofs::{
     PaperFigure, claim_markdown, hand_step_note, index_markdown, paper_files, paper_markdown,
     paper_report, prove_json, prove_line, summary_line, verdict_label, verdict_mark,

@@ -211,16 +211,18 @@ fn optimum_marks_the_given_scene() {
     assert!(!plain.contains("this scene"));
 }
 
-/// NEWCOMER #19: `plot omega --out fig.png` wrote SVG text into fig.png.
+/// NEWCOMER #19: `plot omega --out fig.png` wrote SVG text into fig.png; it now writes a PNG
+/// (see `figures_as_png_twice_the_svg_size`), and another picture format is refused with
+/// nothing written.
 #[test]
-fn a_png_name_is_refused_and_nothing_written() {
-    let dir = Dir::new("plot-png");
-    let png = dir.path("fig.png");
+fn another_picture_format_is_refused_and_nothing_written() {
+    let dir = Dir::new("plot-jpg");
+    let jpg = dir.path("fig.jpg");
     refused(
-        &["plot", "omega", "--out", png.to_str().unwrap()],
+        &["plot", "omega", "--out", jpg.to_str().unwrap()],
         "out: the file name must end in .svg, got",
     );
-    assert!(!Path::new(&png).exists());
+    assert!(!Path::new(&jpg).exists());
 }
 
 /// Flags a figure cannot honour are refused with the figure's reason, before anything is
@@ -435,4 +437,43 @@ fn no_figure_holds_inf_or_nan() {
         std::fs::remove_file(&svg).unwrap();
     }
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// NEWCOMER capability 1: the figures as PNG, for slides, drawn in the program: a PNG twice
+/// the SVG's size, the same bytes every time, written whole; another extension refused.
+#[test]
+fn figures_as_png_twice_the_svg_size() {
+    let dir = Dir::new("plot-png");
+    let (svg, _) = plot(&dir, "omega", &[], false);
+    let size = |attr: &str| -> u32 {
+        let at = svg.find(&format!("{attr}=\"")).unwrap() + attr.len() + 2;
+        svg[at..at + svg[at..].find('"').unwrap()]
+            .parse::<f64>()
+            .unwrap() as u32
+    };
+    let (width, height) = (size("width"), size("height"));
+    for name in ["a.png", "b.PNG"] {
+        let path = dir.path(name);
+        let (code, err) = rodimpact(&["plot", "omega", "--out", path.to_str().unwrap()]);
+        assert_eq!(code, 0, "{err}");
+    }
+    let png = std::fs::read(dir.path("a.png")).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let be = |at: usize| u32::from_be_bytes(png[at..at + 4].try_into().unwrap());
+    assert_eq!((be(16), be(20)), (2 * width, 2 * height), "the IHDR's size");
+    assert!(
+        png.len() > 100_000,
+        "a drawn chart, not a blank page: {} bytes",
+        png.len()
+    );
+    assert_eq!(
+        std::fs::read(dir.path("b.PNG")).unwrap(),
+        png,
+        "deterministic"
+    );
+    refused(
+        &["plot", "omega", "--out", "x.jpg"],
+        "error: out: the file name must end in .svg, got 'x.jpg' (or .png, the figure as a picture)",
+    );
+    assert!(!png.starts_with(b"<svg"));
 }

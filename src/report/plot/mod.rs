@@ -1,4 +1,4 @@
-//! Figures as SVG, written by hand (no font or plotting library): omega against the impact
+//! Figures as SVG, written by hand (no font or plotting library), and as PNG (`png.rs`, resvg): omega against the impact
 //! point, a* against the mass ratio, the paper's missing Figure 1, the velocities before and
 //! after, the quantities and the energy partition along the rod, and the float stability chart.
 //!
@@ -15,6 +15,8 @@ mod describe;
 mod figure1;
 mod omega;
 mod optimum;
+#[cfg(feature = "png")]
+mod png;
 mod sample;
 mod scale;
 mod stability;
@@ -25,6 +27,8 @@ pub use data::{PlotData, Value as PlotValue};
 pub use figure1::{plot_figure1, velocity_figure};
 pub use omega::{mass_ratio_family, omega_figure, plot_omega};
 pub use optimum::{optimum_figure, plot_optimum};
+#[cfg(feature = "png")]
+pub use png::{PNG_SCALE, svg_to_png};
 pub use stability::plot_stability;
 
 /// Pixel size of the charts.
