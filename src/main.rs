@@ -174,7 +174,10 @@ mod tests {
     fn a_missing_argument_is_named_on_the_one_line() {
         let err = Cli::try_parse_from(["rodimpact", "plot", "omega"]).unwrap_err();
         let line = usage_line(&err.to_string());
-        assert!(line.contains("not provided: --out <FILE.svg|FILE.png>"), "{line}");
+        assert!(
+            line.contains("not provided: --out <FILE.svg|FILE.png>"),
+            "{line}"
+        );
         assert!(!line.contains('\n'));
     }
 

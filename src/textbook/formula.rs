@@ -14,8 +14,8 @@ use super::symbolic::{GivenScene, SymbolicScene, contact_endings, heaviest_field
 use crate::error::Error;
 use crate::field::{Field, Poly, RatFn};
 use crate::scene::{ObliqueParams, Params, SceneInput, Support};
-use crate::solve::linear::{self, solve};
-use crate::solve::oblique::{self, ContactMode, ObliqueOutcome, normal_params};
+use crate::solve::linear::solve;
+use crate::solve::oblique::{ObliqueOutcome, normal_params};
 use crate::solve::optimum::a_star_squared;
 use num_traits::{One, Signed, Zero};
 
@@ -164,11 +164,8 @@ fn rational(key: &'static str, x: RatFn) -> AnswerFormula {
 /// `mu_star = |u_t|/(J k_t)`, the friction that just stops the slip.
 fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas {
     let p = &scene.params;
-    let normal = linear::solve(&normal_params(p, o))
-        .expect("the impulse equations of a valid scene are nonsingular")
-        .after;
-    let with = |given: Option<ContactMode>| oblique::complete(p, o, normal.clone(), given);
-    let stick = with(Some(ContactMode::Stick)).expect("a valid scene's masses are positive");
+    let endings = contact_endings(scene, o);
+    let stick = &endings.stick;
     let mut list = vec![
         rational("v", stick.after.v.clone()),
         rational("V", stick.after.rod.v.clone()),
@@ -225,10 +222,9 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
         }
         part
     };
-    let endings = contact_endings(scene, o);
-    defaults.extend(endings.slip_taken);
-    if let Some(mu_star) = endings.mu_star {
-        list.push(rational("mu_star", mu_star));
+    defaults.extend(endings.slip_taken.clone());
+    if let Some(mu_star) = &endings.mu_star {
+        list.push(rational("mu_star", mu_star.clone()));
     }
     let (mut contact, mut cases) = (None, Vec::new());
     match endings.endings.as_slice() {

@@ -330,11 +330,7 @@ impl Preset {
     /// The preset as the page's link spells it after `#` (`M=1/2&a=1`; empty: nothing preset).
     /// Its values need no escaping: numbers, `/`, `-`, `.`, `=` and the words above.
     pub fn link(&self) -> String {
-        self.fields
-            .iter()
-            .map(|(key, value)| format!("{key}={value}"))
-            .collect::<Vec<_>>()
-            .join("&")
+        pages::link_of(&self.fields)
     }
 }
 

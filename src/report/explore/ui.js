@@ -6,7 +6,6 @@
 // no physics is computed here.
 
   const $ = (id) => document.getElementById(id);
-  const SVG = "http://www.w3.org/2000/svg";
   // Asked for less motion (read at each frame: the setting may change while the page is open).
   const reducedMotion = window.matchMedia("(prefers-reduced-motion: reduce)");
 
@@ -215,17 +214,8 @@
     return Boolean(radio);
   };
   function applyLink(text) {
-    const wrong = [];
-    for (const part of text.split("&").filter((p) => p !== "")) {
-      const at = part.indexOf("=");
-      const key = at < 0 ? part : part.slice(0, at);
-      let value = "";
-      try {
-        value = decodeURIComponent(at < 0 ? "" : part.slice(at + 1));
-      } catch (_) {
-        wrong.push(part);
-        continue;
-      }
+    const { parts, wrong } = linkParts(text);
+    for (const [key, value] of parts) {
       if (key === "M") $("ratio").value = value;
       else if (key === "a" || key === "e") $(key).value = value;
       else if (key === "rod") {
@@ -568,21 +558,8 @@
   }
 
   // ---- drawing: the curve and the threshold ----------------------------------------------
-  const el = (name, attrs, text) => {
-    const e = document.createElementNS(SVG, name);
-    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
-    if (text !== undefined) e.textContent = text;
-    return e;
-  };
-
-  // The smallest size a label is drawn at on the screen, in CSS px: a chart or the stage drawn
-  // narrower than its own width (a phone) scales its labels up by textScale to keep to it.
-  const LEAST_TEXT = 11;
-  /**
-   * How much to enlarge text of `size` units in an element `units` wide, drawn `shown` px wide:
-   * from 1 to 2 at most (narrower than a phone, or not laid out yet, the labels stay in).
-   */
-  const textScale = (size, units, shown) => (shown > 0 ? Math.min(2, Math.max(1, (LEAST_TEXT * units) / (size * shown))) : 1);
+  // SVG elements and label sizes: the pages' shared helpers (svgElement, textScale).
+  const el = svgElement;
 
   function axes(svg, box, xs, ys, xlabel, ylabel, xticks, yticks, xfmt, yfmt = (t) => t.toFixed(1)) {
     // The chart's labels (12 units and up) at LEAST_TEXT px at least, their offsets with them

@@ -1,8 +1,44 @@
 "use strict";
-// Unpacks rodimpact's library, compiled to WebAssembly and inlined in this page (zlib, base64,
+// What both pages share: the SVG and label helpers, a link's pairs, and the start: it unpacks
+// rodimpact's library, compiled to WebAssembly and inlined in this page (zlib, base64,
 // in the element #rodimpact-wasm), and runs the page's script with it: the page computes every
 // number it shows by `api.call(name, request)`, which answers with the library's own code
 // (rodimpact::report::pages::call). Nothing is fetched: the page works from a file, offline.
+
+/** An SVG element `name` with the attributes `attrs` and, when given, the text `text`. */
+function svgElement(name, attrs, text) {
+  const e = document.createElementNS("http://www.w3.org/2000/svg", name);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+// The smallest size a label is drawn at on the screen, in CSS px: a chart or a stage drawn
+// narrower than its own width (a phone) scales its labels up by textScale to keep to it.
+const LEAST_TEXT = 11;
+/**
+ * How much to enlarge text of `size` units in an element `units` wide, drawn `shown` px wide:
+ * from 1 to 2 at most (narrower than a phone, or not laid out yet, the labels stay in).
+ */
+const textScale = (size, units, shown) => (shown > 0 ? Math.min(2, Math.max(1, (LEAST_TEXT * units) / (size * shown))) : 1);
+
+/**
+ * The pairs of a page's link after `#` (`M=1/2&a=1`): each `[key, value, hasValue]`, the value
+ * decoded; `wrong` holds the parts that do not decode.
+ */
+function linkParts(text) {
+  const parts = [];
+  const wrong = [];
+  for (const part of text.split("&").filter((p) => p !== "")) {
+    const at = part.indexOf("=");
+    try {
+      parts.push([at < 0 ? part : part.slice(0, at), decodeURIComponent(at < 0 ? "" : part.slice(at + 1)), at >= 0]);
+    } catch (_) {
+      wrong.push(part);
+    }
+  }
+  return { parts, wrong };
+}
 
 /** The bytes of a binary string (what atob returns). */
 function bytesOf(binary) {

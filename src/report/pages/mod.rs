@@ -152,6 +152,22 @@ pub fn page_script(ui: &str) -> String {
     format!("{LOADER}\nrodimpactPage(function (api) {{\n{ui}\n}});\n")
 }
 
+/// A page's preset as its link spells it after `#`: `key=value` joined by `&` (empty: nothing
+/// preset). The values are the program's own (numbers, `/`, `-`, `.`, `=`, words): no escaping.
+///
+/// # Examples
+/// ```
+/// let fields = [("M", "1/2".to_string()), ("a", "1".to_string())];
+/// assert_eq!(rodimpact::report::pages::link_of(&fields), "M=1/2&a=1");
+/// ```
+pub fn link_of(fields: &[(&'static str, String)]) -> String {
+    fields
+        .iter()
+        .map(|(key, value)| format!("{key}={value}"))
+        .collect::<Vec<_>>()
+        .join("&")
+}
+
 /// The size in bytes of the module as a page carries it (compressed, in base64).
 ///
 /// # Examples

@@ -97,11 +97,7 @@ impl TiltedPreset {
 
     /// The preset as the page's link spells it after `#` (empty: nothing preset).
     pub fn link(&self) -> String {
-        self.fields
-            .iter()
-            .map(|(key, value)| format!("{key}={value}"))
-            .collect::<Vec<_>>()
-            .join("&")
+        pages::link_of(&self.fields)
     }
 }
 

@@ -5,7 +5,6 @@
 // and the charts map the API's `f64` values to pixels.
 
 const $ = (id) => document.getElementById(id);
-const SVG = "http://www.w3.org/2000/svg";
 const LAWS = ["newton", "poisson", "energetic"];
 const NAMES = { newton: "Newton", poisson: "Poisson", energetic: "Stronge" };
 const FIELDS = ["tan_half", "slip", "mu", "e"];
@@ -95,21 +94,12 @@ function call(name, req) {
 
 // ---- a link that opens the page on a scene (tilted.html#tan_half=1/2&slip=1&mu=1/3&e=1) ------
 function applyLink(text) {
-  const wrong = [];
-  for (const part of text.split("&").filter((p) => p !== "")) {
-    const at = part.indexOf("=");
-    const key = at < 0 ? part : part.slice(0, at);
-    let value = "";
-    try {
-      value = decodeURIComponent(at < 0 ? "" : part.slice(at + 1));
-    } catch (_) {
-      wrong.push(part);
-      continue;
-    }
-    if (key === "tan_half" && at >= 0) {
+  const { parts, wrong } = linkParts(text);
+  for (const [key, value, given] of parts) {
+    if (key === "tan_half" && given) {
       tanHalf = value.trim();
       followAngle();
-    } else if (at >= 0 && key in controls) {
+    } else if (given && key in controls) {
       $(key).value = value;
       follow(key);
     } else wrong.push(key);
@@ -275,16 +265,8 @@ function showLaws(res) {
 }
 
 // ---- drawing ------------------------------------------------------------------------------
-const el = (name, attrs, text) => {
-  const e = document.createElementNS(SVG, name);
-  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
-  if (text !== undefined) e.textContent = text;
-  return e;
-};
-// The smallest size a label is drawn at on the screen, in CSS px: a chart drawn narrower than
-// its own width (a phone) scales its labels up by textScale to keep to it.
-const LEAST_TEXT = 11;
-const textScale = (size, units, shown) => (shown > 0 ? Math.min(2, Math.max(1, (LEAST_TEXT * units) / (size * shown))) : 1);
+// SVG elements and label sizes: the pages' shared helpers (svgElement, textScale, LEAST_TEXT).
+const el = svgElement;
 /**
  * Sizes a chart's drawing to the width it is shown at: `wide` [width, height] in units, or on a
  * narrow screen (a phone) `narrow`, taller for its width, so that its labels need less enlarging.

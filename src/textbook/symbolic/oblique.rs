@@ -160,6 +160,9 @@ pub(super) fn mentions_oblique(f: &RatFn) -> Option<&'static str> {
 /// it slides when the symbols leave it open.
 #[derive(Debug, Clone)]
 pub struct ContactEndings {
+    /// The answer when the contact sticks (also the frictionless answer, and the normal
+    /// problem's v, V, omega and impulse, which no ending changes).
+    pub stick: ObliqueOutcome<RatFn>,
     /// The ways it ends, in that order (stick before slide).
     pub endings: Vec<Ending>,
     /// The friction that just stops the slip, mu* = |Jt_stick|/J, with friction (the slip's
@@ -214,7 +217,8 @@ pub fn contact_endings(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Conta
     };
     if o.mu.is_zero() {
         return ContactEndings {
-            endings: vec![decided("slide", stick)],
+            endings: vec![decided("slide", stick.clone())],
+            stick,
             mu_star: None,
             slip_taken: None,
         };
@@ -243,12 +247,13 @@ pub fn contact_endings(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Conta
     let mu_star = speed / &stick.impulse;
     let done = |endings| ContactEndings {
         endings,
+        stick: stick.clone(),
         mu_star: Some(mu_star.clone()),
         slip_taken: slip_taken.clone(),
     };
     if slip.is_zero() {
         // No slip before the impact: nothing to stop, the contact holds (Jt = 0).
-        return done(vec![decided("stick", stick)]);
+        return done(vec![decided("stick", stick.clone())]);
     }
     if let Ok(out) = with(None) {
         let contact = out.contact.map_or("stick", ContactMode::as_str);
@@ -260,7 +265,7 @@ pub fn contact_endings(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Conta
     // free of symbols): that number decides the contact.
     match (o.mu.clone() - &mu_star).as_constant() {
         Some(margin) if margin.is_negative() => done(vec![decided("slide", slide)]),
-        Some(_) => done(vec![decided("stick", stick)]),
+        Some(_) => done(vec![decided("stick", stick.clone())]),
         None => {
             let mu = match o.mu.as_constant() {
                 Some(c) => format!("mu = {c}"),
@@ -270,7 +275,7 @@ pub fn contact_endings(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Conta
                 Ending {
                     contact: "stick",
                     condition: Some(format!("{mu} >= mu_star")),
-                    outcome: stick,
+                    outcome: stick.clone(),
                 },
                 Ending {
                     contact: "slide",
