@@ -427,6 +427,22 @@ impl QSqrt {
         }
     }
 
+    /// |x|, exactly (the sign decided exactly, as [`QSqrt::cmp_exact`] decides it).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::field::{q, QSqrt};
+    /// let x = QSqrt::rational(q(1, 1)) - &QSqrt::sqrt_of(&q(2, 1)); // 1 - sqrt(2) < 0
+    /// assert_eq!(x.abs().to_string(), "-1 + sqrt(2)");
+    /// ```
+    pub fn abs(&self) -> QSqrt {
+        if self.sign_exact() == Ordering::Less {
+            -self.clone()
+        } else {
+            self.clone()
+        }
+    }
+
     /// The value correctly rounded to `digits` significant digits, formatted as
     /// [`decimal::decimal`] does (bounds refined until both round alike).
     ///

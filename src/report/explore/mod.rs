@@ -16,6 +16,7 @@
 
 use super::page::{Page, document, json_script};
 use super::pages;
+use super::pages::PAGE_DIGITS;
 use super::paper_tables::solve_at;
 use super::solution_json;
 use crate::Error;
@@ -173,9 +174,6 @@ impl Frame {
 pub struct Preset {
     fields: Vec<(&'static str, String)>,
 }
-
-/// The most digits the page takes in a numerator or a denominator (its fields refuse more).
-const PAGE_DIGITS: usize = 30;
 
 impl Preset {
     /// The preset of a scene given as `solve` takes it (any units; m defaults to 1 and M to m):

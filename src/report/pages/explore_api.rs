@@ -49,16 +49,27 @@ pub(super) fn read_field(
     check: &dyn Fn(&Q) -> Option<&'static str>,
     errors: &mut FieldErrors,
 ) -> Option<Q> {
-    let text = request[id].as_str().unwrap_or_default();
-    let message = match page_limits(text).and_then(|()| crate::number::parse(text)) {
-        Ok(value) => match check(&value) {
-            None => return Some(value),
-            Some(why) => why.to_string(),
-        },
-        Err(kind) => kind_message(&kind),
-    };
-    errors.insert(id.into(), json!(format!("{}: {message}", name_of(id))));
-    None
+    read_number(request, id, check)
+        .map_err(|why| errors.insert(id.into(), json!(format!("{}: {why}", name_of(id)))))
+        .ok()
+}
+
+/// The text of `request[key]` read as an exact number within the page's limits and checked by
+/// `check`; why it is refused otherwise (without the field's name). What every page's field
+/// reading shares.
+pub(super) fn read_number(
+    request: &Value,
+    key: &str,
+    check: &dyn Fn(&Q) -> Option<&'static str>,
+) -> Result<Q, String> {
+    let text = request[key].as_str().unwrap_or_default();
+    let value = page_limits(text)
+        .and_then(|()| crate::number::parse(text))
+        .map_err(|kind| kind_message(&kind))?;
+    match check(&value) {
+        None => Ok(value),
+        Some(why) => Err(why.to_string()),
+    }
 }
 
 /// Reads the page's fields (`ratio`, `a`, `e`, `kind` = uniform|dumbbell|gyration, `rg`,
@@ -164,7 +175,7 @@ pub(super) fn page_scene_with(
                 Some(Ordering::Less) => -1,
                 _ => 1,
             });
-            if abs(&at).cmp_exact(&QSqrt::one()) != Ordering::Greater {
+            if at.abs().cmp_exact(&QSqrt::one()) != Ordering::Greater {
                 // On a*'s side: the end of that side is struck in the scene (the same optimum).
                 let side_end = if side > 0 { one.clone() } else { -one.clone() };
                 return Ok(PageScene {
@@ -210,15 +221,24 @@ pub(super) fn page_scene_with(
     }
 }
 
-/// The most digits the page takes in a number it is typed (before and after the point, leading
-/// zeros aside), and the largest exponent: what its floats for drawing and its sliders can
-/// follow.
-const PAGE_DIGITS: usize = 30;
+/// The most digits a page takes in a typed number (before and after the point, leading zeros
+/// aside), and in a preset's numerator or denominator: what its floats for drawing and its
+/// sliders can follow.
+///
+/// # Examples
+/// ```
+/// use rodimpact::report::pages::{PAGE_DIGITS, explore};
+/// let long = "1".repeat(PAGE_DIGITS + 1);
+/// let answer = explore(&serde_json::json!({"ratio": long, "a": "1", "e": "1"}));
+/// assert_eq!(answer["errors"]["ratio"], "M/m: more than 30 digits");
+/// ```
+pub const PAGE_DIGITS: usize = 30;
+/// The largest decimal exponent a page takes in a typed number, in absolute value.
 const PAGE_EXPONENT: i64 = 60;
 
 /// The page's own limits on a typed number (`3/2`, `1.5e-3`), beyond the library's: at most
 /// [`PAGE_DIGITS`] digits in each part and an exponent within ±[`PAGE_EXPONENT`].
-pub(super) fn page_limits(text: &str) -> Result<(), crate::error::ErrorKind> {
+fn page_limits(text: &str) -> Result<(), crate::error::ErrorKind> {
     use crate::error::ErrorKind;
     for part in text.split('/') {
         let part = part.trim().trim_start_matches(['+', '-']);
@@ -244,15 +264,6 @@ pub(super) fn page_limits(text: &str) -> Result<(), crate::error::ErrorKind> {
         }
     }
     Ok(())
-}
-
-/// |x|, exactly.
-fn abs(x: &QSqrt) -> QSqrt {
-    if x.sign() == Some(Ordering::Less) {
-        -x.clone()
-    } else {
-        x.clone()
-    }
 }
 
 /// The page's name of a field.
@@ -341,7 +352,7 @@ pub fn explore(request: &Value) -> Value {
     let lever = s.a.clone() - &p.clone().unwrap_or_else(QSqrt::zero);
     let omega = out.after.omega.clone();
     let a_star = QSqrt::sqrt_of(&o.squared);
-    let ratio_to_max = (!o.omega_max.is_zero()).then(|| abs(&omega) / &o.omega_max);
+    let ratio_to_max = (!o.omega_max.is_zero()).then(|| omega.abs() / &o.omega_max);
     // The kinetic energy before is m v0^2/2 = 1/2: each share is twice the part.
     let share = |x: QSqrt| x * &two;
     let half = QSqrt::rational(q(1, 2));
@@ -409,7 +420,7 @@ pub fn explore(request: &Value) -> Value {
         "stuck": stuck,
         "side": if lever.sign() == Some(Ordering::Less) { -1 } else { 1 },
         "note": s.note,
-        "curve": curve(scene, &s, &o, &a_star),
+        "curve": curve(scene, &s, &o, &a_star, &omega),
         "threshold_curve": threshold_curve(scene, s.pivot.as_ref()),
         "motion": { "second": Kinematics::of(scene, &s, &out).second(12.0), "stuck": stuck },
     });
@@ -420,7 +431,7 @@ pub fn explore(request: &Value) -> Value {
                     .expect("a valid scene solves");
                 match &ratio_to_max {
                     Some(_) => {
-                        let share = abs(&at.after.omega) / &o.omega_max;
+                        let share = at.after.omega.abs() / &o.omega_max;
                         json!({ "a": exact(&QSqrt::rational(g)), "share": exact(&share) })
                     }
                     None => Value::Null,
@@ -434,7 +445,7 @@ pub fn explore(request: &Value) -> Value {
 
 /// |omega| against the impact point, in f64: 201 points on the rod (and 201 beyond its end when
 /// a free rod's a* lies beyond it), the range drawn, the marks at a* and the peak.
-fn curve(scene: &Scene, s: &PageScene, o: &Optimum, a_star: &QSqrt) -> Value {
+fn curve(scene: &Scene, s: &PageScene, o: &Optimum, a_star: &QSqrt, spin: &QSqrt) -> Value {
     let p = s.pivot.as_ref().map_or(0.0, Field::nearest_f64);
     let star = a_star.nearest_f64();
     let xs = if s.pivot.is_some() {
@@ -468,16 +479,10 @@ fn curve(scene: &Scene, s: &PageScene, o: &Optimum, a_star: &QSqrt) -> Value {
         "on_rod": points(xs[0], xs[1].min(1.0)),
         "beyond": if xs[1] > 1.0 { points(1.0, xs[1]) } else { Vec::new() },
         "a_star_marks": marks,
-        "here": [s.a.nearest_f64(), out_spin(scene, &s.a)],
+        "here": [s.a.nearest_f64(), spin.nearest_f64().abs()],
         "peak": peak,
         "omega_max": o.omega_max.nearest_f64(),
     })
-}
-
-/// |omega| at the exact impact point, as a float.
-fn out_spin(scene: &Scene, a: &QSqrt) -> f64 {
-    let out: Outcome<QSqrt> = solve(&params_at(scene, a.clone())).expect("a valid scene solves");
-    out.after.omega.nearest_f64().abs()
 }
 
 /// a* (from the centre, or from the pivot) against the mass ratio M/m from 1/100 to 100 on a

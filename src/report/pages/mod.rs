@@ -21,7 +21,7 @@ mod oblique;
 mod tilted;
 mod value;
 
-pub use explore_api::{explore, explore_motion, is_a_star};
+pub use explore_api::{PAGE_DIGITS, explore, explore_motion, is_a_star};
 pub use oblique::oblique;
 pub use tilted::{tilted, tilted_map};
 pub use value::exact;

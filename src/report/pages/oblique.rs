@@ -11,7 +11,6 @@ use crate::scene::{Oblique, Params};
 use crate::solve::oblique::{ObliqueOutcome, solve};
 use num_traits::{Signed, Zero};
 use serde_json::{Value, json};
-use std::cmp::Ordering;
 
 /// The points of the loss curve.
 const CURVE_POINTS: i64 = 100;
@@ -94,7 +93,7 @@ pub fn oblique(request: &Value) -> Value {
     };
     let without =
         solve(&params, &frictionless.params::<QSqrt>(), None).expect("a valid scene solves");
-    let mu_star = (!out.stick_impulse.is_zero()).then(|| abs(&out.stick_impulse) / &out.impulse);
+    let mu_star = (!out.stick_impulse.is_zero()).then(|| out.stick_impulse.abs() / &out.impulse);
     let mut values = json!({
         "v": exact(&out.after.v),
         "V": exact(&out.after.rod.v),
@@ -126,15 +125,6 @@ pub fn oblique(request: &Value) -> Value {
             Some(_) => loss_curve(&params, &oblique, mu_star.as_ref()),
         },
     })
-}
-
-/// |x|, exactly.
-fn abs(x: &QSqrt) -> QSqrt {
-    if x.sign() == Some(Ordering::Less) {
-        -x.clone()
-    } else {
-        x.clone()
-    }
 }
 
 /// The energy lost to friction, and in all, as shares of the energy before, at 101 values of mu

@@ -3,7 +3,8 @@
 //! general one-contact solver under Newton's, Poisson's and Stronge's laws, with Routh's path
 //! and the energy change decided exactly; and where each law creates energy over a grid.
 
-use super::{exact, field_error, kind_message};
+use super::explore_api::read_number;
+use super::{exact, field_error};
 use crate::field::{Field, Q, QSqrt, q};
 use crate::model::{System, from_value};
 use crate::report::impact::{law_heading, law_name};
@@ -27,14 +28,8 @@ impl Tilt {
     /// (any), `mu` (>= 0) and `e` (0 <= e <= 1); the error of the first wrong field.
     fn read(request: &Value) -> Result<Tilt, Value> {
         let field = |key: &str, check: &dyn Fn(&Q) -> Option<&'static str>| {
-            let text = request[key].as_str().unwrap_or_default();
-            let value = super::explore_api::page_limits(text)
-                .and_then(|()| crate::number::parse(text))
-                .map_err(|kind| field_error(key, format!("{key}: {}", kind_message(&kind))))?;
-            match check(&value) {
-                None => Ok(value),
-                Some(why) => Err(field_error(key, format!("{key}: {why}"))),
-            }
+            read_number(request, key, check)
+                .map_err(|why| field_error(key, format!("{key}: {why}")))
         };
         let (zero, one) = (Q::zero(), Q::from_i64(1));
         Ok(Tilt {
