@@ -263,14 +263,7 @@ fn a_star_and_oblique_presets_refuse_what_the_page_cannot_show() {
             "error: rod-omega: the page's oblique tab takes a rod at rest (--v0t, --mu, --radius and --spin)\n",
         ),
     ] {
-        let mut all = vec!["explore"];
-        all.extend_from_slice(args);
-        let (code, out, err) = rodimpact(&all);
-        assert_eq!(
-            (code, out.as_str(), err.as_str()),
-            (2, "", message),
-            "{args:?}"
-        );
+        crate::common::assert_refused(&[&["explore"][..], args].concat(), message);
     }
 }
 
@@ -372,14 +365,7 @@ fn the_tilted_rod_page_and_its_flags() {
             "error: slip: a setting of the tilted-rod page (--scene tilted-rod)\n",
         ),
     ] {
-        let mut all = vec!["explore"];
-        all.extend(args);
-        let (code, out, err) = rodimpact(&all);
-        assert_eq!(
-            (code, out.as_str(), err.as_str()),
-            (2, "", message),
-            "{all:?}"
-        );
+        crate::common::assert_refused(&[&["explore"][..], &args[..]].concat(), message);
     }
 }
 

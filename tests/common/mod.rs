@@ -116,6 +116,17 @@ pub fn scratch(tag: &str) -> std::path::PathBuf {
         .keep()
 }
 
+/// Asserts that `rodimpact ARGS` is refused as bad input: exit 2, nothing on standard output,
+/// and exactly `message` on standard error.
+pub fn assert_refused(args: &[&str], message: &str) {
+    let (code, out, err) = rodimpact(args);
+    assert_eq!(
+        (code, out.as_str(), err.as_str()),
+        (2, "", message),
+        "{args:?}"
+    );
+}
+
 /// Runs the `rodimpact` binary with `args`: (exit code, stdout, stderr).
 pub fn rodimpact(args: &[&str]) -> (i32, String, String) {
     let out = output(args);
