@@ -48,9 +48,15 @@ pub fn parse(text: &str) -> Result<Q, ErrorKind> {
     if text.is_empty() {
         return Err(ErrorKind::Empty);
     }
-    if let Some(word) = WordRatio::parse(text) {
-        return Ok(word.value());
+    match WordRatio::parse(text) {
+        Some(word) => Ok(word.value()),
+        None => parse_general(text),
     }
+}
+
+/// [`parse`] without its machine-word shortcut: every form, in big integers (`text` trimmed,
+/// not empty).
+fn parse_general(text: &str) -> Result<Q, ErrorKind> {
     let parts: Vec<&str> = text.split('/').collect();
     if parts.iter().any(|part| is_non_finite_word(part)) {
         return Err(ErrorKind::NotFinite(echo(text)));
@@ -113,13 +119,69 @@ impl WordRatio {
         };
         let (numer, denom) = match unsigned.split_once('/') {
             Some((n, d)) => (U256::parse_decimal(n)?, U256::parse_decimal(d)?),
-            None => (U256::parse_decimal(unsigned)?, U256::ONE),
+            None if unsigned.bytes().all(|b| b.is_ascii_digit()) => {
+                (U256::parse_decimal(unsigned)?, U256::ONE)
+            }
+            None => WordRatio::decimal(unsigned)?,
         };
         (denom != U256::ZERO).then_some(WordRatio {
             negative,
             numer,
             denom,
         })
+    }
+
+    /// `digits[.digits][(e|E)[+-]digits]` (at least one mantissa digit, at most 77 in all, an
+    /// exponent of at most 3 digits) as `mantissa/10^k` or `mantissa 10^k/1`, both below
+    /// 2^256: `0.05` is 5/100, unreduced (an engine's 17-digit cells are compared on words).
+    fn decimal(text: &str) -> Option<(U256, U256)> {
+        fn split(s: &str) -> (&str, &str) {
+            s.split_at(
+                s.bytes()
+                    .position(|b| !b.is_ascii_digit())
+                    .unwrap_or(s.len()),
+            )
+        }
+        let (whole, after) = split(text);
+        let (fraction, after) = match after.strip_prefix('.') {
+            Some(tail) => split(tail),
+            None => ("", after),
+        };
+        let exponent: i64 = match after.as_bytes() {
+            [] => 0,
+            [b'e' | b'E', tail @ ..] => {
+                let tail = std::str::from_utf8(tail).ok()?;
+                let digits = tail.strip_prefix(['+', '-']).unwrap_or(tail);
+                if digits.is_empty()
+                    || digits.len() > 3
+                    || !digits.bytes().all(|b| b.is_ascii_digit())
+                {
+                    return None;
+                }
+                let magnitude: i64 = digits.parse().ok()?;
+                if tail.starts_with('-') {
+                    -magnitude
+                } else {
+                    magnitude
+                }
+            }
+            _ => return None,
+        };
+        let count = whole.len() + fraction.len();
+        if count == 0 || count > 77 {
+            return None;
+        }
+        let mut digits = [0u8; 77];
+        digits[..whole.len()].copy_from_slice(whole.as_bytes());
+        digits[whole.len()..count].copy_from_slice(fraction.as_bytes());
+        let mantissa = U256::parse_decimal(std::str::from_utf8(&digits[..count]).ok()?)?;
+        let shift = exponent - fraction.len() as i64;
+        let power = U256::pow10(u32::try_from(shift.unsigned_abs()).ok()?)?;
+        if shift >= 0 {
+            Some((mantissa.checked_mul_wide(power)?, U256::ONE))
+        } else {
+            Some((mantissa, power))
+        }
     }
 
     /// Sign, numerator and denominator as written (not reduced; the denominator nonzero).
@@ -521,6 +583,39 @@ mod tests {
             prop_assert_eq!(parse(&text), Ok(want.clone()));
             let general = text.replacen('/', ".0/", 1) + if d.is_none() { ".0" } else { "" };
             prop_assert_eq!(parse(&general), Ok(want));
+        }
+
+        /// Law: a decimal read on machine words (`0.05` as 5/100) has the general parser's
+        /// value, and every form of the general grammar the words leave alone still parses.
+        #[test]
+        fn decimals_on_words_are_the_general_values(
+            sign in "[-+]?",
+            whole in "[0-9]{0,40}",
+            point in proptest::bool::ANY,
+            fraction in "[0-9]{0,40}",
+            exponent in proptest::option::of(("[eE]", "[-+]?", "[0-9]{1,4}")),
+        ) {
+            let mut text = format!("{sign}{whole}");
+            if point {
+                text.push('.');
+                text.push_str(&fraction);
+            }
+            if let Some((e, s, digits)) = &exponent {
+                text.push_str(&format!("{e}{s}{digits}"));
+            }
+            let general = parse_general(&text);
+            match WordRatio::parse(&text) {
+                Some(word) => {
+                    prop_assert_eq!(Ok(word.value()), general.clone());
+                    prop_assert_eq!(word.equals(general.as_ref().unwrap()), Some(true));
+                }
+                // Too long or too large for words, or not a number at all.
+                None => prop_assert!(
+                    general.is_err() || whole.len() + fraction.len() > 38
+                        || exponent.is_some(),
+                    "{text}: {general:?}"
+                ),
+            }
         }
 
         /// `parse` never panics, whatever the input.

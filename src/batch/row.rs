@@ -10,8 +10,9 @@ use super::plan::{
 };
 use super::word_row::word_row;
 use crate::error::Error;
-use crate::field::Q;
 use crate::field::big::{RBig, to_q, to_rbig};
+use crate::field::int::{Frac, within};
+use crate::field::{Field, Q};
 use crate::mechanics::{Motion, kinetic_energy};
 use crate::scene::Scene;
 use crate::solve::{self, Impact, Route, Why};
@@ -271,29 +272,36 @@ fn exact_values(
     after: &Motion<Q>,
     wanted: impl Fn(usize) -> bool,
 ) -> [Option<Q>; CLAIMS.len()] {
-    // The exact parameters (the rod's inertia among them) only when an energy is claimed:
-    // building them cost more than the whole solve. Over dashu's rationals, whose GCD is
-    // cheaper than num-bigint's on an engine's 17-digit decimals.
-    let params = (wanted(4) || wanted(5)).then(|| scene.params::<RBig>());
-    let energy = |motion: &Motion<Q>| {
-        let lifted = motion.as_ref().map(to_rbig);
-        params.as_ref().map(|p| to_q(&kinetic_energy(p, &lifted)))
-    };
     let m = scene.m();
     [
         Some(after.v.clone()),
         Some(after.rod_v.clone()),
         Some(after.omega.clone()),
         wanted(3).then(|| m * (scene.v0() - &after.v)),
-        wanted(4)
-            .then(|| energy(&Motion::before(scene.v0().clone())))
-            .flatten(),
-        wanted(5).then(|| energy(after)).flatten(),
+        wanted(4).then(|| exact_energy(scene, &Motion::before(scene.v0().clone()))),
+        wanted(5).then(|| exact_energy(scene, after)),
         None,
         None,
         None,
         None,
     ]
+}
+
+/// The kinetic energy of `motion` in `scene`, exactly: on unreduced fractions of 512-bit
+/// integers with one reduction at the end, else (beyond that width) over dashu's rationals,
+/// whose GCD is cheaper than num-bigint's on long numbers.
+fn exact_energy(scene: &Scene, motion: &Motion<Q>) -> Q {
+    within(|| {
+        kinetic_energy(
+            &scene.params::<Frac>(),
+            &motion.as_ref().map(Frac::from_rational),
+        )
+    })
+    .map(Frac::to_q)
+    .unwrap_or_else(|| {
+        let lifted = motion.as_ref().map(to_rbig);
+        to_q(&kinetic_energy(&scene.params::<RBig>(), &lifted))
+    })
 }
 
 /// Writes v, V, omega and the oblique columns (`vt, Vt, spin, tangential_impulse, contact`;

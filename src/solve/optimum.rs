@@ -313,15 +313,29 @@ pub fn omega_max_squared<F: Field>(scene: &Scene) -> Option<F> {
             &normal
         }
     };
-    let p = scene.params::<F>();
-    let squared = a_star_squared(&p);
-    let arm = F::from_rational(&struck_arm_of(scene));
-    let peak = Peak::of(&p, &squared, &arm);
-    Some(if peak.within_rod(&squared, &arm) {
+    Some(omega_max_squared_of(&scene.params::<F>()))
+}
+
+/// [`omega_max_squared`] of a scene at rest given by its parameters in `F` (a rod at rest
+/// before a normal impact): what a batch row's audit takes, in whatever exact field its
+/// numbers are.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{scene::Scene, solve::optimum::omega_max_squared_of, field::{q, Q}};
+/// let s = Scene::builder(q(1, 1), q(3, 1)).build()?;
+/// assert_eq!(omega_max_squared_of(&s.params::<Q>()), q(36, 49));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn omega_max_squared_of<F: Field>(p: &Params<F>) -> F {
+    let squared = a_star_squared(p);
+    let arm = struck_arm(p);
+    let peak = Peak::of(p, &squared, &arm);
+    if peak.within_rod(&squared, &arm) {
         peak.half.square() / squared
     } else {
         peak.at_end.square()
-    })
+    }
 }
 
 /// The rational parts of omega's peak over the struck side: half of (1 + e) v0, and omega at
@@ -346,11 +360,23 @@ impl<F: Field> Peak<F> {
     }
 }
 
-/// The arm struck: l for a free rod, the end on the struck side from the pivot for a pivoted one.
-fn struck_arm_of(scene: &Scene) -> Q {
-    match scene.support() {
-        Support::Free => scene.half_length().clone(),
-        Support::Pivot(p) => (struck_end(scene) - p).abs(),
+/// The arm struck: l for a free rod, the end on the struck side from the pivot for a pivoted one
+/// (`l - p` toward `+l`, `l + p` toward `-l`).
+fn struck_arm<F: Field>(params: &Params<F>) -> F {
+    let l = params.half_length.clone();
+    match &params.support {
+        Support::Free => l,
+        Support::Pivot(p) if struck_toward_plus(&params.a, p) => l - p,
+        Support::Pivot(p) => l + p,
+    }
+}
+
+/// Whether the end struck from the pivot `p` is `+l`: the side of `a`, or when the pivot itself
+/// is struck the longer arm's (`+l` for `p <= 0`).
+fn struck_toward_plus<F: Field>(a: &F, p: &F) -> bool {
+    match (a.clone() - p).sign() {
+        Some(Ordering::Equal) => p.sign() != Some(Ordering::Greater),
+        side => side == Some(Ordering::Greater),
     }
 }
 
@@ -369,11 +395,11 @@ pub fn struck_end(scene: &Scene) -> Q {
     let Support::Pivot(p) = scene.support() else {
         return l;
     };
-    let positive = match (scene.a() - p).signum() {
-        s if s.is_zero() => !p.is_positive(),
-        s => s.is_positive(),
-    };
-    if positive { l } else { -l }
+    if struck_toward_plus(scene.a(), p) {
+        l
+    } else {
+        -l
+    }
 }
 
 /// The optimum of a scene whose rod does not turn before the impact.
@@ -383,7 +409,7 @@ fn of_rod_at_rest(scene: &Scene) -> Optimum {
     let params = scene.params::<Q>();
     let squared: Q = a_star_squared(&params);
     let gyration_squared = scene.inertia() / big_m;
-    let arm = struck_arm_of(scene);
+    let arm = struck_arm(&params);
     let threshold_mass = match scene.support() {
         Support::Free => {
             let excess = l * l - &gyration_squared;
@@ -544,13 +570,14 @@ mod tests {
     fn struck_side_decides_the_arm() {
         // The arm from the pivot p to the struck end, a and l as given.
         let struck_arm = |a: &Q, p: &Q, l: &Q| {
-            struck_arm_of(
+            struck_arm::<Q>(
                 &scene(q(1, 1), q(1, 1))
                     .half_length(l.clone())
                     .a(a.clone())
                     .pivot(p.clone())
                     .build()
-                    .unwrap(),
+                    .unwrap()
+                    .params(),
             )
         };
         assert_eq!(struck_arm(&q(1, 2), &q(-1, 2), &q(1, 1)), q(3, 2));

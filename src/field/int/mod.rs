@@ -5,6 +5,8 @@
 //!   reduces, compares and prints fractions of up to 256-bit parts on machine words;
 //! - `quotient`: small quotients of 256-bit integers and the nearest f64 to a fraction of them;
 //! - `wide`: a checked 512-bit signed integer (`Wide`);
+//! - `frac`: unreduced fractions of `i128` or `Wide`, a field whose overflow is reported
+//!   (`Frac`);
 //! - `ring`: fixed-width integers that wrap (`Ring<N>`), for values proven in range in advance;
 //! - `dashu`: dashu's `IBig` as the unbounded width (the default);
 //! - `malachite` (cargo feature `malachite`): malachite's `Integer` instead;
@@ -13,6 +15,7 @@
 //! - [`reduce`] and `write_ratio`: a fraction reduced, or written, on machine words when it fits.
 
 use crate::field::Q;
+pub(crate) use frac::{Frac, FracInt, within};
 use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive, Zero};
 pub(crate) use ring::Ring;
@@ -42,6 +45,7 @@ macro_rules! unbounded_arithmetic {
 
 #[cfg(not(feature = "malachite"))]
 mod dashu;
+mod frac;
 #[cfg(feature = "malachite")]
 mod malachite;
 mod quotient;

@@ -1,0 +1,304 @@
+//! Fractions of fixed-width integers that are never reduced ([`Frac`], on `i128` or the
+//! 512-bit `Wide`): a [`Field`] for the exact work of a batch row whose numbers are short (an
+//! engine's 17-digit decimals, a scene's small fractions), where reducing after every
+//! operation (a GCD each) cost far more than the arithmetic.
+//!
+//! Values are compared by cross-multiplication, so every decision (`==`, `<`, the sign) is
+//! exact, the same as over [`Q`]. A sum over denominators of which one divides the other (the
+//! powers of ten of decimals) takes the larger one, not their product. The width is checked,
+//! not assumed: an operation whose result would leave it flags the computation, and
+//! [`within`] then answers `None`, so the caller redoes the work in a wider integer or over
+//! unbounded rationals. A flagged value is garbage, never a panic.
+
+use super::Int;
+use super::wide::Wide;
+use crate::field::{Field, Q};
+use num_traits::{One, Zero};
+use std::cell::Cell;
+use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+thread_local! {
+    /// Set by an operation that left the width, since the last [`within`] began.
+    static OVERFLOWED: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Runs `work` (exact work over [`Frac`]) and returns its result, or `None` when a value left
+/// its integers' width on the way (the result is then meaningless). Not reentrant: `work` must
+/// not call `within` itself.
+pub(crate) fn within<R>(work: impl FnOnce() -> R) -> Option<R> {
+    OVERFLOWED.with(|flag| flag.set(false));
+    let result = work();
+    (!OVERFLOWED.with(|flag| flag.replace(false))).then_some(result)
+}
+
+/// A checked result, or 1 with the overflow flagged (1 keeps every denominator nonzero).
+fn checked<T: FracInt>(x: Option<T>) -> T {
+    x.unwrap_or_else(|| {
+        OVERFLOWED.with(|flag| flag.set(true));
+        T::small(1)
+    })
+}
+
+/// What a [`Frac`] needs of its integers beyond [`Int`].
+pub(crate) trait FracInt: Int + Copy + fmt::Debug {
+    /// The sign.
+    fn sign(&self) -> Ordering;
+    /// The order of the values.
+    fn order(&self, o: &Self) -> Ordering;
+    /// `-self`, if it fits.
+    fn negated(&self) -> Option<Self>;
+    /// `self / d` when `d > 0` divides `self` exactly (and it is cheap to tell), else `None`.
+    fn exact_quotient(&self, d: &Self) -> Option<Self>;
+}
+
+impl FracInt for i128 {
+    fn sign(&self) -> Ordering {
+        self.cmp(&0)
+    }
+    fn order(&self, o: &Self) -> Ordering {
+        self.cmp(o)
+    }
+    fn negated(&self) -> Option<Self> {
+        self.checked_neg()
+    }
+    fn exact_quotient(&self, d: &Self) -> Option<Self> {
+        (self % d == 0).then(|| self / d)
+    }
+}
+
+impl FracInt for Wide {
+    fn sign(&self) -> Ordering {
+        Wide::sign(self)
+    }
+    fn order(&self, o: &Self) -> Ordering {
+        self.cmp_signed(o)
+    }
+    fn negated(&self) -> Option<Self> {
+        Some(Wide::negated(self))
+    }
+    fn exact_quotient(&self, _: &Self) -> Option<Self> {
+        None
+    }
+}
+
+/// `n/d` with `d > 0`, never reduced. See the module documentation.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Frac<T = Wide> {
+    n: T,
+    d: T,
+}
+
+impl<T: FracInt> Frac<T> {
+    /// The value reduced, as a [`Q`] (one GCD, on machine words up to 256 bits).
+    pub(crate) fn to_q(self) -> Q {
+        T::ratio(self.n, self.d)
+    }
+
+    fn new_checked(n: Option<T>, d: T) -> Frac<T> {
+        Frac { n: checked(n), d }
+    }
+
+    /// `self * o` on both sides: `(self.n o.d) cmp (o.n self.d)`.
+    fn cross(&self, o: &Frac<T>) -> Ordering {
+        if self.d == o.d {
+            return self.n.order(&o.n);
+        }
+        let left = checked(self.n.mul(&o.d));
+        let right = checked(o.n.mul(&self.d));
+        left.order(&right)
+    }
+
+    fn sum(&self, o: &Frac<T>) -> Frac<T> {
+        let (n, d) = if self.d == o.d {
+            (self.n.add(&o.n), self.d)
+        } else if let Some(k) = o.d.exact_quotient(&self.d) {
+            (checked(self.n.mul(&k)).add(&o.n), o.d)
+        } else if let Some(k) = self.d.exact_quotient(&o.d) {
+            (checked(o.n.mul(&k)).add(&self.n), self.d)
+        } else {
+            let n = checked(self.n.mul(&o.d)).add(&checked(o.n.mul(&self.d)));
+            (n, checked(self.d.mul(&o.d)))
+        };
+        Frac::new_checked(n, d)
+    }
+
+    fn product(&self, o: &Frac<T>) -> Frac<T> {
+        Frac {
+            n: checked(self.n.mul(&o.n)),
+            d: checked(self.d.mul(&o.d)),
+        }
+    }
+
+    fn quotient(&self, o: &Frac<T>) -> Frac<T> {
+        let (n, d) = match o.n.sign() {
+            // Division by zero: flagged, like an overflow (the caller falls back).
+            Ordering::Equal => return Frac::new_checked(None, T::small(1)),
+            Ordering::Less => (checked(self.n.negated()), checked(o.n.negated())),
+            Ordering::Greater => (self.n, o.n),
+        };
+        Frac {
+            n: checked(n.mul(&o.d)),
+            d: checked(self.d.mul(&d)),
+        }
+    }
+}
+
+impl<T: FracInt> PartialEq for Frac<T> {
+    fn eq(&self, o: &Frac<T>) -> bool {
+        self.cross(o) == Ordering::Equal
+    }
+}
+
+impl<T: FracInt> PartialOrd for Frac<T> {
+    fn partial_cmp(&self, o: &Frac<T>) -> Option<Ordering> {
+        Some(self.cross(o))
+    }
+}
+
+impl<T: FracInt> fmt::Display for Frac<T> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.to_q())
+    }
+}
+
+/// `impl $trait<Frac>` and `impl $trait<&Frac>` for `Frac` by the method `$by`.
+macro_rules! operator {
+    ($trait:ident, $method:ident, $by:ident) => {
+        impl<T: FracInt> $trait<Frac<T>> for Frac<T> {
+            type Output = Frac<T>;
+            fn $method(self, o: Frac<T>) -> Frac<T> {
+                self.$by(&o)
+            }
+        }
+        impl<'a, T: FracInt> $trait<&'a Frac<T>> for Frac<T> {
+            type Output = Frac<T>;
+            fn $method(self, o: &'a Frac<T>) -> Frac<T> {
+                self.$by(o)
+            }
+        }
+    };
+}
+
+operator!(Add, add, sum);
+operator!(Mul, mul, product);
+operator!(Div, div, quotient);
+
+impl<T: FracInt> Neg for Frac<T> {
+    type Output = Frac<T>;
+    fn neg(self) -> Frac<T> {
+        Frac::new_checked(self.n.negated(), self.d)
+    }
+}
+
+impl<T: FracInt> Sub<Frac<T>> for Frac<T> {
+    type Output = Frac<T>;
+    fn sub(self, o: Frac<T>) -> Frac<T> {
+        self.sum(&-o)
+    }
+}
+
+impl<'a, T: FracInt> Sub<&'a Frac<T>> for Frac<T> {
+    type Output = Frac<T>;
+    fn sub(self, o: &'a Frac<T>) -> Frac<T> {
+        self.sum(&-*o)
+    }
+}
+
+impl<T: FracInt> Zero for Frac<T> {
+    fn zero() -> Frac<T> {
+        Frac {
+            n: T::small(0),
+            d: T::small(1),
+        }
+    }
+    fn is_zero(&self) -> bool {
+        self.n.sign() == Ordering::Equal
+    }
+}
+
+impl<T: FracInt> One for Frac<T> {
+    fn one() -> Frac<T> {
+        Frac {
+            n: T::small(1),
+            d: T::small(1),
+        }
+    }
+}
+
+impl<T: FracInt> Field for Frac<T> {
+    const NAME: &'static str = "Q (unreduced, fixed width)";
+    const EXACT: bool = true;
+
+    fn from_rational(q: &Q) -> Frac<T> {
+        Frac {
+            n: checked(T::lift(q.numer())),
+            d: checked(T::lift(q.denom())),
+        }
+    }
+
+    fn sign(&self) -> Option<Ordering> {
+        Some(self.n.sign())
+    }
+
+    fn nearest_f64(&self) -> f64 {
+        self.to_q().nearest_f64()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::{laws, q};
+
+    #[test]
+    fn unreduced_fractions_are_a_field() {
+        let rationals = [
+            q(0, 1),
+            q(1, 1),
+            q(-1, 1),
+            q(1, 3),
+            q(-6, 4),
+            q(7, 5),
+            q(3, 10),
+        ];
+        let words: Vec<Frac<i128>> = rationals.iter().map(Frac::from_rational).collect();
+        assert!(within(|| laws::check_field(&words, |a, b| a == b)).is_some());
+        let wide: Vec<Frac<Wide>> = rationals.iter().map(Frac::from_rational).collect();
+        assert!(within(|| laws::check_field(&wide, |a, b| a == b)).is_some());
+    }
+
+    #[test]
+    fn values_compare_and_reduce_as_rationals() {
+        let got = within(|| {
+            let x = Frac::<i128>::from_rational(&q(2, 6)) + Frac::from_rational(&q(-1, 4));
+            (x.to_q(), x > Frac::zero(), x.sign())
+        });
+        assert_eq!(got, Some((q(1, 12), true, Some(Ordering::Greater))));
+    }
+
+    #[test]
+    fn leaving_the_width_is_reported_not_wrapped() {
+        let big = Frac::<Wide>::from_rational(&Q::from_integer(num_bigint::BigInt::from(1) << 300));
+        assert!(within(|| big * big).is_none());
+        let word =
+            Frac::<i128>::from_rational(&Q::from_integer(num_bigint::BigInt::from(1u128 << 70)));
+        assert!(within(|| word * word).is_none());
+        // A decimal's power of ten takes the larger denominator: 1/100 + 1/1000 = 11/1000.
+        let (a, b) = (
+            Frac::<i128>::from_rational(&q(1, 100)),
+            Frac::from_rational(&q(1, 1000)),
+        );
+        assert_eq!(
+            within(|| {
+                let s = a + b;
+                (s.n, s.d)
+            }),
+            Some((11, 1000))
+        );
+        assert!(within(|| big / Frac::zero()).is_none());
+        // The flag is cleared for the next computation.
+        assert_eq!(within(|| (big / big).to_q()), Some(q(1, 1)));
+    }
+}
