@@ -9,7 +9,7 @@
 //! `max(|dv|, |dV|, |d omega| l)` against |v0|.
 
 use crate::field::big::{RBig, to_q, to_rbig};
-use crate::field::int::{Frac, FracInt, Wide, within};
+use crate::field::int::{Frac, FracInt, I256, Wide, within};
 use crate::field::{Field, Q};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
 use crate::scene::{Params, Scene, Support};
@@ -117,9 +117,9 @@ pub struct Audit {
     pub energy_change: Q,
 }
 
-/// `n/d` in the audit's arithmetic.
+/// `n/d` (in lowest terms, `d > 0`: the tolerances) in the audit's arithmetic.
 fn fraction<F: Field>((n, d): (i64, i64)) -> F {
-    F::from_rational(&Q::new(n.into(), d.into()))
+    F::from_rational(&Q::new_raw(n.into(), d.into()))
 }
 
 /// `|x|`.
@@ -133,7 +133,8 @@ fn abs<F: Field>(x: F) -> F {
 
 /// Audits `claimed` (the state after the impact) against the scene and its exact answer.
 ///
-/// The balances and distances are computed on unreduced fractions of 512-bit integers, where an engine's 17-digit cells fit, else over dashu's rationals ([`RBig`], whose GCD keeps a
+/// The balances and distances are computed on unreduced fractions of 256-bit, then 512-bit
+/// integers, where an engine's 17-digit cells fit, else over dashu's rationals ([`RBig`], whose GCD keeps a
 /// 10,000-digit cell to a fraction of a second); the result is the same.
 ///
 /// # Examples
@@ -151,7 +152,8 @@ fn abs<F: Field>(x: F) -> F {
 pub fn audit(scene: &Scene, exact: &Motion<Q>, claimed: &Motion<Q>) -> Audit {
     // Not i128 first: an engine's 17-digit spin squared against the bound times (1 + 1/1000)^2
     // passes 127 bits, and the failed attempt cost more than it saved.
-    let words = audit_on_words::<Wide>(scene, exact, claimed);
+    let words = audit_on_words::<I256>(scene, exact, claimed)
+        .or_else(|| audit_on_words::<Wide>(scene, exact, claimed));
     let (findings, energy_change) = match words {
         Some(done) => done,
         None => {
@@ -328,7 +330,7 @@ mod tests {
     }
 
     proptest! {
-        /// Law: the audit on unreduced 512-bit fractions finds what the audit over dashu's
+        /// Law: the audit on unreduced 256-bit and 512-bit fractions finds what the audit over dashu's
         /// rationals finds, with the same energy change, whenever it fits (a scene whose
         /// fractions have many distinct denominators may not: `audit` then takes dashu's).
         #[test]
@@ -337,7 +339,10 @@ mod tests {
             let (findings, change) =
                 audit_in(&scene.params::<RBig>(), &lift(&exact), &lift(&claimed));
             let unbounded = (findings, to_q(&change));
-            if let Some(words) = audit_on_words::<Wide>(&scene, &exact, &claimed) {
+            for words in [
+                audit_on_words::<I256>(&scene, &exact, &claimed),
+                audit_on_words::<Wide>(&scene, &exact, &claimed),
+            ].into_iter().flatten() {
                 prop_assert_eq!(&words, &unbounded);
             }
             prop_assert_eq!(audit(&scene, &exact, &claimed), Audit {
@@ -352,7 +357,7 @@ mod tests {
     }
 
     /// An engine's row (Rapier f64, the paper's rod struck at l/2, v0 = 3: exact 9/11, 24/11,
-    /// 36/11) fits the fixed width, and its audit there is the unbounded one: nothing found,
+    /// 36/11) fits 256 bits, and its audit there is the unbounded one: nothing found,
     /// the spin's last digit an energy change of -9.09e-17.
     #[test]
     fn an_engine_row_is_audited_in_the_fixed_width() {
@@ -368,7 +373,7 @@ mod tests {
             parse("2.1818181818181817"),
             parse("3.2727272727272725"),
         );
-        let words = audit_on_words::<Wide>(&s, &exact, &claimed).expect("fits 512 bits");
+        let words = audit_on_words::<I256>(&s, &exact, &claimed).expect("fits 256 bits");
         assert_eq!(words.0, []);
         assert_eq!(crate::field::decimal::decimal(&words.1, 3), "-9.09e-17");
         assert_eq!(audit(&s, &exact, &claimed).energy_change, words.1);

@@ -11,7 +11,7 @@ use super::plan::{
 use super::word_row::word_row;
 use crate::error::Error;
 use crate::field::big::{RBig, to_q, to_rbig};
-use crate::field::int::{Frac, within};
+use crate::field::int::{Frac, FracInt, I256, Wide, within};
 use crate::field::{Field, Q};
 use crate::mechanics::{Motion, kinetic_energy};
 use crate::scene::Scene;
@@ -287,21 +287,27 @@ fn exact_values(
     ]
 }
 
-/// The kinetic energy of `motion` in `scene`, exactly: on unreduced fractions of 512-bit
-/// integers with one reduction at the end, else (beyond that width) over dashu's rationals,
-/// whose GCD is cheaper than num-bigint's on long numbers.
+/// The kinetic energy of `motion` in `scene`, exactly: on unreduced fractions of `i128`, 256-
+/// or 512-bit integers (the first that holds it) with one reduction at the end, else over
+/// dashu's rationals, whose GCD is cheaper than num-bigint's on long numbers.
 fn exact_energy(scene: &Scene, motion: &Motion<Q>) -> Q {
+    energy_on_words::<i128>(scene, motion)
+        .or_else(|| energy_on_words::<I256>(scene, motion))
+        .or_else(|| energy_on_words::<Wide>(scene, motion))
+        .unwrap_or_else(|| {
+            let lifted = motion.as_ref().map(to_rbig);
+            to_q(&kinetic_energy(&scene.params::<RBig>(), &lifted))
+        })
+}
+
+/// [`exact_energy`] on unreduced fractions of `T`; `None` when a value leaves its width.
+fn energy_on_words<T: FracInt>(scene: &Scene, motion: &Motion<Q>) -> Option<Q> {
+    // Lifted inside `within`: a number too wide for `T` is reported there too.
     within(|| {
-        kinetic_energy(
-            &scene.params::<Frac>(),
-            &motion.as_ref().map(Frac::from_rational),
-        )
+        let lifted = motion.as_ref().map(Frac::<T>::from_rational);
+        kinetic_energy(&scene.params::<Frac<T>>(), &lifted)
     })
     .map(Frac::to_q)
-    .unwrap_or_else(|| {
-        let lifted = motion.as_ref().map(to_rbig);
-        to_q(&kinetic_energy(&scene.params::<RBig>(), &lifted))
-    })
 }
 
 /// Writes v, V, omega and the oblique columns (`vt, Vt, spin, tangential_impulse, contact`;
@@ -410,6 +416,21 @@ mod tests {
             wrong.line,
             "1,1,0.6,0.4000001,1.2,3/5,2/5,6/5,true,true,0,false,0.000000250,true,0,+8.00e-8,off\n"
         );
+    }
+
+    /// The energies are exact in every width: a scene of small fractions (i128), one whose
+    /// numbers pass 2^127 (I256, Wide) and one beyond 512 bits (dashu's rationals), each
+    /// against the energy over Q.
+    #[test]
+    fn energies_are_exact_in_every_width() {
+        let wide = |bits: u32| Q::new(num_bigint::BigInt::from(3) << bits, 7.into());
+        use crate::field::q;
+        for m in [q(2, 3), wide(100), wide(200), wide(600)] {
+            let s = Scene::builder(m, q(5, 2)).a(q(1, 3)).build().unwrap();
+            let after = crate::solve::fraction_free::solve(&s).after;
+            let want = kinetic_energy(&s.params::<Q>(), &after);
+            assert_eq!(exact_energy(&s, &after), want);
+        }
     }
 
     #[test]

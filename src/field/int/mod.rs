@@ -5,8 +5,9 @@
 //!   reduces, compares and prints fractions of up to 256-bit parts on machine words;
 //! - `quotient`: small quotients of 256-bit integers and the nearest f64 to a fraction of them;
 //! - `wide`: a checked 512-bit signed integer (`Wide`);
-//! - `frac`: unreduced fractions of `i128` or `Wide`, a field whose overflow is reported
-//!   (`Frac`);
+//! - `signed`: a checked 256-bit signed integer (`I256`);
+//! - `frac`: unreduced fractions of `i128`, `I256` or `Wide`, a field whose overflow is
+//!   reported (`Frac`);
 //! - `ring`: fixed-width integers that wrap (`Ring<N>`), for values proven in range in advance;
 //! - `dashu`: dashu's `IBig` as the unbounded width (the default);
 //! - `malachite` (cargo feature `malachite`): malachite's `Integer` instead;
@@ -19,6 +20,7 @@ pub(crate) use frac::{Frac, FracInt, within};
 use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive, Zero};
 pub(crate) use ring::Ring;
+pub(crate) use signed::I256;
 pub(crate) use wide::Wide;
 pub(crate) use words::{U256, gcd, gcd_u64};
 
@@ -50,6 +52,7 @@ mod frac;
 mod malachite;
 mod quotient;
 mod ring;
+mod signed;
 mod wide;
 mod words;
 
