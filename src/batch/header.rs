@@ -5,7 +5,8 @@ use super::classes::ClassRule;
 use super::compare::{Agreement, Claimed};
 use super::expected::Expected;
 use super::plan::{
-    Arithmetic, CLAIMS, OBLIQUE_CLAIMS, OBLIQUE_OUTPUTS, Role, STATE, WORD_SCENE, WordPlan,
+    Arithmetic, CLAIMS, OBLIQUE_CLAIMS, OBLIQUE_OUTPUTS, Role, STATE, WORD_CLAIMS, WORD_SCENE,
+    WordPlan,
 };
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
@@ -553,25 +554,31 @@ impl Batch {
     }
 }
 
-/// The word row's plan for a header whose scene columns are among m, M, l, a, v0, e and whose
-/// claims among v, V, omega (any other column passes through); `None` otherwise.
+/// The word rows' plan for a header whose scene columns are among m, M, l, a, v0, e, pivot
+/// and rod and whose claims among v, V, omega, J and the energies (any other column passes
+/// through); `None` otherwise.
 fn word_plan(columns: &[Column]) -> Option<WordPlan> {
     let roles = columns
         .iter()
         .map(|column| match *column {
+            Column::Scene(k) if k.name == "rod" => Some(Role::Rod),
             Column::Scene(k) => WORD_SCENE
                 .iter()
                 .position(|&w| w == k.name)
                 .map(Role::Scene),
-            Column::Claim(k) => (k < STATE).then_some(Role::Claim(k)),
+            Column::Claim(k) => (k < WORD_CLAIMS).then_some(Role::Claim(k)),
             Column::Passed => Some(Role::Passed),
         })
         .collect::<Option<Vec<Role>>>()?;
-    let claimed: [bool; STATE] = std::array::from_fn(|k| roles.contains(&Role::Claim(k)));
+    let claimed: [bool; WORD_CLAIMS] = std::array::from_fn(|k| roles.contains(&Role::Claim(k)));
+    let paper = !roles.iter().any(|role| {
+        matches!(role, Role::Rod | Role::Scene(6)) || matches!(role, Role::Claim(k) if *k >= STATE)
+    });
     Some(WordPlan {
         roles,
         claimed,
-        audits: claimed.iter().all(|c| *c),
+        audits: claimed[..STATE].iter().all(|c| *c),
+        paper,
     })
 }
 

@@ -27,6 +27,7 @@
 mod audit;
 mod classes;
 mod compare;
+mod engine_row;
 mod expected;
 mod float_row;
 mod header;

@@ -67,30 +67,38 @@ pub(super) const OBLIQUE_CLAIMS: usize = 6;
 /// The claims that make up the state after the impact (audited when all three are claimed).
 pub(super) const STATE: usize = 3;
 
-/// The scene columns the word row reads, in this order (the inputs of
-/// [`crate::solve::words`]).
-pub(super) const WORD_SCENE: [&str; 6] = ["m", "M", "l", "a", "v0", "e"];
+/// The scene columns the word rows read, in this order (the inputs of
+/// [`crate::solve::words`], then the pivot; the `rod` column has a role of its own).
+pub(super) const WORD_SCENE: [&str; 7] = ["m", "M", "l", "a", "v0", "e", "pivot"];
+/// The claims the word rows check: v, V, omega, J and the energies ([`CLAIMS`] up to
+/// [`OBLIQUE_CLAIMS`]).
+pub(super) const WORD_CLAIMS: usize = OBLIQUE_CLAIMS;
 
-/// What one cell of a row holds, for the word row.
+/// What one cell of a row holds, for the word rows.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Role {
     /// A scene input: an index into [`WORD_SCENE`].
     Scene(usize),
-    /// A claimed v (0), V (1) or omega (2).
+    /// The rod's mass distribution (`uniform`, `dumbbell`, `rg=Q`, `I=Q`).
+    Rod,
+    /// A claim: an index into [`CLAIMS`], below [`WORD_CLAIMS`].
     Claim(usize),
     /// Anything else, passed through.
     Passed,
 }
 
-/// Where a batch's rows keep the inputs and claims the word row reads.
+/// Where a batch's rows keep the inputs and claims the word rows read.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct WordPlan {
     /// The role of each cell, in order.
     pub(super) roles: Vec<Role>,
-    /// Which of v, V, omega are claimed (their checks come in this order).
-    pub(super) claimed: [bool; STATE],
+    /// Which claims are claimed (their checks come in this order).
+    pub(super) claimed: [bool; WORD_CLAIMS],
     /// The claimed state is audited (v, V and omega all claimed).
     pub(super) audits: bool,
+    /// The paper's word row may take the rows: no rod or pivot column, claims among v, V,
+    /// omega only.
+    pub(super) paper: bool,
 }
 
 /// One output row: the CSV line (with its newline) and what the summary needs.

@@ -3,6 +3,7 @@
 
 use super::audit::{Finding, audit};
 use super::compare::{Agreement, Claimed, compare};
+use super::engine_row::engine_row;
 use super::float_row::float_word_row;
 use super::header::Batch;
 use super::plan::{
@@ -43,7 +44,8 @@ impl Batch {
             .word_plan
             .as_ref()
             .and_then(|plan| match self.arithmetic {
-                Arithmetic::Exact => word_row(plan, &self.agreement, number, line),
+                Arithmetic::Exact => word_row(plan, &self.agreement, number, line)
+                    .or_else(|| engine_row(plan, &self.agreement, number, line)),
                 Arithmetic::F64 => float_word_row(plan, &self.agreement, number, line),
             })
         {

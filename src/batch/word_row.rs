@@ -16,14 +16,13 @@ use crate::field::int::U256;
 use crate::solve::words::{Inputs, Part, solve_reduced};
 use num_traits::Zero;
 
-/// The inputs of `line` on words, checked, and its claim cells (v, V, omega; empty where not
-/// claimed); `None` when the general row must read it.
-pub(super) fn read_cells<'a>(
+/// Walks the cells of `line` with their roles, giving each to `take`; `None` when the line
+/// has too few or too many cells or `take` refuses one.
+pub(super) fn each_cell<'a>(
     plan: &WordPlan,
     line: &'a str,
-) -> Option<(Inputs, [&'a [u8]; STATE])> {
-    let mut parts = [None; 6];
-    let mut claims: [&[u8]; STATE] = [&[]; STATE];
+    mut take: impl FnMut(Role, &'a [u8]) -> Option<()>,
+) -> Option<()> {
     let bytes = line.as_bytes();
     let (last, mut start) = (plan.roles.len() - 1, 0);
     for (k, role) in plan.roles.iter().enumerate() {
@@ -34,14 +33,32 @@ pub(super) fn read_cells<'a>(
             None if k == last => bytes.len(),
             _ => return None, // too few or too many cells
         };
-        let cell = &bytes[start..end];
-        match *role {
-            Role::Scene(slot) => parts[slot] = Some(Part::parse(cell)?),
-            Role::Claim(claim) => claims[claim] = cell,
-            Role::Passed => {}
-        }
+        take(*role, &bytes[start..end])?;
         start = end + 1;
     }
+    Some(())
+}
+
+/// The inputs of `line` on words, checked, and its claim cells (v, V, omega; empty where not
+/// claimed); `None` when the general row must read it (or the plan is not the paper's).
+pub(super) fn read_cells<'a>(
+    plan: &WordPlan,
+    line: &'a str,
+) -> Option<(Inputs, [&'a [u8]; STATE])> {
+    if !plan.paper {
+        return None;
+    }
+    let mut parts = [None; 6];
+    let mut claims: [&[u8]; STATE] = [&[]; STATE];
+    each_cell(plan, line, |role, cell| {
+        match role {
+            Role::Scene(slot) => *parts.get_mut(slot)? = Some(Part::parse(cell)?),
+            Role::Claim(claim) => *claims.get_mut(claim)? = cell,
+            Role::Rod => return None,
+            Role::Passed => {}
+        }
+        Some(())
+    })?;
     Some((Inputs::check(parts)?, claims))
 }
 

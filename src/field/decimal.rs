@@ -199,6 +199,18 @@ pub fn decimal(value: &Q, digits: usize) -> String {
     decimal_rounded(value, digits, Rounding::HalfEven)
 }
 
+/// [`decimal`] of `-n/d` (when `negative`) or `n/d`, `d > 0`, given on machine words and not
+/// necessarily reduced: the same text as the reduced [`Q`]'s, without its GCD.
+pub(crate) fn decimal_words(negative: bool, n: U256, d: U256, digits: usize) -> String {
+    if n == U256::ZERO {
+        return "0".to_string();
+    }
+    match Significant::on_words(negative, n, d, digits.max(1), Rounding::HalfEven) {
+        Some(rounded) => rounded.text(),
+        None => decimal(&U256::ratio(negative, n, d), digits),
+    }
+}
+
 /// [`decimal`], but a value that `digits` significant digits hold exactly is printed without
 /// its trailing zeros: what a table shows beside an exact fraction (`1/25` is `0.04`, not
 /// `0.0400000000000`; `1/3` keeps its digits).
@@ -269,7 +281,10 @@ impl Significant {
                 exact: true,
             };
         }
-        Significant::on_words(value, digits, rounding)
+        let words = U256::from_big(value.numer().magnitude())
+            .zip(U256::from_big(value.denom().magnitude()));
+        words
+            .and_then(|(n, d)| Significant::on_words(value.is_negative(), n, d, digits, rounding))
             .unwrap_or_else(|| Significant::on_big(value, digits, rounding))
     }
 
@@ -300,15 +315,19 @@ impl Significant {
         }
     }
 
-    /// [`Significant::of`] on machine words, for a nonzero value whose parts fit 256 bits
-    /// and at most 18 digits; `None` when a product on the way would pass 2^256 (the big
-    /// integers then round it, to the same result).
-    fn on_words(value: &Q, digits: usize, rounding: Rounding) -> Option<Significant> {
+    /// [`Significant::of`] on machine words, for a nonzero value `-n/d` (when `negative`) or
+    /// `n/d`, not necessarily reduced, and at most 18 digits; `None` when a product on the way
+    /// would pass 2^256 (the big integers then round it, to the same result).
+    fn on_words(
+        negative: bool,
+        n: U256,
+        d: U256,
+        digits: usize,
+        rounding: Rounding,
+    ) -> Option<Significant> {
         if digits > 18 {
             return None;
         }
-        let n = U256::from_big(value.numer().magnitude())?;
-        let d = U256::from_big(value.denom().magnitude())?;
         let ten = |k: i64| U256::pow10(u32::try_from(k.unsigned_abs()).ok()?);
         // n/d against 10^e, and n/d scaled by 10^k, as a fraction of words.
         let scaled = |k: i64| -> Option<(U256, U256)> {
@@ -326,7 +345,6 @@ impl Significant {
         let (num, den) = scaled(digits as i64 - 1 - exp)?;
         // Below 10^digits <= 10^18 < 2^63.
         let (quot, rem) = num.div_small(den);
-        let negative = value.is_negative();
         let exact = rem == U256::ZERO;
         // 2 rem against den, as rem against den - rem (2 rem may pass 2^256).
         let half = || rem.cmp(&den.minus(rem));
@@ -574,13 +592,28 @@ mod tests {
                 Rounding::Ceiling,
             ][direction];
             let big = Significant::on_big(&x, digits, rounding);
-            if let Some(words) = Significant::on_words(&x, digits, rounding) {
+            if let Some(words) = on_words(&x, digits, rounding) {
                 prop_assert_eq!(
                     (words.text(), words.exact, words.m, words.exp),
-                    (big.text(), big.exact, big.m, big.exp)
+                    (big.text(), big.exact, big.m.clone(), big.exp)
                 );
             }
+            // Unreduced (both parts times 7): the same digits, from the value alone.
+            let (n7, d7) = (U256::from_big(x.numer().magnitude()).and_then(|n| n.checked_mul(7)),
+                U256::from_big(x.denom().magnitude()).and_then(|d| d.checked_mul(7)));
+            if let (Some(n7), Some(d7)) = (n7, d7)
+                && let Some(words) = Significant::on_words(x.is_negative(), n7, d7, digits, rounding)
+            {
+                prop_assert_eq!(words.text(), big.text());
+            }
         }
+    }
+
+    /// [`Significant::on_words`] of a rational's own parts.
+    fn on_words(x: &Q, digits: usize, rounding: Rounding) -> Option<Significant> {
+        let n = U256::from_big(x.numer().magnitude())?;
+        let d = U256::from_big(x.denom().magnitude())?;
+        Significant::on_words(x.is_negative(), n, d, digits, rounding)
     }
 
     #[test]
@@ -595,7 +628,7 @@ mod tests {
             (q(-1, 3), 2, Rounding::Floor, "-0.34"),
             (q(1, 8), 3, Rounding::Ceiling, "0.125"),
         ] {
-            let words = Significant::on_words(&x, digits, rounding).unwrap();
+            let words = on_words(&x, digits, rounding).unwrap();
             assert_eq!(words.text(), want, "{x} {digits} {rounding:?}");
             assert_eq!(
                 words.text(),

@@ -168,38 +168,45 @@ fn inertia_per_mass<T: Int>(scene: &Scene) -> Option<(T, T)> {
     }
 }
 
-/// The scene's numbers split once into numerators and denominators (I = M g).
-struct Parts<T> {
-    mn: T,
-    md: T,
-    big_n: T,
-    big_d: T,
-    an: T,
-    ad: T,
-    en: T,
-    ed: T,
-    gn: T,
-    gd: T,
+/// The scene's numbers split once into numerators and denominators (I = M g): what the
+/// fraction-free formulas take, from a [`Scene`] or straight from a batch row's cells.
+pub(crate) struct Parts<T> {
+    pub(crate) mn: T,
+    pub(crate) md: T,
+    pub(crate) big_n: T,
+    pub(crate) big_d: T,
+    pub(crate) an: T,
+    pub(crate) ad: T,
+    pub(crate) en: T,
+    pub(crate) ed: T,
+    pub(crate) gn: T,
+    pub(crate) gd: T,
+    /// The pivot `p = pn/pd`, if any.
+    pub(crate) pivot: Option<(T, T)>,
 }
 
 /// The solution over one common denominator, before v0: `v = v0 nv/den`, and so on.
-struct Raw<T> {
-    nv: T,
-    n_big_v: T,
-    nw: T,
-    den: T,
-    /// The momentum laws that apply held (energy is checked on the raw values afterwards).
-    momentum: bool,
+pub(crate) struct Raw<T> {
+    pub(crate) nv: T,
+    pub(crate) n_big_v: T,
+    pub(crate) nw: T,
+    pub(crate) den: T,
+    /// Every law that applies held: the momentum laws, and energy when e = 1.
+    pub(crate) laws_hold: bool,
 }
 
-/// The fraction-free solve in `T`; `None` on overflow.
-fn in_width<T: Int>(scene: &Scene) -> Option<FractionFree> {
+/// The scene's parts in `T`; `None` when one does not fit.
+fn parts_of<T: Int>(scene: &Scene) -> Option<Parts<T>> {
     let (mn, md) = split::<T>(scene.m())?;
     let (big_n, big_d) = split::<T>(scene.rod_mass())?;
     let (an, ad) = split::<T>(scene.a())?;
     let (en, ed) = split::<T>(scene.e())?;
     let (gn, gd) = inertia_per_mass::<T>(scene)?;
-    let parts = Parts {
+    let pivot = match scene.support() {
+        Support::Free => None,
+        Support::Pivot(p) => Some(split::<T>(p)?),
+    };
+    Some(Parts {
         mn,
         md,
         big_n,
@@ -210,13 +217,36 @@ fn in_width<T: Int>(scene: &Scene) -> Option<FractionFree> {
         ed,
         gn,
         gd,
+        pivot,
+    })
+}
+
+/// The fraction-free solve in `T`; `None` on overflow.
+fn in_width<T: Int>(scene: &Scene) -> Option<FractionFree> {
+    let raw = raw_of(&parts_of::<T>(scene)?, scene.e().is_one())?;
+    let (vn, vd) = split::<T>(scene.v0())?;
+    let den = vd.mul(&raw.den)?;
+    let after = Motion {
+        v: T::ratio(vn.mul(&raw.nv)?, den.clone()),
+        rod_v: T::ratio(vn.mul(&raw.n_big_v)?, den.clone()),
+        omega: T::ratio(vn.mul(&raw.nw)?, den),
     };
-    let raw = match scene.support() {
-        Support::Free => free_rod(&parts)?,
-        Support::Pivot(p) => pivoted(&parts, p)?,
+    Some(FractionFree {
+        after,
+        laws_hold: raw.laws_hold,
+        width: Width::Big,
+    })
+}
+
+/// The raw solution of a free or pivoted rod and its laws checked as integer identities
+/// (energy when `elastic`, e = 1); `None` on overflow.
+pub(crate) fn raw_of<T: Int>(parts: &Parts<T>, elastic: bool) -> Option<Raw<T>> {
+    let (raw, momentum) = match &parts.pivot {
+        None => free_rod(parts)?,
+        Some(p) => pivoted(parts, p)?,
     };
     // Energy, m v^2 + M V^2 + M g omega^2 = m v0^2, times md Md gd: the same for both supports.
-    let energy = if scene.e().is_one() {
+    let energy = if elastic {
         let Parts {
             mn,
             md,
@@ -225,7 +255,7 @@ fn in_width<T: Int>(scene: &Scene) -> Option<FractionFree> {
             gn,
             gd,
             ..
-        } = &parts;
+        } = parts;
         let weight = mn.mul(big_d)?.mul(gd)?;
         T::squares_balance(
             [
@@ -238,22 +268,14 @@ fn in_width<T: Int>(scene: &Scene) -> Option<FractionFree> {
     } else {
         true
     };
-    let (vn, vd) = split::<T>(scene.v0())?;
-    let den = vd.mul(&raw.den)?;
-    let after = Motion {
-        v: T::ratio(vn.mul(&raw.nv)?, den.clone()),
-        rod_v: T::ratio(vn.mul(&raw.n_big_v)?, den.clone()),
-        omega: T::ratio(vn.mul(&raw.nw)?, den),
-    };
-    Some(FractionFree {
-        after,
-        laws_hold: raw.momentum && energy,
-        width: Width::Big,
+    Some(Raw {
+        laws_hold: momentum && energy,
+        ..raw
     })
 }
 
 /// Free rod: see the module documentation for the formulas and the identities.
-fn free_rod<T: Int>(s: &Parts<T>) -> Option<Raw<T>> {
+fn free_rod<T: Int>(s: &Parts<T>) -> Option<(Raw<T>, bool)> {
     let ad2 = s.ad.mul(&s.ad)?;
     let mn_big_d = s.mn.mul(&s.big_d)?;
     let big_n_md = s.big_n.mul(&s.md)?;
@@ -273,13 +295,14 @@ fn free_rod<T: Int>(s: &Parts<T>) -> Option<Raw<T>> {
         .mul(&nv)?
         .add(&big_n_md.mul(&s.gn)?.mul(&s.ad)?.mul(&nw)?)?
         == mn_an_gd.mul(&den)?;
-    Some(Raw {
+    let raw = Raw {
         nv,
         n_big_v,
         nw,
         den,
-        momentum: linear && angular,
-    })
+        laws_hold: true,
+    };
+    Some((raw, linear && angular))
 }
 
 /// Pivot at p, d = a - p = dn/dq: with s = mn Md gd pd^2 and
@@ -287,14 +310,13 @@ fn free_rod<T: Int>(s: &Parts<T>) -> Option<Raw<T>> {
 /// `den = ed K`, `nw = ne s dn dq`, `nv = ne s dn^2 - en K`, `nV = -ne mn Md gd pd pn dn dq`.
 /// Checked: angular momentum about the pivot, m d v + I omega - p M V = m d v0, times
 /// md dq Md gd pd.
-fn pivoted<T: Int>(s: &Parts<T>, p: &Q) -> Option<Raw<T>> {
-    let (pn, pd) = split::<T>(p)?;
-    let dn = s.an.mul(&pd)?.sub(&pn.mul(&s.ad)?)?;
-    let dq = s.ad.mul(&pd)?;
+fn pivoted<T: Int>(s: &Parts<T>, (pn, pd): &(T, T)) -> Option<(Raw<T>, bool)> {
+    let dn = s.an.mul(pd)?.sub(&pn.mul(&s.ad)?)?;
+    let dq = s.ad.mul(pd)?;
     let mn_big_d_gd = s.mn.mul(&s.big_d)?.mul(&s.gd)?;
     let big_n_md = s.big_n.mul(&s.md)?;
-    let scale = mn_big_d_gd.mul(&pd)?.mul(&pd)?;
-    let inertia = s.gn.mul(&pd)?.mul(&pd)?.add(&pn.mul(&pn)?.mul(&s.gd)?)?;
+    let scale = mn_big_d_gd.mul(pd)?.mul(pd)?;
+    let inertia = s.gn.mul(pd)?.mul(pd)?.add(&pn.mul(pn)?.mul(&s.gd)?)?;
     let k = big_n_md
         .mul(&dq)?
         .mul(&dq)?
@@ -305,22 +327,23 @@ fn pivoted<T: Int>(s: &Parts<T>, p: &Q) -> Option<Raw<T>> {
     let ne_dn_dq = ne.mul(&dn)?.mul(&dq)?;
     let nw = scale.mul(&ne_dn_dq)?;
     let nv = ne.mul(&scale)?.mul(&dn)?.mul(&dn)?.sub(&s.en.mul(&k)?)?;
-    let n_big_v = T::small(0).sub(&mn_big_d_gd.mul(&pd)?.mul(&pn)?.mul(&ne_dn_dq)?)?;
+    let n_big_v = T::small(0).sub(&mn_big_d_gd.mul(pd)?.mul(pn)?.mul(&ne_dn_dq)?)?;
 
-    let m_d = s.mn.mul(&dn)?.mul(&s.big_d)?.mul(&s.gd)?.mul(&pd)?;
+    let m_d = s.mn.mul(&dn)?.mul(&s.big_d)?.mul(&s.gd)?.mul(pd)?;
     let big_n_md_dq = big_n_md.mul(&dq)?;
     let angular = m_d
         .mul(&nv)?
-        .add(&big_n_md_dq.mul(&s.gn)?.mul(&pd)?.mul(&nw)?)?
+        .add(&big_n_md_dq.mul(&s.gn)?.mul(pd)?.mul(&nw)?)?
         .sub(&pn.mul(&big_n_md_dq)?.mul(&s.gd)?.mul(&n_big_v)?)?
         == m_d.mul(&den)?;
-    Some(Raw {
+    let raw = Raw {
         nv,
         n_big_v,
         nw,
         den,
-        momentum: angular,
-    })
+        laws_hold: true,
+    };
+    Some((raw, angular))
 }
 
 #[cfg(test)]

@@ -184,6 +184,31 @@ impl Int for i128 {
     }
 }
 
+/// The fixed widths a batch row's word route computes in (`i128`, `I256`, `Wide`): numbers
+/// enter from machine words and leave as 256-bit magnitudes, with no big integer between.
+pub(crate) trait FixedInt: FracInt {
+    /// `-x` (when `negative`) or `x`, if it fits.
+    fn of_words(negative: bool, x: U256) -> Option<Self>;
+    /// Sign and magnitude, if the magnitude fits 256 bits.
+    fn to_words(&self) -> Option<(bool, U256)>;
+}
+
+impl FixedInt for i128 {
+    fn of_words(negative: bool, x: U256) -> Option<Self> {
+        let magnitude = i128::try_from(x.lo).ok().filter(|_| x.hi == 0)?;
+        Some(if negative { -magnitude } else { magnitude })
+    }
+    fn to_words(&self) -> Option<(bool, U256)> {
+        Some((
+            *self < 0,
+            U256 {
+                hi: 0,
+                lo: self.unsigned_abs(),
+            },
+        ))
+    }
+}
+
 /// Numerator and denominator of a rational, lifted into `T`.
 pub(crate) fn split<T: Int>(x: &Q) -> Option<(T, T)> {
     Some((T::lift(x.numer())?, T::lift(x.denom())?))

@@ -18,6 +18,8 @@ impl U256 {
     /// `self * o`, or `None` at 2^256 or more.
     pub(crate) fn checked_mul_wide(self, o: U256) -> Option<U256> {
         match (self.hi, o.hi) {
+            // Both below 2^128 (an audit's usual operands): one product, which never overflows.
+            (0, 0) => Some(U256::product(self.lo, o.lo)),
             (_, 0) => self.checked_mul(o.lo),
             (0, _) => o.checked_mul(self.lo),
             _ => None, // both at least 2^128

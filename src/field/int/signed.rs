@@ -71,6 +71,15 @@ impl Int for I256 {
     }
 }
 
+impl super::FixedInt for I256 {
+    fn of_words(negative: bool, x: U256) -> Option<Self> {
+        Some(I256::signed(negative, x))
+    }
+    fn to_words(&self) -> Option<(bool, U256)> {
+        Some((self.negative, self.mag))
+    }
+}
+
 impl FracInt for I256 {
     fn sign(&self) -> Ordering {
         match (self.negative, self.mag == U256::ZERO) {

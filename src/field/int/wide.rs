@@ -208,6 +208,15 @@ impl Wide {
     }
 }
 
+impl super::FixedInt for Wide {
+    fn of_words(negative: bool, x: U256) -> Option<Self> {
+        Some(Wide::from_u256(negative, x))
+    }
+    fn to_words(&self) -> Option<(bool, U256)> {
+        Some((self.negative, self.to_u256()?))
+    }
+}
+
 impl Int for Wide {
     fn lift(x: &BigInt) -> Option<Self> {
         Wide::from_big(x)

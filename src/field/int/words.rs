@@ -354,7 +354,11 @@ impl U256 {
     }
 
     /// The exact product of two `u128`.
-    fn product(a: u128, b: u128) -> U256 {
+    pub(crate) fn product(a: u128, b: u128) -> U256 {
+        if (a | b) >> 64 == 0 {
+            // Both below 2^64: one machine product.
+            return U256 { hi: 0, lo: a * b };
+        }
         let mask = u128::from(u64::MAX);
         let (a1, a0) = (a >> 64, a & mask);
         let (b1, b0) = (b >> 64, b & mask);
