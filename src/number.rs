@@ -168,13 +168,24 @@ impl WordRatio {
             _ => return None,
         };
         let count = whole.len() + fraction.len();
-        if count == 0 || count > 77 {
-            return None;
-        }
-        let mut digits = [0u8; 77];
-        digits[..whole.len()].copy_from_slice(whole.as_bytes());
-        digits[whole.len()..count].copy_from_slice(fraction.as_bytes());
-        let mantissa = U256::parse_decimal(std::str::from_utf8(&digits[..count]).ok()?)?;
+        let mantissa = match count {
+            0 => return None,
+            // An engine's 17 digits: one pass into a u128, no copy.
+            1..=38 => U256 {
+                hi: 0,
+                lo: whole
+                    .bytes()
+                    .chain(fraction.bytes())
+                    .fold(0u128, |n, b| n * 10 + u128::from(b - b'0')),
+            },
+            39..=77 => {
+                let mut digits = [0u8; 77];
+                digits[..whole.len()].copy_from_slice(whole.as_bytes());
+                digits[whole.len()..count].copy_from_slice(fraction.as_bytes());
+                U256::parse_decimal(std::str::from_utf8(&digits[..count]).ok()?)?
+            }
+            _ => return None,
+        };
         let shift = exponent - fraction.len() as i64;
         let power = U256::pow10(u32::try_from(shift.unsigned_abs()).ok()?)?;
         if shift >= 0 {

@@ -184,9 +184,7 @@ impl Summary {
             }
             let rounded = match (&v.rel_error, nearest) {
                 (Some(r), _) if r.is_zero() => 0.0,
-                (Some(_), Some(near)) => format!("{near:.1e}")
-                    .parse::<f64>()
-                    .unwrap_or(f64::INFINITY),
+                (Some(_), Some(near)) => two_significant(near),
                 _ => f64::INFINITY,
             };
             *s.histogram.entry(rounded.to_bits()).or_default() += 1;
@@ -379,5 +377,114 @@ impl OutputStats {
             }
         }
         None
+    }
+}
+
+/// `x` rounded to two significant digits (half to even, on its exact binary value) and read
+/// back as the nearest f64: what `format!("{x:.1e}").parse::<f64>()` gives (infinity where
+/// that fails), on machine words for the positive floats a relative error takes (the
+/// formatting cost more than the rest of a summary's row).
+fn two_significant(x: f64) -> f64 {
+    let formatted = || format!("{x:.1e}").parse::<f64>().unwrap_or(f64::INFINITY);
+    on_words_two_significant(x).unwrap_or_else(formatted)
+}
+
+/// [`two_significant`] on words: `None` outside the range it covers (a negative, zero or
+/// non-finite `x`, a quotient past 2^256, a power of ten past 10^22).
+fn on_words_two_significant(x: f64) -> Option<f64> {
+    use crate::field::int::U256;
+    /// The powers of ten an f64 holds exactly.
+    const POWERS: [f64; 23] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+        1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+    ];
+    let (false, odd, exponent) = crate::field::float_parts(x)? else {
+        return None;
+    };
+    // x = odd 2^exponent; x / 10^s as a fraction of words.
+    let scaled = |s: i64| -> Option<(U256, U256)> {
+        let mut num = U256 {
+            hi: 0,
+            lo: odd.into(),
+        };
+        let mut den = U256::ONE;
+        let shift = u32::try_from(exponent.unsigned_abs())
+            .ok()
+            .filter(|k| *k < 200)?;
+        if exponent >= 0 {
+            num = num.shl(shift);
+        } else {
+            den = den.shl(shift);
+        }
+        let ten = U256::pow10(u32::try_from(s.unsigned_abs()).ok()?)?;
+        if s >= 0 {
+            den = den.checked_mul_wide(ten)?;
+        } else {
+            num = num.checked_mul_wide(ten)?;
+        }
+        Some((num, den))
+    };
+    // s with 10 <= x / 10^s < 100, from the float estimate, corrected by one either way.
+    let mut s = x.log10().floor() as i64 - 1;
+    let (quotient, rest, den) = loop {
+        let (num, den) = scaled(s)?;
+        let (q, r) = num.div_small(den);
+        match q {
+            0..=9 => s -= 1,
+            10..=99 => break (q, r, den),
+            _ => s += 1,
+        }
+    };
+    let away = match rest.cmp(&den.minus(rest)) {
+        Ordering::Less => false,
+        Ordering::Greater => true,
+        Ordering::Equal => quotient % 2 == 1,
+    };
+    let (digits, s) = match quotient + u64::from(away) {
+        100 => (10, s + 1),
+        d => (d, s),
+    };
+    let power = *POWERS.get(usize::try_from(s.unsigned_abs()).ok()?)?;
+    // One correctly rounded operation on exact operands: the nearest f64, as the parser gives.
+    Some(if s >= 0 {
+        digits as f64 * power
+    } else {
+        digits as f64 / power
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    proptest::proptest! {
+        /// Law: the summary's rounding to two digits on words is the formatter's, for every
+        /// positive float (subnormals and huge ones included) and at decimal ties and carries.
+        #[test]
+        fn two_significant_digits_are_the_formatters(
+            bits in 1u64..0x7ff0_0000_0000_0000, tie in 0u64..1000, k in -20i32..20,
+        ) {
+            let formatted = |x: f64| format!("{x:.1e}").parse::<f64>().unwrap();
+            let x = f64::from_bits(bits);
+            proptest::prop_assert_eq!(two_significant(x).to_bits(), formatted(x).to_bits());
+            let near_tie = (tie as f64 + 0.5) * 10f64.powi(k);
+            proptest::prop_assert_eq!(
+                two_significant(near_tie).to_bits(),
+                formatted(near_tie).to_bits()
+            );
+        }
+    }
+
+    #[test]
+    fn ties_round_to_even_and_carry_into_a_new_digit() {
+        for (x, want) in [
+            (0.125, 0.12),
+            (0.375, 0.38),
+            (2.25, 2.2),
+            (9.96, 10.0),
+            (1.5e-17, 1.5e-17),
+        ] {
+            assert_eq!(two_significant(x), want, "{x}");
+        }
     }
 }
