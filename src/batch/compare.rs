@@ -222,7 +222,7 @@ pub(super) fn float_rel_error(claim: &WordRatio, x: f64) -> Option<Option<Q>> {
     Some(Some(if difference == U256::ZERO {
         Q::zero()
     } else {
-        U256::ratio(false, difference, value)
+        U256::unreduced(difference, value)
     }))
 }
 

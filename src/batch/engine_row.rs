@@ -320,7 +320,7 @@ fn check(k: usize, claim: Claim, x: &Ratio, agreement: &Agreement) -> Option<Out
         Some(if difference == U256::ZERO {
             Q::zero()
         } else {
-            U256::ratio(false, difference, value)
+            U256::unreduced(difference, value)
         })
     };
     Some(OutputCheck::finite(

@@ -203,7 +203,10 @@ pub struct OutputCheck {
     /// The claim agrees under the batch's `Agreement`.
     pub ok: bool,
     /// |claim - value| / |value|, exact; `None` when it is infinite (a zero value and a nonzero
-    /// claim) or the claim is not a number.
+    /// claim) or the claim is not a number. Not necessarily in lowest terms (reducing it was
+    /// most of a row's work): [`Q`] compares, orders and hashes it by value, and
+    /// [`decimal`](crate::field::decimal::decimal) prints it by value; print it with `{}` only
+    /// after reducing it (`Q::new(n, d)`).
     pub rel_error: Option<Q>,
     /// The ulp distance, under `Agreement::Ulps` and for a finite claim.
     pub ulps: Option<u64>,

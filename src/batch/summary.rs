@@ -179,7 +179,13 @@ impl Summary {
                 _ => false,
             };
             if bigger {
-                s.max = Some(v.rel_error.clone());
+                // Reduced here, at a new maximum only: a row's own may not be (see
+                // `OutputCheck::rel_error`), and the summary's is printed.
+                let reduced = v
+                    .rel_error
+                    .as_ref()
+                    .map(|r| Q::new(r.numer().clone(), r.denom().clone()));
+                s.max = Some(reduced);
                 s.max_nearest = nearest.unwrap_or(f64::INFINITY);
             }
             let rounded = match (&v.rel_error, nearest) {
@@ -473,6 +479,26 @@ mod tests {
                 formatted(near_tie).to_bits()
             );
         }
+    }
+
+    /// A row's relative error may be unreduced; the summary's maximum, which is printed, is
+    /// in lowest terms.
+    #[test]
+    fn the_largest_relative_error_is_kept_in_lowest_terms() {
+        use crate::batch::{Arithmetic, Batch};
+        // An engine's row (a rod column): v = 3/5 claimed as 0.6000001, 5/30000000 off.
+        let b = Batch::new("m,M,rod,v", Arithmetic::Exact).unwrap();
+        let row = b.row(1, "1,1,uniform,0.6000001").unwrap();
+        let mut s = Summary::default();
+        s.add(&row);
+        let max = s.outputs[0].max_rel_error().unwrap();
+        assert_eq!(max.to_string(), "1/6000000");
+        let reduced = Q::new(max.numer().clone(), max.denom().clone());
+        assert_eq!(max.to_string(), reduced.to_string());
+        assert_eq!(row.checks[0].rel_error.as_ref(), Some(max));
+        // The premise: the row's own is not in lowest terms.
+        let own = row.checks[0].rel_error.as_ref().unwrap();
+        assert_ne!(own.numer(), reduced.numer());
     }
 
     #[test]

@@ -227,6 +227,16 @@ impl U256 {
         Q::new_raw(BigInt::from_biguint(sign, n), d.into())
     }
 
+    /// `n/d` (`d > 0`) as a [`Q`] as it stands, not reduced: for a value only compared,
+    /// rounded or printed to a few digits (all of which [`Q`] does by value), where the GCD
+    /// of [`U256::ratio`] would be most of the work.
+    pub(crate) fn unreduced(n: U256, d: U256) -> Q {
+        Q::new_raw(
+            BigInt::from_biguint(Sign::Plus, n.to_big()),
+            d.to_big().into(),
+        )
+    }
+
     /// `n/d` in lowest terms (`d > 0`), on words: one binary GCD and two exact divisions.
     pub(crate) fn reduced(n: U256, d: U256) -> (U256, U256) {
         let g = U256::gcd(n, d);
