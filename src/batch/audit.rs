@@ -151,9 +151,23 @@ fn abs<F: Field>(x: F) -> F {
 /// ```
 pub fn audit(scene: &Scene, exact: &Motion<Q>, claimed: &Motion<Q>) -> Audit {
     // Not i128 first: an engine's 17-digit spin squared against the bound times (1 + 1/1000)^2
-    // passes 127 bits, and the failed attempt cost more than it saved.
-    let words = audit_on_words::<I256>(scene, exact, claimed)
-        .or_else(|| audit_on_words::<Wide>(scene, exact, claimed));
+    // passes 127 bits, and the failed attempt cost more than it saved. Nor a width the claims'
+    // squares alone would fill (a claim of 1e-91 has a 303-bit denominator): a choice of cost
+    // only, every width gives the same answer or none.
+    let widest = [claimed, exact]
+        .iter()
+        .flat_map(|m| [&m.v, &m.rod_v, &m.omega])
+        .map(|x| x.numer().bits().max(x.denom().bits()))
+        .max()
+        .unwrap_or(0);
+    let words = (widest <= 64)
+        .then(|| audit_on_words::<I256>(scene, exact, claimed))
+        .flatten()
+        .or_else(|| {
+            (widest <= 128)
+                .then(|| audit_on_words::<Wide>(scene, exact, claimed))
+                .flatten()
+        });
     let (findings, energy_change) = match words {
         Some(done) => done,
         None => {
