@@ -23,6 +23,9 @@
 //! [`ClassRule`]), the known findings of `--expect` (`expected.rs`:
 //! [`Expected`]), the totals (`summary.rs`: [`Summary`], rendered by
 //! [`crate::report::batch_summary`]) and the chunked, parallel stream (`stream.rs`: [`run`]).
+//! The word rows are shortcuts that give the general row's line byte for byte: the paper's row
+//! (`word_row.rs`), its f64 twin (`float_row.rs`) and an engine's row with any rod, pivot and
+//! claims, audited on fixed-width integers (`engine_row.rs`).
 
 mod audit;
 mod classes;
