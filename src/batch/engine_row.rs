@@ -398,15 +398,13 @@ pub(super) fn engine_row(
         None
     };
     out.push('\n');
-    Some(SolvedRow {
+    Some(SolvedRow::unlabelled(
         number,
-        line: out,
-        laws_held: Some(true),
+        out,
+        Some(true),
         checks,
         diagnosis,
-        label: None,
-        expectation: None,
-    })
+    ))
 }
 
 /// The energy change cell and the diagnosis, as the general row's `diagnose` gives them.

@@ -96,15 +96,7 @@ pub(super) fn float_word_row(
         checks.push(check);
     }
     out.push('\n');
-    Some(SolvedRow {
-        number,
-        line: out,
-        laws_held: None,
-        checks,
-        diagnosis: None,
-        label: None,
-        expectation: None,
-    })
+    Some(SolvedRow::unlabelled(number, out, None, checks, None))
 }
 
 #[cfg(test)]

@@ -214,6 +214,28 @@ pub struct OutputCheck {
     pub not_finite: bool,
 }
 
+impl SolvedRow {
+    /// A solved row before [`Batch::row`](super::Batch::row) names it and checks it against
+    /// the baseline: its number, output line, laws, checks and diagnosis.
+    pub(super) fn unlabelled(
+        number: usize,
+        line: String,
+        laws_held: Option<bool>,
+        checks: Vec<OutputCheck>,
+        diagnosis: Option<Diagnosis>,
+    ) -> SolvedRow {
+        SolvedRow {
+            number,
+            line,
+            laws_held,
+            checks,
+            diagnosis,
+            label: None,
+            expectation: None,
+        }
+    }
+}
+
 impl OutputCheck {
     /// Appends the check's cells: `,<ok>,<rel_error>`, and `,<ulps>` when `ulps_column`.
     pub(super) fn write_cells(&self, out: &mut String, ulps_column: bool) {

@@ -101,15 +101,7 @@ impl Batch {
             _ => None,
         };
         out.push('\n');
-        let row = SolvedRow {
-            number,
-            line: out,
-            laws_held,
-            checks,
-            diagnosis,
-            label: None,
-            expectation: None,
-        };
+        let row = SolvedRow::unlabelled(number, out, laws_held, checks, diagnosis);
         Ok(self.labelled(row, line))
     }
 }

@@ -115,13 +115,12 @@ pub(super) fn word_row(
         out.push_str(",0,ok");
     }
     out.push('\n');
-    Some(SolvedRow {
+    let diagnosis = plan.audits.then(|| Diagnosis::Findings(Vec::new()));
+    Some(SolvedRow::unlabelled(
         number,
-        line: out,
-        laws_held: Some(true),
+        out,
+        Some(true),
         checks,
-        diagnosis: plan.audits.then(|| Diagnosis::Findings(Vec::new())),
-        label: None,
-        expectation: None,
-    })
+        diagnosis,
+    ))
 }
