@@ -122,7 +122,7 @@ impl WordRatio {
             None if unsigned.bytes().all(|b| b.is_ascii_digit()) => {
                 (U256::parse_decimal(unsigned)?, U256::ONE)
             }
-            None => WordRatio::decimal(unsigned)?,
+            None => WordRatio::decimal(unsigned.as_bytes())?,
         };
         (denom != U256::ZERO).then_some(WordRatio {
             negative,
@@ -134,59 +134,60 @@ impl WordRatio {
     /// `digits[.digits][(e|E)[+-]digits]` (at least one mantissa digit, at most 77 in all, an
     /// exponent of at most 3 digits) as `mantissa/10^k` or `mantissa 10^k/1`, both below
     /// 2^256: `0.05` is 5/100, unreduced (an engine's 17-digit cells are compared on words).
-    fn decimal(text: &str) -> Option<(U256, U256)> {
-        fn split(s: &str) -> (&str, &str) {
-            s.split_at(
-                s.bytes()
-                    .position(|b| !b.is_ascii_digit())
-                    .unwrap_or(s.len()),
-            )
-        }
-        let (whole, after) = split(text);
-        let (fraction, after) = match after.strip_prefix('.') {
-            Some(tail) => split(tail),
-            None => ("", after),
+    pub(crate) fn decimal(text: &[u8]) -> Option<(U256, U256)> {
+        // One pass: the mantissa's digits (accumulated while they fit 38), the fraction's
+        // length, then the exponent.
+        let (mut at, mut count, mut places, mut small) = (0, 0usize, 0i64, 0u128);
+        let mut digit = |b: u8, count: &mut usize| {
+            if *count < 38 {
+                small = small * 10 + u128::from(b - b'0');
+            }
+            *count += 1;
         };
-        let exponent: i64 = match after.as_bytes() {
+        while let Some(&b) = text.get(at).filter(|b| b.is_ascii_digit()) {
+            digit(b, &mut count);
+            at += 1;
+        }
+        if text.get(at) == Some(&b'.') {
+            at += 1;
+            while let Some(&b) = text.get(at).filter(|b| b.is_ascii_digit()) {
+                digit(b, &mut count);
+                places += 1;
+                at += 1;
+            }
+        }
+        let exponent: i64 = match &text[at..] {
             [] => 0,
             [b'e' | b'E', tail @ ..] => {
-                let tail = std::str::from_utf8(tail).ok()?;
-                let digits = tail.strip_prefix(['+', '-']).unwrap_or(tail);
-                if digits.is_empty()
-                    || digits.len() > 3
-                    || !digits.bytes().all(|b| b.is_ascii_digit())
-                {
+                let (negative, digits) = match tail {
+                    [b'-', rest @ ..] => (true, rest),
+                    [b'+', rest @ ..] => (false, rest),
+                    _ => (false, tail),
+                };
+                if digits.is_empty() || digits.len() > 3 || !digits.iter().all(u8::is_ascii_digit) {
                     return None;
                 }
-                let magnitude: i64 = digits.parse().ok()?;
-                if tail.starts_with('-') {
-                    -magnitude
-                } else {
-                    magnitude
-                }
+                let magnitude = digits
+                    .iter()
+                    .fold(0i64, |n, b| n * 10 + i64::from(b - b'0'));
+                if negative { -magnitude } else { magnitude }
             }
             _ => return None,
         };
-        let count = whole.len() + fraction.len();
         let mantissa = match count {
             0 => return None,
-            // An engine's 17 digits: one pass into a u128, no copy.
-            1..=38 => U256 {
-                hi: 0,
-                lo: whole
-                    .bytes()
-                    .chain(fraction.bytes())
-                    .fold(0u128, |n, b| n * 10 + u128::from(b - b'0')),
-            },
+            1..=38 => U256 { hi: 0, lo: small },
             39..=77 => {
-                let mut digits = [0u8; 77];
-                digits[..whole.len()].copy_from_slice(whole.as_bytes());
-                digits[whole.len()..count].copy_from_slice(fraction.as_bytes());
-                U256::parse_decimal(std::str::from_utf8(&digits[..count]).ok()?)?
+                let digits: Vec<u8> = text[..at]
+                    .iter()
+                    .copied()
+                    .filter(u8::is_ascii_digit)
+                    .collect();
+                U256::parse_decimal(std::str::from_utf8(&digits).ok()?)?
             }
             _ => return None,
         };
-        let shift = exponent - fraction.len() as i64;
+        let shift = exponent - places;
         let power = U256::pow10(u32::try_from(shift.unsigned_abs()).ok()?)?;
         if shift >= 0 {
             Some((mantissa.checked_mul_wide(power)?, U256::ONE))

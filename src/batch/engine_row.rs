@@ -251,7 +251,7 @@ fn exact_in<T: FixedInt>(s: &Scene, wanted: &[bool; WORD_CLAIMS]) -> Option<Exac
     }
     if wanted[5] {
         // (wv nv^2 + wV nV^2 + ww nw^2) vn^2 / (2 md Md gd S^2).
-        let ke = kinetic(&parts, [&raw.nv, &raw.n_big_v, &raw.nw])?;
+        let ke = kinetic(&parts.kinetic_weights()?, [&raw.nv, &raw.n_big_v, &raw.nw])?;
         let n = ke.mul(&vn)?.mul(&vn)?;
         let d = T::small(2)
             .mul(md)?
@@ -274,11 +274,9 @@ fn exact_in<T: FixedInt>(s: &Scene, wanted: &[bool; WORD_CLAIMS]) -> Option<Exac
     })
 }
 
-/// `wv x^2 + wV y^2 + ww z^2` (twice the kinetic energy times `md Md gd`).
-fn kinetic<T: FixedInt>(p: &Parts<T>, [x, y, z]: [&T; 3]) -> Option<T> {
-    let wv = p.mn.mul(&p.big_d)?.mul(&p.gd)?;
-    let w_big_v = p.big_n.mul(&p.md)?.mul(&p.gd)?;
-    let ww = p.big_n.mul(&p.md)?.mul(&p.gn)?;
+/// `wv x^2 + wV y^2 + ww z^2` for the weights of [`Parts::kinetic_weights`] (twice the kinetic
+/// energy times `md Md gd`).
+fn kinetic<T: FixedInt>([wv, w_big_v, ww]: &[T; 3], [x, y, z]: [&T; 3]) -> Option<T> {
     wv.mul(&x.mul(x)?)?
         .add(&w_big_v.mul(&y.mul(y)?)?)?
         .add(&ww.mul(&z.mul(z)?)?)
@@ -516,9 +514,10 @@ fn audit<T: FixedInt>(
     let mut findings = Vec::new();
 
     // Energies: Kc/q^2 against the exact vn^2 Ke/S^2 and the before wv vn^2/vd^2.
-    let wv = p.mn.mul(&p.big_d)?.mul(&p.gd)?;
-    let kc = kinetic(&p, [&cv, &c_big_v, &cw])?;
-    let ke = kinetic(&p, [&nv, &n_big_v, &nw])?;
+    let weights = p.kinetic_weights()?;
+    let wv = weights[0];
+    let kc = kinetic(&weights, [&cv, &c_big_v, &cw])?;
+    let ke = kinetic(&weights, [&nv, &n_big_v, &nw])?;
     let (vn2, q2, vd2, den2) = (vn.mul(&vn)?, q.mul(&q)?, vd.mul(&vd)?, den.mul(&den)?);
     // E_c > E_b (1 + law): law_d Kc vd^2 > (law_d + law_n) wv vn^2 q^2.
     if greater(

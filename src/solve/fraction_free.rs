@@ -195,6 +195,20 @@ pub(crate) struct Raw<T> {
     pub(crate) laws_hold: bool,
 }
 
+impl<T: Int> Parts<T> {
+    /// The weights of twice the kinetic energy over the common denominator `md Md gd`:
+    /// `m v^2 + M V^2 + M g omega^2` times it is `wv v^2 + wV V^2 + ww omega^2` with
+    /// `[wv, wV, ww] = [mn Md gd, Mn md gd, Mn md gn]`; `None` on overflow.
+    pub(crate) fn kinetic_weights(&self) -> Option<[T; 3]> {
+        let big_n_md = self.big_n.mul(&self.md)?;
+        Some([
+            self.mn.mul(&self.big_d)?.mul(&self.gd)?,
+            big_n_md.mul(&self.gd)?,
+            big_n_md.mul(&self.gn)?,
+        ])
+    }
+}
+
 /// The scene's parts in `T`; `None` when one does not fit.
 fn parts_of<T: Int>(scene: &Scene) -> Option<Parts<T>> {
     let (mn, md) = split::<T>(scene.m())?;
@@ -247,23 +261,10 @@ pub(crate) fn raw_of<T: Int>(parts: &Parts<T>, elastic: bool) -> Option<Raw<T>> 
     };
     // Energy, m v^2 + M V^2 + M g omega^2 = m v0^2, times md Md gd: the same for both supports.
     let energy = if elastic {
-        let Parts {
-            mn,
-            md,
-            big_n,
-            big_d,
-            gn,
-            gd,
-            ..
-        } = parts;
-        let weight = mn.mul(big_d)?.mul(gd)?;
+        let [wv, w_big_v, ww] = parts.kinetic_weights()?;
         T::squares_balance(
-            [
-                (&weight, &raw.nv),
-                (&big_n.mul(md)?.mul(gd)?, &raw.n_big_v),
-                (&big_n.mul(md)?.mul(gn)?, &raw.nw),
-            ],
-            (&weight, &raw.den),
+            [(&wv, &raw.nv), (&w_big_v, &raw.n_big_v), (&ww, &raw.nw)],
+            (&wv, &raw.den),
         )?
     } else {
         true

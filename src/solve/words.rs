@@ -53,48 +53,17 @@ impl Part {
         (d != 0).then_some(Part { negative, n, d })
     }
 
-    /// `digits[.digits][(e|E)[+-]digits]` (at least one mantissa digit, at most 18 in all) as
-    /// `n/10^k` or `n 10^k/1`, each part below 10^18.
+    /// `digits[.digits][(e|E)[+-]digits]` as the shared parser reads it on words
+    /// ([`WordRatio::decimal`](crate::number::WordRatio)), `n/10^k` or `n 10^k/1`, taken when
+    /// each part is below 10^18.
     fn decimal(negative: bool, text: &[u8]) -> Option<Part> {
-        let (whole, after) = run_of_digits(text);
-        let (fraction, after) = match after.split_first() {
-            Some((b'.', tail)) => run_of_digits(tail),
-            _ => (&after[..0], after),
-        };
-        let mantissa = whole.len() + fraction.len();
-        if mantissa == 0 || mantissa > 18 {
-            return None;
-        }
-        let exponent: i64 = match after.split_first() {
-            None => 0,
-            Some((b'e' | b'E', tail)) => {
-                let (sign, tail) = match tail.split_first()? {
-                    (b'-', t) => (-1, t),
-                    (b'+', t) => (1, t),
-                    _ => (1, tail),
-                };
-                let (written, rest) = run_of_digits(tail);
-                if written.is_empty() || written.len() > 3 || !rest.is_empty() {
-                    return None;
-                }
-                sign * written.iter().fold(0, |x, &b| x * 10 + i64::from(b - b'0'))
-            }
-            _ => return None,
-        };
-        let n = whole
-            .iter()
-            .chain(fraction)
-            .fold(0u64, |x, &b| x * 10 + u64::from(b - b'0'));
-        // value = n 10^shift
-        let shift = exponent - fraction.len() as i64;
-        let below = 10u64.pow(18);
-        if shift >= 0 {
-            let n = n.checked_mul(10u64.checked_pow(u32::try_from(shift).ok()?)?)?;
-            (n < below).then_some(Part { negative, n, d: 1 })
-        } else {
-            let d = 10u64.checked_pow(u32::try_from(-shift).ok()?)?;
-            (d < below).then_some(Part { negative, n, d })
-        }
+        let (n, d) = crate::number::WordRatio::decimal(text)?;
+        let below = |x: U256| (x.hi == 0 && x.lo < 10u128.pow(18)).then_some(x.lo as u64);
+        Some(Part {
+            negative,
+            n: below(n)?,
+            d: below(d)?,
+        })
     }
 
     /// Strictly positive.
@@ -116,15 +85,6 @@ fn digits(bytes: &[u8]) -> Option<(u64, usize)> {
         used += 1;
     }
     (1..=18).contains(&used).then_some((n, used))
-}
-
-/// The ASCII digits at the start of `bytes`, and the rest.
-fn run_of_digits(bytes: &[u8]) -> (&[u8], &[u8]) {
-    let k = bytes
-        .iter()
-        .position(|b| !b.is_ascii_digit())
-        .unwrap_or(bytes.len());
-    bytes.split_at(k)
 }
 
 /// Bit length of a word (0 for 0).
