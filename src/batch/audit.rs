@@ -10,7 +10,7 @@
 
 use crate::field::big::{RBig, to_q, to_rbig};
 use crate::field::int::{Frac, FracInt, I256, Wide, within};
-use crate::field::{Field, Q};
+use crate::field::{Field, Q, abs};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
 use crate::scene::{Params, Scene, Support};
 use crate::solve::optimum::omega_max_squared_of;
@@ -120,15 +120,6 @@ pub struct Audit {
 /// `n/d` (in lowest terms, `d > 0`: the tolerances) in the audit's arithmetic.
 fn fraction<F: Field>((n, d): (i64, i64)) -> F {
     F::from_rational(&Q::new_raw(n.into(), d.into()))
-}
-
-/// `|x|`.
-fn abs<F: Field>(x: F) -> F {
-    if x.sign() == Some(Ordering::Less) {
-        -x
-    } else {
-        x
-    }
 }
 
 /// Audits `claimed` (the state after the impact) against the scene and its exact answer.

@@ -125,6 +125,15 @@ pub trait Field:
     }
 }
 
+/// `|x|` in any field whose sign is decided (`x` itself when the sign is not).
+pub(crate) fn abs<F: Field>(x: F) -> F {
+    if x.sign() == Some(Ordering::Less) {
+        -x
+    } else {
+        x
+    }
+}
+
 /// Square roots that exist in the field.
 pub trait TrySqrt: Field {
     /// `Some(r)` with `r >= 0` and `r * r == self`; `None` when no such `r` lies in the field.

@@ -3,9 +3,11 @@
 //! each through its named [`Route`].
 
 use super::{Accuracy, condition};
+use crate::field::big::{RBig, to_q};
 use crate::field::{Field, Interval, Q};
 use crate::mechanics::Motion;
 use crate::scene::{Params, Scene, Support};
+use crate::solve::closed_form::closed_form;
 use crate::solve::float::{FloatFormula, Real};
 use crate::solve::{self, Route};
 use num_traits::{Signed, Zero};
@@ -25,15 +27,24 @@ pub enum Backend {
 }
 
 /// The exact answer for a free-rod scene, with its condition numbers.
+///
+/// The answer is computed by the closed form over dashu's rationals ([`RBig`]), whose Lehmer
+/// GCD keeps the sweep's scenes of hundreds of digits cheap, and the measurements run there
+/// too; the [`Backend::Exact`] row computes the same closed form over [`Q`] (num-rational), so
+/// the two big-number libraries check each other.
 #[derive(Debug, Clone)]
 pub struct Reference {
     /// Exact (v, V, omega).
     pub motion: Motion<Q>,
     /// The exact scene inputs.
     pub params: Params<Q>,
+    /// `motion` over dashu, as the measurements use it.
+    exact: Motion<RBig>,
+    /// `params` over dashu.
+    big_params: Params<RBig>,
     /// The condition numbers, computed on first use and shared by every backend: for an `e`
     /// the format holds exactly (index 0) and for one it rounds (index 1).
-    conditions: [OnceLock<Motion<Option<Q>>>; 2],
+    conditions: [OnceLock<Motion<Option<RBig>>>; 2],
 }
 
 /// Two references are equal when their scenes and answers are: whether the condition numbers
@@ -56,13 +67,16 @@ impl Reference {
     /// ```
     pub fn of(scene: &Scene) -> Option<Reference> {
         let params = scene.params::<Q>();
-        if params.support != Support::Free {
+        if params.support != Support::Free || scene.oblique().is_some() {
             return None;
         }
-        let motion = solve::with::<Q>(scene, Backend::Exact.route()).ok()?.after;
+        let big_params = scene.params::<RBig>();
+        let exact = closed_form(&big_params)?;
         Some(Reference {
-            motion,
+            motion: exact.as_ref().map(to_q),
             params,
+            exact,
+            big_params,
             conditions: Default::default(),
         })
     }
@@ -168,6 +182,13 @@ impl Backend {
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
     pub fn condition(self, reference: &Reference) -> Motion<Option<Q>> {
+        self.big_condition(reference)
+            .as_ref()
+            .map(|c| c.as_ref().map(to_q))
+    }
+
+    /// [`Backend::condition`] over dashu, computed once per reference and `e_rounds`.
+    fn big_condition(self, reference: &Reference) -> &Motion<Option<RBig>> {
         let e = &reference.params.e;
         let e_rounds = match self {
             Backend::F64(_) | Backend::Interval => f64::from_rational(e).to_exact(),
@@ -177,8 +198,7 @@ impl Backend {
         .as_ref()
             != Some(e);
         reference.conditions[usize::from(e_rounds)]
-            .get_or_init(|| condition(&reference.params, e_rounds))
-            .clone()
+            .get_or_init(|| condition(&reference.big_params, e_rounds))
     }
 
     /// Evaluates `scene` from its exact inputs ([`FloatFormula::eval_scene`]) and measures (v, V,
@@ -196,14 +216,14 @@ impl Backend {
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
     pub fn measure(self, scene: &Scene, reference: &Reference) -> Option<(Motion<Accuracy>, bool)> {
-        let cond = self.condition(reference);
-        let u = self.unit_roundoff();
-        let exact = reference.motion.as_ref().zip(cond.as_ref());
+        let cond = self.big_condition(reference);
+        let u = RBig::from_rational(&self.unit_roundoff());
+        let exact = reference.exact.as_ref().zip(cond.as_ref());
         let route = self.route();
         let floats = |x: Motion<f64>| {
             let measured = x.zip(exact.clone());
-            let measure = |(x, (exact, cond)): (f64, (&Q, &Option<Q>))| {
-                Accuracy::of(x, exact, cond.as_ref(), &u)
+            let measure = |(x, (exact, cond)): (f64, (&RBig, &Option<RBig>))| {
+                Accuracy::of_big(x, exact, cond.as_ref(), &u)
             };
             (measured.map(measure), true)
         };
@@ -219,16 +239,16 @@ impl Backend {
                     .iter()
                     .zip(reference.motion.iter())
                     .all(|(x, e)| x.contains(e));
-                let measured = x
-                    .zip(exact)
-                    .map(|(x, (exact, cond))| Accuracy::of_interval(&x, exact, cond.as_ref(), &u));
+                let measured = x.zip(exact).map(|(x, (exact, cond))| {
+                    Accuracy::of_big_interval(&x, exact, cond.as_ref(), &u)
+                });
                 Some((measured, encloses))
             }
             Backend::Exact => {
                 let x = solve::with::<Q>(scene, route).ok()?.after;
                 let measured = x
-                    .zip(exact)
-                    .map(|(x, (exact, _))| Accuracy::of_exact(&x, exact));
+                    .zip(reference.motion.as_ref())
+                    .map(|(x, exact)| Accuracy::of_exact(&x, exact));
                 Some((measured, true))
             }
         }

@@ -1,10 +1,9 @@
 //! Exact componentwise relative condition numbers of v, V and omega for a free rod
 //! (`docs/stability.md`), in the inputs m, M, I, a, v0 (and e when e is not a float of the format).
 
-use crate::field::Q;
+use crate::field::{Field, abs};
 use crate::mechanics::{Groups, Motion};
 use crate::scene::Params;
-use num_traits::{One, Signed, Zero};
 
 /// The condition numbers of (v, V, omega); `None` (infinite) for v when q = e, where the
 /// projectile stops. `e_rounds` adds the e terms (e is not exactly a float of the format).
@@ -24,21 +23,28 @@ use num_traits::{One, Signed, Zero};
 /// assert_eq!(condition(&stop.params::<Q>(), false).v, None);
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn condition(p: &Params<Q>, e_rounds: bool) -> Motion<Option<Q>> {
-    let one = Q::one();
-    let two = Q::from_integer(2.into());
-    let four = Q::from_integer(4.into());
+pub fn condition<F: Field>(p: &Params<F>, e_rounds: bool) -> Motion<Option<F>> {
+    let one = F::one();
+    let two = F::from_i64(2);
+    let four = F::from_i64(4);
     let e = &p.e;
     let Groups { r, s, q, d, .. } = Groups::of(&p.m, &p.rod_mass, &p.inertia, &p.a);
-    let e_term = |denominator: &Q| {
-        if e_rounds { e / denominator } else { Q::zero() }
+    let e_term = |denominator: &F| {
+        if e_rounds {
+            e.clone() / denominator
+        } else {
+            F::zero()
+        }
     };
-    let gap = (&q - e).abs();
-    let v = (!gap.is_zero())
-        .then(|| &one + (&one + e) * (&two * &r + &four * &s) / (&gap * &d) + e_term(&gap));
-    let one_plus_e = &one + e;
-    let rod_v = &one + (&two + &four * &s) / &d + e_term(&one_plus_e);
-    let omega = &one + (&two + &two * &r + (&one + &r - &s).abs()) / &d + e_term(&one_plus_e);
+    let gap = abs(q - e);
+    let v = (!gap.is_zero()).then(|| {
+        let spread = two.clone() * &r + &(four.clone() * &s);
+        one.clone() + &((one.clone() + e) * &spread / &(gap.clone() * &d)) + &e_term(&gap)
+    });
+    let one_plus_e = one.clone() + e;
+    let rod_v = one.clone() + &((two.clone() + &(four * &s)) / &d) + &e_term(&one_plus_e);
+    let lever = abs(one.clone() + &r - &s);
+    let omega = one.clone() + &((two.clone() + &(two * &r) + &lever) / &d) + &e_term(&one_plus_e);
     Motion {
         v,
         rod_v: Some(rod_v),

@@ -1,7 +1,10 @@
 //! Exact error measurement: a float result converted exactly (`Ratio::from_float`) and compared
-//! with the exact answer for the same rational inputs.
+//! with the exact answer for the same rational inputs. The arithmetic runs over dashu's
+//! rationals ([`RBig`]): the stability sweep's exact answers have hundreds of digits, where
+//! num-rational's binary GCD was most of the report's time.
 
-use crate::field::{Interval, Q};
+use crate::field::big::{RBig, to_q, to_rbig};
+use crate::field::{Interval, Q, abs};
 use crate::solve::float::Real;
 use num_traits::{Signed, ToPrimitive, Zero};
 
@@ -45,11 +48,20 @@ impl Accuracy {
     /// assert!(m.ratio.unwrap() <= 1.0); // correctly rounded: at most u
     /// ```
     pub fn of<T: Real>(x: T, exact: &Q, cond: Option<&Q>, u: &Q) -> Accuracy {
+        let cond = cond.map(to_rbig);
+        Accuracy::of_big(x, &to_rbig(exact), cond.as_ref(), &to_rbig(u))
+    }
+
+    /// [`Accuracy::of`] with the exact numbers over dashu.
+    pub(crate) fn of_big<T: Real>(x: T, exact: &RBig, cond: Option<&RBig>, u: &RBig) -> Accuracy {
         match x.to_exact() {
             None if x.finite() => unreachable!("finite floats are rationals"),
             None if x.sign().is_none() => Accuracy::undefined(Class::Nan),
             None => Accuracy::undefined(Class::Infinite),
-            Some(value) => Accuracy::distance((&value - exact).abs(), exact, cond, u, &value),
+            Some(value) => {
+                let value = to_rbig(&value);
+                Accuracy::distance(abs(value.clone() - exact), exact, cond, u, &value)
+            }
         }
     }
 
@@ -63,9 +75,21 @@ impl Accuracy {
     /// assert!(m.ratio.unwrap() <= 2.0); // one ulp wide
     /// ```
     pub fn of_interval(x: &Interval, exact: &Q, cond: Option<&Q>, u: &Q) -> Accuracy {
+        let cond = cond.map(to_rbig);
+        Accuracy::of_big_interval(x, &to_rbig(exact), cond.as_ref(), &to_rbig(u))
+    }
+
+    /// [`Accuracy::of_interval`] with the exact numbers over dashu.
+    pub(crate) fn of_big_interval(
+        x: &Interval,
+        exact: &RBig,
+        cond: Option<&RBig>,
+        u: &RBig,
+    ) -> Accuracy {
         match (x.lower().to_exact(), x.upper().to_exact()) {
             (Some(lo), Some(hi)) => {
-                let far = (&lo - exact).abs().max((&hi - exact).abs());
+                let (lo, hi) = (to_rbig(&lo), to_rbig(&hi));
+                let far = abs(lo.clone() - exact).max(abs(hi.clone() - exact));
                 let point = if lo.is_zero() && hi.is_zero() { lo } else { hi };
                 Accuracy::distance(far, exact, cond, u, &point)
             }
@@ -103,7 +127,7 @@ impl Accuracy {
         }
     }
 
-    fn distance(gap: Q, exact: &Q, cond: Option<&Q>, u: &Q, value: &Q) -> Accuracy {
+    fn distance(gap: RBig, exact: &RBig, cond: Option<&RBig>, u: &RBig, value: &RBig) -> Accuracy {
         if exact.is_zero() {
             return if gap.is_zero() {
                 Accuracy {
@@ -115,10 +139,14 @@ impl Accuracy {
                 Accuracy::undefined(Class::MissedZero)
             };
         }
-        let rel = gap / exact.abs();
-        let ratio = cond.map(|c| (&rel / (c * u)).to_f64().unwrap_or(f64::INFINITY));
+        let rel = gap / abs(exact.clone());
+        let ratio = cond.map(|c| {
+            to_q(&(rel.clone() / (c.clone() * u)))
+                .to_f64()
+                .unwrap_or(f64::INFINITY)
+        });
         Accuracy {
-            rel_error: Some(rel),
+            rel_error: Some(to_q(&rel)),
             ratio,
             class: if value.is_zero() {
                 Class::SpuriousZero
