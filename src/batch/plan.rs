@@ -178,11 +178,10 @@ impl Diagnosis {
 /// Appends `x` as its shortest round-trip text (`0.6`, `1.2e-7`), a zero as `0.0` whatever its
 /// sign (`-0.0` only says which way the float rounded).
 pub(super) fn write_float(out: &mut String, x: f64) {
-    use std::fmt::Write;
     if x == 0.0 {
         out.push_str("0.0");
     } else {
-        write!(out, "{x:?}").expect("writing to a String cannot fail");
+        crate::field::shortest::push_debug(out, x);
     }
 }
 

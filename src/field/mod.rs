@@ -31,6 +31,7 @@ pub mod poly;
 pub mod quadratic;
 pub mod ratfunc;
 mod rational;
+pub(crate) mod shortest;
 
 pub use float::exact_float;
 pub(crate) use float::float_parts;

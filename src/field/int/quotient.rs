@@ -82,6 +82,13 @@ impl U256 {
     /// The f64 nearest to `n / d` (ties to even), for nonzero `n` and `d`; `None` when the
     /// scaled operands would pass 2^256 (`n` or `d` of more than 202 bits).
     pub(crate) fn nearest_f64(n: U256, d: U256) -> Option<f64> {
+        const EXACT_IN_F64: u128 = 1 << 53;
+        if n.hi == 0 && d.hi == 0 && n.lo < EXACT_IN_F64 && d.lo < EXACT_IN_F64 {
+            // Both operands are f64s exactly, and IEEE division rounds their quotient
+            // correctly, ties to even.
+            assert!(n.lo > 0 && d.lo > 0, "nonzero operands");
+            return Some(n.lo as f64 / d.lo as f64);
+        }
         let (bits_n, bits_d) = (n.bits() as i32, d.bits() as i32);
         assert!(bits_n > 0 && bits_d > 0, "nonzero operands");
         // Scaled by 2^k, the quotient lies in [2^53, 2^55): 53 bits and one or two more.

@@ -194,26 +194,24 @@ impl U256 {
     /// least one), or `None`.
     pub(crate) fn parse_decimal(digits: &str) -> Option<U256> {
         let bytes = digits.as_bytes();
-        if bytes.is_empty() || bytes.len() > 78 || !bytes.iter().all(u8::is_ascii_digit) {
+        if bytes.is_empty() || bytes.len() > 78 {
             return None;
         }
-        let word = |chunk: &[u8]| chunk.iter().fold(0u64, |n, b| n * 10 + u64::from(b - b'0'));
+        let scale = |chunk: &[u8]| u128::from(POWERS_OF_TEN[chunk.len()]);
         if bytes.len() <= 38 {
             // Below 10^38 < 2^127: one or two 19-digit words in u128.
             let (head, tail) = bytes.split_at(bytes.len().saturating_sub(19));
-            let scale = 10u128.pow(tail.len() as u32);
             return Some(U256 {
                 hi: 0,
-                lo: u128::from(word(head)) * scale + u128::from(word(tail)),
+                lo: u128::from(digits_word(head)?) * scale(tail) + u128::from(digits_word(tail)?),
             });
         }
         let mut value = U256::ZERO;
         // Chunks of up to 19 digits: value = value * 10^k + chunk.
         for chunk in bytes.chunks(19) {
-            let scale = 10u128.pow(chunk.len() as u32);
-            value = value.checked_mul(scale)?.checked_add(U256 {
+            value = value.checked_mul(scale(chunk))?.checked_add(U256 {
                 hi: 0,
-                lo: word(chunk).into(),
+                lo: digits_word(chunk)?.into(),
             })?;
         }
         Some(value)
@@ -400,6 +398,52 @@ impl U256 {
     }
 }
 
+/// 10^k for k = 0..=19, every power of ten a `u64` holds.
+const POWERS_OF_TEN: [u64; 20] = {
+    let mut powers = [1u64; 20];
+    let mut k = 1;
+    while k < 20 {
+        powers[k] = powers[k - 1] * 10;
+        k += 1;
+    }
+    powers
+};
+
+/// The value of at most 19 ASCII digits (none: 0), or `None` when a byte is not a digit;
+/// eight digits at a time.
+fn digits_word(digits: &[u8]) -> Option<u64> {
+    let mut chunks = digits.chunks_exact(8);
+    let mut value = 0u64;
+    for chunk in &mut chunks {
+        let word = u64::from_le_bytes(chunk.try_into().expect("chunks of eight"));
+        value = value * 100_000_000 + eight_digits(word)?;
+    }
+    for &b in chunks.remainder() {
+        let digit = b.wrapping_sub(b'0');
+        if digit > 9 {
+            return None;
+        }
+        value = value * 10 + u64::from(digit);
+    }
+    Some(value)
+}
+
+/// Eight ASCII digits read little-endian into `word` (the first digit in the lowest byte) as
+/// their value, or `None` when a byte is not a digit: the bytes become 0..9, then pairs,
+/// fours and the eight are combined by three multiplications in the word.
+fn eight_digits(word: u64) -> Option<u64> {
+    const EACH: u64 = 0x0101_0101_0101_0101;
+    let low = word.wrapping_sub(0x30 * EACH);
+    // Every byte 0x30..=0x3f, and below 0x3a (adding 6 leaves its high nibble clear).
+    let digits = word & (0xf0 * EACH) == 0x30 * EACH && low.wrapping_add(6 * EACH) & (0xf0 * EACH) == 0;
+    if !digits {
+        return None;
+    }
+    let pairs = (low.wrapping_mul(1 + (10 << 8)) >> 8) & 0x00ff_00ff_00ff_00ff;
+    let fours = (pairs.wrapping_mul(1 + (100 << 16)) >> 16) & 0x0000_ffff_0000_ffff;
+    Some(fours.wrapping_mul(1 + (10_000 << 32)) >> 32)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -479,6 +523,25 @@ mod tests {
     }
 
     proptest::proptest! {
+        /// A run of digits of every length is read as num-bigint reads it, and one byte that is
+        /// not a digit, anywhere (the bytes either side of '0'..='9' included), refuses it.
+        #[test]
+        fn decimal_digits_are_read_as_big_integers_read_them(
+            digits in "[0-9]{1,78}",
+            at in 0usize..78,
+            bad in proptest::sample::select(vec![b'/', b':', b' ', b'.', b'a', 0x80, 0xb0]),
+        ) {
+            let want = BigUint::parse_bytes(digits.as_bytes(), 10).unwrap();
+            let got = U256::parse_decimal(&digits).map(U256::to_big);
+            let fits = want.bits() <= 256;
+            proptest::prop_assert_eq!(got, fits.then_some(want));
+            let mut spoiled = digits.into_bytes();
+            let at = at % spoiled.len();
+            spoiled[at] = bad;
+            let spoiled = String::from_utf8_lossy(&spoiled).into_owned();
+            proptest::prop_assert_eq!(U256::parse_decimal(&spoiled), None);
+        }
+
         /// Division by a word, its remainder, and the reduction of a fraction on words, against
         /// num-bigint, across all four limbs.
         #[test]
