@@ -1,8 +1,8 @@
 //! An f64 as the text `format!("{x:?}")` gives it, at a third of its cost: the shortest digits
 //! that read back to `x` come from the Żmij algorithm (the `zmij` crate, which serde_json
-//! already brings in), laid out as Rust's `Debug` lays them out (decimal from 1e-4 to below
-//! 1e16 with at least one fractional digit, `1.5e-7` and `1e16` beyond). A batch of floats
-//! writes three of them a row.
+//! already brings in), in the layout of Rust's `Debug` (decimal from 1e-4 to below 1e16, with
+//! at least one fractional digit; `1.5e-7` and `1e16` beyond), which Żmij's is but for the
+//! decade from 1e-5 and the exponent's `+`. A batch of floats writes three of them a row.
 //!
 //! The two agree on the digits but for one case: when `x` lies exactly halfway between the two
 //! nearest candidates of the shortest length, std rounds up (`1360664548826925.3`) and Żmij to
@@ -12,67 +12,23 @@
 /// Appends `x` exactly as `write!(out, "{x:?}")` would (`0.30000000000000004`, `1e16`,
 /// `-1.5e-7`, `NaN`).
 pub(crate) fn push_debug(out: &mut String, x: f64) {
-    if x == 0.0 || !x.is_finite() || may_tie(x) {
+    // Żmij writes 1e-5 <= |x| < 1e16 in decimal, std from 1e-4: std takes the decade between.
+    let decimal_below_std = (1e-5..1e-4).contains(&x.abs());
+    if x == 0.0 || !x.is_finite() || decimal_below_std || may_tie(x) {
         use std::fmt::Write;
         write!(out, "{x:?}").expect("writing to a String cannot fail");
         return;
     }
     let mut buffer = zmij::Buffer::new();
-    let text = buffer.format_finite(x).as_bytes();
-    let (negative, text) = match text {
-        [b'-', rest @ ..] => (true, rest),
-        _ => (false, text),
-    };
-    let (mantissa, exponent) = match text.iter().position(|&b| b == b'e') {
-        Some(at) => (&text[..at], exponent_of(&text[at + 1..])),
-        None => (text, 0),
-    };
-    // The digits without the point, and where the point stands among them.
-    let point_at = mantissa.iter().position(|&b| b == b'.');
-    let mut digits = [0u8; 40];
-    let mut count = 0;
-    for &b in mantissa.iter().filter(|&&b| b != b'.') {
-        digits[count] = b;
-        count += 1;
-    }
-    let whole = point_at.unwrap_or(mantissa.len());
-    let leading = digits[..count].iter().take_while(|&&b| b == b'0').count();
-    let trailing = digits[leading..count]
-        .iter()
-        .rev()
-        .take_while(|&&b| b == b'0')
-        .count();
-    let significant = &digits[leading..count - trailing];
-    // x = 0.significant x 10^point
-    let point = whole as i32 - leading as i32 + exponent;
-    if negative {
-        out.push('-');
-    }
-    let n = significant.len() as i32;
-    if (-3..=16).contains(&point) {
-        if point <= 0 {
-            out.push_str("0.");
-            (0..-point).for_each(|_| out.push('0'));
-            out.push_str(ascii(significant));
-        } else if point >= n {
-            out.push_str(ascii(significant));
-            (n..point).for_each(|_| out.push('0'));
-            out.push_str(".0");
-        } else {
-            let (head, tail) = significant.split_at(point as usize);
-            out.push_str(ascii(head));
-            out.push('.');
-            out.push_str(ascii(tail));
+    let text = buffer.format_finite(x);
+    // The layouts agree but for the exponent's sign: `1e+16` is std's `1e16`.
+    match text.split_once("e+") {
+        Some((mantissa, exponent)) => {
+            out.push_str(mantissa);
+            out.push('e');
+            out.push_str(exponent);
         }
-    } else {
-        out.push_str(ascii(&significant[..1]));
-        if n > 1 {
-            out.push('.');
-            out.push_str(ascii(&significant[1..]));
-        }
-        out.push('e');
-        let mut digits = itoa::Buffer::new();
-        out.push_str(digits.format(point - 1));
+        None => out.push_str(text),
     }
 }
 
@@ -85,32 +41,25 @@ fn may_tie(x: f64) -> bool {
     let Some((_, odd, k)) = super::float_parts(x) else {
         return false;
     };
-    match u32::try_from(-k) {
-        Err(_) => x.abs() >= 9_007_199_254_740_992.0,
-        Ok(k) => 5u128
-            .checked_pow(k)
-            .and_then(|power| power.checked_mul(u128::from(odd)))
-            .is_some_and(|exact| exact < 1_000_000_000_000_000_000),
+    if k >= 0 {
+        return x.abs() >= 9_007_199_254_740_992.0;
     }
+    // 5^27 alone passes 10^18.
+    let k = k.unsigned_abs() as usize;
+    k < POWERS_OF_FIVE.len()
+        && u128::from(POWERS_OF_FIVE[k]) * u128::from(odd) < 1_000_000_000_000_000_000
 }
 
-/// Digits as text.
-fn ascii(digits: &[u8]) -> &str {
-    std::str::from_utf8(digits).expect("ASCII digits")
-}
-
-/// The exponent after an `e`: an optional sign and decimal digits.
-fn exponent_of(text: &[u8]) -> i32 {
-    let (negative, digits) = match text {
-        [b'-', rest @ ..] => (true, rest),
-        [b'+', rest @ ..] => (false, rest),
-        _ => (false, text),
-    };
-    let magnitude = digits
-        .iter()
-        .fold(0i32, |n, &b| n * 10 + i32::from(b - b'0'));
-    if negative { -magnitude } else { magnitude }
-}
+/// 5^k for k = 0..=26.
+const POWERS_OF_FIVE: [u64; 27] = {
+    let mut powers = [1u64; 27];
+    let mut k = 1;
+    while k < 27 {
+        powers[k] = powers[k - 1] * 5;
+        k += 1;
+    }
+    powers
+};
 
 #[cfg(test)]
 mod tests {
@@ -126,11 +75,39 @@ mod tests {
     #[test]
     fn the_layouts_at_their_edges_are_rusts() {
         let cases = [
-            0.0, -0.0, 1.0, -1.0, 0.1, 0.30000000000000004, 1e-4, 9.999999999999999e-5, 1e-5,
-            1.5e-7, 1e15, 9999999999999998.0, 1e16, 1.2345e16, 123456.0, 100.0, 1e21, 5e-324,
-            f64::MIN_POSITIVE, f64::MAX, -f64::MAX, f64::EPSILON, f64::INFINITY, f64::NAN,
-            -f64::INFINITY, 0.014147800050860564, 2.331857488811421, 1e100, 1.7976931348623157e308,
-            1360664548826925.25, 9007199254740993.0, 1e23, 4.35e17,
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            0.1,
+            0.30000000000000004,
+            1e-4,
+            9.999999999999999e-5,
+            1e-5,
+            1.5e-7,
+            1e15,
+            9999999999999998.0,
+            1e16,
+            1.2345e16,
+            123456.0,
+            100.0,
+            1e21,
+            5e-324,
+            f64::MIN_POSITIVE,
+            f64::MAX,
+            -f64::MAX,
+            f64::EPSILON,
+            f64::INFINITY,
+            f64::NAN,
+            -f64::INFINITY,
+            0.014147800050860564,
+            2.331857488811421,
+            1e100,
+            1.7976931348623157e308,
+            1360664548826925.25,
+            9007199254740993.0,
+            1e23,
+            4.35e17,
         ];
         for x in cases {
             assert_eq!(debug(x), format!("{x:?}"), "{x:e}");

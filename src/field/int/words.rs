@@ -435,7 +435,8 @@ fn eight_digits(word: u64) -> Option<u64> {
     const EACH: u64 = 0x0101_0101_0101_0101;
     let low = word.wrapping_sub(0x30 * EACH);
     // Every byte 0x30..=0x3f, and below 0x3a (adding 6 leaves its high nibble clear).
-    let digits = word & (0xf0 * EACH) == 0x30 * EACH && low.wrapping_add(6 * EACH) & (0xf0 * EACH) == 0;
+    let digits =
+        word & (0xf0 * EACH) == 0x30 * EACH && low.wrapping_add(6 * EACH) & (0xf0 * EACH) == 0;
     if !digits {
         return None;
     }
