@@ -4,6 +4,7 @@
 //! claim, never an error.
 
 use super::plan::{Arithmetic, CLAIMS, OutputCheck};
+use super::rel_error::RelError;
 use super::ulps::{FloatFormat, ulp_distance};
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
@@ -11,6 +12,7 @@ use crate::field::int::U256;
 use crate::number::WordRatio;
 use crate::units::{Dimension, parse_si};
 use num_traits::{Signed, Zero};
+use std::cmp::Ordering;
 
 /// The relative error up to which a claim agrees with a value computed in f64 (the default
 /// rule of `--backend f64`).
@@ -190,14 +192,14 @@ impl Claimed {
 /// denominator: `|cn 2^-k - s odd cd| / (odd cd)` for k < 0, `|cn - s odd 2^k cd| / (odd 2^k cd)`
 /// for k >= 0 (s the sign that makes it a difference of the signed values). `None` when a
 /// value passes 2^256, or `x` is not finite: the general comparison then decides.
-pub(super) fn float_rel_error(claim: &WordRatio, x: f64) -> Option<Option<Q>> {
+pub(super) fn float_rel_error(claim: &WordRatio, x: f64) -> Option<Option<RelError>> {
     let (claim_negative, cn, cd) = claim.parts();
     if !x.is_finite() {
         return None;
     }
     let Some((negative, odd, exponent)) = crate::field::float_parts(x) else {
         // x = 0: only a zero claim agrees.
-        return Some((cn == U256::ZERO).then(Q::zero));
+        return Some((cn == U256::ZERO).then_some(RelError::ZERO));
     };
     let shifted = |v: U256, k: i64| match u32::try_from(k) {
         _ if v == U256::ZERO => Some(v),
@@ -219,11 +221,7 @@ pub(super) fn float_rel_error(claim: &WordRatio, x: f64) -> Option<Option<Q>> {
     } else {
         claimed.checked_add(value)?
     };
-    Some(Some(if difference == U256::ZERO {
-        Q::zero()
-    } else {
-        U256::unreduced(difference, value)
-    }))
+    Some(Some(RelError::Words(difference, value)))
 }
 
 pub(super) fn compare(
@@ -246,7 +244,8 @@ pub(super) fn compare(
         return OutputCheck {
             output,
             ok: false,
-            rel_error: None,
+            error: None,
+            nearest: f64::INFINITY,
             ulps: None,
             not_finite: true,
         };
@@ -256,21 +255,29 @@ pub(super) fn compare(
         _ => None,
     };
     let rel_error = if equal == Some(true) {
-        Some(Q::zero())
+        Some(RelError::ZERO)
     } else if value.is_zero() {
-        claimed.as_ref().is_some_and(Q::is_zero).then(Q::zero)
+        claimed
+            .as_ref()
+            .is_some_and(Q::is_zero)
+            .then_some(RelError::ZERO)
     } else {
         let claimed = claimed
             .as_ref()
             .expect("a claim not equal to the value is read exactly");
-        // |c - v| / |v| = |cn vd - vn cd| / (|vn| cd), reduced once (one GCD instead of the
-        // three of a subtraction and a division of rationals), on machine words when both
-        // parts fit 256 bits (num-bigint's GCD was half of an f64 batch row).
-        let difference = claimed.numer() * value.denom() - value.numer() * claimed.denom();
-        Some(crate::field::int::reduce(
-            difference.abs(),
-            value.numer().abs() * claimed.denom(),
-        ))
+        // |c - v| / |v| = |cn vd - vn cd| / (|vn| cd), not reduced (its text and nearest f64
+        // are taken by value), on machine words when both parts fit 256 bits.
+        let difference = (claimed.numer() * value.denom() - value.numer() * claimed.denom()).abs();
+        let scale = value.numer().abs() * claimed.denom();
+        Some(
+            match (
+                U256::from_big(difference.magnitude()),
+                U256::from_big(scale.magnitude()),
+            ) {
+                (Some(n), Some(d)) => RelError::Words(n, d),
+                _ => RelError::Rational(Q::new_raw(difference, scale)),
+            },
+        )
     };
     OutputCheck::finite(output, rel_error, ulps, agreement, arithmetic)
 }
@@ -280,25 +287,25 @@ impl OutputCheck {
     /// ulp distance `ulps` (under [`Agreement::Ulps`]): whether it agrees under `agreement`.
     pub(super) fn finite(
         output: usize,
-        rel_error: Option<Q>,
+        error: Option<RelError>,
         ulps: Option<u64>,
         agreement: &Agreement,
         arithmetic: Arithmetic,
     ) -> OutputCheck {
+        let nearest = error.as_ref().map_or(f64::INFINITY, RelError::nearest_f64);
         let ok = match (agreement, arithmetic) {
-            (Agreement::Exact, Arithmetic::Exact) => rel_error.as_ref().is_some_and(Q::is_zero),
-            (Agreement::Exact, Arithmetic::F64) => rel_error
+            (Agreement::Exact, Arithmetic::Exact) => error.as_ref().is_some_and(RelError::is_zero),
+            (Agreement::Exact, Arithmetic::F64) => error.is_some() && nearest <= FLOAT_TOLERANCE,
+            (Agreement::Relative(tolerance), _) => error
                 .as_ref()
-                .is_some_and(|r| crate::field::Field::nearest_f64(r) <= FLOAT_TOLERANCE),
-            (Agreement::Relative(tolerance), _) => {
-                rel_error.as_ref().is_some_and(|r| r <= tolerance)
-            }
+                .is_some_and(|r| r.cmp_value(tolerance) != Ordering::Greater),
             (Agreement::Ulps(n, _), _) => ulps.is_some_and(|u| u <= *n),
         };
         OutputCheck {
             output,
             ok,
-            rel_error,
+            error,
+            nearest,
             ulps,
             not_finite: false,
         }
@@ -319,7 +326,7 @@ mod tests {
         let signs = b.row(2, "1,3,0,1/2,-1/2,0/7").unwrap();
         let oks: Vec<bool> = signs.checks.iter().map(|v| v.ok).collect();
         assert_eq!(oks, [false, false, true]);
-        assert_eq!(signs.checks[0].rel_error, Some(Q::from_integer(2.into())));
+        assert_eq!(signs.checks[0].rel_error(), Some(Q::from_integer(2.into())));
         // Beyond 38 digits a claim takes the general parser, with the same check.
         let long = format!("{}/{}", "1".repeat(40), "2".repeat(40));
         let row = b.row(3, &format!("1,3,0,-1/2,{long},0")).unwrap();
@@ -348,7 +355,7 @@ mod tests {
             let value = crate::field::exact_float(x).unwrap();
             let general = compare(0, &claimed, &value, &Agreement::Exact, Arithmetic::F64);
             if let Some(rel_error) = float_rel_error(&word, x) {
-                proptest::prop_assert_eq!(rel_error, general.rel_error);
+                proptest::prop_assert_eq!(rel_error.map(|r| r.value()), general.rel_error());
             } else {
                 // Only far from the claim can a product pass 2^256.
                 proptest::prop_assert!(!near);

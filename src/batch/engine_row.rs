@@ -25,13 +25,12 @@ use super::compare::Agreement;
 use super::plan::{
     Arithmetic, Diagnosis, OutputCheck, Role, STATE, SolvedRow, WORD_CLAIMS, WordPlan,
 };
+use super::rel_error::RelError;
 use super::word_row::each_cell;
-use crate::field::Q;
 use crate::field::int::{FixedInt, I256, U256, Wide};
 use crate::number::WordRatio;
 use crate::solve::fraction_free::{Parts, Raw, raw_of};
 use crate::solve::words::Part;
-use num_traits::Zero;
 use std::cmp::Ordering;
 
 /// The rod's mass distribution as its cell gives it.
@@ -306,7 +305,7 @@ fn check(k: usize, claim: Claim, x: &Ratio, agreement: &Agreement) -> Option<Out
     let zero_claim = claim.n == U256::ZERO;
     let rel_error = if x.n == U256::ZERO {
         // Only a zero claim agrees with a zero value; any other is infinitely far.
-        zero_claim.then(Q::zero)
+        zero_claim.then_some(RelError::ZERO)
     } else {
         let claimed = claim.n.checked_mul_wide(x.d)?;
         let value = x.n.checked_mul_wide(claim.d)?;
@@ -315,11 +314,7 @@ fn check(k: usize, claim: Claim, x: &Ratio, agreement: &Agreement) -> Option<Out
         } else {
             claimed.checked_add(value)?
         };
-        Some(if difference == U256::ZERO {
-            Q::zero()
-        } else {
-            U256::unreduced(difference, value)
-        })
+        Some(RelError::Words(difference, value))
     };
     Some(OutputCheck::finite(
         k,
@@ -413,10 +408,7 @@ fn diagnose(
     checks: &[OutputCheck],
 ) -> Option<(String, Diagnosis)> {
     let off = checks.iter().any(|c| !c.ok);
-    if checks[..STATE]
-        .iter()
-        .all(|c| c.rel_error.as_ref().is_some_and(Q::is_zero))
-    {
+    if checks[..STATE].iter().all(OutputCheck::exact) {
         let findings = if off { vec![Finding::Off] } else { Vec::new() };
         return Some(("0".to_string(), Diagnosis::Findings(findings)));
     }

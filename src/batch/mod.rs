@@ -19,7 +19,7 @@
 //!
 //! One job per file: the header and the cells of a row (`header.rs`: [`Batch`]), solving a row
 //! and writing its output line (`row.rs`: [`SolvedRow`]), claimed values against computed ones
-//! (`compare.rs`: [`OutputCheck`]), the tolerances per class of rows (`classes.rs`:
+//! (`compare.rs`: [`OutputCheck`], its exact error kept as computed in `rel_error.rs`), the tolerances per class of rows (`classes.rs`:
 //! [`ClassRule`]), the known findings of `--expect` (`expected.rs`:
 //! [`Expected`]), the totals (`summary.rs`: [`Summary`], rendered by
 //! [`crate::report::batch_summary`]) and the chunked, parallel stream (`stream.rs`: [`run`]).
@@ -36,6 +36,7 @@ mod float_row;
 mod header;
 mod impacts;
 mod plan;
+mod rel_error;
 mod row;
 mod stream;
 mod summary;

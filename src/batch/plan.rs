@@ -5,6 +5,7 @@
 //! each other in a circle.
 
 use super::audit::Finding;
+use super::rel_error::RelError;
 use crate::field::Q;
 use crate::solve::Route;
 
@@ -193,7 +194,7 @@ pub(super) fn write_float(out: &mut String, x: f64) {
 /// let row = Batch::new("m,M,V", Arithmetic::Exact).unwrap().row(1, "1,1,0.5").unwrap();
 /// let check = &row.checks[0];
 /// assert_eq!((check.output, check.ok), (1, false));
-/// assert_eq!(check.rel_error, Some(q(1, 4))); // |1/2 - 2/5| / (2/5)
+/// assert_eq!(check.rel_error(), Some(q(1, 4))); // |1/2 - 2/5| / (2/5)
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct OutputCheck {
@@ -201,12 +202,10 @@ pub struct OutputCheck {
     pub output: usize,
     /// The claim agrees under the batch's `Agreement`.
     pub ok: bool,
-    /// |claim - value| / |value|, exact; `None` when it is infinite (a zero value and a nonzero
-    /// claim) or the claim is not a number. Not necessarily in lowest terms (reducing it was
-    /// most of a row's work): [`Q`] compares, orders and hashes it by value, and
-    /// [`decimal`](crate::field::decimal::decimal) prints it by value; print it with `{}` only
-    /// after reducing it (`Q::new(n, d)`).
-    pub rel_error: Option<Q>,
+    /// |claim - value| / |value| as the row computed it (see [`OutputCheck::rel_error`]).
+    pub(super) error: Option<RelError>,
+    /// The f64 nearest to `error` (infinite when `error` is).
+    pub(super) nearest: f64,
     /// The ulp distance, under `Agreement::Ulps` and for a finite claim.
     pub ulps: Option<u64>,
     /// The claim was NaN or infinite.
@@ -262,10 +261,30 @@ impl OutputCheck {
     /// assert_eq!(b.row(2, "1,1,NaN").unwrap().checks[0].rel_error_text(), "nan");
     /// ```
     pub fn rel_error_text(&self) -> String {
-        match (&self.rel_error, self.not_finite) {
+        match (&self.error, self.not_finite) {
             (_, true) => "nan".to_string(),
-            (Some(r), false) => crate::field::decimal::decimal(r, 3),
+            (Some(r), false) => r.text(),
             (None, false) => "inf".to_string(),
         }
+    }
+
+    /// |claim - value| / |value|, exact and in lowest terms; `None` when it is infinite (a
+    /// zero value and a nonzero claim) or the claim is not a number.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::{batch::{Batch, Arithmetic}, field::q};
+    /// let b = Batch::new("m,M,v", Arithmetic::Exact).unwrap();
+    /// assert_eq!(b.row(1, "1,1,0.61").unwrap().checks[0].rel_error(), Some(q(1, 60)));
+    /// assert_eq!(b.row(2, "1,1,3/5").unwrap().checks[0].rel_error(), Some(q(0, 1)));
+    /// assert_eq!(b.row(3, "1,1,NaN").unwrap().checks[0].rel_error(), None);
+    /// ```
+    pub fn rel_error(&self) -> Option<Q> {
+        self.error.as_ref().map(RelError::value)
+    }
+
+    /// Whether the claim is exactly the value.
+    pub(super) fn exact(&self) -> bool {
+        self.error.as_ref().is_some_and(RelError::is_zero)
     }
 }

@@ -225,10 +225,7 @@ fn diagnose(
     };
     // The exact state has no finding and no energy change: no audit work for exact claims
     // (the reference batches claim exact values on every row).
-    if checks[..STATE]
-        .iter()
-        .all(|c| c.rel_error.as_ref().is_some_and(Q::is_zero))
-    {
+    if checks[..STATE].iter().all(OutputCheck::exact) {
         let finding = if checks.iter().any(|c| c.not_finite) {
             Some(Finding::NonFinite)
         } else {

@@ -5,7 +5,6 @@ use super::audit::Finding;
 use super::expected::{Expected, ExpectedEntry};
 use super::plan::{CLAIMS, Diagnosis, SolvedRow};
 use crate::field::Q;
-use num_traits::Zero;
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
 
@@ -169,29 +168,25 @@ impl Summary {
                     s.wrong_rows.push((label, 1));
                 }
             }
-            let nearest = v.rel_error.as_ref().map(crate::field::Field::nearest_f64);
-            let bigger = match (&s.max, &v.rel_error, nearest) {
-                (None, _, _) | (Some(Some(_)), None, _) => true,
-                (Some(Some(old)), Some(new), Some(near)) => match near.total_cmp(&s.max_nearest) {
-                    Ordering::Equal => new > old,
+            // The row's own nearest f64 orders it; the exact values only where those tie.
+            let near = v.nearest;
+            let bigger = match (&s.max, &v.error) {
+                (None, _) | (Some(Some(_)), None) => true,
+                (Some(Some(old)), Some(new)) => match near.total_cmp(&s.max_nearest) {
+                    Ordering::Equal => new.cmp_value(old) == Ordering::Greater,
                     other => other == Ordering::Greater,
                 },
                 _ => false,
             };
             if bigger {
-                // Reduced here, at a new maximum only: a row's own may not be (see
-                // `OutputCheck::rel_error`), and the summary's is printed.
-                let reduced = v
-                    .rel_error
-                    .as_ref()
-                    .map(|r| Q::new(r.numer().clone(), r.denom().clone()));
-                s.max = Some(reduced);
-                s.max_nearest = nearest.unwrap_or(f64::INFINITY);
+                // Reduced here, at a new maximum only: the summary's is printed.
+                s.max = Some(v.rel_error());
+                s.max_nearest = near;
             }
-            let rounded = match (&v.rel_error, nearest) {
-                (Some(r), _) if r.is_zero() => 0.0,
-                (Some(_), Some(near)) => two_significant(near),
-                _ => f64::INFINITY,
+            let rounded = match &v.error {
+                Some(r) if r.is_zero() => 0.0,
+                Some(_) => two_significant(near),
+                None => f64::INFINITY,
             };
             *s.histogram.entry(rounded.to_bits()).or_default() += 1;
         }
@@ -495,9 +490,9 @@ mod tests {
         assert_eq!(max.to_string(), "1/6000000");
         let reduced = Q::new(max.numer().clone(), max.denom().clone());
         assert_eq!(max.to_string(), reduced.to_string());
-        assert_eq!(row.checks[0].rel_error.as_ref(), Some(max));
+        assert_eq!(row.checks[0].rel_error().as_ref(), Some(max));
         // The premise: the row's own is not in lowest terms.
-        let own = row.checks[0].rel_error.as_ref().unwrap();
+        let own = row.checks[0].error.as_ref().unwrap().unreduced();
         assert_ne!(own.numer(), reduced.numer());
     }
 

@@ -11,10 +11,9 @@
 
 use super::compare::Agreement;
 use super::plan::{Diagnosis, OutputCheck, Role, STATE, SolvedRow, WordPlan};
-use crate::field::Q;
+use super::rel_error::RelError;
 use crate::field::int::U256;
 use crate::solve::words::{Inputs, Part, solve_reduced};
-use num_traits::Zero;
 
 /// Walks the cells of `line` with their roles, giving each to `take`; `None` when the line
 /// has too few or too many cells or `take` refuses one.
@@ -106,7 +105,8 @@ pub(super) fn word_row(
         checks.push(OutputCheck {
             output: k,
             ok: true,
-            rel_error: Some(Q::zero()),
+            error: Some(RelError::ZERO),
+            nearest: 0.0,
             ulps: None,
             not_finite: false,
         });

@@ -338,19 +338,32 @@ impl Significant {
             }
         };
         let estimate = log10_estimate(n.bits().into(), d.bits().into());
-        let mut exp = settle_log10(estimate, |e| {
-            let (num, den) = scaled(-e)?;
-            Some(num.cmp(&den))
-        })?;
-        let (num, den) = scaled(digits as i64 - 1 - exp)?;
-        // Below 10^digits <= 10^18 < 2^63.
-        let (quot, rem) = num.div_small(den);
+        // The estimate is off by one at most. Up to 17 digits the quotient at it, below
+        // 10^18 < 2^63 either way, says which way; 18 digits settle the exponent first.
+        let mut exp = if digits < 18 {
+            estimate
+        } else {
+            settle_log10(estimate, |e| {
+                let (num, den) = scaled(-e)?;
+                Some(num.cmp(&den))
+            })?
+        };
+        let (low, high) = (10u64.pow(digits as u32 - 1), 10u64.pow(digits as u32));
+        let (quot, rem, den) = loop {
+            let (num, den) = scaled(digits as i64 - 1 - exp)?;
+            let (quot, rem) = num.div_small(den);
+            match quot {
+                q if q < low => exp -= 1,
+                q if q >= high => exp += 1,
+                _ => break (quot, rem, den),
+            }
+        };
         let exact = rem == U256::ZERO;
         // 2 rem against den, as rem against den - rem (2 rem may pass 2^256).
         let half = || rem.cmp(&den.minus(rem));
         let away = !exact && rounds_away(rounding, negative, quot % 2 == 1, half);
         let mut m = quot + u64::from(away);
-        if m == 10u64.pow(digits as u32) {
+        if m == high {
             // 9.995 -> 10.0: the rounding carried into a new digit.
             m /= 10;
             exp += 1;

@@ -1,0 +1,113 @@
+//! A claim's relative error |claim - value| / |value|, exact and kept as its row computed it:
+//! a fraction of machine words (the word, f64 and engine rows) or a rational (the general row),
+//! never reduced until somebody asks for the value. A row needs only its nearest f64 (for the
+//! f64 tolerance and the summary) and its three-digit text, both of which the words give
+//! directly; building and reducing a big rational was a fifth of an engine row.
+
+use crate::field::decimal::{decimal, decimal_words};
+use crate::field::int::U256;
+use crate::field::{Field, Q};
+use num_traits::Zero;
+use std::cmp::Ordering;
+
+/// An exact, nonnegative relative error.
+#[derive(Debug, Clone)]
+pub(crate) enum RelError {
+    /// `n/d` on machine words, `d > 0`, not necessarily reduced.
+    Words(U256, U256),
+    /// A rational, not necessarily reduced.
+    Rational(Q),
+}
+
+impl RelError {
+    /// Zero: the claim is the value.
+    pub(crate) const ZERO: RelError = RelError::Words(U256::ZERO, U256::ONE);
+
+    /// Whether the claim is the value.
+    pub(crate) fn is_zero(&self) -> bool {
+        match self {
+            RelError::Words(n, _) => *n == U256::ZERO,
+            RelError::Rational(q) => q.is_zero(),
+        }
+    }
+
+    /// The value in lowest terms.
+    pub(crate) fn value(&self) -> Q {
+        match self {
+            RelError::Words(n, d) => U256::ratio(false, *n, *d),
+            RelError::Rational(q) => Q::new(q.numer().clone(), q.denom().clone()),
+        }
+    }
+
+    /// The value as a [`Q`] as it stands (not reduced): for comparisons, which [`Q`] makes by
+    /// value.
+    pub(crate) fn unreduced(&self) -> Q {
+        match self {
+            RelError::Words(n, d) => U256::unreduced(*n, *d),
+            RelError::Rational(q) => q.clone(),
+        }
+    }
+
+    /// The nearest f64, correctly rounded.
+    pub(crate) fn nearest_f64(&self) -> f64 {
+        match self {
+            RelError::Words(n, _) if *n == U256::ZERO => 0.0,
+            RelError::Words(n, d) => {
+                U256::nearest_f64(*n, *d).unwrap_or_else(|| self.unreduced().nearest_f64())
+            }
+            RelError::Rational(q) => q.nearest_f64(),
+        }
+    }
+
+    /// Three significant digits, as [`decimal`] prints the value (`0.0167`, `5.39e-17`, `0`).
+    pub(crate) fn text(&self) -> String {
+        match self {
+            RelError::Words(n, d) => decimal_words(false, *n, *d, 3),
+            RelError::Rational(q) => decimal(q, 3),
+        }
+    }
+
+    /// The order of the error and a rational, by value (a zero error without big integers:
+    /// an exact batch compares its zeros row after row).
+    pub(crate) fn cmp_value(&self, other: &Q) -> Ordering {
+        if self.is_zero() {
+            return other.sign().map_or(Ordering::Equal, Ordering::reverse);
+        }
+        self.unreduced().cmp(other)
+    }
+}
+
+/// Equal when the values are, however each is held.
+impl PartialEq for RelError {
+    fn eq(&self, other: &RelError) -> bool {
+        self.unreduced() == other.unreduced()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::q;
+
+    #[test]
+    fn words_and_rationals_of_one_value_agree_on_everything() {
+        let words = RelError::Words(U256 { hi: 0, lo: 10 }, U256 { hi: 0, lo: 600 });
+        let rational = RelError::Rational(Q::new_raw(10.into(), 600.into()));
+        for e in [&words, &rational] {
+            assert_eq!(e.value(), q(1, 60));
+            assert_eq!(e.value().denom().to_string(), "60");
+            assert_eq!(e.nearest_f64(), 1.0 / 60.0);
+            assert_eq!(e.text(), "0.0167");
+            assert!(!e.is_zero());
+            assert_eq!(e.cmp_value(&q(1, 61)), Ordering::Greater);
+        }
+        assert_eq!(words, rational);
+        assert!(RelError::ZERO.is_zero());
+        assert_eq!(RelError::ZERO.text(), "0");
+        assert_eq!(RelError::ZERO.nearest_f64(), 0.0);
+        assert_ne!(RelError::ZERO, words);
+        assert_eq!(RelError::ZERO.cmp_value(&q(0, 1)), Ordering::Equal);
+        assert_eq!(RelError::ZERO.cmp_value(&q(1, 9)), Ordering::Less);
+        assert_eq!(words.cmp_value(&q(1, 60)), Ordering::Equal);
+    }
+}
