@@ -112,17 +112,27 @@ impl WordRatio {
     /// The machine-word form of `text` (already trimmed), or `None` when it is not one; the
     /// general parser gives the same value for these forms (and the error for `/0`).
     pub(crate) fn parse(text: &str) -> Option<WordRatio> {
-        let (negative, unsigned) = match text.as_bytes().first()? {
+        WordRatio::parse_bytes(text.as_bytes())
+    }
+
+    /// [`WordRatio::parse`] of a cell's bytes, as a row reads them (no UTF-8 check: anything
+    /// but ASCII digits, signs, `/`, `.` and `e` is refused).
+    pub(crate) fn parse_bytes(text: &[u8]) -> Option<WordRatio> {
+        let (negative, unsigned) = match text.first()? {
             b'-' => (true, &text[1..]),
             b'+' => (false, &text[1..]),
             _ => (false, text),
         };
-        let (numer, denom) = match unsigned.split_once('/') {
-            Some((n, d)) => (U256::parse_decimal(n)?, U256::parse_decimal(d)?),
-            None if unsigned.bytes().all(|b| b.is_ascii_digit()) => {
-                (U256::parse_decimal(unsigned)?, U256::ONE)
-            }
-            None => WordRatio::decimal(unsigned.as_bytes())?,
+        let (numer, denom) = match unsigned.iter().position(|&b| b == b'/') {
+            Some(at) => (
+                U256::parse_decimal(&unsigned[..at])?,
+                U256::parse_decimal(&unsigned[at + 1..])?,
+            ),
+            // Digits alone, or a decimal (which also refuses digits past 77).
+            None => match U256::parse_decimal(unsigned) {
+                Some(n) => (n, U256::ONE),
+                None => WordRatio::decimal(unsigned)?,
+            },
         };
         (denom != U256::ZERO).then_some(WordRatio {
             negative,
@@ -183,7 +193,7 @@ impl WordRatio {
                     .copied()
                     .filter(u8::is_ascii_digit)
                     .collect();
-                U256::parse_decimal(std::str::from_utf8(&digits).ok()?)?
+                U256::parse_decimal(&digits)?
             }
             _ => return None,
         };

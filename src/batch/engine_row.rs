@@ -294,7 +294,7 @@ impl Claim {
     /// ten); `None` for anything else (units, NaN, empty: the general row's).
     fn parse(cell: &[u8]) -> Option<Claim> {
         let (negative, n, d) =
-            WordRatio::parse(std::str::from_utf8(cell.trim_ascii()).ok()?)?.parts();
+            WordRatio::parse_bytes(cell.trim_ascii())?.parts();
         Some(Claim { negative, n, d })
     }
 }
@@ -635,7 +635,7 @@ fn audit<T: FixedInt>(
     let change_n = kc.mul(&vd2)?.mul(&den2)?.sub(&vn2.mul(&ke)?.mul(&q2)?)?;
     let change_d = q2.mul(&den2)?.mul(&wv)?.mul(&vn2)?;
     let ((negative, n), (_, d)) = (change_n.to_words()?, change_d.to_words()?);
-    let text = crate::field::decimal::decimal_words(negative, n, d, 3);
+    let text = crate::field::decimal::decimal_words(negative, n, d, 3, None);
     let change = if change_n.sign() == Ordering::Greater {
         format!("+{text}")
     } else {

@@ -89,7 +89,7 @@ pub(super) fn float_word_row(
             out.push_str(",,");
             continue;
         }
-        let claim = WordRatio::parse(std::str::from_utf8(cell).ok()?)?;
+        let claim = WordRatio::parse_bytes(cell)?;
         let rel_error = float_rel_error(&claim, values[k])?;
         let check = OutputCheck::finite(k, rel_error, None, agreement, Arithmetic::F64);
         check.write_cells(&mut out, false);

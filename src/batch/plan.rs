@@ -263,7 +263,7 @@ impl OutputCheck {
     pub fn rel_error_text(&self) -> String {
         match (&self.error, self.not_finite) {
             (_, true) => "nan".to_string(),
-            (Some(r), false) => r.text(),
+            (Some(r), false) => r.text(self.nearest),
             (None, false) => "inf".to_string(),
         }
     }

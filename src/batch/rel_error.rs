@@ -59,10 +59,11 @@ impl RelError {
         }
     }
 
-    /// Three significant digits, as [`decimal`] prints the value (`0.0167`, `5.39e-17`, `0`).
-    pub(crate) fn text(&self) -> String {
+    /// Three significant digits, as [`decimal`] prints the value (`0.0167`, `5.39e-17`, `0`);
+    /// `near` is its nearest f64, which guides the words.
+    pub(crate) fn text(&self, near: f64) -> String {
         match self {
-            RelError::Words(n, d) => decimal_words(false, *n, *d, 3),
+            RelError::Words(n, d) => decimal_words(false, *n, *d, 3, Some(near)),
             RelError::Rational(q) => decimal(q, 3),
         }
     }
@@ -97,13 +98,14 @@ mod tests {
             assert_eq!(e.value(), q(1, 60));
             assert_eq!(e.value().denom().to_string(), "60");
             assert_eq!(e.nearest_f64(), 1.0 / 60.0);
-            assert_eq!(e.text(), "0.0167");
+            assert_eq!(e.text(1.0 / 60.0), "0.0167");
+            assert_eq!(e.text(0.5), "0.0167"); // a wrong guess costs time only
             assert!(!e.is_zero());
             assert_eq!(e.cmp_value(&q(1, 61)), Ordering::Greater);
         }
         assert_eq!(words, rational);
         assert!(RelError::ZERO.is_zero());
-        assert_eq!(RelError::ZERO.text(), "0");
+        assert_eq!(RelError::ZERO.text(0.0), "0");
         assert_eq!(RelError::ZERO.nearest_f64(), 0.0);
         assert_ne!(RelError::ZERO, words);
         assert_eq!(RelError::ZERO.cmp_value(&q(0, 1)), Ordering::Equal);

@@ -425,11 +425,19 @@ fn on_words_two_significant(x: f64) -> Option<f64> {
         }
         Some((num, den))
     };
-    // s with 10 <= x / 10^s < 100, from the float estimate, corrected by one either way.
-    let mut s = x.log10().floor() as i64 - 1;
+    // s with 10 <= x / 10^s < 100, from the float estimate, corrected by one either way;
+    // the quotient guessed in floats and checked on words.
+    if !x.is_normal() {
+        return None;
+    }
+    let mut s = crate::field::decimal::log10_of_float_estimate(x) - 1;
     let (quotient, rest, den) = loop {
         let (num, den) = scaled(s)?;
-        let (q, r) = num.div_small(den);
+        let guess = x * 10f64.powi(-s as i32);
+        let (q, r) = Some(guess)
+            .filter(|q| (0.0..4e18).contains(q))
+            .and_then(|q| num.div_small_guessed(den, q as u64))
+            .unwrap_or_else(|| num.div_small(den));
         match q {
             0..=9 => s -= 1,
             10..=99 => break (q, r, den),

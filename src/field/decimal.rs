@@ -64,6 +64,14 @@ fn log10_estimate(bits_n: u64, bits_d: u64) -> i64 {
     ((bits_n as f64 - bits_d as f64) * std::f64::consts::LOG10_2).floor() as i64
 }
 
+/// floor(log10 x) for a positive normal `x`, off by one at most: floor(e log10 2) for the
+/// binary exponent e of `x` (in [2^e, 2^(e+1))), without a logarithm.
+pub(crate) fn log10_of_float_estimate(x: f64) -> i64 {
+    let binary = (x.to_bits() >> 52 & 0x7ff) as i64 - 1023;
+    // 78913 / 2^18 is log10 2 to within 2^-23, exact in the floor for |e| < 1075.
+    (binary * 78_913) >> 18
+}
+
 /// The exponent e with `10^e <= x < 10^(e+1)`, from a nearby estimate, where `compare(e)`
 /// orders x against 10^e (`None`: it cannot tell, and neither can this).
 fn settle_log10(mut e: i64, mut compare: impl FnMut(i64) -> Option<Ordering>) -> Option<i64> {
@@ -201,11 +209,20 @@ pub fn decimal(value: &Q, digits: usize) -> String {
 
 /// [`decimal`] of `-n/d` (when `negative`) or `n/d`, `d > 0`, given on machine words and not
 /// necessarily reduced: the same text as the reduced [`Q`]'s, without its GCD.
-pub(crate) fn decimal_words(negative: bool, n: U256, d: U256, digits: usize) -> String {
+///
+/// `near`, the f64 nearest to `n/d` where the caller has it, only saves work: it places the
+/// decimal point and guesses the digits, which are then checked exactly.
+pub(crate) fn decimal_words(
+    negative: bool,
+    n: U256,
+    d: U256,
+    digits: usize,
+    near: Option<f64>,
+) -> String {
     if n == U256::ZERO {
         return "0".to_string();
     }
-    match Significant::on_words(negative, n, d, digits.max(1), Rounding::HalfEven) {
+    match Significant::on_words(negative, n, d, digits.max(1), Rounding::HalfEven, near) {
         Some(rounded) => rounded.text(),
         None => decimal(&U256::ratio(negative, n, d), digits),
     }
@@ -284,7 +301,9 @@ impl Significant {
         let words = U256::from_big(value.numer().magnitude())
             .zip(U256::from_big(value.denom().magnitude()));
         words
-            .and_then(|(n, d)| Significant::on_words(value.is_negative(), n, d, digits, rounding))
+            .and_then(|(n, d)| {
+                Significant::on_words(value.is_negative(), n, d, digits, rounding, None)
+            })
             .unwrap_or_else(|| Significant::on_big(value, digits, rounding))
     }
 
@@ -317,13 +336,16 @@ impl Significant {
 
     /// [`Significant::of`] on machine words, for a nonzero value `-n/d` (when `negative`) or
     /// `n/d`, not necessarily reduced, and at most 18 digits; `None` when a product on the way
-    /// would pass 2^256 (the big integers then round it, to the same result).
+    /// would pass 2^256 (the big integers then round it, to the same result). `near`, an f64
+    /// near `n/d` if the caller has one, guesses the exponent and the digits, which the words
+    /// then check (a wrong guess costs time, never digits).
     fn on_words(
         negative: bool,
         n: U256,
         d: U256,
         digits: usize,
         rounding: Rounding,
+        near: Option<f64>,
     ) -> Option<Significant> {
         if digits > 18 {
             return None;
@@ -337,7 +359,11 @@ impl Significant {
                 Some((n, d.checked_mul_wide(ten(k)?)?))
             }
         };
-        let estimate = log10_estimate(n.bits().into(), d.bits().into());
+        let near = near.filter(|x| x.is_normal() && *x > 0.0);
+        let estimate = match near {
+            Some(x) => log10_of_float_estimate(x),
+            None => log10_estimate(n.bits().into(), d.bits().into()),
+        };
         // The estimate is off by one at most. Up to 17 digits the quotient at it, below
         // 10^18 < 2^63 either way, says which way; 18 digits settle the exponent first.
         let mut exp = if digits < 18 {
@@ -350,8 +376,15 @@ impl Significant {
         };
         let (low, high) = (10u64.pow(digits as u32 - 1), 10u64.pow(digits as u32));
         let (quot, rem, den) = loop {
-            let (num, den) = scaled(digits as i64 - 1 - exp)?;
-            let (quot, rem) = num.div_small(den);
+            let k = digits as i64 - 1 - exp;
+            let (num, den) = scaled(k)?;
+            // Truncated: the floor of a positive guess.
+            let guess = near
+                .map(|x| x * 10f64.powi(k as i32))
+                .filter(|q| (0.0..4e18).contains(q));
+            let (quot, rem) = guess
+                .and_then(|q| num.div_small_guessed(den, q as u64))
+                .unwrap_or_else(|| num.div_small(den));
             match quot {
                 q if q < low => exp -= 1,
                 q if q >= high => exp += 1,
@@ -615,9 +648,23 @@ mod tests {
             let (n7, d7) = (U256::from_big(x.numer().magnitude()).and_then(|n| n.checked_mul(7)),
                 U256::from_big(x.denom().magnitude()).and_then(|d| d.checked_mul(7)));
             if let (Some(n7), Some(d7)) = (n7, d7)
-                && let Some(words) = Significant::on_words(x.is_negative(), n7, d7, digits, rounding)
+                && let Some(words) = Significant::on_words(x.is_negative(), n7, d7, digits, rounding, None)
             {
                 prop_assert_eq!(words.text(), big.text());
+            }
+            // With a guess: the nearest f64, and ones too far off by a little and by a lot.
+            let near = crate::field::Field::nearest_f64(&x).abs();
+            for guess in [near, near * (1.0 + 1e-9), near * 0.93, near * 11.0, near / 30.0] {
+                let n = U256::from_big(x.numer().magnitude());
+                let d = U256::from_big(x.denom().magnitude());
+                if let (Some(n), Some(d)) = (n, d)
+                    && let Some(words) = Significant::on_words(x.is_negative(), n, d, digits, rounding, Some(guess))
+                {
+                    prop_assert_eq!(
+                        (words.text(), words.exact, words.m, words.exp),
+                        (big.text(), big.exact, big.m.clone(), big.exp)
+                    );
+                }
             }
         }
     }
@@ -626,7 +673,7 @@ mod tests {
     fn on_words(x: &Q, digits: usize, rounding: Rounding) -> Option<Significant> {
         let n = U256::from_big(x.numer().magnitude())?;
         let d = U256::from_big(x.denom().magnitude())?;
-        Significant::on_words(x.is_negative(), n, d, digits, rounding)
+        Significant::on_words(x.is_negative(), n, d, digits, rounding, None)
     }
 
     #[test]

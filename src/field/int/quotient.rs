@@ -28,12 +28,26 @@ impl U256 {
 
     /// `10^k`, or `None` past 10^76.
     pub(crate) fn pow10(k: u32) -> Option<U256> {
+        /// 10^k for k = 0..=38, every power of ten a `u128` holds.
+        const POWERS: [u128; 39] = {
+            let mut powers = [1u128; 39];
+            let mut k = 1;
+            while k < 39 {
+                powers[k] = powers[k - 1] * 10;
+                k += 1;
+            }
+            powers
+        };
         match k {
             0..=38 => Some(U256 {
                 hi: 0,
-                lo: 10u128.pow(k),
+                lo: POWERS[k as usize],
             }),
-            39..=76 => U256::pow10(38)?.checked_mul(10u128.pow(k - 38)),
+            39..=76 => U256 {
+                hi: 0,
+                lo: POWERS[38],
+            }
+            .checked_mul(POWERS[k as usize - 38]),
             _ => None,
         }
     }
@@ -79,6 +93,29 @@ impl U256 {
         (quotient as u64, rest)
     }
 
+    /// [`U256::div_small`] from a guess of the quotient: checked by one product and corrected
+    /// by up to two steps either way; `None` when the guess is further off.
+    pub(crate) fn div_small_guessed(self, d: U256, guess: u64) -> Option<(u64, U256)> {
+        let mut quotient = guess;
+        let mut below = d.checked_mul(guess.into())?;
+        for _ in 0..2 {
+            if below <= self {
+                break;
+            }
+            quotient = quotient.checked_sub(1)?;
+            below = below.minus(d);
+        }
+        let mut rest = (below <= self).then(|| self.minus(below))?;
+        for _ in 0..2 {
+            if rest < d {
+                break;
+            }
+            rest = rest.minus(d);
+            quotient += 1;
+        }
+        (rest < d).then_some((quotient, rest))
+    }
+
     /// The f64 nearest to `n / d` (ties to even), for nonzero `n` and `d`; `None` when the
     /// scaled operands would pass 2^256 (`n` or `d` of more than 202 bits).
     pub(crate) fn nearest_f64(n: U256, d: U256) -> Option<f64> {
@@ -87,7 +124,8 @@ impl U256 {
             // Both operands are f64s exactly, and IEEE division rounds their quotient
             // correctly, ties to even.
             assert!(n.lo > 0 && d.lo > 0, "nonzero operands");
-            return Some(n.lo as f64 / d.lo as f64);
+            // (Through u64: the hardware converts those; u128 takes a software routine.)
+            return Some(n.lo as u64 as f64 / d.lo as u64 as f64);
         }
         let (bits_n, bits_d) = (n.bits() as i32, d.bits() as i32);
         assert!(bits_n > 0 && bits_d > 0, "nonzero operands");

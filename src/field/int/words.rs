@@ -192,8 +192,7 @@ impl U256 {
 
     /// A decimal number below 2^256 (every number of up to 77 digits; nothing but digits, at
     /// least one), or `None`.
-    pub(crate) fn parse_decimal(digits: &str) -> Option<U256> {
-        let bytes = digits.as_bytes();
+    pub(crate) fn parse_decimal(bytes: &[u8]) -> Option<U256> {
         if bytes.is_empty() || bytes.len() > 78 {
             return None;
         }
@@ -533,14 +532,14 @@ mod tests {
             bad in proptest::sample::select(vec![b'/', b':', b' ', b'.', b'a', 0x80, 0xb0]),
         ) {
             let want = BigUint::parse_bytes(digits.as_bytes(), 10).unwrap();
-            let got = U256::parse_decimal(&digits).map(U256::to_big);
+            let got = U256::parse_decimal(digits.as_bytes()).map(U256::to_big);
             let fits = want.bits() <= 256;
             proptest::prop_assert_eq!(got, fits.then_some(want));
             let mut spoiled = digits.into_bytes();
             let at = at % spoiled.len();
             spoiled[at] = bad;
             let spoiled = String::from_utf8_lossy(&spoiled).into_owned();
-            proptest::prop_assert_eq!(U256::parse_decimal(&spoiled), None);
+            proptest::prop_assert_eq!(U256::parse_decimal(spoiled.as_bytes()), None);
         }
 
         /// Division by a word, its remainder, and the reduction of a fraction on words, against
@@ -576,25 +575,25 @@ mod tests {
     fn parsing_reduction_and_cross_products_match_big_integers() {
         let big = |s: &str| s.parse::<BigUint>().unwrap();
         let max = "115792089237316195423570985008687907853269984665640564039457584007913129639935";
-        assert_eq!(U256::parse_decimal(max).unwrap().to_big(), big(max));
+        assert_eq!(U256::parse_decimal(max.as_bytes()).unwrap().to_big(), big(max));
         assert_eq!(
             U256::parse_decimal(
-                "115792089237316195423570985008687907853269984665640564039457584007913129639936"
+                b"115792089237316195423570985008687907853269984665640564039457584007913129639936"
             ),
             None
         );
-        assert_eq!(U256::parse_decimal(&"9".repeat(78)), None);
-        assert_eq!(U256::parse_decimal(&"0".repeat(79)), None);
-        assert_eq!(U256::parse_decimal("0012"), Some(U256 { hi: 0, lo: 12 }));
-        assert_eq!(U256::parse_decimal(""), None);
-        assert_eq!(U256::parse_decimal("1_0"), None);
+        assert_eq!(U256::parse_decimal("9".repeat(78).as_bytes()), None);
+        assert_eq!(U256::parse_decimal("0".repeat(79).as_bytes()), None);
+        assert_eq!(U256::parse_decimal(b"0012"), Some(U256 { hi: 0, lo: 12 }));
+        assert_eq!(U256::parse_decimal(b""), None);
+        assert_eq!(U256::parse_decimal(b"1_0"), None);
         let (a, b) = (
             "605266953260872505155079183529643000000000000000000000000001",
             "3",
         );
         let (x, y) = (
-            U256::parse_decimal(a).unwrap(),
-            U256::parse_decimal(b).unwrap(),
+            U256::parse_decimal(a.as_bytes()).unwrap(),
+            U256::parse_decimal(b.as_bytes()).unwrap(),
         );
         let g = num_integer::Integer::gcd(&big(a), &big(b));
         assert_eq!(U256::reduce(x, y), (big(a) / &g, big(b) / &g));
@@ -603,13 +602,13 @@ mod tests {
             U256::reduce(six, nine),
             (BigUint::from(2u8), BigUint::from(3u8))
         );
-        let m = U256::parse_decimal(max).unwrap();
+        let m = U256::parse_decimal(max.as_bytes()).unwrap();
         assert!(U256::cross_equal(m, m, m, m));
         assert!(!U256::cross_equal(
             m,
             m,
             m,
-            U256::parse_decimal(&max.replace("935", "934")).unwrap()
+            U256::parse_decimal(max.replace("935", "934").as_bytes()).unwrap()
         ));
         let product = m.full_product(m);
         let want = big(max) * big(max);
