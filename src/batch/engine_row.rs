@@ -293,8 +293,7 @@ impl Claim {
     /// The claim of a cell on words (a fraction, or a decimal as its digits over a power of
     /// ten); `None` for anything else (units, NaN, empty: the general row's).
     fn parse(cell: &[u8]) -> Option<Claim> {
-        let (negative, n, d) =
-            WordRatio::parse_bytes(cell.trim_ascii())?.parts();
+        let (negative, n, d) = WordRatio::parse_bytes(cell.trim_ascii())?.parts();
         Some(Claim { negative, n, d })
     }
 }

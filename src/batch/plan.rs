@@ -238,7 +238,7 @@ impl OutputCheck {
     /// Appends the check's cells: `,<ok>,<rel_error>`, and `,<ulps>` when `ulps_column`.
     pub(super) fn write_cells(&self, out: &mut String, ulps_column: bool) {
         out.push_str(if self.ok { ",true," } else { ",false," });
-        out.push_str(&self.rel_error_text());
+        self.push_rel_error_text(out);
         if ulps_column {
             out.push(',');
             // Empty for a row held to another rule (`--tolerance`): no count was asked of it.
@@ -261,10 +261,17 @@ impl OutputCheck {
     /// assert_eq!(b.row(2, "1,1,NaN").unwrap().checks[0].rel_error_text(), "nan");
     /// ```
     pub fn rel_error_text(&self) -> String {
+        let mut out = String::new();
+        self.push_rel_error_text(&mut out);
+        out
+    }
+
+    /// [`OutputCheck::rel_error_text`], appended to `out`.
+    fn push_rel_error_text(&self, out: &mut String) {
         match (&self.error, self.not_finite) {
-            (_, true) => "nan".to_string(),
-            (Some(r), false) => r.text(self.nearest),
-            (None, false) => "inf".to_string(),
+            (_, true) => out.push_str("nan"),
+            (Some(r), false) => r.push_text(out, self.nearest),
+            (None, false) => out.push_str("inf"),
         }
     }
 

@@ -4,7 +4,7 @@
 //! f64 tolerance and the summary) and its three-digit text, both of which the words give
 //! directly; building and reducing a big rational was a fifth of an engine row.
 
-use crate::field::decimal::{decimal, decimal_words};
+use crate::field::decimal::{decimal, push_decimal_words};
 use crate::field::int::U256;
 use crate::field::{Field, Q};
 use num_traits::Zero;
@@ -59,12 +59,12 @@ impl RelError {
         }
     }
 
-    /// Three significant digits, as [`decimal`] prints the value (`0.0167`, `5.39e-17`, `0`);
-    /// `near` is its nearest f64, which guides the words.
-    pub(crate) fn text(&self, near: f64) -> String {
+    /// Appends three significant digits, as [`decimal`] prints the value (`0.0167`,
+    /// `5.39e-17`, `0`); `near` is its nearest f64, which guides the words.
+    pub(crate) fn push_text(&self, out: &mut String, near: f64) {
         match self {
-            RelError::Words(n, d) => decimal_words(false, *n, *d, 3, Some(near)),
-            RelError::Rational(q) => decimal(q, 3),
+            RelError::Words(n, d) => push_decimal_words(out, false, *n, *d, 3, Some(near)),
+            RelError::Rational(q) => out.push_str(&decimal(q, 3)),
         }
     }
 
@@ -98,14 +98,21 @@ mod tests {
             assert_eq!(e.value(), q(1, 60));
             assert_eq!(e.value().denom().to_string(), "60");
             assert_eq!(e.nearest_f64(), 1.0 / 60.0);
-            assert_eq!(e.text(1.0 / 60.0), "0.0167");
-            assert_eq!(e.text(0.5), "0.0167"); // a wrong guess costs time only
+            let text = |near| {
+                let mut out = String::from("x");
+                e.push_text(&mut out, near);
+                out
+            };
+            assert_eq!(text(1.0 / 60.0), "x0.0167");
+            assert_eq!(text(0.5), "x0.0167"); // a wrong guess costs time only
             assert!(!e.is_zero());
             assert_eq!(e.cmp_value(&q(1, 61)), Ordering::Greater);
         }
         assert_eq!(words, rational);
         assert!(RelError::ZERO.is_zero());
-        assert_eq!(RelError::ZERO.text(0.0), "0");
+        let mut zero = String::new();
+        RelError::ZERO.push_text(&mut zero, 0.0);
+        assert_eq!(zero, "0");
         assert_eq!(RelError::ZERO.nearest_f64(), 0.0);
         assert_ne!(RelError::ZERO, words);
         assert_eq!(RelError::ZERO.cmp_value(&q(0, 1)), Ordering::Equal);

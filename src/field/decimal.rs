@@ -219,12 +219,27 @@ pub(crate) fn decimal_words(
     digits: usize,
     near: Option<f64>,
 ) -> String {
+    let mut out = String::new();
+    push_decimal_words(&mut out, negative, n, d, digits, near);
+    out
+}
+
+/// [`decimal_words`], appended to `out` (a batch row writes its cells into its line).
+pub(crate) fn push_decimal_words(
+    out: &mut String,
+    negative: bool,
+    n: U256,
+    d: U256,
+    digits: usize,
+    near: Option<f64>,
+) {
     if n == U256::ZERO {
-        return "0".to_string();
+        out.push('0');
+        return;
     }
     match Significant::on_words(negative, n, d, digits.max(1), Rounding::HalfEven, near) {
-        Some(rounded) => rounded.text(),
-        None => decimal(&U256::ratio(negative, n, d), digits),
+        Some(rounded) => rounded.write(out),
+        None => out.push_str(&decimal(&U256::ratio(negative, n, d), digits)),
     }
 }
 

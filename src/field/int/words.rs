@@ -575,7 +575,10 @@ mod tests {
     fn parsing_reduction_and_cross_products_match_big_integers() {
         let big = |s: &str| s.parse::<BigUint>().unwrap();
         let max = "115792089237316195423570985008687907853269984665640564039457584007913129639935";
-        assert_eq!(U256::parse_decimal(max.as_bytes()).unwrap().to_big(), big(max));
+        assert_eq!(
+            U256::parse_decimal(max.as_bytes()).unwrap().to_big(),
+            big(max)
+        );
         assert_eq!(
             U256::parse_decimal(
                 b"115792089237316195423570985008687907853269984665640564039457584007913129639936"
