@@ -1,4 +1,4 @@
-//! A small median-of-N timer for the report (criterion is a dev-dependency; benches live in
+//! A small median-of-N timer for the report (criterion belongs to the benchmarks' own package,
 //! `benches/`). Times are reported, never asserted.
 
 use std::time::Instant;

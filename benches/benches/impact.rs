@@ -1,6 +1,6 @@
 //! One impact solved by the general planar solver against the paper's route on the same scene
 //! (the ratio says what generality costs), and the general solver on coupled scenes, where the
-//! three laws part: `cargo bench --bench impact`. Instructions per scene: docs/performance.md.
+//! three laws part: `cargo bench -p rodimpact-benches --bench impact`. Instructions per scene: docs/performance.md.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rodimpact::field::{Q, QSqrt, q};
@@ -12,7 +12,7 @@ use std::hint::black_box;
 
 fn scene_file(name: &str) -> rodimpact::model::System {
     let path = format!(
-        "{}/examples/impacts/{name}.toml",
+        "{}/../examples/impacts/{name}.toml",
         env!("CARGO_MANIFEST_DIR")
     );
     parse_toml(name, &std::fs::read_to_string(path).expect("bench scene")).expect("valid")
