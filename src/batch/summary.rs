@@ -5,6 +5,7 @@ use super::audit::Finding;
 use super::expected::{Expected, ExpectedEntry};
 use super::plan::{CLAIMS, Diagnosis, SolvedRow};
 use crate::field::Q;
+use std::borrow::Cow;
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
 
@@ -117,16 +118,13 @@ impl Summary {
             Some(Diagnosis::Findings(found)) if found.is_empty() => self.audited_ok += 1,
             Some(Diagnosis::Findings(found)) => {
                 self.findings_rows += 1;
-                let label = row
-                    .label
-                    .clone()
-                    .unwrap_or_else(|| format!("row {}", row.number));
+                let label = label_of(row);
                 for f in found {
                     self.findings[*f as usize] += 1;
                     let (names, more) = &mut self.examples[*f as usize];
-                    if !names.contains(&label) {
+                    if !names.iter().any(|name| *name == label) {
                         if names.len() < FINDING_EXAMPLES {
-                            names.push(label.clone());
+                            names.push(label.to_string());
                         } else {
                             *more = true;
                         }
@@ -140,32 +138,26 @@ impl Summary {
             if !expectation.unexpected.is_empty() {
                 tally.rows_unexpected += 1;
                 if tally.unexpected.len() < WRONG_ROWS_SHOWN {
-                    let label = row
-                        .label
-                        .clone()
-                        .unwrap_or_else(|| format!("row {}", row.number));
                     tally
                         .unexpected
-                        .push((label, expectation.unexpected.clone()));
+                        .push((label_of(row).into_owned(), expectation.unexpected.clone()));
                 }
             } else if !expectation.used.is_empty() {
                 tally.rows_expected += 1;
             }
         }
+        // Named once, and copied only into the few rows the summary keeps.
+        let label = row.checks.iter().any(|v| !v.ok).then(|| label_of(row));
         for v in &row.checks {
             let s = &mut self.outputs[v.output];
             s.compared += 1;
             s.wrong += usize::from(!v.ok);
             s.not_finite += usize::from(v.not_finite);
-            if !v.ok {
-                let label = row
-                    .label
-                    .clone()
-                    .unwrap_or_else(|| format!("row {}", row.number));
-                if let Some(at) = s.wrong_rows.iter().position(|(l, _)| *l == label) {
+            if let (false, Some(label)) = (v.ok, &label) {
+                if let Some(at) = s.wrong_rows.iter().position(|(l, _)| l == label) {
                     s.wrong_rows[at].1 += 1;
                 } else if s.wrong_rows.len() < WRONG_ROWS_SHOWN {
-                    s.wrong_rows.push((label, 1));
+                    s.wrong_rows.push((label.to_string(), 1));
                 }
             }
             // The row's own nearest f64 orders it; the exact values only where those tie.
@@ -378,6 +370,14 @@ impl OutputStats {
             }
         }
         None
+    }
+}
+
+/// A row's name in the summary: its label (its `id`), else `row N`.
+fn label_of(row: &SolvedRow) -> Cow<'_, str> {
+    match &row.label {
+        Some(label) => Cow::Borrowed(label),
+        None => Cow::Owned(format!("row {}", row.number)),
     }
 }
 
