@@ -50,15 +50,7 @@ fn may_tie(x: f64) -> bool {
 }
 
 /// 5^k for k = 0..=26.
-const POWERS_OF_FIVE: [u64; 27] = {
-    let mut powers = [1u64; 27];
-    let mut k = 1;
-    while k < 27 {
-        powers[k] = powers[k - 1] * 5;
-        k += 1;
-    }
-    powers
-};
+const POWERS_OF_FIVE: [u64; 27] = super::int::powers(5);
 
 #[cfg(test)]
 mod tests {

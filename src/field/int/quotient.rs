@@ -4,6 +4,7 @@
 //! give (`Ratio::to_f64` is correctly rounded too), without their heap digits.
 
 use super::U256;
+use super::words::POWERS_OF_TEN;
 
 impl U256 {
     /// The bit length (0 for 0).
@@ -28,26 +29,15 @@ impl U256 {
 
     /// `10^k`, or `None` past 10^76.
     pub(crate) fn pow10(k: u32) -> Option<U256> {
-        /// 10^k for k = 0..=38, every power of ten a `u128` holds.
-        const POWERS: [u128; 39] = {
-            let mut powers = [1u128; 39];
-            let mut k = 1;
-            while k < 39 {
-                powers[k] = powers[k - 1] * 10;
-                k += 1;
-            }
-            powers
-        };
+        let ten = |k: u32| u128::from(POWERS_OF_TEN[k as usize]);
         match k {
-            0..=38 => Some(U256 {
+            0..=19 => Some(U256 { hi: 0, lo: ten(k) }),
+            // 10^38 < 2^127: one product of words.
+            20..=38 => Some(U256 {
                 hi: 0,
-                lo: POWERS[k as usize],
+                lo: ten(19) * ten(k - 19),
             }),
-            39..=76 => U256 {
-                hi: 0,
-                lo: POWERS[38],
-            }
-            .checked_mul(POWERS[k as usize - 38]),
+            39..=76 => U256::pow10(38)?.checked_mul(U256::pow10(k - 38)?.lo),
             _ => None,
         }
     }
@@ -165,6 +155,15 @@ mod tests {
     use num_integer::Integer;
     use num_traits::ToPrimitive;
     use proptest::prelude::*;
+
+    #[test]
+    fn powers_of_ten_up_to_the_width() {
+        for k in 0..=76u32 {
+            let want = num_traits::pow(BigUint::from(10u8), k as usize);
+            assert_eq!(U256::pow10(k).map(U256::to_big), Some(want), "10^{k}");
+        }
+        assert_eq!(U256::pow10(77), None); // 10^77 > 2^256
+    }
 
     /// A value of up to `bits` bits from four random words, cut to a random length.
     fn word_value(limbs: [u64; 4], len: u32) -> U256 {

@@ -397,16 +397,19 @@ impl U256 {
     }
 }
 
-/// 10^k for k = 0..=19, every power of ten a `u64` holds.
-const POWERS_OF_TEN: [u64; 20] = {
-    let mut powers = [1u64; 20];
+/// `base^k` for `k < N`, a table built at compile time (`base^(N-1)` must fit a `u64`).
+pub(crate) const fn powers<const N: usize>(base: u64) -> [u64; N] {
+    let mut powers = [1u64; N];
     let mut k = 1;
-    while k < 20 {
-        powers[k] = powers[k - 1] * 10;
+    while k < N {
+        powers[k] = powers[k - 1] * base;
         k += 1;
     }
     powers
-};
+}
+
+/// 10^k for k = 0..=19, every power of ten a `u64` holds.
+pub(crate) const POWERS_OF_TEN: [u64; 20] = powers(10);
 
 /// The value of at most 19 ASCII digits (none: 0), or `None` when a byte is not a digit;
 /// eight digits at a time.
