@@ -162,7 +162,7 @@ mod tests {
             let want = num_traits::pow(BigUint::from(10u8), k as usize);
             assert_eq!(U256::pow10(k).map(U256::to_big), Some(want), "10^{k}");
         }
-        assert_eq!(U256::pow10(77), None); // 10^77 > 2^256
+        assert_eq!(U256::pow10(77), None); // beyond 10^76 by contract
     }
 
     /// A value of up to `bits` bits from four random words, cut to a random length.
