@@ -2,7 +2,9 @@
 //! a fraction of machine words (the word, f64 and engine rows) or a rational (the general row),
 //! never reduced until somebody asks for the value. A row needs only its nearest f64 (for the
 //! f64 tolerance and the summary) and its three-digit text, both of which the words give
-//! directly; building and reducing a big rational was a fifth of an engine row.
+//! directly. Building a big rational per claim, then taking it back to words for its text and
+//! its nearest f64 twice, was about 4,000 of the 25,000 instructions of an f64 row with three
+//! claims.
 
 use crate::field::decimal::{decimal, push_decimal_words};
 use crate::field::int::U256;
