@@ -332,9 +332,6 @@ pub(super) fn engine_row(
     number: usize,
     line: &str,
 ) -> Option<SolvedRow> {
-    if !matches!(agreement, Agreement::Exact | Agreement::Relative(_)) {
-        return None;
-    }
     let mut parts = [None; 7];
     let mut rod = Rod::Uniform;
     let mut claims = [None; WORD_CLAIMS];
@@ -736,7 +733,7 @@ mod tests {
     }
 
     /// What the word rows leave to the general row: a unit, a non-finite claim, a scene the
-    /// general row refuses, an ulps rule.
+    /// general row refuses; an ulps rule drops the word plan altogether.
     #[test]
     fn rows_beyond_the_words_are_left_to_the_general_row() {
         let words = Batch::new("m,M,rod,pivot,v,V,omega", Arithmetic::Exact).unwrap();
@@ -755,6 +752,6 @@ mod tests {
             );
         }
         let ulps = Agreement::Ulps(1, super::super::FloatFormat::F64);
-        assert!(engine_row(plan, &ulps, 1, "1,1,uniform,,0.6,0.4,1.2").is_none());
+        assert!(words.with_agreement(ulps).unwrap().word_plan.is_none());
     }
 }

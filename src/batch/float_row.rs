@@ -70,9 +70,6 @@ pub(super) fn float_word_row(
     number: usize,
     line: &str,
 ) -> Option<SolvedRow> {
-    if matches!(agreement, Agreement::Ulps(..)) {
-        return None;
-    }
     let (inputs, claims) = read_cells(plan, line)?;
     let after = closed_form(&float_params(&inputs)?)?;
     let values = [after.v, after.rod_v, after.omega];

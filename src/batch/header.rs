@@ -265,6 +265,10 @@ impl Batch {
     /// ```
     pub fn with_agreement(mut self, agreement: Agreement) -> Result<Batch, Error> {
         self.takes_ulps("ulps", "needs", "--rtol", &agreement)?;
+        if matches!(agreement, Agreement::Ulps(..)) {
+            // Ulp distances are counted by the general row only (as class rules and --atol).
+            self.word_plan = None;
+        }
         self.agreement = agreement;
         // `--ulps` adds `<claim>_ulps` columns, which an input column may already hold.
         self.names_each_column_once()?;

@@ -44,7 +44,7 @@ impl Batch {
             .word_plan
             .as_ref()
             .and_then(|plan| match self.arithmetic {
-                Arithmetic::Exact => word_row(plan, &self.agreement, number, line)
+                Arithmetic::Exact => word_row(plan, number, line)
                     .or_else(|| engine_row(plan, &self.agreement, number, line)),
                 Arithmetic::F64 => float_word_row(plan, &self.agreement, number, line),
             })

@@ -9,7 +9,6 @@
 //! row's line byte for byte (the outputs are reduced fractions, and a claim is taken only when
 //! its cell is exactly the value's canonical text). The batch word tests hold it to that.
 
-use super::compare::Agreement;
 use super::plan::{Diagnosis, OutputCheck, Role, STATE, SolvedRow, WordPlan};
 use super::rel_error::RelError;
 use crate::field::int::U256;
@@ -63,15 +62,7 @@ pub(super) fn read_cells<'a>(
 
 /// The word row of `line` (without its line ending), or `None` when the general row must take
 /// it. See the module documentation.
-pub(super) fn word_row(
-    plan: &WordPlan,
-    agreement: &Agreement,
-    number: usize,
-    line: &str,
-) -> Option<SolvedRow> {
-    if !matches!(agreement, Agreement::Exact | Agreement::Relative(_)) {
-        return None;
-    }
+pub(super) fn word_row(plan: &WordPlan, number: usize, line: &str) -> Option<SolvedRow> {
     let (inputs, claims) = read_cells(plan, line)?;
     let outputs = solve_reduced(&inputs)?;
     // Room for the six numbers (at most 78 digits each) and the check cells: no regrowth.
