@@ -216,11 +216,7 @@ pub(super) fn float_rel_error(claim: &WordRatio, x: f64) -> Option<Option<RelErr
     } else {
         (cn, shifted(odd, exponent)?.checked_mul_wide(cd)?)
     };
-    let difference = if claim_negative == negative {
-        claimed.max(value).minus(claimed.min(value))
-    } else {
-        claimed.checked_add(value)?
-    };
+    let difference = U256::signed_distance(claim_negative, claimed, negative, value)?;
     Some(Some(RelError::Words(difference, value)))
 }
 

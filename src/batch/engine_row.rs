@@ -299,20 +299,15 @@ impl Claim {
 }
 
 /// A claimed value against the exact one: its check under `agreement`, exactly as
-/// [`super::compare`] decides it (the relative error reduced once, on words).
+/// [`super::compare`] decides it (the relative error kept on words, not reduced).
 fn check(k: usize, claim: Claim, x: &Ratio, agreement: &Agreement) -> Option<OutputCheck> {
-    let zero_claim = claim.n == U256::ZERO;
     let rel_error = if x.n == U256::ZERO {
         // Only a zero claim agrees with a zero value; any other is infinitely far.
-        zero_claim.then_some(RelError::ZERO)
+        (claim.n == U256::ZERO).then_some(RelError::ZERO)
     } else {
         let claimed = claim.n.checked_mul_wide(x.d)?;
         let value = x.n.checked_mul_wide(claim.d)?;
-        let difference = if claim.negative == x.negative || zero_claim {
-            claimed.max(value).minus(claimed.min(value))
-        } else {
-            claimed.checked_add(value)?
-        };
+        let difference = U256::signed_distance(claim.negative, claimed, x.negative, value)?;
         Some(RelError::Words(difference, value))
     };
     Some(OutputCheck::finite(

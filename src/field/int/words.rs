@@ -143,6 +143,22 @@ impl U256 {
         }
     }
 
+    /// `|a - b|` for two signed magnitudes (`a_negative`, `a`) and (`b_negative`, `b`): their
+    /// difference when the signs agree, their sum when not (a zero's sign is then moot);
+    /// `None` when the sum passes 2^256.
+    pub(crate) fn signed_distance(
+        a_negative: bool,
+        a: U256,
+        b_negative: bool,
+        b: U256,
+    ) -> Option<U256> {
+        if a_negative == b_negative {
+            Some(a.max(b).minus(a.min(b)))
+        } else {
+            a.checked_add(b)
+        }
+    }
+
     /// Stein's binary GCD; once both fit in 128 bits it finishes in `u128`.
     pub(crate) fn gcd(mut a: U256, mut b: U256) -> U256 {
         if a.hi == 0 && b.hi == 0 {
