@@ -393,6 +393,7 @@ fn two_significant(x: f64) -> f64 {
 /// [`two_significant`] on words: `None` outside the range it covers (a negative, zero or
 /// non-finite `x`, a quotient past 2^256, a power of ten past 10^22).
 fn on_words_two_significant(x: f64) -> Option<f64> {
+    use crate::field::decimal::{Rounding, round_on_words};
     use crate::field::int::U256;
     /// The powers of ten an f64 holds exactly.
     const POWERS: [f64; 23] = [
@@ -402,57 +403,21 @@ fn on_words_two_significant(x: f64) -> Option<f64> {
     let (false, odd, exponent) = crate::field::float_parts(x)? else {
         return None;
     };
-    // x = odd 2^exponent; x / 10^s as a fraction of words.
-    let scaled = |s: i64| -> Option<(U256, U256)> {
-        let mut num = U256 {
-            hi: 0,
-            lo: odd.into(),
-        };
-        let mut den = U256::ONE;
-        let shift = u32::try_from(exponent.unsigned_abs())
-            .ok()
-            .filter(|k| *k < 200)?;
-        if exponent >= 0 {
-            num = num.shl(shift);
-        } else {
-            den = den.shl(shift);
-        }
-        let ten = U256::pow10(u32::try_from(s.unsigned_abs()).ok()?)?;
-        if s >= 0 {
-            den = den.checked_mul_wide(ten)?;
-        } else {
-            num = num.checked_mul_wide(ten)?;
-        }
-        Some((num, den))
+    // x = odd 2^exponent as a fraction of words, rounded to digits 10^s with two digits.
+    let shift = u32::try_from(exponent.unsigned_abs())
+        .ok()
+        .filter(|k| *k < 200)?;
+    let odd = U256 {
+        hi: 0,
+        lo: odd.into(),
     };
-    // s with 10 <= x / 10^s < 100, from the float estimate, corrected by one either way;
-    // the quotient guessed in floats and checked on words.
-    if !x.is_normal() {
-        return None;
-    }
-    let mut s = crate::field::decimal::log10_of_float_estimate(x) - 1;
-    let (quotient, rest, den) = loop {
-        let (num, den) = scaled(s)?;
-        let guess = x * 10f64.powi(-s as i32);
-        let (q, r) = Some(guess)
-            .filter(|q| (0.0..4e18).contains(q))
-            .and_then(|q| num.div_small_guessed(den, q as u64))
-            .unwrap_or_else(|| num.div_small(den));
-        match q {
-            0..=9 => s -= 1,
-            10..=99 => break (q, r, den),
-            _ => s += 1,
-        }
+    let (n, d) = if exponent >= 0 {
+        (odd.shl(shift), U256::ONE)
+    } else {
+        (odd, U256::ONE.shl(shift))
     };
-    let away = match rest.cmp(&den.minus(rest)) {
-        Ordering::Less => false,
-        Ordering::Greater => true,
-        Ordering::Equal => quotient % 2 == 1,
-    };
-    let (digits, s) = match quotient + u64::from(away) {
-        100 => (10, s + 1),
-        d => (d, s),
-    };
+    let (digits, exp, _) = round_on_words(false, n, d, 2, Rounding::HalfEven, Some(x))?;
+    let s = exp - 1;
     let power = *POWERS.get(usize::try_from(s.unsigned_abs()).ok()?)?;
     // One correctly rounded operation on exact operands: the nearest f64, as the parser gives.
     Some(if s >= 0 {

@@ -9,7 +9,7 @@
 //! All of it uses integer arithmetic only; the decimal exponent comes from bit lengths, so
 //! `1e-9000` costs about as much as `1`.
 
-use super::int::{U256, write_ratio};
+use super::int::{POWERS_OF_TEN, U256, write_ratio};
 use super::{Q, TrySqrt};
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -301,6 +301,77 @@ struct Significant {
     exact: bool,
 }
 
+/// A nonzero value `-n/d` (when `negative`) or `n/d`, not necessarily reduced, rounded to
+/// `digits` significant digits (at most 18) on machine words: `(m, e, exact)` with `m` of
+/// exactly `digits` digits and the value `m 10^(e + 1 - digits)`, `exact` when the rounding
+/// lost nothing; `None` when a product on the way would pass 2^256 (the big integers then round
+/// it, to the same result). `near`, an f64 near `n/d` if the caller has one, guesses the
+/// exponent and the digits, which the words then check (a wrong guess costs time, never digits).
+pub(crate) fn round_on_words(
+    negative: bool,
+    n: U256,
+    d: U256,
+    digits: usize,
+    rounding: Rounding,
+    near: Option<f64>,
+) -> Option<(u64, i64, bool)> {
+    if digits > 18 {
+        return None;
+    }
+    let ten = |k: i64| U256::pow10(u32::try_from(k.unsigned_abs()).ok()?);
+    // n/d against 10^e, and n/d scaled by 10^k, as a fraction of words.
+    let scaled = |k: i64| -> Option<(U256, U256)> {
+        if k >= 0 {
+            Some((n.checked_mul_wide(ten(k)?)?, d))
+        } else {
+            Some((n, d.checked_mul_wide(ten(k)?)?))
+        }
+    };
+    let near = near.filter(|x| x.is_normal() && *x > 0.0);
+    let estimate = match near {
+        Some(x) => log10_of_float_estimate(x),
+        None => log10_estimate(n.bits().into(), d.bits().into()),
+    };
+    // The estimate is off by one at most. Up to 17 digits the quotient at it, below
+    // 10^18 < 2^63 either way, says which way; 18 digits settle the exponent first.
+    let mut exp = if digits < 18 {
+        estimate
+    } else {
+        settle_log10(estimate, |e| {
+            let (num, den) = scaled(-e)?;
+            Some(num.cmp(&den))
+        })?
+    };
+    let (low, high) = (POWERS_OF_TEN[digits - 1], POWERS_OF_TEN[digits]);
+    let (quot, rem, den) = loop {
+        let k = digits as i64 - 1 - exp;
+        let (num, den) = scaled(k)?;
+        // Truncated: the floor of a positive guess.
+        let guess = near
+            .map(|x| x * 10f64.powi(k as i32))
+            .filter(|q| (0.0..4e18).contains(q));
+        let (quot, rem) = guess
+            .and_then(|q| num.div_small_guessed(den, q as u64))
+            .unwrap_or_else(|| num.div_small(den));
+        match quot {
+            q if q < low => exp -= 1,
+            q if q >= high => exp += 1,
+            _ => break (quot, rem, den),
+        }
+    };
+    let exact = rem == U256::ZERO;
+    // 2 rem against den, as rem against den - rem (2 rem may pass 2^256).
+    let half = || rem.cmp(&den.minus(rem));
+    let away = !exact && rounds_away(rounding, negative, quot % 2 == 1, half);
+    let mut m = quot + u64::from(away);
+    if m == high {
+        // 9.995 -> 10.0: the rounding carried into a new digit.
+        m /= 10;
+        exp += 1;
+    }
+    Some((m, exp, exact))
+}
+
 impl Significant {
     fn of(value: &Q, digits: usize, rounding: Rounding) -> Significant {
         let digits = digits.max(1);
@@ -349,11 +420,7 @@ impl Significant {
         }
     }
 
-    /// [`Significant::of`] on machine words, for a nonzero value `-n/d` (when `negative`) or
-    /// `n/d`, not necessarily reduced, and at most 18 digits; `None` when a product on the way
-    /// would pass 2^256 (the big integers then round it, to the same result). `near`, an f64
-    /// near `n/d` if the caller has one, guesses the exponent and the digits, which the words
-    /// then check (a wrong guess costs time, never digits).
+    /// [`Significant::of`] on machine words: [`round_on_words`] as digits and exponent.
     fn on_words(
         negative: bool,
         n: U256,
@@ -362,60 +429,7 @@ impl Significant {
         rounding: Rounding,
         near: Option<f64>,
     ) -> Option<Significant> {
-        if digits > 18 {
-            return None;
-        }
-        let ten = |k: i64| U256::pow10(u32::try_from(k.unsigned_abs()).ok()?);
-        // n/d against 10^e, and n/d scaled by 10^k, as a fraction of words.
-        let scaled = |k: i64| -> Option<(U256, U256)> {
-            if k >= 0 {
-                Some((n.checked_mul_wide(ten(k)?)?, d))
-            } else {
-                Some((n, d.checked_mul_wide(ten(k)?)?))
-            }
-        };
-        let near = near.filter(|x| x.is_normal() && *x > 0.0);
-        let estimate = match near {
-            Some(x) => log10_of_float_estimate(x),
-            None => log10_estimate(n.bits().into(), d.bits().into()),
-        };
-        // The estimate is off by one at most. Up to 17 digits the quotient at it, below
-        // 10^18 < 2^63 either way, says which way; 18 digits settle the exponent first.
-        let mut exp = if digits < 18 {
-            estimate
-        } else {
-            settle_log10(estimate, |e| {
-                let (num, den) = scaled(-e)?;
-                Some(num.cmp(&den))
-            })?
-        };
-        let (low, high) = (10u64.pow(digits as u32 - 1), 10u64.pow(digits as u32));
-        let (quot, rem, den) = loop {
-            let k = digits as i64 - 1 - exp;
-            let (num, den) = scaled(k)?;
-            // Truncated: the floor of a positive guess.
-            let guess = near
-                .map(|x| x * 10f64.powi(k as i32))
-                .filter(|q| (0.0..4e18).contains(q));
-            let (quot, rem) = guess
-                .and_then(|q| num.div_small_guessed(den, q as u64))
-                .unwrap_or_else(|| num.div_small(den));
-            match quot {
-                q if q < low => exp -= 1,
-                q if q >= high => exp += 1,
-                _ => break (quot, rem, den),
-            }
-        };
-        let exact = rem == U256::ZERO;
-        // 2 rem against den, as rem against den - rem (2 rem may pass 2^256).
-        let half = || rem.cmp(&den.minus(rem));
-        let away = !exact && rounds_away(rounding, negative, quot % 2 == 1, half);
-        let mut m = quot + u64::from(away);
-        if m == high {
-            // 9.995 -> 10.0: the rounding carried into a new digit.
-            m /= 10;
-            exp += 1;
-        }
+        let (m, exp, exact) = round_on_words(negative, n, d, digits, rounding, near)?;
         Some(Significant {
             negative,
             m: itoa::Buffer::new().format(m).to_string(),

@@ -22,7 +22,7 @@ use num_traits::{Signed, ToPrimitive, Zero};
 pub(crate) use ring::Ring;
 pub(crate) use signed::I256;
 pub(crate) use wide::Wide;
-pub(crate) use words::{U256, gcd, gcd_u64, powers};
+pub(crate) use words::{POWERS_OF_TEN, U256, gcd, gcd_u64, powers};
 
 /// The [`Int`] operations of an integer type that never overflows (every result `Some`),
 /// written once for dashu's `IBig` and, with the feature, malachite's `Integer` (defined before
