@@ -3,12 +3,12 @@
 //! the rod's inertia M l^2/3 rounded from its exact integer parts, and the paper's closed form
 //! evaluated by the same function as the general row ([`closed_form`]). No `BigRational` scene,
 //! and no exact values of the results: a claimed v, V or omega written `p/q` is compared with
-//! the float on machine words ([`float_rel_error`]), its relative error reduced once.
+//! the float on machine words ([`float_rel_error`]), its relative error kept there.
 //!
 //! A row it does not take (a claim in another form, a part of 2^24 or more, a product past
 //! 2^256, anything the word row leaves) goes to the general row, whose line it gives byte for
 //! byte: every input is the same correctly rounded f64 either way, and every relative error the
-//! same reduced fraction (`tests/lib/batch_words.rs`).
+//! same value (`tests/lib/batch_words.rs`).
 
 use super::compare::{Agreement, float_rel_error};
 use super::plan::{Arithmetic, OutputCheck, STATE, SolvedRow, WordPlan, write_float};
