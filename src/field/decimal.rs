@@ -6,8 +6,9 @@
 //! direction, [`sqrt_bounds`] encloses a square root between decimal rationals, and
 //! [`decimal_sqrt`] rounds a square root correctly. [`round_at`] rounds an exact value to a
 //! decimal place (the textbook's significant figures), [`magnitude`] is `floor(log10 |x|)`.
-//! All of it uses integer arithmetic only; the decimal exponent comes from bit lengths, so
-//! `1e-9000` costs about as much as `1`.
+//! All of it is exact integer arithmetic, except that a value's nearest f64, where a caller
+//! has it, may decide digits whose rounding its error bound makes certain; the decimal exponent
+//! comes from bit lengths, so `1e-9000` costs about as much as `1`.
 
 use super::int::{POWERS_OF_TEN, U256, write_ratio};
 use super::{Q, TrySqrt};
@@ -237,8 +238,11 @@ pub(crate) fn push_decimal_words(
         out.push('0');
         return;
     }
-    match Significant::on_words(negative, n, d, digits.max(1), Rounding::HalfEven, near) {
-        Some(rounded) => rounded.write(out),
+    let digits = digits.max(1);
+    match round_on_words(negative, n, d, digits, Rounding::HalfEven, near) {
+        Some((m, exp, _)) => {
+            write_significant(out, negative, itoa::Buffer::new().format(m), exp, digits)
+        }
         None => out.push_str(&decimal(&U256::ratio(negative, n, d), digits)),
     }
 }
@@ -305,8 +309,9 @@ struct Significant {
 /// `digits` significant digits (at most 18) on machine words: `(m, e, exact)` with `m` of
 /// exactly `digits` digits and the value `m 10^(e + 1 - digits)`, `exact` when the rounding
 /// lost nothing; `None` when a product on the way would pass 2^256 (the big integers then round
-/// it, to the same result). `near`, an f64 near `n/d` if the caller has one, guesses the
-/// exponent and the digits, which the words then check (a wrong guess costs time, never digits).
+/// it, to the same result). `near`, the f64 nearest to `n/d` (correctly rounded) if the caller
+/// has it, usually decides the digits alone ([`round_certified`]); where it cannot, it guesses
+/// the exponent and the digits, which the words then check.
 pub(crate) fn round_on_words(
     negative: bool,
     n: U256,
@@ -328,6 +333,9 @@ pub(crate) fn round_on_words(
         }
     };
     let near = near.filter(|x| x.is_normal() && *x > 0.0);
+    if let Some(rounded) = near.and_then(|x| round_certified(negative, x, digits, rounding)) {
+        return Some(rounded);
+    }
     let estimate = match near {
         Some(x) => log10_of_float_estimate(x),
         None => log10_estimate(n.bits().into(), d.bits().into()),
@@ -370,6 +378,62 @@ pub(crate) fn round_on_words(
         exp += 1;
     }
     Some((m, exp, exact))
+}
+
+/// [`round_on_words`] decided from `x`, the f64 nearest to a positive real `r` (so
+/// `|x - r| <= 2^-53 x`), where that alone is certain: `r 10^k` for the `k` that gives it
+/// `digits` integer digits is within `2^-51.9` of `y = x 10^k` (one more rounding), so `y`'s
+/// floor is `r 10^k`'s and which side of the half it lies on is settled whenever `y` is
+/// further than `2^-50 y` from an integer and from a half. Then the rounding is not exact.
+/// `None` (the words decide) near those points, for more than 15 digits, and where `10^k` is
+/// not an exact f64 (`|k| > 22`).
+fn round_certified(
+    negative: bool,
+    x: f64,
+    digits: usize,
+    rounding: Rounding,
+) -> Option<(u64, i64, bool)> {
+    /// The powers of ten an f64 holds exactly.
+    const POWERS: [f64; 23] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+        1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+    ];
+    const TWO_TO_MINUS_50: f64 = 1.0 / (1u64 << 50) as f64;
+    if !(1..=15).contains(&digits) {
+        return None;
+    }
+    let (low, high) = (POWERS[digits - 1], POWERS[digits]);
+    let mut exp = log10_of_float_estimate(x);
+    // The estimate is off by one at most, so two tries find the scale (and a third is spare).
+    for _ in 0..3 {
+        let k = digits as i64 - 1 - exp;
+        let power = *POWERS.get(usize::try_from(k.unsigned_abs()).ok()?)?;
+        let y = if k >= 0 { x * power } else { x / power };
+        let margin = y * TWO_TO_MINUS_50;
+        if y < low {
+            exp -= 1;
+        } else if y >= high {
+            exp += 1;
+        } else if y - margin < low || y + margin >= high {
+            return None;
+        } else {
+            // The floor (y is positive and below 10^15), and the bits of y below its units.
+            let quot = y as u64;
+            let fraction = y - quot as f64;
+            let near_point = |p: f64| (fraction - p).abs() <= margin;
+            if near_point(0.0) || near_point(0.5) || near_point(1.0) {
+                return None;
+            }
+            let half = || fraction.total_cmp(&0.5);
+            let mut m = quot + u64::from(rounds_away(rounding, negative, quot % 2 == 1, half));
+            if m == high as u64 {
+                m /= 10;
+                exp += 1;
+            }
+            return Some((m, exp, false));
+        }
+    }
+    None
 }
 
 impl Significant {
@@ -448,37 +512,42 @@ impl Significant {
 
     /// Appends the value as [`decimal`] prints it.
     fn write(&self, out: &mut String) {
-        let (s, exp) = (self.m.as_str(), self.exp);
-        if s == "0" {
-            out.push('0');
-            return;
-        }
-        if self.negative {
-            out.push('-');
-        }
-        if (-7..self.digits as i64).contains(&exp) {
-            if exp >= 0 {
-                let (int, frac) = s.split_at(exp as usize + 1);
-                out.push_str(int);
-                if !frac.is_empty() {
-                    out.push('.');
-                    out.push_str(frac);
-                }
-            } else {
-                out.push_str("0.");
-                out.extend(std::iter::repeat_n('0', (-exp - 1) as usize));
-                out.push_str(s);
+        write_significant(out, self.negative, &self.m, self.exp, self.digits);
+    }
+}
+
+/// Appends `±m × 10^(exp - digits + 1)` (`s` the digits of `m`, `"0"` for zero) as [`decimal`]
+/// prints it: positional from 10^-7 up to `digits` integer digits, scientific beyond.
+fn write_significant(out: &mut String, negative: bool, s: &str, exp: i64, digits: usize) {
+    if s == "0" {
+        out.push('0');
+        return;
+    }
+    if negative {
+        out.push('-');
+    }
+    if (-7..digits as i64).contains(&exp) {
+        if exp >= 0 {
+            let (int, frac) = s.split_at(exp as usize + 1);
+            out.push_str(int);
+            if !frac.is_empty() {
+                out.push('.');
+                out.push_str(frac);
             }
         } else {
-            let (lead, rest) = s.split_at(1);
-            out.push_str(lead);
-            if !rest.is_empty() {
-                out.push('.');
-                out.push_str(rest);
-            }
-            out.push('e');
-            out.push_str(itoa::Buffer::new().format(exp));
+            out.push_str("0.");
+            out.extend(std::iter::repeat_n('0', (-exp - 1) as usize));
+            out.push_str(s);
         }
+    } else {
+        let (lead, rest) = s.split_at(1);
+        out.push_str(lead);
+        if !rest.is_empty() {
+            out.push('.');
+            out.push_str(rest);
+        }
+        out.push('e');
+        out.push_str(itoa::Buffer::new().format(exp));
     }
 }
 
@@ -681,21 +750,90 @@ mod tests {
             {
                 prop_assert_eq!(words.text(), big.text());
             }
-            // With a guess: the nearest f64, and ones too far off by a little and by a lot.
+            // With the nearest f64, which decides most digits alone.
             let near = crate::field::Field::nearest_f64(&x).abs();
-            for guess in [near, near * (1.0 + 1e-9), near * 0.93, near * 11.0, near / 30.0] {
-                let n = U256::from_big(x.numer().magnitude());
-                let d = U256::from_big(x.denom().magnitude());
-                if let (Some(n), Some(d)) = (n, d)
-                    && let Some(words) = Significant::on_words(x.is_negative(), n, d, digits, rounding, Some(guess))
-                {
-                    prop_assert_eq!(
-                        (words.text(), words.exact, words.m, words.exp),
-                        (big.text(), big.exact, big.m.clone(), big.exp)
-                    );
+            let n = U256::from_big(x.numer().magnitude());
+            let d = U256::from_big(x.denom().magnitude());
+            if let (Some(n), Some(d)) = (n, d)
+                && let Some(words) = Significant::on_words(x.is_negative(), n, d, digits, rounding, Some(near))
+            {
+                prop_assert_eq!(
+                    (words.text(), words.exact, words.m, words.exp),
+                    (big.text(), big.exact, big.m.clone(), big.exp)
+                );
+            }
+        }
+
+        /// An f64's own digits decided from the f64 alone are its exact value's, in every
+        /// direction, near ties and integers too (where the float declines).
+        #[test]
+        fn certified_digits_of_a_float_are_its_exact_values(
+            bits in 1u64..0x7ff0_0000_0000_0000, tie in 0u64..100_000, k in -25i32..25,
+            digits in 1usize..=15, direction in 0usize..5, negative: bool,
+        ) {
+            let rounding = [
+                Rounding::HalfEven,
+                Rounding::HalfAwayFromZero,
+                Rounding::HalfTowardZero,
+                Rounding::Floor,
+                Rounding::Ceiling,
+            ][direction];
+            // Any f64, one from 1e-25 to 1e25 (where the float decides), ties and integers.
+            let moderate = f64::from_bits(0x3AC0_0000_0000_0000 + bits % 0x0A70_0000_0000_0000);
+            let (tie, whole) = ((tie as f64 + 0.5) * 10f64.powi(k), tie as f64 * 10f64.powi(k));
+            for x in [f64::from_bits(bits), moderate, tie, whole] {
+                prop_assume!(x.is_normal());
+                if let Some((m, exp, exact)) = round_certified(negative, x, digits, rounding) {
+                    let value = crate::field::exact_float(x).expect("finite");
+                    let value = if negative { -value } else { value };
+                    let big = Significant::on_big(&value, digits, rounding);
+                    prop_assert_eq!((m.to_string(), exp, exact), (big.m, big.exp, big.exact), "{}", x);
                 }
             }
         }
+    }
+
+    #[test]
+    fn certified_digits_decline_where_the_float_cannot_tell() {
+        // Exact ties and exact values: the words decide them.
+        for (x, digits) in [
+            (0.125, 2),
+            (2.5, 1),
+            (0.5, 3),
+            (100.0, 2),
+            (1e-30, 3),
+            (1e30, 3),
+        ] {
+            assert_eq!(
+                round_certified(false, x, digits, Rounding::HalfEven),
+                None,
+                "{x}"
+            );
+        }
+        // Just past a tie whose nearest f64 is just short of it (0.145 + 10^-40, nearest
+        // 0.14499999999999999): the float declines and the words round the value up.
+        let ten_40 = num_traits::pow(BigInt::from(10), 40);
+        for (tie, side, want) in [(145, 1, "0.15"), (275, -1, "0.27"), (285, 1, "0.29")] {
+            let x = Q::new(BigInt::from(tie) * &ten_40 / 1000 + side, ten_40.clone());
+            let near = crate::field::Field::nearest_f64(&x);
+            assert_eq!(
+                round_certified(false, near, 2, Rounding::HalfEven),
+                None,
+                "{x}"
+            );
+            let n = U256::from_big(x.numer().magnitude()).unwrap();
+            let d = U256::from_big(x.denom().magnitude()).unwrap();
+            let words = Significant::on_words(false, n, d, 2, Rounding::HalfEven, Some(near));
+            assert_eq!(words.unwrap().text(), want);
+        }
+        assert_eq!(
+            round_certified(false, 1.0 / 60.0, 3, Rounding::HalfEven),
+            Some((167, -2, false))
+        );
+        assert_eq!(
+            round_certified(true, 9.9996, 4, Rounding::HalfEven),
+            Some((1000, 1, false))
+        );
     }
 
     /// [`Significant::on_words`] of a rational's own parts.
