@@ -123,7 +123,7 @@ impl WordRatio {
             b'+' => (false, &text[1..]),
             _ => (false, text),
         };
-        let (numer, denom) = match unsigned.iter().position(|&b| b == b'/') {
+        let (numer, denom) = match memchr::memchr(b'/', unsigned) {
             Some(at) => (
                 U256::parse_decimal(&unsigned[..at])?,
                 U256::parse_decimal(&unsigned[at + 1..])?,
