@@ -27,6 +27,17 @@ pub struct RodMotion<F> {
     pub omega: F,
 }
 
+impl<F> RodMotion<F> {
+    /// Each velocity mapped by `f`: a change of number type.
+    pub(crate) fn map<G>(self, f: &mut impl FnMut(F) -> G) -> RodMotion<G> {
+        RodMotion {
+            v: f(self.v),
+            vt: f(self.vt),
+            omega: f(self.omega),
+        }
+    }
+}
+
 /// The oblique part of a scene lifted into a field `F` (see [`Oblique`](super::Oblique)), or built directly
 /// with symbolic entries for a proof.
 #[derive(Debug, Clone, PartialEq)]

@@ -83,6 +83,18 @@ pub struct State<F> {
     pub rod: RodMotion<F>,
 }
 
+impl<F> State<F> {
+    /// Each velocity mapped by `f`: a change of number type.
+    fn map<G>(self, f: &mut impl FnMut(F) -> G) -> State<G> {
+        State {
+            v: f(self.v),
+            vt: f(self.vt),
+            spin: self.spin.map(&mut *f),
+            rod: self.rod.map(f),
+        }
+    }
+}
+
 /// The residuals of the laws that apply, after - before (zero when the law holds), and the
 /// energy lost minus its closed form.
 #[derive(Debug, Clone, PartialEq)]
@@ -96,6 +108,18 @@ pub struct PlanarResiduals<F> {
     pub angular_momentum: F,
     /// Energy lost minus `lost_restitution + lost_friction`.
     pub energy_loss: F,
+}
+
+impl<F> PlanarResiduals<F> {
+    /// Each residual mapped by `f`: a change of number type.
+    fn map<G>(self, f: &mut impl FnMut(F) -> G) -> PlanarResiduals<G> {
+        PlanarResiduals {
+            linear_momentum: self.linear_momentum.map(&mut *f),
+            tangential_momentum: self.tangential_momentum.map(&mut *f),
+            angular_momentum: f(self.angular_momentum),
+            energy_loss: f(self.energy_loss),
+        }
+    }
 }
 
 impl<F: Field> PlanarResiduals<F> {
@@ -162,6 +186,26 @@ pub struct ObliqueOutcome<F> {
     pub lost_friction: F,
     /// The conservation residuals.
     pub residuals: PlanarResiduals<F>,
+}
+
+impl<F> ObliqueOutcome<F> {
+    /// Every number mapped by `f`: a change of number type (the contact mode is kept).
+    pub(crate) fn map<G>(self, mut f: impl FnMut(F) -> G) -> ObliqueOutcome<G> {
+        let f = &mut f;
+        ObliqueOutcome {
+            before: self.before.map(f),
+            after: self.after.map(f),
+            impulse: f(self.impulse),
+            tangential_impulse: f(self.tangential_impulse),
+            contact: self.contact,
+            stick_impulse: f(self.stick_impulse),
+            pivot_impulse: self.pivot_impulse.map(|(x, y)| (f(x), f(y))),
+            energy: self.energy.map(f),
+            lost_restitution: f(self.lost_restitution),
+            lost_friction: f(self.lost_friction),
+            residuals: self.residuals.map(f),
+        }
+    }
 }
 
 impl ObliqueOutcome<Q> {

@@ -17,6 +17,17 @@ pub struct Energy<F> {
     pub lost: F,
 }
 
+impl<F> Energy<F> {
+    /// Each energy mapped by `f`: a change of number type.
+    pub(crate) fn map<G>(self, f: &mut impl FnMut(F) -> G) -> Energy<G> {
+        Energy {
+            before: f(self.before),
+            after: f(self.after),
+            lost: f(self.lost),
+        }
+    }
+}
+
 /// Residuals (after minus before) of the conservation laws that apply to the scene.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Residuals<F> {
@@ -26,6 +37,17 @@ pub struct Residuals<F> {
     pub angular_momentum: F,
     /// Kinetic energy: elastic impacts (e = 1) only.
     pub energy: Option<F>,
+}
+
+impl<F> Residuals<F> {
+    /// Each residual mapped by `f`: a change of number type.
+    fn map<G>(self, f: &mut impl FnMut(F) -> G) -> Residuals<G> {
+        Residuals {
+            linear_momentum: self.linear_momentum.map(&mut *f),
+            angular_momentum: f(self.angular_momentum),
+            energy: self.energy.map(&mut *f),
+        }
+    }
 }
 
 impl<F: Field> Residuals<F> {
@@ -73,6 +95,19 @@ pub struct Outcome<F> {
     pub energy: Energy<F>,
     /// Residuals of the applicable conservation laws.
     pub residuals: Residuals<F>,
+}
+
+impl<F> Outcome<F> {
+    /// Every number mapped by `f`: a change of number type.
+    pub(crate) fn map<G>(self, mut f: impl FnMut(F) -> G) -> Outcome<G> {
+        let f = &mut f;
+        Outcome {
+            after: self.after.map(&mut *f),
+            pivot_impulse: self.pivot_impulse.map(&mut *f),
+            energy: self.energy.map(f),
+            residuals: self.residuals.map(f),
+        }
+    }
 }
 
 impl<F: Field> Outcome<F> {
