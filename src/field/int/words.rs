@@ -135,6 +135,7 @@ impl U256 {
     }
 
     /// `self - o` for `self >= o`.
+    #[inline]
     pub(crate) fn minus(self, o: U256) -> U256 {
         let (lo, borrow) = self.lo.overflowing_sub(o.lo);
         U256 {
@@ -377,6 +378,7 @@ impl U256 {
     }
 
     /// The exact product of two `u128`.
+    #[inline]
     pub(crate) fn product(a: u128, b: u128) -> U256 {
         if (a | b) >> 64 == 0 {
             // Both below 2^64: one machine product.
@@ -396,6 +398,7 @@ impl U256 {
         U256::product(x, x)
     }
 
+    #[inline]
     pub(crate) fn checked_mul(self, c: u128) -> Option<U256> {
         let low = U256::product(self.lo, c);
         let high = U256::product(self.hi, c);
@@ -406,6 +409,7 @@ impl U256 {
         Some(U256 { hi, lo: low.lo })
     }
 
+    #[inline]
     pub(crate) fn checked_add(self, o: U256) -> Option<U256> {
         let (lo, carry) = self.lo.overflowing_add(o.lo);
         let hi = self.hi.checked_add(o.hi)?.checked_add(u128::from(carry))?;
