@@ -476,7 +476,7 @@ fn greater<T: FixedInt>(x: &T, y: &T) -> bool {
 
 /// The audit of the claimed state in `T` (see [`super::audit::audit`] for what each finding
 /// means): the findings in [`Finding::ALL`] order, without `Off`, and the energy change as
-/// text; `None` when a value leaves the width.
+/// text; `None` when a value leaves the width (the general row then takes the row).
 fn audit<T: FixedInt>(
     s: &Scene,
     exact: &Exact,
@@ -517,39 +517,52 @@ fn audit<T: FixedInt>(
     }
 
     // Distances: the largest of |Cv T - q X1| ld, |CV T - q X2| ld, |Cw T - q X3| ln over
-    // q T ld, for a state (X1, X2, X3)/T.
-    let distance = |x: [&T; 3], t: &T| -> Option<T> {
-        let gap =
-            |claimed: &T, at: &T, scale: &T| abs(claimed.mul(t)?.sub(&q.mul(at)?)?)?.mul(scale);
-        Some(max(
-            max(gap(&cv, x[0], &ld)?, gap(&c_big_v, x[1], &ld)?),
-            gap(&cw, x[2], &ln)?,
-        ))
+    // q T ld, for a state (X1, X2, X3)/T, from the claimed side (Cv T, CV T, Cw T) and the
+    // state's (q X1, q X2, q X3): the exact state, the state before and the flipped spin share
+    // T = S, and the larger of the first two gaps is found before `ld > 0` scales it.
+    let distance = |claimed: &[T; 3], state: [&T; 3]| -> Option<T> {
+        let gap = |k: usize| abs(claimed[k].sub(state[k])?);
+        Some(max(max(gap(0)?, gap(1)?).mul(&ld)?, gap(2)?.mul(&ln)?))
     };
     let (ev, e_big_v, ew) = (vn.mul(&nv)?, vn.mul(&n_big_v)?, vn.mul(&nw)?);
-    let to_exact = distance([&ev, &e_big_v, &ew], &big_s)?;
-    // Within STATE_TOLERANCE |v0| of `other` and strictly nearer to it than to the exact state:
-    // state_d vd D_o <= state_n vn q T_o ld, and D_o S < D_e T_o.
-    let taken_for = |x: [&T; 3], t: &T| -> Option<bool> {
-        let d = distance(x, t)?;
-        let near = !greater(
-            &state_d.mul(&vd)?.mul(&d)?,
-            &state_n.mul(&vn)?.mul(&q)?.mul(t)?.mul(&ld)?,
-        );
-        Some(near && greater(&to_exact.mul(t)?, &d.mul(&big_s)?))
+    let over_s = [cv.mul(&big_s)?, c_big_v.mul(&big_s)?, cw.mul(&big_s)?];
+    let exact_side = [q.mul(&ev)?, q.mul(&e_big_v)?, q.mul(&ew)?];
+    let to_exact = distance(&over_s, [&exact_side[0], &exact_side[1], &exact_side[2]])?;
+    // Within STATE_TOLERANCE |v0| of another state, over T = k S, and strictly nearer to it
+    // than to the exact state: state_d vd D_o <= state_n vn q ld S k, and D_o S < D_e T, which
+    // is D_o < D_e k: S = vd den > 0 (den is ed times a sum of positive terms; were it not,
+    // the general row would take the row).
+    if big_s.sign() != Ordering::Greater {
+        return None;
+    }
+    let scaled_d = state_d.mul(&vd)?;
+    let reach = state_n.mul(&vn)?.mul(&q)?.mul(&ld)?.mul(&big_s)?;
+    let taken_for = |d: T, k: Option<&T>| -> Option<bool> {
+        let (reach, nearer) = match k {
+            None => (reach, to_exact),
+            Some(k) => (reach.mul(k)?, to_exact.mul(k)?),
+        };
+        Some(!greater(&scaled_d.mul(&d)?, &reach) && greater(&nearer, &d))
     };
     let (en, ed) = (w(s.e.n)?, w(s.e.d)?);
     if en.sign() == Ordering::Greater {
         // The e = 0 answer: (vn (den ne + (nv - den) ed), vn nV ed, vn nw ed)/(S ne).
         let ne = ed.add(&en)?;
         let v = vn.mul(&den.mul(&ne)?.add(&nv.sub(&den)?.mul(&ed)?)?)?;
-        let sticking = [&v, &e_big_v.mul(&ed)?, &ew.mul(&ed)?];
-        if taken_for(sticking, &big_s.mul(&ne)?)? {
+        let claimed = [
+            over_s[0].mul(&ne)?,
+            over_s[1].mul(&ne)?,
+            over_s[2].mul(&ne)?,
+        ];
+        let state = [q.mul(&v)?, exact_side[1].mul(&ed)?, exact_side[2].mul(&ed)?];
+        let d = distance(&claimed, [&state[0], &state[1], &state[2]])?;
+        if taken_for(d, Some(&ne))? {
             findings.push(Finding::RestitutionIgnored);
         }
     }
     let zero = T::small(0);
-    if taken_for([&vn.mul(&den)?, &zero, &zero], &big_s)? {
+    let before = q.mul(&vn)?.mul(&den)?;
+    if taken_for(distance(&over_s, [&before, &zero, &zero])?, None)? {
         findings.push(Finding::NoContact);
     }
     let (pn, pd) = match &p.pivot {
@@ -617,8 +630,9 @@ fn audit<T: FixedInt>(
         findings.push(Finding::AboveOmegaMax);
     }
     if nw.sign() != Ordering::Equal {
-        let flipped = ew.negated()?;
-        if taken_for([&ev, &e_big_v, &flipped], &big_s)? {
+        let flipped = exact_side[2].negated()?;
+        let d = distance(&over_s, [&exact_side[0], &exact_side[1], &flipped])?;
+        if taken_for(d, None)? {
             findings.push(Finding::OmegaSign);
         }
     }
