@@ -222,12 +222,16 @@ impl Answer {
 /// oblique batch row's normal problem.
 fn outcome_exactly(scene: &Scene, solved: Solved<Q>) -> Outcome<Q> {
     fn on_words<T: FracInt>(scene: &Scene, solved: &Solved<Q>) -> Option<Outcome<Q>> {
-        let lifted = Solved {
-            route: solved.route,
-            after: solved.after.as_ref().map(Frac::<T>::from_rational),
-            laws_hold: solved.laws_hold,
-        };
-        within(|| lifted.outcome(&scene.params())).map(|done| done.map(Frac::to_q))
+        // Lifted inside `within`, which clears the overflow flag as it starts.
+        within(|| {
+            let lifted = Solved {
+                route: solved.route,
+                after: solved.after.as_ref().map(Frac::<T>::from_rational),
+                laws_hold: solved.laws_hold,
+            };
+            lifted.outcome(&scene.params())
+        })
+        .map(|done| done.map(Frac::to_q))
     }
     on_words::<I256>(scene, &solved)
         .or_else(|| on_words::<Wide>(scene, &solved))
@@ -248,10 +252,13 @@ fn complete_exactly(
         o: &crate::scene::Oblique,
         response: &Motion<Q>,
     ) -> Option<ObliqueOutcome<Q>> {
-        let response = response.as_ref().map(Frac::<T>::from_rational);
-        within(|| oblique::complete(&scene.params(), &o.params(), response, None))?
-            .ok()
-            .map(|done| done.map(Frac::to_q))
+        // Lifted inside `within`, which clears the overflow flag as it starts.
+        within(|| {
+            let response = response.as_ref().map(Frac::<T>::from_rational);
+            oblique::complete(&scene.params(), &o.params(), response, None)
+        })?
+        .ok()
+        .map(|done| done.map(Frac::to_q))
     }
     on_words::<I256>(scene, o, response)
         .or_else(|| on_words::<Wide>(scene, o, response))
@@ -286,11 +293,14 @@ mod tests {
     proptest! {
         #[test]
         fn completions_on_words_are_the_rationals(
-            m in 1i64..9, big_m in 1i64..9, a in ratio(), e in 0i64..=4, v0t in ratio(),
+            m in 1i64..9, big_m in 1i64..9, huge: bool, a in ratio(), e in 0i64..=4, v0t in ratio(),
             mu in 0i64..6, disc in prop::option::of((1i64..5, ratio())),
             before in prop::option::of((ratio(), ratio(), ratio())), pivot in prop::option::of(ratio()),
         ) {
-            let mut b = Scene::builder(q(m, 1), q(big_m, 1))
+            // A huge rod (10^80/7) makes the normal answer wider than 256 bits: the lift
+            // itself overflows there and must be caught.
+            let big_m = if huge { q(big_m, 7) * q(10, 1).pow(80) } else { q(big_m, 1) };
+            let mut b = Scene::builder(q(m, 1), big_m)
                 .a(a / q(40, 1))
                 .e(q(e, 4))
                 .v0t(v0t)
@@ -308,6 +318,26 @@ mod tests {
                 agree(&s);
             }
         }
+    }
+
+    #[test]
+    fn a_normal_answer_wider_than_its_scene_is_caught_as_it_is_lifted() {
+        // A fuzzed engine row: the scene fits 256 bits, the normal answer (a 15-digit a over a
+        // 10^60 rod) does not, so lifting it overflows before any arithmetic does.
+        let number = |text: &str| crate::number::parse(text).unwrap();
+        let s = Scene::builder(
+            q(5, 68),
+            number("1000000000000000000000000000000000000000000000000000000000000/7"),
+        )
+        .a(number("0.148857829090292"))
+        .v0(q(3, 2))
+        .rod(crate::scene::RodInertia::Gyration(q(3, 10)))
+        .v0t(q(4, 1))
+        .mu(q(3, 10))
+        .disc(q(1, 20), number("2.357439029228876"))
+        .build()
+        .unwrap();
+        agree(&s);
     }
 
     #[test]

@@ -26,7 +26,8 @@ thread_local! {
 
 /// Runs `work` (exact work over [`Frac`]) and returns its result, or `None` when a value left
 /// its integers' width on the way (the result is then meaningless). Not reentrant: `work` must
-/// not call `within` itself.
+/// not call `within` itself. Every [`Frac`] of the work must be made inside `work` (lifting a
+/// value can overflow too, and the flag is cleared as `within` starts).
 pub(crate) fn within<R>(work: impl FnOnce() -> R) -> Option<R> {
     OVERFLOWED.with(|flag| flag.set(false));
     let result = work();
