@@ -9,7 +9,7 @@ use crate::echo::echo;
 use crate::error::ErrorKind;
 use crate::field::Q;
 use crate::field::decimal::ten_to;
-use crate::field::int::{U256, reduce};
+use crate::field::int::{POWERS_OF_TEN, U256, reduce};
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 
@@ -145,12 +145,18 @@ impl WordRatio {
     /// exponent of at most 3 digits) as `mantissa/10^k` or `mantissa 10^k/1`, both below
     /// 2^256: `0.05` is 5/100, unreduced (an engine's 17-digit cells are compared on words).
     pub(crate) fn decimal(text: &[u8]) -> Option<(U256, U256)> {
-        // One pass: the mantissa's digits (accumulated while they fit 38), the fraction's
-        // length, then the exponent.
-        let (mut at, mut count, mut places, mut small) = (0, 0usize, 0i64, 0u128);
+        // One pass: the mantissa's digits (accumulated while they fit 38: the first 19 in a
+        // u64, whose products are one instruction, the rest in a u128), the fraction's length,
+        // then the exponent.
+        let (mut at, mut count, mut places) = (0, 0usize, 0i64);
+        let (mut head, mut tail, mut tail_digits) = (0u64, 0u128, 0usize);
         let mut digit = |b: u8, count: &mut usize| {
-            if *count < 38 {
-                small = small * 10 + u128::from(b - b'0');
+            let d = b - b'0';
+            if *count < 19 {
+                head = head * 10 + u64::from(d);
+            } else if *count < 38 {
+                tail = tail * 10 + u128::from(d);
+                tail_digits += 1;
             }
             *count += 1;
         };
@@ -186,7 +192,10 @@ impl WordRatio {
         };
         let mantissa = match count {
             0 => return None,
-            1..=38 => U256 { hi: 0, lo: small },
+            1..=38 => U256 {
+                hi: 0,
+                lo: u128::from(head) * u128::from(POWERS_OF_TEN[tail_digits]) + tail,
+            },
             39..=77 => {
                 let digits: Vec<u8> = text[..at]
                     .iter()
