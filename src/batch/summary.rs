@@ -393,32 +393,32 @@ fn two_significant(x: f64) -> f64 {
 /// [`two_significant`] on words: `None` outside the range it covers (a negative, zero or
 /// non-finite `x`, a quotient past 2^256, a power of ten past 10^22).
 fn on_words_two_significant(x: f64) -> Option<f64> {
-    use crate::field::decimal::{Rounding, round_on_words};
+    use crate::field::decimal::{EXACT_POWERS_OF_TEN, Rounding, round_float, round_on_words};
     use crate::field::int::U256;
-    /// The powers of ten an f64 holds exactly.
-    const POWERS: [f64; 23] = [
-        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
-        1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
-    ];
-    let (false, odd, exponent) = crate::field::float_parts(x)? else {
-        return None;
+    // The float alone where it decides (most relative errors), else its exact value on words.
+    let on_words = || {
+        let (false, odd, exponent) = crate::field::float_parts(x)? else {
+            return None;
+        };
+        // x = odd 2^exponent as a fraction of words.
+        let shift = u32::try_from(exponent.unsigned_abs())
+            .ok()
+            .filter(|k| *k < 200)?;
+        let odd = U256 {
+            hi: 0,
+            lo: odd.into(),
+        };
+        let (n, d) = if exponent >= 0 {
+            (odd.shl(shift), U256::ONE)
+        } else {
+            (odd, U256::ONE.shl(shift))
+        };
+        round_on_words(false, n, d, 2, Rounding::HalfEven, Some(x))
     };
-    // x = odd 2^exponent as a fraction of words, rounded to digits 10^s with two digits.
-    let shift = u32::try_from(exponent.unsigned_abs())
-        .ok()
-        .filter(|k| *k < 200)?;
-    let odd = U256 {
-        hi: 0,
-        lo: odd.into(),
-    };
-    let (n, d) = if exponent >= 0 {
-        (odd.shl(shift), U256::ONE)
-    } else {
-        (odd, U256::ONE.shl(shift))
-    };
-    let (digits, exp, _) = round_on_words(false, n, d, 2, Rounding::HalfEven, Some(x))?;
+    // Rounded to digits 10^s with two digits.
+    let (digits, exp, _) = round_float(x, 2, Rounding::HalfEven).or_else(on_words)?;
     let s = exp - 1;
-    let power = *POWERS.get(usize::try_from(s.unsigned_abs()).ok()?)?;
+    let power = *EXACT_POWERS_OF_TEN.get(usize::try_from(s.unsigned_abs()).ok()?)?;
     // One correctly rounded operation on exact operands: the nearest f64, as the parser gives.
     Some(if s >= 0 {
         digits as f64 * power

@@ -333,7 +333,8 @@ pub(crate) fn round_on_words(
         }
     };
     let near = near.filter(|x| x.is_normal() && *x > 0.0);
-    if let Some(rounded) = near.and_then(|x| round_certified(negative, x, digits, rounding)) {
+    let certified = |x| round_certified(negative, x, digits, rounding, NEAREST_ERROR);
+    if let Some(rounded) = near.and_then(certified) {
         return Some(rounded);
     }
     let estimate = match near {
@@ -380,36 +381,49 @@ pub(crate) fn round_on_words(
     Some((m, exp, exact))
 }
 
-/// [`round_on_words`] decided from `x`, the f64 nearest to a positive real `r` (so
-/// `|x - r| <= 2^-53 x`), where that alone is certain: `r 10^k` for the `k` that gives it
-/// `digits` integer digits is within `2^-51.9` of `y = x 10^k` (one more rounding), so `y`'s
-/// floor is `r 10^k`'s and which side of the half it lies on is settled whenever `y` is
-/// further than `2^-50 y` from an integer and from a half. Then the rounding is not exact.
-/// `None` (the words decide) near those points, for more than 15 digits, and where `10^k` is
-/// not an exact f64 (`|k| > 22`).
+/// The powers of ten an f64 holds exactly, 10^0 to 10^22.
+pub(crate) const EXACT_POWERS_OF_TEN: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+/// [`round_certified`]'s bound for an f64 nearest to the value: `2^-50` of the scaled float.
+const NEAREST_ERROR: f64 = 1.0 / (1u64 << 50) as f64;
+
+/// The positive normal `x` itself rounded to `digits` significant digits, as [`round_on_words`]
+/// rounds it, where the float alone decides (`None` elsewhere: the words decide).
+pub(crate) fn round_float(x: f64, digits: usize, rounding: Rounding) -> Option<(u64, i64, bool)> {
+    (x.is_normal() && x > 0.0).then(|| round_certified(false, x, digits, rounding, 0.0))?
+}
+
+/// [`round_on_words`] decided from a positive normal f64 `x` where that alone is certain.
+/// `error` bounds the distance, relative to `y = x 10^k` (`k` giving `digits` integer digits),
+/// from `y` to the value scaled alike: for `x` the f64 nearest to a real `r` (`|x - r| <= 2^-53
+/// x`), `r 10^k` is within `2^-51.9 y` of `y` (one more rounding), and [`NEAREST_ERROR`] is
+/// `2^-50`; for `x` the value itself it is 0, since rounding is monotone and the integers and
+/// halves `y` is compared with are f64s, so the scaling may land on one but never crosses it.
+/// Then `y`'s floor is the value's and which side of the half it lies on is settled whenever
+/// `y` is further than `error y` from an integer and from a half, and the rounding is not exact.
+/// `None` (the words decide) at or near those points, for more than 15 digits, and where `10^k`
+/// is not an exact f64 (`|k| > 22`).
 fn round_certified(
     negative: bool,
     x: f64,
     digits: usize,
     rounding: Rounding,
+    error: f64,
 ) -> Option<(u64, i64, bool)> {
-    /// The powers of ten an f64 holds exactly.
-    const POWERS: [f64; 23] = [
-        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
-        1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
-    ];
-    const TWO_TO_MINUS_50: f64 = 1.0 / (1u64 << 50) as f64;
     if !(1..=15).contains(&digits) {
         return None;
     }
-    let (low, high) = (POWERS[digits - 1], POWERS[digits]);
+    let (low, high) = (EXACT_POWERS_OF_TEN[digits - 1], EXACT_POWERS_OF_TEN[digits]);
     let mut exp = log10_of_float_estimate(x);
     // The estimate is off by one at most, so two tries find the scale (and a third is spare).
     for _ in 0..3 {
         let k = digits as i64 - 1 - exp;
-        let power = *POWERS.get(usize::try_from(k.unsigned_abs()).ok()?)?;
+        let power = *EXACT_POWERS_OF_TEN.get(usize::try_from(k.unsigned_abs()).ok()?)?;
         let y = if k >= 0 { x * power } else { x / power };
-        let margin = y * TWO_TO_MINUS_50;
+        let margin = y * error;
         if y < low {
             exp -= 1;
         } else if y >= high {
@@ -783,11 +797,14 @@ mod tests {
             let (tie, whole) = ((tie as f64 + 0.5) * 10f64.powi(k), tie as f64 * 10f64.powi(k));
             for x in [f64::from_bits(bits), moderate, tie, whole] {
                 prop_assume!(x.is_normal());
-                if let Some((m, exp, exact)) = round_certified(negative, x, digits, rounding) {
-                    let value = crate::field::exact_float(x).expect("finite");
-                    let value = if negative { -value } else { value };
-                    let big = Significant::on_big(&value, digits, rounding);
-                    prop_assert_eq!((m.to_string(), exp, exact), (big.m, big.exp, big.exact), "{}", x);
+                // The float as the value itself (no margin) and as the nearest to a value.
+                for error in [0.0, NEAREST_ERROR] {
+                    if let Some((m, exp, exact)) = round_certified(negative, x, digits, rounding, error) {
+                        let value = crate::field::exact_float(x).expect("finite");
+                        let value = if negative { -value } else { value };
+                        let big = Significant::on_big(&value, digits, rounding);
+                        prop_assert_eq!((m.to_string(), exp, exact), (big.m, big.exp, big.exact), "{}", x);
+                    }
                 }
             }
         }
@@ -805,7 +822,7 @@ mod tests {
             (1e30, 3),
         ] {
             assert_eq!(
-                round_certified(false, x, digits, Rounding::HalfEven),
+                round_certified(false, x, digits, Rounding::HalfEven, NEAREST_ERROR),
                 None,
                 "{x}"
             );
@@ -817,7 +834,7 @@ mod tests {
             let x = Q::new(BigInt::from(tie) * &ten_40 / 1000 + side, ten_40.clone());
             let near = crate::field::Field::nearest_f64(&x);
             assert_eq!(
-                round_certified(false, near, 2, Rounding::HalfEven),
+                round_certified(false, near, 2, Rounding::HalfEven, NEAREST_ERROR),
                 None,
                 "{x}"
             );
@@ -827,11 +844,11 @@ mod tests {
             assert_eq!(words.unwrap().text(), want);
         }
         assert_eq!(
-            round_certified(false, 1.0 / 60.0, 3, Rounding::HalfEven),
+            round_certified(false, 1.0 / 60.0, 3, Rounding::HalfEven, NEAREST_ERROR),
             Some((167, -2, false))
         );
         assert_eq!(
-            round_certified(true, 9.9996, 4, Rounding::HalfEven),
+            round_certified(true, 9.9996, 4, Rounding::HalfEven, NEAREST_ERROR),
             Some((1000, 1, false))
         );
     }
