@@ -17,7 +17,7 @@ impl U256 {
     }
 
     /// `self * o`, or `None` at 2^256 or more.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn checked_mul_wide(self, o: U256) -> Option<U256> {
         match (self.hi, o.hi) {
             // Both below 2^128 (an audit's usual operands): one product, which never overflows.

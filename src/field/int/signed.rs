@@ -17,7 +17,7 @@ pub(crate) struct I256 {
 }
 
 impl I256 {
-    #[inline]
+    #[inline(always)]
     fn signed(negative: bool, mag: U256) -> I256 {
         I256 {
             negative: negative && mag != U256::ZERO,
@@ -42,7 +42,7 @@ impl Int for I256 {
             },
         )
     }
-    #[inline]
+    #[inline(always)]
     fn add(&self, o: &Self) -> Option<Self> {
         if self.negative == o.negative {
             return Some(I256::signed(self.negative, self.mag.checked_add(o.mag)?));
@@ -52,11 +52,11 @@ impl Int for I256 {
             _ => I256::signed(self.negative, self.mag.minus(o.mag)),
         })
     }
-    #[inline]
+    #[inline(always)]
     fn sub(&self, o: &Self) -> Option<Self> {
         self.add(&I256::signed(!o.negative, o.mag))
     }
-    #[inline]
+    #[inline(always)]
     fn mul(&self, o: &Self) -> Option<Self> {
         Some(I256::signed(
             self.negative != o.negative,
@@ -92,7 +92,7 @@ impl FracInt for I256 {
             (false, false) => Ordering::Greater,
         }
     }
-    #[inline]
+    #[inline(always)]
     fn order(&self, o: &Self) -> Ordering {
         match (self.negative, o.negative) {
             (false, true) => Ordering::Greater,

@@ -378,7 +378,7 @@ impl U256 {
     }
 
     /// The exact product of two `u128`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn product(a: u128, b: u128) -> U256 {
         if (a | b) >> 64 == 0 {
             // Both below 2^64: one machine product.
