@@ -8,7 +8,7 @@
 //! angular momentum, the energy before the impact for energies, and for states the distance
 //! `max(|dv|, |dV|, |d omega| l)` against |v0|.
 
-use crate::field::big::{RBig, to_q, to_rbig};
+use crate::field::big::{Relaxed, relaxed_to_q, to_relaxed};
 use crate::field::int::{Frac, FracInt, I256, Wide, within};
 use crate::field::{Field, Q, abs};
 use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
@@ -125,8 +125,9 @@ fn fraction<F: Field>((n, d): (i64, i64)) -> F {
 /// Audits `claimed` (the state after the impact) against the scene and its exact answer.
 ///
 /// The balances and distances are computed on unreduced fractions of 256-bit, then 512-bit
-/// integers, where an engine's 17-digit cells fit, else over dashu's rationals ([`RBig`], whose GCD keeps a
-/// 10,000-digit cell to a fraction of a second); the result is the same.
+/// integers, where an engine's 17-digit cells fit, else over dashu's rationals, unreduced
+/// ([`Relaxed`]: the audit's depth is bounded, and a GCD after each of its operations cost more
+/// than the longer products); the result is the same.
 ///
 /// # Examples
 /// Box2D 2.3 at v0 = 1 m/s, e = 1 (the paper's rod struck at l/2): it returns the sticking
@@ -162,10 +163,10 @@ pub fn audit(scene: &Scene, exact: &Motion<Q>, claimed: &Motion<Q>) -> Audit {
     let (findings, energy_change) = match words {
         Some(done) => done,
         None => {
-            let lift = |m: &Motion<Q>| m.as_ref().map(to_rbig);
+            let lift = |m: &Motion<Q>| m.as_ref().map(to_relaxed);
             let (findings, change) =
-                audit_in(&scene.params::<RBig>(), &lift(exact), &lift(claimed));
-            (findings, to_q(&change))
+                audit_in(&scene.params::<Relaxed>(), &lift(exact), &lift(claimed));
+            (findings, relaxed_to_q(change))
         }
     };
     Audit {
@@ -335,15 +336,21 @@ mod tests {
     }
 
     proptest! {
-        /// Law: the audit on unreduced 256-bit and 512-bit fractions finds what the audit over dashu's
+        /// Law: the audit on unreduced 256-bit and 512-bit fractions, and on dashu's unreduced
+        /// rationals (`audit`'s last resort), finds what the audit over dashu's reduced
         /// rationals finds, with the same energy change, whenever it fits (a scene whose
-        /// fractions have many distinct denominators may not: `audit` then takes dashu's).
+        /// fractions have many distinct denominators may not fit the words).
         #[test]
         fn the_fixed_width_audit_is_the_unbounded_one((scene, exact, claimed) in engine_row()) {
+            use crate::field::big::{RBig, to_q, to_rbig};
             let lift = |m: &Motion<Q>| m.as_ref().map(to_rbig);
             let (findings, change) =
                 audit_in(&scene.params::<RBig>(), &lift(&exact), &lift(&claimed));
             let unbounded = (findings, to_q(&change));
+            let lift = |m: &Motion<Q>| m.as_ref().map(to_relaxed);
+            let (findings, change) =
+                audit_in(&scene.params::<Relaxed>(), &lift(&exact), &lift(&claimed));
+            prop_assert_eq!(&(findings, relaxed_to_q(change)), &unbounded);
             for words in [
                 audit_on_words::<I256>(&scene, &exact, &claimed),
                 audit_on_words::<Wide>(&scene, &exact, &claimed),

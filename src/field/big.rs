@@ -14,7 +14,7 @@ use dashu_int::{IBig, Sign as DashuSign, UBig};
 use num_bigint::{BigInt, BigUint, Sign};
 use std::cmp::Ordering;
 
-pub use dashu_ratio::RBig;
+pub use dashu_ratio::{RBig, Relaxed};
 
 /// `x` as a dashu [`IBig`].
 pub(crate) fn ibig_from_big(x: &BigInt) -> IBig {
@@ -97,6 +97,52 @@ impl Field for RBig {
     }
 }
 
+/// `q` as a dashu [`Relaxed`]: a rational that is never reduced (but for common factors of
+/// two), so a sum or product costs its multiplications and no GCD.
+///
+/// # Examples
+/// ```
+/// use rodimpact::field::{big::{relaxed_to_q, to_relaxed}, q};
+/// let sum = to_relaxed(&q(1, 6)) + to_relaxed(&q(1, 3));
+/// assert_eq!(relaxed_to_q(sum), q(1, 2));
+/// ```
+pub fn to_relaxed(q: &Q) -> Relaxed {
+    Relaxed::from_parts(
+        ibig_from_big(q.numer()),
+        UBig::from_le_bytes(&q.denom().magnitude().to_bytes_le()),
+    )
+}
+
+/// `x` as a [`Q`], reduced (one GCD).
+pub fn relaxed_to_q(x: Relaxed) -> Q {
+    to_q(&x.canonicalize())
+}
+
+/// Exact rationals that compare by cross-multiplication and reduce only when converted back:
+/// for exact work of bounded depth on big numbers, where a GCD after every operation (as
+/// [`RBig`] takes) is most of the cost.
+impl Field for Relaxed {
+    const NAME: &'static str = "Q (dashu, unreduced)";
+    const EXACT: bool = true;
+
+    fn from_rational(q: &Q) -> Self {
+        to_relaxed(q)
+    }
+
+    fn sign(&self) -> Option<Ordering> {
+        Some(match self.sign() {
+            _ if num_traits::Zero::is_zero(self) => Ordering::Equal,
+            DashuSign::Negative => Ordering::Less,
+            DashuSign::Positive => Ordering::Greater,
+        })
+    }
+
+    /// Correctly rounded, as [`Q`]'s.
+    fn nearest_f64(&self) -> f64 {
+        relaxed_to_q(self.clone()).nearest_f64()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -133,6 +179,23 @@ mod tests {
             }
             prop_assert_eq!(Field::sign(&x), Field::sign(&a));
             prop_assert_eq!(x.partial_cmp(&y), a.partial_cmp(&b));
+            prop_assert_eq!(x.nearest_f64().to_bits(), a.nearest_f64().to_bits());
+        }
+
+        /// ... and over Relaxed, reduced at the end.
+        #[test]
+        fn relaxed_agrees_with_q(a in rational(), b in rational()) {
+            let (x, y) = (to_relaxed(&a), to_relaxed(&b));
+            prop_assert_eq!(relaxed_to_q(x.clone()), a.clone());
+            prop_assert_eq!(relaxed_to_q(x.clone() + &y), &a + &b);
+            prop_assert_eq!(relaxed_to_q(x.clone() - &y), &a - &b);
+            prop_assert_eq!(relaxed_to_q(x.clone() * &y), &a * &b);
+            if !b.is_zero() {
+                prop_assert_eq!(relaxed_to_q(x.clone() / &y), &a / &b);
+            }
+            prop_assert_eq!(Field::sign(&x), Field::sign(&a));
+            prop_assert_eq!(x.partial_cmp(&y), a.partial_cmp(&b));
+            prop_assert_eq!(x == y, a == b);
             prop_assert_eq!(x.nearest_f64().to_bits(), a.nearest_f64().to_bits());
         }
     }
