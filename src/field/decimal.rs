@@ -727,6 +727,15 @@ mod tests {
     use crate::field::q;
     use proptest::prelude::*;
 
+    /// Every rounding direction, for the proptests to pick from.
+    const DIRECTIONS: [Rounding; 5] = [
+        Rounding::HalfEven,
+        Rounding::HalfAwayFromZero,
+        Rounding::HalfTowardZero,
+        Rounding::Floor,
+        Rounding::Ceiling,
+    ];
+
     proptest! {
         /// Rounding on machine words gives the big integers' digits, exponent and exactness,
         /// in every direction, where it answers (parts up to 256 bits, values from about
@@ -742,13 +751,7 @@ mod tests {
             prop_assume!(n.bits() > 0 && d.bits() > 0);
             let n = BigInt::from(n);
             let x = Q::new(if negative { -n } else { n }, d.into());
-            let rounding = [
-                Rounding::HalfEven,
-                Rounding::HalfAwayFromZero,
-                Rounding::HalfTowardZero,
-                Rounding::Floor,
-                Rounding::Ceiling,
-            ][direction];
+            let rounding = DIRECTIONS[direction];
             let big = Significant::on_big(&x, digits, rounding);
             if let Some(words) = on_words(&x, digits, rounding) {
                 prop_assert_eq!(
@@ -785,13 +788,7 @@ mod tests {
             bits in 1u64..0x7ff0_0000_0000_0000, tie in 0u64..100_000, k in -25i32..25,
             digits in 1usize..=15, direction in 0usize..5, negative: bool,
         ) {
-            let rounding = [
-                Rounding::HalfEven,
-                Rounding::HalfAwayFromZero,
-                Rounding::HalfTowardZero,
-                Rounding::Floor,
-                Rounding::Ceiling,
-            ][direction];
+            let rounding = DIRECTIONS[direction];
             // Any f64, one from 1e-25 to 1e25 (where the float decides), ties and integers.
             let moderate = f64::from_bits(0x3AC0_0000_0000_0000 + bits % 0x0A70_0000_0000_0000);
             let (tie, whole) = ((tie as f64 + 0.5) * 10f64.powi(k), tie as f64 * 10f64.powi(k));
