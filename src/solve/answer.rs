@@ -297,8 +297,9 @@ mod tests {
             mu in 0i64..6, disc in prop::option::of((1i64..5, ratio())),
             before in prop::option::of((ratio(), ratio(), ratio())), pivot in prop::option::of(ratio()),
         ) {
-            // A huge rod (10^80/7) makes the normal answer wider than 256 bits: the lift
-            // itself overflows there and must be caught.
+            // A rod of 10^80/7 passes 256 bits in the scene itself: the 512-bit and then the
+            // rational fallbacks answer (the regression test below covers an answer that
+            // passes 256 bits while its scene does not).
             let big_m = if huge { q(big_m, 7) * q(10, 1).pow(80) } else { q(big_m, 1) };
             let mut b = Scene::builder(q(m, 1), big_m)
                 .a(a / q(40, 1))
