@@ -640,7 +640,7 @@ fn audit<T: FixedInt>(
     let change_n = kc.mul(&vd2)?.mul(&den2)?.sub(&vn2.mul(&ke)?.mul(&q2)?)?;
     let change_d = q2.mul(&den2)?.mul(&wv)?.mul(&vn2)?;
     let ((negative, n), (_, d)) = (change_n.to_words()?, change_d.to_words()?);
-    let text = crate::field::decimal::decimal_words(negative, n, d, 3, None);
+    let text = crate::field::decimal::decimal_words(negative, n, d, 3);
     let change = if change_n.sign() == Ordering::Greater {
         format!("+{text}")
     } else {

@@ -52,7 +52,13 @@ pub(crate) fn big_from_ibig(x: &IBig) -> BigInt {
 /// assert_eq!(to_q(&to_rbig(&q(-6, 4))), q(-3, 2));
 /// ```
 pub fn to_rbig(q: &Q) -> RBig {
-    RBig::from_parts(
+    let (n, d) = dashu_parts(q);
+    RBig::from_parts(n, d)
+}
+
+/// `q`'s numerator and (positive) denominator in dashu's integers.
+fn dashu_parts(q: &Q) -> (IBig, UBig) {
+    (
         ibig_from_big(q.numer()),
         UBig::from_le_bytes(&q.denom().magnitude().to_bytes_le()),
     )
@@ -73,6 +79,15 @@ pub fn to_q(x: &RBig) -> Q {
     )
 }
 
+/// A dashu number's order against zero, from whether it is zero and its sign.
+fn order_of(zero: bool, sign: DashuSign) -> Ordering {
+    match sign {
+        _ if zero => Ordering::Equal,
+        DashuSign::Negative => Ordering::Less,
+        DashuSign::Positive => Ordering::Greater,
+    }
+}
+
 impl Field for RBig {
     const NAME: &'static str = "Q (dashu)";
     const EXACT: bool = true;
@@ -82,13 +97,7 @@ impl Field for RBig {
     }
 
     fn sign(&self) -> Option<Ordering> {
-        Some(if self.is_zero() {
-            Ordering::Equal
-        } else if self.numerator().sign() == DashuSign::Negative {
-            Ordering::Less
-        } else {
-            Ordering::Greater
-        })
+        Some(order_of(self.is_zero(), self.numerator().sign()))
     }
 
     /// Correctly rounded, as [`Q`]'s.
@@ -107,10 +116,8 @@ impl Field for RBig {
 /// assert_eq!(relaxed_to_q(sum), q(1, 2));
 /// ```
 pub fn to_relaxed(q: &Q) -> Relaxed {
-    Relaxed::from_parts(
-        ibig_from_big(q.numer()),
-        UBig::from_le_bytes(&q.denom().magnitude().to_bytes_le()),
-    )
+    let (n, d) = dashu_parts(q);
+    Relaxed::from_parts(n, d)
 }
 
 /// `x` as a [`Q`], reduced (one GCD).
@@ -130,11 +137,7 @@ impl Field for Relaxed {
     }
 
     fn sign(&self) -> Option<Ordering> {
-        Some(match self.sign() {
-            _ if num_traits::Zero::is_zero(self) => Ordering::Equal,
-            DashuSign::Negative => Ordering::Less,
-            DashuSign::Positive => Ordering::Greater,
-        })
+        Some(order_of(num_traits::Zero::is_zero(self), self.sign()))
     }
 
     /// Correctly rounded, as [`Q`]'s.

@@ -210,22 +210,15 @@ pub fn decimal(value: &Q, digits: usize) -> String {
 
 /// [`decimal`] of `-n/d` (when `negative`) or `n/d`, `d > 0`, given on machine words and not
 /// necessarily reduced: the same text as the reduced [`Q`]'s, without its GCD.
-///
-/// `near`, the f64 nearest to `n/d` where the caller has it, only saves work: it places the
-/// decimal point and guesses the digits, which are then checked exactly.
-pub(crate) fn decimal_words(
-    negative: bool,
-    n: U256,
-    d: U256,
-    digits: usize,
-    near: Option<f64>,
-) -> String {
+pub(crate) fn decimal_words(negative: bool, n: U256, d: U256, digits: usize) -> String {
     let mut out = String::new();
-    push_decimal_words(&mut out, negative, n, d, digits, near);
+    push_decimal_words(&mut out, negative, n, d, digits, None);
     out
 }
 
-/// [`decimal_words`], appended to `out` (a batch row writes its cells into its line).
+/// [`decimal_words`], appended to `out` (a batch row writes its cells into its line). `near`,
+/// the f64 nearest to `n/d` where the caller has it, only saves work (see
+/// [`round_on_words`]).
 pub(crate) fn push_decimal_words(
     out: &mut String,
     negative: bool,
@@ -372,13 +365,18 @@ pub(crate) fn round_on_words(
     // 2 rem against den, as rem against den - rem (2 rem may pass 2^256).
     let half = || rem.cmp(&den.minus(rem));
     let away = !exact && rounds_away(rounding, negative, quot % 2 == 1, half);
-    let mut m = quot + u64::from(away);
-    if m == high {
-        // 9.995 -> 10.0: the rounding carried into a new digit.
-        m /= 10;
-        exp += 1;
-    }
+    let (m, exp) = carried(quot + u64::from(away), exp, high);
     Some((m, exp, exact))
+}
+
+/// `m 10^exp` of `digits` digits as rounded, `high = 10^digits`: 9.995 -> 10.0 carries into a
+/// new digit, which the exponent takes.
+fn carried(m: u64, exp: i64, high: u64) -> (u64, i64) {
+    if m == high {
+        (m / 10, exp + 1)
+    } else {
+        (m, exp)
+    }
 }
 
 /// The powers of ten an f64 holds exactly, 10^0 to 10^22.
@@ -439,11 +437,8 @@ fn round_certified(
                 return None;
             }
             let half = || fraction.total_cmp(&0.5);
-            let mut m = quot + u64::from(rounds_away(rounding, negative, quot % 2 == 1, half));
-            if m == high as u64 {
-                m /= 10;
-                exp += 1;
-            }
+            let away = rounds_away(rounding, negative, quot % 2 == 1, half);
+            let (m, exp) = carried(quot + u64::from(away), exp, high as u64);
             return Some((m, exp, false));
         }
     }
@@ -465,9 +460,7 @@ impl Significant {
         let words = U256::from_big(value.numer().magnitude())
             .zip(U256::from_big(value.denom().magnitude()));
         words
-            .and_then(|(n, d)| {
-                Significant::on_words(value.is_negative(), n, d, digits, rounding, None)
-            })
+            .and_then(|(n, d)| Significant::on_words(value.is_negative(), n, d, digits, rounding))
             .unwrap_or_else(|| Significant::on_big(value, digits, rounding))
     }
 
@@ -505,9 +498,8 @@ impl Significant {
         d: U256,
         digits: usize,
         rounding: Rounding,
-        near: Option<f64>,
     ) -> Option<Significant> {
-        let (m, exp, exact) = round_on_words(negative, n, d, digits, rounding, near)?;
+        let (m, exp, exact) = round_on_words(negative, n, d, digits, rounding, None)?;
         Some(Significant {
             negative,
             m: itoa::Buffer::new().format(m).to_string(),
@@ -763,7 +755,7 @@ mod tests {
             let (n7, d7) = (U256::from_big(x.numer().magnitude()).and_then(|n| n.checked_mul(7)),
                 U256::from_big(x.denom().magnitude()).and_then(|d| d.checked_mul(7)));
             if let (Some(n7), Some(d7)) = (n7, d7)
-                && let Some(words) = Significant::on_words(x.is_negative(), n7, d7, digits, rounding, None)
+                && let Some(words) = Significant::on_words(x.is_negative(), n7, d7, digits, rounding)
             {
                 prop_assert_eq!(words.text(), big.text());
             }
@@ -772,12 +764,9 @@ mod tests {
             let n = U256::from_big(x.numer().magnitude());
             let d = U256::from_big(x.denom().magnitude());
             if let (Some(n), Some(d)) = (n, d)
-                && let Some(words) = Significant::on_words(x.is_negative(), n, d, digits, rounding, Some(near))
+                && let Some((m, exp, exact)) = round_on_words(x.is_negative(), n, d, digits, rounding, Some(near))
             {
-                prop_assert_eq!(
-                    (words.text(), words.exact, words.m, words.exp),
-                    (big.text(), big.exact, big.m.clone(), big.exp)
-                );
+                prop_assert_eq!((m.to_string(), exp, exact), (big.m.clone(), big.exp, big.exact));
             }
         }
 
@@ -837,8 +826,9 @@ mod tests {
             );
             let n = U256::from_big(x.numer().magnitude()).unwrap();
             let d = U256::from_big(x.denom().magnitude()).unwrap();
-            let words = Significant::on_words(false, n, d, 2, Rounding::HalfEven, Some(near));
-            assert_eq!(words.unwrap().text(), want);
+            let mut text = String::new();
+            push_decimal_words(&mut text, false, n, d, 2, Some(near));
+            assert_eq!(text, want);
         }
         assert_eq!(
             round_certified(false, 1.0 / 60.0, 3, Rounding::HalfEven, NEAREST_ERROR),
@@ -854,7 +844,7 @@ mod tests {
     fn on_words(x: &Q, digits: usize, rounding: Rounding) -> Option<Significant> {
         let n = U256::from_big(x.numer().magnitude())?;
         let d = U256::from_big(x.denom().magnitude())?;
-        Significant::on_words(x.is_negative(), n, d, digits, rounding, None)
+        Significant::on_words(x.is_negative(), n, d, digits, rounding)
     }
 
     #[test]
