@@ -52,6 +52,7 @@ pub fn run(
         input,
         bytes: 0,
         number: 0,
+        chunk_bytes: CHUNK * 80,
     };
     let mut solved: Vec<SolvedRow> = Vec::new();
     // `stop`: the error that ended reading, after the lines of `current`.
@@ -134,6 +135,9 @@ struct ChunkReader<R> {
     bytes: u64,
     /// The number of the last row read (1-based, blank lines counted).
     number: usize,
+    /// The room a chunk's text is given: the last chunk's length, and an eighth more (an
+    /// engine's rows of 200 bytes outgrew a fixed guess, copying the chunk at each doubling).
+    chunk_bytes: usize,
 }
 
 impl<R: BufRead> ChunkReader<R> {
@@ -141,7 +145,7 @@ impl<R: BufRead> ChunkReader<R> {
     /// the error that stopped reading after them, if any.
     fn next_chunk(&mut self) -> (Chunk, Option<Error>) {
         let mut chunk = Chunk {
-            text: String::with_capacity(CHUNK * 80),
+            text: String::with_capacity(self.chunk_bytes),
             rows: Vec::with_capacity(CHUNK),
         };
         while chunk.rows.len() < CHUNK {
@@ -151,6 +155,9 @@ impl<R: BufRead> ChunkReader<R> {
                 Err(e) => return (chunk, Some(e)),
             }
         }
+        self.chunk_bytes = self
+            .chunk_bytes
+            .max(chunk.text.len() + chunk.text.len() / 8);
         (chunk, None)
     }
 
