@@ -118,25 +118,15 @@ impl WordRatio {
     /// [`WordRatio::parse`] of a cell's bytes, as a row reads them (no UTF-8 check: anything
     /// but ASCII digits, signs, `/`, `.` and `e` is refused).
     pub(crate) fn parse_bytes(text: &[u8]) -> Option<WordRatio> {
-        let (negative, unsigned) = match text.first()? {
-            b'-' => (true, &text[1..]),
-            b'+' => (false, &text[1..]),
-            _ => (false, text),
+        let scaled = ScaledRatio::parse(text)?;
+        let denom = match scaled.tens {
+            0 => scaled.denom,
+            // A decimal's digits over 10^k (its denominator is 1).
+            k => U256::pow10(k)?,
         };
-        let (numer, denom) = match memchr::memchr(b'/', unsigned) {
-            Some(at) => (
-                U256::parse_decimal(&unsigned[..at])?,
-                U256::parse_decimal(&unsigned[at + 1..])?,
-            ),
-            // Digits alone, or a decimal (which also refuses digits past 77).
-            None => match U256::parse_decimal(unsigned) {
-                Some(n) => (n, U256::ONE),
-                None => WordRatio::decimal(unsigned)?,
-            },
-        };
-        (denom != U256::ZERO).then_some(WordRatio {
-            negative,
-            numer,
+        Some(WordRatio {
+            negative: scaled.negative,
+            numer: scaled.numer,
             denom,
         })
     }
@@ -145,68 +135,7 @@ impl WordRatio {
     /// exponent of at most 3 digits) as `mantissa/10^k` or `mantissa 10^k/1`, both below
     /// 2^256: `0.05` is 5/100, unreduced (an engine's 17-digit cells are compared on words).
     pub(crate) fn decimal(text: &[u8]) -> Option<(U256, U256)> {
-        // One pass: the mantissa's digits (accumulated while they fit 38: the first 19 in a
-        // u64, whose products are one instruction, the rest in a u128), the fraction's length,
-        // then the exponent.
-        let (mut at, mut count, mut places) = (0, 0usize, 0i64);
-        let (mut head, mut tail, mut tail_digits) = (0u64, 0u128, 0usize);
-        let mut digit = |b: u8, count: &mut usize| {
-            let d = b - b'0';
-            if *count < 19 {
-                head = head * 10 + u64::from(d);
-            } else if *count < 38 {
-                tail = tail * 10 + u128::from(d);
-                tail_digits += 1;
-            }
-            *count += 1;
-        };
-        while let Some(&b) = text.get(at).filter(|b| b.is_ascii_digit()) {
-            digit(b, &mut count);
-            at += 1;
-        }
-        if text.get(at) == Some(&b'.') {
-            at += 1;
-            while let Some(&b) = text.get(at).filter(|b| b.is_ascii_digit()) {
-                digit(b, &mut count);
-                places += 1;
-                at += 1;
-            }
-        }
-        let exponent: i64 = match &text[at..] {
-            [] => 0,
-            [b'e' | b'E', tail @ ..] => {
-                let (negative, digits) = match tail {
-                    [b'-', rest @ ..] => (true, rest),
-                    [b'+', rest @ ..] => (false, rest),
-                    _ => (false, tail),
-                };
-                if digits.is_empty() || digits.len() > 3 || !digits.iter().all(u8::is_ascii_digit) {
-                    return None;
-                }
-                let magnitude = digits
-                    .iter()
-                    .fold(0i64, |n, b| n * 10 + i64::from(b - b'0'));
-                if negative { -magnitude } else { magnitude }
-            }
-            _ => return None,
-        };
-        let mantissa = match count {
-            0 => return None,
-            1..=38 => U256 {
-                hi: 0,
-                lo: u128::from(head) * u128::from(POWERS_OF_TEN[tail_digits]) + tail,
-            },
-            39..=77 => {
-                let digits: Vec<u8> = text[..at]
-                    .iter()
-                    .copied()
-                    .filter(u8::is_ascii_digit)
-                    .collect();
-                U256::parse_decimal(&digits)?
-            }
-            _ => return None,
-        };
-        let shift = exponent - places;
+        let (mantissa, shift) = decimal_parts(text)?;
         let power = U256::pow10(u32::try_from(shift.unsigned_abs()).ok()?)?;
         if shift >= 0 {
             Some((mantissa.checked_mul_wide(power)?, U256::ONE))
@@ -236,6 +165,127 @@ impl WordRatio {
         let same_sign = self.negative == q.is_negative();
         Some(same_sign && U256::cross_equal(self.numer, d, n, self.denom))
     }
+}
+
+/// A cell on machine words with its power of ten apart: the value is
+/// `numer / (denom 10^tens)`, unreduced, with `denom > 0`. A fraction has `tens = 0`; a decimal
+/// whose point or negative exponent moves its digits is its digits over `10^tens` (`denom = 1`),
+/// with `tens` up to 1,076, past what 256 bits hold: an engine's `5.0579153677743847e-107`
+/// for a zero is `50579153677743847 / 10^123`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct ScaledRatio {
+    /// The sign (a zero may carry either).
+    pub(crate) negative: bool,
+    /// The numerator as written (a decimal's digits).
+    pub(crate) numer: U256,
+    /// The denominator as written (1 for a decimal).
+    pub(crate) denom: U256,
+    /// The power of ten the denominator is multiplied by.
+    pub(crate) tens: u32,
+}
+
+impl ScaledRatio {
+    /// A cell's bytes (already trimmed) as a fraction of words, integers or a decimal (see
+    /// [`WordRatio::decimal`] for the forms taken); `None` for anything else and for a zero
+    /// denominator.
+    pub(crate) fn parse(text: &[u8]) -> Option<ScaledRatio> {
+        let (negative, unsigned) = match text.first()? {
+            b'-' => (true, &text[1..]),
+            b'+' => (false, &text[1..]),
+            _ => (false, text),
+        };
+        let (numer, denom, tens) = match memchr::memchr(b'/', unsigned) {
+            Some(at) => (
+                U256::parse_decimal(&unsigned[..at])?,
+                U256::parse_decimal(&unsigned[at + 1..])?,
+                0,
+            ),
+            // Digits alone, or a decimal (which also refuses digits past 77).
+            None => match U256::parse_decimal(unsigned) {
+                Some(n) => (n, U256::ONE, 0),
+                None => {
+                    let (mantissa, shift) = decimal_parts(unsigned)?;
+                    match u32::try_from(shift) {
+                        Ok(up) => (mantissa.checked_mul_wide(U256::pow10(up)?)?, U256::ONE, 0),
+                        Err(_) => (mantissa, U256::ONE, shift.unsigned_abs() as u32),
+                    }
+                }
+            },
+        };
+        (denom != U256::ZERO).then_some(ScaledRatio {
+            negative,
+            numer,
+            denom,
+            tens,
+        })
+    }
+}
+
+/// A decimal (see [`WordRatio::decimal`]) as its digits below 2^256 and the power of ten they
+/// are multiplied by: `0.05` is `(5, -2)`, `1.5e3` is `(15, 2)`.
+fn decimal_parts(text: &[u8]) -> Option<(U256, i64)> {
+    // One pass: the mantissa's digits (accumulated while they fit 38: the first 19 in a u64,
+    // whose products are one instruction, the rest in a u128), the fraction's length, then the
+    // exponent.
+    let (mut at, mut count, mut places) = (0, 0usize, 0i64);
+    let (mut head, mut tail, mut tail_digits) = (0u64, 0u128, 0usize);
+    let mut digit = |b: u8, count: &mut usize| {
+        let d = b - b'0';
+        if *count < 19 {
+            head = head * 10 + u64::from(d);
+        } else if *count < 38 {
+            tail = tail * 10 + u128::from(d);
+            tail_digits += 1;
+        }
+        *count += 1;
+    };
+    while let Some(&b) = text.get(at).filter(|b| b.is_ascii_digit()) {
+        digit(b, &mut count);
+        at += 1;
+    }
+    if text.get(at) == Some(&b'.') {
+        at += 1;
+        while let Some(&b) = text.get(at).filter(|b| b.is_ascii_digit()) {
+            digit(b, &mut count);
+            places += 1;
+            at += 1;
+        }
+    }
+    let exponent: i64 = match &text[at..] {
+        [] => 0,
+        [b'e' | b'E', tail @ ..] => {
+            let (negative, digits) = match tail {
+                [b'-', rest @ ..] => (true, rest),
+                [b'+', rest @ ..] => (false, rest),
+                _ => (false, tail),
+            };
+            if digits.is_empty() || digits.len() > 3 || !digits.iter().all(u8::is_ascii_digit) {
+                return None;
+            }
+            let magnitude = digits
+                .iter()
+                .fold(0i64, |n, b| n * 10 + i64::from(b - b'0'));
+            if negative { -magnitude } else { magnitude }
+        }
+        _ => return None,
+    };
+    let mantissa = match count {
+        0 => return None,
+        1..=38 => U256 {
+            hi: 0,
+            lo: u128::from(head) * u128::from(POWERS_OF_TEN[tail_digits]) + tail,
+        },
+        39..=77 => {
+            let digits: Vec<u8> = text[..at]
+                .iter()
+                .copied()
+                .filter(u8::is_ascii_digit)
+                .collect();
+            U256::parse_decimal(&digits)?
+        }
+        _ => return None,
+    };
+    Some((mantissa, exponent - places))
 }
 
 /// `nan`, `inf`, `infinity` in any case, with an optional sign.
@@ -433,6 +483,32 @@ fn exponent_magnitude(digits: &str) -> Result<u64, ErrorKind> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_scaled_ratio_keeps_a_decimals_power_of_ten_apart() {
+        let parts = |text: &str| {
+            ScaledRatio::parse(text.as_bytes()).map(|s| (s.negative, s.numer, s.denom, s.tens))
+        };
+        let word = |x: u128| U256 { hi: 0, lo: x };
+        assert_eq!(parts("-2.5e-3"), Some((true, word(25), U256::ONE, 4)));
+        assert_eq!(parts("1.5e3"), Some((false, word(1500), U256::ONE, 0)));
+        assert_eq!(parts("+3/7"), Some((false, word(3), word(7), 0)));
+        assert_eq!(parts("12"), Some((false, word(12), U256::ONE, 0)));
+        // Rapier's V at a centre pivot: 10^123 is past 256 bits.
+        assert_eq!(
+            parts("5.0579153677743847e-107"),
+            Some((false, word(50579153677743847), U256::ONE, 123))
+        );
+        assert_eq!(parts("1/0"), None);
+        assert_eq!(parts("1.5e1000"), None);
+        assert_eq!(parts("nan"), None);
+        // The word ratio folds the power in, where it fits.
+        assert_eq!(
+            WordRatio::parse("0.05").map(|w| w.parts()),
+            Some((false, word(5), word(100)))
+        );
+        assert!(WordRatio::parse("5.0579153677743847e-107").is_none());
+    }
     use crate::field::decimal::decimal;
     use crate::field::q;
     use proptest::prelude::*;

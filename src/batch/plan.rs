@@ -168,10 +168,24 @@ impl Diagnosis {
     /// assert_eq!(Diagnosis::NotAudited.text(), "-");
     /// ```
     pub fn text(&self) -> String {
+        let mut text = String::new();
+        self.push_text(&mut text);
+        text
+    }
+
+    /// Appends [`Diagnosis::text`] to `out` (a row writes its cells into its line).
+    pub(super) fn push_text(&self, out: &mut String) {
         match self {
-            Diagnosis::NotAudited => "-".to_string(),
-            Diagnosis::Findings(f) if f.is_empty() => "ok".to_string(),
-            Diagnosis::Findings(f) => f.iter().map(|f| f.name()).collect::<Vec<_>>().join(";"),
+            Diagnosis::NotAudited => out.push('-'),
+            Diagnosis::Findings(f) if f.is_empty() => out.push_str("ok"),
+            Diagnosis::Findings(f) => {
+                for (k, finding) in f.iter().enumerate() {
+                    if k > 0 {
+                        out.push(';');
+                    }
+                    out.push_str(finding.name());
+                }
+            }
         }
     }
 }

@@ -95,7 +95,7 @@ impl Batch {
                 out.push(',');
                 out.push_str(&change);
                 out.push(',');
-                out.push_str(&diagnosis.text());
+                diagnosis.push_text(&mut out);
                 Some(diagnosis)
             }
             _ => None,

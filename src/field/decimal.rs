@@ -208,17 +208,27 @@ pub fn decimal(value: &Q, digits: usize) -> String {
     decimal_rounded(value, digits, Rounding::HalfEven)
 }
 
-/// [`decimal`] of `-n/d` (when `negative`) or `n/d`, `d > 0`, given on machine words and not
-/// necessarily reduced: the same text as the reduced [`Q`]'s, without its GCD.
-pub(crate) fn decimal_words(negative: bool, n: U256, d: U256, digits: usize) -> String {
-    let mut out = String::new();
-    push_decimal_words(&mut out, negative, n, d, digits, None);
-    out
+/// [`decimal`] of `n/d` (`d > 0`) given as big integers and not necessarily reduced: the same
+/// text as the reduced [`Q`]'s, without its GCD (for numbers past the words, such as an
+/// engine audit's energy change over a 1024-bit denominator).
+pub(crate) fn decimal_unreduced(n: &BigInt, d: &BigInt, digits: usize) -> String {
+    if n.is_zero() {
+        return "0".to_string();
+    }
+    Significant::on_parts(
+        n.is_negative(),
+        n.abs(),
+        d,
+        digits.max(1),
+        Rounding::HalfEven,
+    )
+    .text()
 }
 
-/// [`decimal_words`], appended to `out` (a batch row writes its cells into its line). `near`,
-/// the f64 nearest to `n/d` where the caller has it, only saves work (see
-/// [`round_on_words`]).
+/// [`decimal`] of `-n/d` (when `negative`) or `n/d`, `d > 0`, given on machine words and not
+/// necessarily reduced: the same text as the reduced [`Q`]'s, without its GCD, appended to
+/// `out` (a batch row writes its cells into its line). `near`, the f64 nearest to `n/d` where
+/// the caller has it, only saves work (see [`round_on_words`]).
 pub(crate) fn push_decimal_words(
     out: &mut String,
     negative: bool,
@@ -388,10 +398,45 @@ pub(crate) const EXACT_POWERS_OF_TEN: [f64; 23] = [
 /// [`round_certified`]'s bound for an f64 nearest to the value: `2^-50` of the scaled float.
 const NEAREST_ERROR: f64 = 1.0 / (1u64 << 50) as f64;
 
-/// The positive normal `x` itself rounded to `digits` significant digits, as [`round_on_words`]
-/// rounds it, where the float alone decides (`None` elsewhere: the words decide).
-pub(crate) fn round_float(x: f64, digits: usize, rounding: Rounding) -> Option<(u64, i64, bool)> {
-    (x.is_normal() && x > 0.0).then(|| round_certified(false, x, digits, rounding, 0.0))?
+/// The positive normal `x` itself rounded to `digits` significant digits to nearest, ties to
+/// even, as [`round_on_words`] rounds it, where the float alone decides (`None` elsewhere: the
+/// words decide): `(m, e)` with `x` near `m 10^(e + 1 - digits)`. Whether that lost anything
+/// is not told: where `x` scaled lands on an integer, the scaling may have rounded, but by less
+/// than half a unit, so the nearest is that integer either way.
+pub(crate) fn round_float(x: f64, digits: usize) -> Option<(u64, i64)> {
+    if !(x.is_normal() && x > 0.0) {
+        return None;
+    }
+    let (y, exp) = scaled(x, digits)?;
+    if y.fract() == 0.0 {
+        return Some((y as u64, exp));
+    }
+    round_scaled(false, (y, exp), digits, Rounding::HalfEven, 0.0).map(|(m, e, _)| (m, e))
+}
+
+/// `y = x 10^k` with `digits` integer digits (`10^(digits - 1) <= y < 10^digits`, `digits` at
+/// most 15), in one correctly rounded operation, and `e = digits - 1 - k`; `None` where `10^k`
+/// is not an exact f64 (`|k| > 22`).
+fn scaled(x: f64, digits: usize) -> Option<(f64, i64)> {
+    if !(1..=15).contains(&digits) {
+        return None;
+    }
+    let (low, high) = (EXACT_POWERS_OF_TEN[digits - 1], EXACT_POWERS_OF_TEN[digits]);
+    let mut exp = log10_of_float_estimate(x);
+    // The estimate is off by one at most, so two tries find the scale (and a third is spare).
+    for _ in 0..3 {
+        let k = digits as i64 - 1 - exp;
+        let power = *EXACT_POWERS_OF_TEN.get(usize::try_from(k.unsigned_abs()).ok()?)?;
+        let y = if k >= 0 { x * power } else { x / power };
+        if y < low {
+            exp -= 1;
+        } else if y >= high {
+            exp += 1;
+        } else {
+            return Some((y, exp));
+        }
+    }
+    None
 }
 
 /// [`round_on_words`] decided from a positive normal f64 `x` where that alone is certain.
@@ -411,38 +456,33 @@ fn round_certified(
     rounding: Rounding,
     error: f64,
 ) -> Option<(u64, i64, bool)> {
-    if !(1..=15).contains(&digits) {
+    round_scaled(negative, scaled(x, digits)?, digits, rounding, error)
+}
+
+/// [`round_certified`] of `x` given [`scaled`]: `y` and its exponent.
+fn round_scaled(
+    negative: bool,
+    (y, exp): (f64, i64),
+    digits: usize,
+    rounding: Rounding,
+    error: f64,
+) -> Option<(u64, i64, bool)> {
+    let (low, high) = (EXACT_POWERS_OF_TEN[digits - 1], EXACT_POWERS_OF_TEN[digits]);
+    let margin = y * error;
+    if y - margin < low || y + margin >= high {
         return None;
     }
-    let (low, high) = (EXACT_POWERS_OF_TEN[digits - 1], EXACT_POWERS_OF_TEN[digits]);
-    let mut exp = log10_of_float_estimate(x);
-    // The estimate is off by one at most, so two tries find the scale (and a third is spare).
-    for _ in 0..3 {
-        let k = digits as i64 - 1 - exp;
-        let power = *EXACT_POWERS_OF_TEN.get(usize::try_from(k.unsigned_abs()).ok()?)?;
-        let y = if k >= 0 { x * power } else { x / power };
-        let margin = y * error;
-        if y < low {
-            exp -= 1;
-        } else if y >= high {
-            exp += 1;
-        } else if y - margin < low || y + margin >= high {
-            return None;
-        } else {
-            // The floor (y is positive and below 10^15), and the bits of y below its units.
-            let quot = y as u64;
-            let fraction = y - quot as f64;
-            let near_point = |p: f64| (fraction - p).abs() <= margin;
-            if near_point(0.0) || near_point(0.5) || near_point(1.0) {
-                return None;
-            }
-            let half = || fraction.total_cmp(&0.5);
-            let away = rounds_away(rounding, negative, quot % 2 == 1, half);
-            let (m, exp) = carried(quot + u64::from(away), exp, high as u64);
-            return Some((m, exp, false));
-        }
+    // The floor (y is positive and below 10^15), and the bits of y below its units.
+    let quot = y as u64;
+    let fraction = y - quot as f64;
+    let near_point = |p: f64| (fraction - p).abs() <= margin;
+    if near_point(0.0) || near_point(0.5) || near_point(1.0) {
+        return None;
     }
-    None
+    let half = || fraction.total_cmp(&0.5);
+    let away = rounds_away(rounding, negative, quot % 2 == 1, half);
+    let (m, exp) = carried(quot + u64::from(away), exp, high as u64);
+    Some((m, exp, false))
 }
 
 impl Significant {
@@ -466,9 +506,19 @@ impl Significant {
 
     /// [`Significant::of`] in big integers, for a nonzero value.
     fn on_big(value: &Q, digits: usize, rounding: Rounding) -> Significant {
-        let negative = value.is_negative();
         let n = value.numer().abs();
-        let d = value.denom();
+        Significant::on_parts(value.is_negative(), n, value.denom(), digits, rounding)
+    }
+
+    /// [`Significant::on_big`] of `-n/d` (when `negative`) or `n/d`, `n > 0`, `d > 0`, not
+    /// necessarily reduced.
+    fn on_parts(
+        negative: bool,
+        n: BigInt,
+        d: &BigInt,
+        digits: usize,
+        rounding: Rounding,
+    ) -> Significant {
         let mut exp = floor_log10(&n, d);
         let shift = digits as i64 - 1 - exp;
         let (num, den) = if shift >= 0 {
@@ -716,6 +766,23 @@ pub fn compact(x: &Q) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn unreduced_big_parts_print_as_their_reduced_value() {
+        let big = |s: &str| s.parse::<BigInt>().unwrap();
+        // 10^200 times 2/3, -1/8, 0 and 999.5/1000 (a carry into a new digit).
+        let scale = ten_to(200);
+        for (n, d, want) in [
+            (big("2"), big("3"), "0.667"),
+            (big("-1"), big("8"), "-0.125"),
+            (big("0"), big("7"), "0"),
+            (big("19990"), big("20000"), "1.00"),
+        ] {
+            let (n, d) = (n * &scale, d * &scale);
+            assert_eq!(decimal_unreduced(&n, &d, 3), want);
+            assert_eq!(decimal(&Q::new(n, d), 3), want);
+        }
+    }
     use crate::field::q;
     use proptest::prelude::*;
 

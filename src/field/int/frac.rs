@@ -11,7 +11,7 @@
 //! unbounded rationals. A flagged value is garbage, never a panic.
 
 use super::Int;
-use super::wide::Wide;
+use super::wide::{Limbs, Wide};
 use crate::field::{Field, Q};
 use num_traits::{One, Zero};
 use std::cell::Cell;
@@ -69,15 +69,15 @@ impl FracInt for i128 {
     }
 }
 
-impl FracInt for Wide {
+impl<const N: usize> FracInt for Limbs<N> {
     fn sign(&self) -> Ordering {
-        Wide::sign(self)
+        Limbs::sign(self)
     }
     fn order(&self, o: &Self) -> Ordering {
         self.cmp_signed(o)
     }
     fn negated(&self) -> Option<Self> {
-        Some(Wide::negated(self))
+        Some(Limbs::negated(self))
     }
     fn exact_quotient(&self, _: &Self) -> Option<Self> {
         None

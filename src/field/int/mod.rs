@@ -4,7 +4,7 @@
 //! - `words`: binary GCDs on `u64` and `u128`, and a 256-bit unsigned integer (`U256`) that
 //!   reduces, compares and prints fractions of up to 256-bit parts on machine words;
 //! - `quotient`: small quotients of 256-bit integers and the nearest f64 to a fraction of them;
-//! - `wide`: a checked 512-bit signed integer (`Wide`);
+//! - `wide`: checked signed integers of 512 bits (`Wide`), 1024 (`Wider`) and 2560 (`Widest`);
 //! - `signed`: a checked 256-bit signed integer (`I256`);
 //! - `frac`: unreduced fractions of `i128`, `I256` or `Wide`, a field whose overflow is
 //!   reported (`Frac`);
@@ -21,7 +21,7 @@ use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive, Zero};
 pub(crate) use ring::Ring;
 pub(crate) use signed::I256;
-pub(crate) use wide::Wide;
+pub(crate) use wide::{Wide, Wider, Widest};
 pub(crate) use words::{POWERS_OF_TEN, U256, gcd, gcd_u64, powers};
 
 /// The [`Int`] operations of an integer type that never overflows (every result `Some`),
@@ -187,13 +187,18 @@ impl Int for i128 {
 /// The fixed widths a batch row's word route computes in (`i128`, `I256`, `Wide`): numbers
 /// enter from machine words and leave as 256-bit magnitudes, with no big integer between.
 pub(crate) trait FixedInt: FracInt {
+    /// The magnitudes held: below `2^BITS`.
+    const BITS: u32;
     /// `-x` (when `negative`) or `x`, if it fits.
     fn of_words(negative: bool, x: U256) -> Option<Self>;
     /// Sign and magnitude, if the magnitude fits 256 bits.
     fn to_words(&self) -> Option<(bool, U256)>;
+    /// The value as a big integer (for what leaves the words).
+    fn to_big(&self) -> BigInt;
 }
 
 impl FixedInt for i128 {
+    const BITS: u32 = 127;
     fn of_words(negative: bool, x: U256) -> Option<Self> {
         let magnitude = i128::try_from(x.lo).ok().filter(|_| x.hi == 0)?;
         Some(if negative { -magnitude } else { magnitude })
@@ -206,6 +211,9 @@ impl FixedInt for i128 {
                 lo: self.unsigned_abs(),
             },
         ))
+    }
+    fn to_big(&self) -> BigInt {
+        BigInt::from(*self)
     }
 }
 

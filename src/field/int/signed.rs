@@ -76,11 +76,16 @@ impl Int for I256 {
 }
 
 impl super::FixedInt for I256 {
+    const BITS: u32 = 256;
     fn of_words(negative: bool, x: U256) -> Option<Self> {
         Some(I256::signed(negative, x))
     }
     fn to_words(&self) -> Option<(bool, U256)> {
         Some((self.negative, self.mag))
+    }
+    fn to_big(&self) -> BigInt {
+        let magnitude = BigInt::from(self.mag.to_big());
+        if self.negative { -magnitude } else { magnitude }
     }
 }
 

@@ -1,9 +1,13 @@
-//! A 512-bit signed integer with checked arithmetic: the second fixed width of the fast path.
+//! Signed integers of a fixed number of 64-bit limbs with checked arithmetic (`Limbs<N>`): the
+//! 512-bit `Wide`, the second fixed width of the fast path, and the 1024-bit `Wider` and
+//! 2560-bit `Widest` of an engine row's audit.
 //!
 //! Scenes with numbers of about 10^6 (20 bits) give fraction-free values of about 120 bits and
 //! law identities of up to about 330 bits: too wide for `i128`, far below what needs heap
-//! digits. Sign and magnitude (eight 64-bit limbs, least significant first); the loops run over
-//! the limbs in use only, so small values cost little more than machine words.
+//! digits. An engine's claim of 5e-107 for a zero (a 356-bit power of ten) squared in the
+//! audit's energies needs about 800 bits. Sign and magnitude (limbs least significant first);
+//! the loops run over the limbs in use only, so small values cost little more than machine
+//! words.
 
 use super::Int;
 use super::words::U256;
@@ -11,19 +15,28 @@ use crate::field::Q;
 use num_bigint::{BigInt, BigUint, Sign};
 use std::cmp::Ordering;
 
-const LIMBS: usize = 8;
-
-/// A signed integer of at most 512 bits; zero is never negative.
+/// A signed integer of at most `64 N` bits (`N >= 4`: a 256-bit word fits); zero is never
+/// negative.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) struct Wide {
+pub(crate) struct Limbs<const N: usize> {
     negative: bool,
-    mag: [u64; LIMBS],
+    mag: [u64; N],
 }
 
-impl Wide {
-    const ZERO: Wide = Wide {
+/// A signed integer of at most 512 bits.
+pub(crate) type Wide = Limbs<8>;
+
+/// A signed integer of at most 1024 bits.
+pub(crate) type Wider = Limbs<16>;
+
+/// A signed integer of at most 2560 bits: the square of the smallest f64 written out in
+/// decimal (`4.9406564584124654e-324`, 17 digits over 10^340, 1130 bits) with room to spare.
+pub(crate) type Widest = Limbs<40>;
+
+impl<const N: usize> Limbs<N> {
+    const ZERO: Limbs<N> = Limbs {
         negative: false,
-        mag: [0; LIMBS],
+        mag: [0; N],
     };
 
     /// Whether the representation holds its invariant: zero is never negative (so the derived
@@ -44,22 +57,22 @@ impl Wide {
         self.mag.iter().fold(0, |acc, &x| acc | x) == 0
     }
 
-    fn signed(negative: bool, mag: [u64; LIMBS]) -> Wide {
-        let mut w = Wide { negative, mag };
+    fn signed(negative: bool, mag: [u64; N]) -> Self {
+        let mut w = Limbs { negative, mag };
         if w.is_zero() {
             w.negative = false;
         }
         w
     }
 
-    fn compare_magnitudes(a: &[u64; LIMBS], b: &[u64; LIMBS]) -> Ordering {
+    fn compare_magnitudes(a: &[u64; N], b: &[u64; N]) -> Ordering {
         a.iter().rev().cmp(b.iter().rev())
     }
 
-    fn add_magnitudes(a: &[u64; LIMBS], b: &[u64; LIMBS]) -> Option<[u64; LIMBS]> {
-        let mut out = [0; LIMBS];
+    fn add_magnitudes(a: &[u64; N], b: &[u64; N]) -> Option<[u64; N]> {
+        let mut out = [0; N];
         let mut carry = false;
-        for i in 0..LIMBS {
+        for i in 0..N {
             let (s, c1) = a[i].overflowing_add(b[i]);
             let (s, c2) = s.overflowing_add(u64::from(carry));
             out[i] = s;
@@ -69,10 +82,10 @@ impl Wide {
     }
 
     /// `a - b` for `a >= b`.
-    fn sub_magnitudes(a: &[u64; LIMBS], b: &[u64; LIMBS]) -> [u64; LIMBS] {
-        let mut out = [0; LIMBS];
+    fn sub_magnitudes(a: &[u64; N], b: &[u64; N]) -> [u64; N] {
+        let mut out = [0; N];
         let mut borrow = false;
-        for i in 0..LIMBS {
+        for i in 0..N {
             let (d, b1) = a[i].overflowing_sub(b[i]);
             let (d, b2) = d.overflowing_sub(u64::from(borrow));
             out[i] = d;
@@ -81,45 +94,46 @@ impl Wide {
         out
     }
 
-    pub(crate) fn checked_add(&self, o: &Wide) -> Option<Wide> {
+    pub(crate) fn checked_add(&self, o: &Self) -> Option<Self> {
         if self.negative == o.negative {
-            return Some(Wide::signed(
+            return Some(Self::signed(
                 self.negative,
-                Wide::add_magnitudes(&self.mag, &o.mag)?,
+                Self::add_magnitudes(&self.mag, &o.mag)?,
             ));
         }
-        Some(match Wide::compare_magnitudes(&self.mag, &o.mag) {
-            Ordering::Less => Wide::signed(o.negative, Wide::sub_magnitudes(&o.mag, &self.mag)),
-            _ => Wide::signed(self.negative, Wide::sub_magnitudes(&self.mag, &o.mag)),
+        Some(match Self::compare_magnitudes(&self.mag, &o.mag) {
+            Ordering::Less => Self::signed(o.negative, Self::sub_magnitudes(&o.mag, &self.mag)),
+            _ => Self::signed(self.negative, Self::sub_magnitudes(&self.mag, &o.mag)),
         })
     }
 
-    pub(crate) fn negated(&self) -> Wide {
-        Wide::signed(!self.negative, self.mag)
+    pub(crate) fn negated(&self) -> Self {
+        Self::signed(!self.negative, self.mag)
     }
 
-    pub(crate) fn checked_mul(&self, o: &Wide) -> Option<Wide> {
+    pub(crate) fn checked_mul(&self, o: &Self) -> Option<Self> {
         let (la, lb) = (self.len(), o.len());
         if la == 0 || lb == 0 {
-            return Some(Wide::ZERO);
+            return Some(Self::ZERO);
         }
         let negative = self.negative != o.negative;
         if la <= 2 && lb <= 2 {
             // Both below 2^128 (most of an audit's products): one 128 x 128-bit product.
-            let word = |w: &Wide| u128::from(w.mag[0]) | u128::from(w.mag[1]) << 64;
+            let word = |w: &Self| u128::from(w.mag[0]) | u128::from(w.mag[1]) << 64;
             let product = U256 {
                 hi: 0,
                 lo: word(self),
             }
             .checked_mul(word(o))
             .expect("a 128 x 128-bit product fits 256 bits");
-            return Some(Wide::from_u256(negative, product));
+            return Some(Self::from_u256(negative, product));
         }
-        // The product has la + lb - 1 or la + lb limbs.
-        if la + lb - 1 > LIMBS {
+        // The product has la + lb - 1 or la + lb limbs: every partial product lands below
+        // limb N, and only a last carry can reach it.
+        if la + lb - 1 > N {
             return None;
         }
-        let mut out = [0u64; LIMBS + 1];
+        let mut out = [0u64; N];
         for i in 0..la {
             let mut carry = 0u128;
             for j in 0..lb {
@@ -128,24 +142,24 @@ impl Wide {
                 out[i + j] = t as u64;
                 carry = t >> 64;
             }
-            out[i + lb] = carry as u64;
+            match out.get_mut(i + lb) {
+                Some(slot) => *slot = carry as u64,
+                None if carry != 0 => return None,
+                None => {}
+            }
         }
-        if out[LIMBS] != 0 {
-            return None;
-        }
-        let mut mag = [0; LIMBS];
-        mag.copy_from_slice(&out[..LIMBS]);
-        Some(Wide::signed(negative, mag))
+        Some(Self::signed(negative, out))
     }
 
     /// `-n` (when `negative`) or `n`.
-    pub(crate) fn from_u256(negative: bool, n: U256) -> Wide {
-        let mut mag = [0; LIMBS];
+    pub(crate) fn from_u256(negative: bool, n: U256) -> Self {
+        const { assert!(N >= 4, "a 256-bit word fits") };
+        let mut mag = [0; N];
         mag[0] = n.lo as u64;
         mag[1] = (n.lo >> 64) as u64;
         mag[2] = n.hi as u64;
         mag[3] = (n.hi >> 64) as u64;
-        Wide::signed(negative, mag)
+        Self::signed(negative, mag)
     }
 
     /// The sign: less than, equal to or greater than zero.
@@ -158,24 +172,24 @@ impl Wide {
     }
 
     /// The order of the signed values.
-    pub(crate) fn cmp_signed(&self, o: &Wide) -> Ordering {
+    pub(crate) fn cmp_signed(&self, o: &Self) -> Ordering {
         match (self.negative, o.negative) {
             (false, true) => Ordering::Greater,
             (true, false) => Ordering::Less,
-            (false, false) => Wide::compare_magnitudes(&self.mag, &o.mag),
-            (true, true) => Wide::compare_magnitudes(&o.mag, &self.mag),
+            (false, false) => Self::compare_magnitudes(&self.mag, &o.mag),
+            (true, true) => Self::compare_magnitudes(&o.mag, &self.mag),
         }
     }
 
-    fn from_big(x: &BigInt) -> Option<Wide> {
-        if x.bits() > 64 * LIMBS as u64 {
+    fn from_big(x: &BigInt) -> Option<Self> {
+        if x.bits() > 64 * N as u64 {
             return None;
         }
-        let mut mag = [0; LIMBS];
+        let mut mag = [0; N];
         for (slot, digit) in mag.iter_mut().zip(x.magnitude().iter_u64_digits()) {
             *slot = digit;
         }
-        Some(Wide::signed(x.sign() == Sign::Minus, mag))
+        Some(Self::signed(x.sign() == Sign::Minus, mag))
     }
 
     fn magnitude_to_big(mag: &[u64]) -> BigUint {
@@ -194,7 +208,7 @@ impl Wide {
         };
         let magnitude = match self.len() {
             0..=2 => BigUint::from(u128::from(self.mag[0]) | u128::from(self.mag[1]) << 64),
-            len => Wide::magnitude_to_big(&self.mag[..len]),
+            len => Self::magnitude_to_big(&self.mag[..len]),
         };
         BigInt::from_biguint(sign, magnitude)
     }
@@ -208,23 +222,27 @@ impl Wide {
     }
 }
 
-impl super::FixedInt for Wide {
+impl<const N: usize> super::FixedInt for Limbs<N> {
+    const BITS: u32 = 64 * N as u32;
     fn of_words(negative: bool, x: U256) -> Option<Self> {
-        Some(Wide::from_u256(negative, x))
+        Some(Self::from_u256(negative, x))
     }
     fn to_words(&self) -> Option<(bool, U256)> {
         Some((self.negative, self.to_u256()?))
     }
+    fn to_big(&self) -> BigInt {
+        Limbs::to_big(*self)
+    }
 }
 
-impl Int for Wide {
+impl<const N: usize> Int for Limbs<N> {
     fn lift(x: &BigInt) -> Option<Self> {
-        Wide::from_big(x)
+        Self::from_big(x)
     }
     fn small(x: u8) -> Self {
-        let mut mag = [0; LIMBS];
+        let mut mag = [0; N];
         mag[0] = x.into();
-        Wide::signed(false, mag)
+        Self::signed(false, mag)
     }
     fn add(&self, o: &Self) -> Option<Self> {
         self.checked_add(o)
@@ -236,7 +254,7 @@ impl Int for Wide {
         self.checked_mul(o)
     }
     fn squares_balance(lhs: [(&Self, &Self); 3], (c, x): (&Self, &Self)) -> Option<bool> {
-        let mut sum = Wide::ZERO;
+        let mut sum = Self::ZERO;
         for (c, x) in lhs {
             sum = sum.checked_add(&c.checked_mul(&x.checked_mul(x)?)?)?;
         }
@@ -298,11 +316,11 @@ mod tests {
         }
     }
 
-    /// A signed integer of up to 300 bits.
-    fn int() -> impl Strategy<Value = BigInt> {
+    /// A signed integer of up to `32 words` bits.
+    fn int(words: usize) -> impl Strategy<Value = BigInt> {
         (
             any::<bool>(),
-            proptest::collection::vec(any::<u32>(), 0..10),
+            proptest::collection::vec(any::<u32>(), 0..words),
         )
             .prop_map(|(negative, digits)| {
                 let m = BigInt::from(BigUint::new(digits));
@@ -310,22 +328,38 @@ mod tests {
             })
     }
 
+    /// Whether every operation of `Limbs<N>` on `a` and `b` agrees with big integers, or
+    /// reports overflow exactly when the result needs more than `64 N` bits.
+    fn agrees<const N: usize>(a: &BigInt, b: &BigInt) -> bool {
+        let (wa, wb) = (
+            Limbs::<N>::from_big(a).unwrap(),
+            Limbs::<N>::from_big(b).unwrap(),
+        );
+        let fits = |x: &BigInt| x.bits() <= 64 * N as u64;
+        let check = |got: Option<Limbs<N>>, want: BigInt| match got {
+            Some(w) => w.is_valid() && w.to_big() == want,
+            None => !fits(&want),
+        };
+        check(wa.add(&wb), a + b)
+            && check(wa.sub(&wb), a - b)
+            && check(wa.mul(&wb), a * b)
+            && check(wa.mul(&wa), a * a)
+            && wa.is_valid()
+            && wb.is_valid()
+    }
+
     proptest! {
-        /// Law: every operation agrees with big integers, or reports overflow exactly when the
-        /// result needs more than 512 bits.
+        /// Law: every operation of the 512-bit width agrees with big integers, or reports
+        /// overflow exactly when the result needs more than 512 bits.
         #[test]
-        fn agrees_with_big_integers(a in int(), b in int()) {
-            let (wa, wb) = (Wide::from_big(&a).unwrap(), Wide::from_big(&b).unwrap());
-            let fits = |x: &BigInt| x.bits() <= 512;
-            let check = |got: Option<Wide>, want: BigInt| match got {
-                Some(w) => w.is_valid() && w.to_big() == want,
-                None => !fits(&want),
-            };
-            prop_assert!(check(wa.add(&wb), &a + &b));
-            prop_assert!(check(wa.sub(&wb), &a - &b));
-            prop_assert!(check(wa.mul(&wb), &a * &b));
-            prop_assert!(check(wa.mul(&wa), &a * &a));
-            prop_assert!(wa.is_valid() && wb.is_valid());
+        fn agrees_with_big_integers(a in int(10), b in int(10)) {
+            prop_assert!(agrees::<8>(&a, &b));
+        }
+
+        /// Law: the same of the 1024-bit width, on operands of up to 600 bits.
+        #[test]
+        fn the_wider_width_agrees_with_big_integers(a in int(19), b in int(19)) {
+            prop_assert!(agrees::<16>(&a, &b));
         }
     }
 
@@ -333,7 +367,7 @@ mod tests {
     fn a_negative_zero_is_invalid_and_never_made() {
         let negative_zero = Wide {
             negative: true,
-            mag: [0; LIMBS],
+            mag: [0; 8],
         };
         assert!(!negative_zero.is_valid());
         let one = Wide::from_big(&BigInt::from(1)).unwrap();
