@@ -352,13 +352,17 @@ impl U256 {
         out
     }
 
-    /// Appends the decimal digits: itoa's digit-pair printer on the value below 2^128, or on
-    /// its base-10^19 digits above.
+    /// Appends the decimal digits: itoa's digit-pair printer on the value below 2^64 (most
+    /// of a row's numbers; itoa's u128 printer divides in 128 bits), 2^128, or on its
+    /// base-10^19 digits above.
     pub(crate) fn write_decimal(self, out: &mut String) {
         const CHUNK: u64 = 10_000_000_000_000_000_000; // 10^19
         let mut buffer = itoa::Buffer::new();
         if self.hi == 0 {
-            out.push_str(buffer.format(self.lo));
+            match u64::try_from(self.lo) {
+                Ok(small) => out.push_str(buffer.format(small)),
+                Err(_) => out.push_str(buffer.format(self.lo)),
+            }
             return;
         }
         // Low base-10^19 digits until the rest fits 128 bits (at most three: 2^256 < 10^78).
