@@ -80,6 +80,9 @@ impl RelError {
             return other.sign().map_or(Ordering::Equal, Ordering::reverse);
         }
         let mine = self.unreduced();
+        if mine.denom() == other.denom() {
+            return mine.numer().cmp(other.numer());
+        }
         (mine.numer() * other.denom()).cmp(&(other.numer() * mine.denom()))
     }
 }
