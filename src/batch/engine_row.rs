@@ -240,7 +240,8 @@ const ROD: usize = 7;
 
 /// A scene solved on words, with the cells and the claimed outputs it was solved for.
 struct Solved {
-    cells_read: [Box<[u8]>; SCENE_CELLS],
+    /// The scene cells it was solved from, one after another, and where each ends.
+    cells_read: (Box<[u8]>, [usize; SCENE_CELLS]),
     wanted: [bool; WORD_CLAIMS],
     scene: Scene,
     exact: Exact,
@@ -270,8 +271,13 @@ impl Solved {
         for value in exact.values.iter().flatten() {
             value.write_cell(&mut written);
         }
+        let mut read = Vec::with_capacity(cells.iter().map(|c| c.len()).sum());
+        let ends = cells.map(|cell| {
+            read.extend_from_slice(cell);
+            read.len()
+        });
         Some(Solved {
-            cells_read: cells.map(Box::from),
+            cells_read: (read.into_boxed_slice(), ends),
             wanted: *wanted,
             scene,
             exact,
@@ -282,7 +288,14 @@ impl Solved {
 
     /// Whether this is the scene of `cells`, solved for `wanted`.
     fn is_for(&self, cells: &SceneCells, wanted: &[bool; WORD_CLAIMS]) -> bool {
-        self.wanted == *wanted && self.cells_read.iter().zip(cells).all(|(a, b)| **a == **b)
+        let (read, ends) = &self.cells_read;
+        let mut start = 0;
+        self.wanted == *wanted
+            && ends.iter().zip(cells).all(|(&end, cell)| {
+                let same = read[start..end] == **cell;
+                start = end;
+                same
+            })
     }
 }
 
