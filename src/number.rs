@@ -119,15 +119,10 @@ impl WordRatio {
     /// but ASCII digits, signs, `/`, `.` and `e` is refused).
     pub(crate) fn parse_bytes(text: &[u8]) -> Option<WordRatio> {
         let scaled = ScaledRatio::parse(text)?;
-        let denom = match scaled.tens {
-            0 => scaled.denom,
-            // A decimal's digits over 10^k (its denominator is 1).
-            k => U256::pow10(k)?,
-        };
         Some(WordRatio {
             negative: scaled.negative,
             numer: scaled.numer,
-            denom,
+            denom: scaled.denominator()?,
         })
     }
 
@@ -218,6 +213,15 @@ impl ScaledRatio {
             denom,
             tens,
         })
+    }
+
+    /// The denominator with its power of ten multiplied in, if that fits 256 bits.
+    pub(crate) fn denominator(&self) -> Option<U256> {
+        match self.tens {
+            0 => Some(self.denom),
+            // Only a decimal has a power of ten, over a denominator of 1.
+            k => U256::pow10(k),
+        }
     }
 }
 

@@ -401,11 +401,7 @@ fn check(k: usize, claim: Claim, x: &Ratio, agreement: &Agreement) -> Option<Out
         (claim.numer == U256::ZERO).then_some(RelError::ZERO)
     } else {
         let claimed = claim.numer.checked_mul_wide(x.d)?;
-        let d = match claim.tens {
-            0 => claim.denom,
-            k => claim.denom.checked_mul_wide(U256::pow10(k)?)?,
-        };
-        let value = x.n.checked_mul_wide(d)?;
+        let value = x.n.checked_mul_wide(claim.denominator()?)?;
         let difference = U256::signed_distance(claim.negative, claimed, x.negative, value)?;
         Some(RelError::Words(difference, value))
     };

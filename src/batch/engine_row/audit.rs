@@ -191,8 +191,6 @@ struct AuditScene<T> {
     omega: (T, T),
     /// The energy change `(Kc vd^2 den^2 - vn^2 Ke q^2) / (q^2 den^2 wv vn^2)`.
     change: [T; 3],
-    /// Whether the exact spin is zero (no flipped answer to be taken for).
-    spinless: bool,
 }
 
 impl<T: FixedInt> AuditScene<T> {
@@ -284,7 +282,6 @@ impl<T: FixedInt> AuditScene<T> {
                 wn.mul(&law_plus)?.mul(&law_plus)?,
             ),
             change: [vd2.mul(&den2)?, vn2.mul(&ke)?, den2.mul(&wv)?.mul(&vn2)?],
-            spinless: nw.sign() == Ordering::Equal,
         })
     }
 }
@@ -370,7 +367,8 @@ fn audit<T: FixedInt>(
     if greater(&cw.mul(&cw)?.mul(&a.omega.0)?, &a.omega.1.mul(&q2)?) {
         findings.push(Finding::AboveOmegaMax);
     }
-    if !a.spinless {
+    // A flipped spin is another answer only where the exact spin (vn nw, vn > 0) is not zero.
+    if a.exact[2].sign() != Ordering::Equal {
         let flipped = exact_side[2].negated()?;
         let d = distance(&over_s, [&exact_side[0], &exact_side[1], &flipped])?;
         if taken_for(d, None)? {
