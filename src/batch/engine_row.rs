@@ -11,7 +11,11 @@
 //!
 //! A scene is solved once for a run of rows: an engine's log runs each scene at every time
 //! step and iteration count it tries, row after row, and each thread keeps the scene it
-//! solved last ([`Solved`]), with its exact outputs' text and the audit's part of it.
+//! solved last ([`last_scene`]), with its exact outputs' text and the audit's part of it
+//! ([`Solved`]).
+//!
+//! An oblique header's rows have a row of their own (the `oblique` submodule): its scene
+//! solved by the general row's solve, once a run, and its claims checked here on words.
 //!
 //! It is a shortcut, never a second opinion: a row it does not take (a unit, a part above 18
 //! digits, a non-finite claim, a scene the general row would refuse, a value beyond
@@ -26,6 +30,7 @@
 //! state (times `q^2`), `Ke` for the exact one (before `vn^2/S^2`).
 
 use super::compare::Agreement;
+use super::last_scene;
 use super::plan::{
     Arithmetic, Diagnosis, OutputCheck, Role, STATE, SolvedRow, WORD_CLAIMS, WordPlan,
 };
@@ -35,11 +40,11 @@ use crate::field::int::{FixedInt, U256, Wide};
 use crate::number::ScaledRatio;
 use crate::solve::fraction_free::{Parts, Raw, raw_of};
 use crate::solve::words::Part;
-use std::cell::RefCell;
-use std::rc::Rc;
 
 mod audit;
+mod oblique;
 use audit::{AuditScenes, diagnose};
+pub(super) use oblique::oblique_row;
 
 /// The rod's mass distribution as its cell gives it.
 #[derive(Debug, Clone, Copy)]
@@ -238,11 +243,8 @@ const SCENE_CELLS: usize = 8;
 /// Where the rod's cell sits among the scene cells.
 const ROD: usize = 7;
 
-/// A scene solved on words, with the cells and the claimed outputs it was solved for.
+/// A scene solved on words (kept for its run of rows by [`super::last_scene`]).
 struct Solved {
-    /// The scene cells it was solved from, one after another, and where each ends.
-    cells_read: (Box<[u8]>, [usize; SCENE_CELLS]),
-    wanted: [bool; WORD_CLAIMS],
     scene: Scene,
     exact: Exact,
     /// The exact outputs' cells as the row writes them (`,v,V,omega...`).
@@ -271,55 +273,13 @@ impl Solved {
         for value in exact.values.iter().flatten() {
             value.write_cell(&mut written);
         }
-        let mut read = Vec::with_capacity(cells.iter().map(|c| c.len()).sum());
-        let ends = cells.map(|cell| {
-            read.extend_from_slice(cell);
-            read.len()
-        });
         Some(Solved {
-            cells_read: (read.into_boxed_slice(), ends),
-            wanted: *wanted,
             scene,
             exact,
             cells: written,
             audits: AuditScenes::default(),
         })
     }
-
-    /// Whether this is the scene of `cells`, solved for `wanted`.
-    fn is_for(&self, cells: &SceneCells, wanted: &[bool; WORD_CLAIMS]) -> bool {
-        let (read, ends) = &self.cells_read;
-        let mut start = 0;
-        self.wanted == *wanted
-            && ends.iter().zip(cells).all(|(&end, cell)| {
-                let same = read[start..end] == **cell;
-                start = end;
-                same
-            })
-    }
-}
-
-thread_local! {
-    /// The scene this thread solved last. An engine's log runs each scene at every time step
-    /// and iteration count it tries, row after row (in Rapier's fixture, 944 of 1,062 rows
-    /// follow a row of the same scene): the solve, its reductions and the outputs' text are
-    /// then done once a run, not once a row. The scene is a function of the cells as written
-    /// and the claimed outputs alone, so a row gets the same line either way.
-    static LAST_SOLVED: RefCell<Option<Rc<Solved>>> = const { RefCell::new(None) };
-}
-
-/// The scene of `cells` solved for `wanted`: this thread's last one when the cells are the
-/// same, else solved now (and kept); `None` when the general row must take the row.
-fn solved(cells: &SceneCells, wanted: &[bool; WORD_CLAIMS]) -> Option<Rc<Solved>> {
-    LAST_SOLVED.with(|last| {
-        let mut last = last.borrow_mut();
-        if let Some(done) = last.as_ref().filter(|done| done.is_for(cells, wanted)) {
-            return Some(Rc::clone(done));
-        }
-        let fresh = Rc::new(Solved::of(cells, wanted)?);
-        *last = Some(Rc::clone(&fresh));
-        Some(fresh)
-    })
 }
 
 /// Solves the scene in `T` and reduces the outputs the row prints.
@@ -395,6 +355,8 @@ fn claim(cell: &[u8]) -> Option<Claim> {
 
 /// A claimed value against the exact one: its check under `agreement`, exactly as
 /// [`super::compare`] decides it (the relative error kept on words, not reduced).
+// Inlined into both rows: six calls a row cost the engine row about 50 instructions.
+#[inline(always)]
 fn check(k: usize, claim: Claim, x: &Ratio, agreement: &Agreement) -> Option<OutputCheck> {
     let rel_error = if x.n == U256::ZERO {
         // Only a zero claim agrees with a zero value; any other is infinitely far.
@@ -430,12 +392,15 @@ pub(super) fn engine_row(
             Role::Rod => cells[ROD] = cell.trim_ascii(),
             // An empty claim is not checked (and a state without it not audited).
             Role::Claim(_) if cell.trim_ascii().is_empty() => {}
-            Role::Claim(k) => claims[k] = Some(claim(cell)?),
+            Role::Claim(k) => *claims.get_mut(k)? = Some(claim(cell)?),
             Role::Passed => {}
+            Role::Input(_) => return None, // an oblique plan's
         }
         Some(())
     })?;
-    let solved = solved(&cells, &plan.claimed)?;
+    let wanted: &[bool; WORD_CLAIMS] = plan.claimed[..WORD_CLAIMS].try_into().ok()?;
+    let solved = last_scene::solved(&cells, wanted, || Solved::of(&cells, wanted));
+    let solved = solved.as_ref().as_ref()?;
     let exact = &solved.exact;
     let mut out = String::with_capacity(line.len() + 400);
     out.push_str(line);
@@ -456,7 +421,7 @@ pub(super) fn engine_row(
         out.push(',');
         let diagnosis = match [claims[0], claims[1], claims[2]] {
             [Some(v), Some(big_v), Some(omega)] => {
-                diagnose(&solved, [v, big_v, omega], &checks, &mut out)?
+                diagnose(solved, [v, big_v, omega], &checks, &mut out)?
             }
             _ => {
                 out.push('-');

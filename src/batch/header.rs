@@ -544,10 +544,7 @@ impl Batch {
         let mut claimed: [Option<Claimed>; CLAIMS.len()] = Default::default();
         for (&column, &cell) in self.columns.iter().zip(&cells) {
             match column {
-                Column::Scene(k) if ["m", "M"].contains(&k.name) || !cell.is_empty() => {
-                    *input.slot(k.name).expect("scene columns are scene inputs") =
-                        Some(cell.to_string());
-                }
+                Column::Scene(k) => put_scene_cell(&mut input, k, cell),
                 Column::Claim(k) if !cell.is_empty() => {
                     claimed[k] = Some(Claimed::parse(k, cell).map_err(at)?);
                 }
@@ -558,31 +555,53 @@ impl Batch {
     }
 }
 
-/// The word rows' plan for a header whose scene columns are among m, M, l, a, v0, e, pivot
+/// Puts a row's (trimmed) cell of the scene column `key` into `input`: m and M always (an
+/// empty one is refused by name when the scene is built), any other unless empty (an empty
+/// cell takes the default).
+pub(super) fn put_scene_cell(input: &mut SceneInput, key: &SceneKey, cell: &str) {
+    if ["m", "M"].contains(&key.name) || !cell.is_empty() {
+        *input
+            .slot(key.name)
+            .expect("scene columns are scene inputs") = Some(cell.to_string());
+    }
+}
+
+/// The word rows' plan: for a header whose scene columns are among m, M, l, a, v0, e, pivot
 /// and rod and whose claims among v, V, omega, J and the energies (any other column passes
-/// through); `None` otherwise.
+/// through), or for an oblique header (any scene column and claim it allows); `None`
+/// otherwise.
 fn word_plan(columns: &[Column]) -> Option<WordPlan> {
+    let oblique = columns
+        .iter()
+        .any(|c| matches!(c, Column::Scene(k) if k.oblique));
     let roles = columns
         .iter()
         .map(|column| match *column {
+            Column::Scene(k) if oblique => SCENE_KEYS
+                .iter()
+                .position(|key| key.name == k.name)
+                .map(Role::Input),
             Column::Scene(k) if k.name == "rod" => Some(Role::Rod),
             Column::Scene(k) => WORD_SCENE
                 .iter()
                 .position(|&w| w == k.name)
                 .map(Role::Scene),
-            Column::Claim(k) => (k < WORD_CLAIMS).then_some(Role::Claim(k)),
+            Column::Claim(k) => (oblique || k < WORD_CLAIMS).then_some(Role::Claim(k)),
             Column::Passed => Some(Role::Passed),
         })
         .collect::<Option<Vec<Role>>>()?;
-    let claimed: [bool; WORD_CLAIMS] = std::array::from_fn(|k| roles.contains(&Role::Claim(k)));
-    let paper = !roles.iter().any(|role| {
-        matches!(role, Role::Rod | Role::Scene(6)) || matches!(role, Role::Claim(k) if *k >= STATE)
-    });
+    let claimed: [bool; CLAIMS.len()] = std::array::from_fn(|k| roles.contains(&Role::Claim(k)));
+    let paper = !oblique
+        && !roles.iter().any(|role| {
+            matches!(role, Role::Rod | Role::Scene(6))
+                || matches!(role, Role::Claim(k) if *k >= STATE)
+        });
     Some(WordPlan {
         roles,
         claimed,
-        audits: claimed[..STATE].iter().all(|c| *c),
+        audits: !oblique && claimed[..STATE].iter().all(|c| *c),
         paper,
+        oblique,
     })
 }
 

@@ -35,6 +35,7 @@ mod expected;
 mod float_row;
 mod header;
 mod impacts;
+mod last_scene;
 mod plan;
 mod rel_error;
 mod row;

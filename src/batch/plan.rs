@@ -78,11 +78,14 @@ pub(super) const WORD_CLAIMS: usize = OBLIQUE_CLAIMS;
 /// What one cell of a row holds, for the word rows.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Role {
-    /// A scene input: an index into [`WORD_SCENE`].
+    /// A scene input of the paper's scene: an index into [`WORD_SCENE`].
     Scene(usize),
     /// The rod's mass distribution (`uniform`, `dumbbell`, `rg=Q`, `I=Q`).
     Rod,
-    /// A claim: an index into [`CLAIMS`], below [`WORD_CLAIMS`].
+    /// A scene input of an oblique plan (any scene column, the rod's too): an index into
+    /// [`SCENE_KEYS`](crate::scene::SCENE_KEYS).
+    Input(usize),
+    /// A claim: an index into [`CLAIMS`].
     Claim(usize),
     /// Anything else, passed through.
     Passed,
@@ -94,12 +97,15 @@ pub(super) struct WordPlan {
     /// The role of each cell, in order.
     pub(super) roles: Vec<Role>,
     /// Which claims are claimed (their checks come in this order).
-    pub(super) claimed: [bool; WORD_CLAIMS],
+    pub(super) claimed: [bool; CLAIMS.len()],
     /// The claimed state is audited (v, V and omega all claimed).
     pub(super) audits: bool,
     /// The paper's word row may take the rows: no rod or pivot column, claims among v, V,
     /// omega only.
     pub(super) paper: bool,
+    /// An oblique header's plan: its scene columns are [`Role::Input`]s, and its rows are the
+    /// oblique engine row's.
+    pub(super) oblique: bool,
 }
 
 /// One output row: the CSV line (with its newline) and what the summary needs.

@@ -3,7 +3,7 @@
 
 use super::audit::{Finding, audit};
 use super::compare::{Agreement, Claimed, compare};
-use super::engine_row::engine_row;
+use super::engine_row::{engine_row, oblique_row};
 use super::float_row::float_word_row;
 use super::header::Batch;
 use super::plan::{
@@ -44,6 +44,9 @@ impl Batch {
             .word_plan
             .as_ref()
             .and_then(|plan| match self.arithmetic {
+                Arithmetic::Exact if plan.oblique => {
+                    oblique_row(plan, &self.agreement, number, line)
+                }
                 Arithmetic::Exact => word_row(plan, number, line)
                     .or_else(|| engine_row(plan, &self.agreement, number, line)),
                 Arithmetic::F64 => float_word_row(plan, &self.agreement, number, line),
@@ -306,7 +309,7 @@ fn energy_on_words<T: FracInt>(scene: &Scene, motion: &Motion<Q>) -> Option<Q> {
 /// header's row, solved exactly by [`Impact::on_both_axes`]; returns the values a claim may be
 /// compared with (v, V, omega, vt, Vt, the spin after and Jt, in [`CLAIMS`] order) and whether
 /// every law held.
-fn oblique_values(scene: &Scene, out: &mut String) -> ([Option<Q>; CLAIMS.len()], bool) {
+pub(super) fn oblique_values(scene: &Scene, out: &mut String) -> ([Option<Q>; CLAIMS.len()], bool) {
     let impact = Impact::on_both_axes(scene);
     let done = impact.oblique.as_ref().expect("answered on both axes");
     let after = &done.after;

@@ -52,7 +52,7 @@ pub(super) fn read_cells<'a>(
         match role {
             Role::Scene(slot) => *parts.get_mut(slot)? = Some(Part::parse(cell)?),
             Role::Claim(claim) => *claims.get_mut(claim)? = cell,
-            Role::Rod => return None,
+            Role::Rod | Role::Input(_) => return None,
             Role::Passed => {}
         }
         Some(())
