@@ -189,32 +189,23 @@ impl ScaledRatio {
             b'+' => (false, &text[1..]),
             _ => (false, text),
         };
-        let as_decimal = || -> Option<(U256, U256, u32)> {
-            let (mantissa, shift) = decimal_parts(unsigned)?;
-            Some(match u32::try_from(shift) {
-                Ok(up) => (mantissa.checked_mul_wide(U256::pow10(up)?)?, U256::ONE, 0),
-                Err(_) => (mantissa, U256::ONE, shift.unsigned_abs() as u32),
-            })
-        };
-        // One look at the first byte past the leading digits tells digits alone, a fraction
-        // or a decimal (a search for '/' and a failed parse as digits first cost an engine's
-        // row 100 instructions a claim).
-        let digits = unsigned
-            .iter()
-            .position(|b| !b.is_ascii_digit())
-            .unwrap_or(unsigned.len());
-        let (numer, denom, tens) = match unsigned.get(digits) {
-            Some(b'/') => (
-                U256::parse_decimal(&unsigned[..digits])?,
-                U256::parse_decimal(&unsigned[digits + 1..])?,
+        // A fraction has a '/' (memchr's search: a fraction's cell runs to 70 bytes), anything
+        // else is read as a decimal, digits alone too; a parse as digits first, failing at a
+        // decimal's '.', cost an engine's row 100 instructions a claim. (78 digits are past a
+        // decimal's 77 and may still be below 2^256 with leading zeros.)
+        let (numer, denom, tens) = match memchr::memchr(b'/', unsigned) {
+            Some(at) => (
+                U256::parse_decimal(&unsigned[..at])?,
+                U256::parse_decimal(&unsigned[at + 1..])?,
                 0,
             ),
-            // Digits alone (a decimal's reading also refuses digits past 77).
-            None => match U256::parse_decimal(unsigned) {
-                Some(n) => (n, U256::ONE, 0),
-                None => as_decimal()?,
+            None => match decimal_parts(unsigned) {
+                Some((mantissa, shift)) => match u32::try_from(shift) {
+                    Ok(up) => (mantissa.checked_mul_wide(U256::pow10(up)?)?, U256::ONE, 0),
+                    Err(_) => (mantissa, U256::ONE, shift.unsigned_abs() as u32),
+                },
+                None => (U256::parse_decimal(unsigned)?, U256::ONE, 0),
             },
-            Some(_) => as_decimal()?,
         };
         (denom != U256::ZERO).then_some(ScaledRatio {
             negative,
@@ -515,8 +506,7 @@ mod tests {
         assert_eq!(parts("1/0"), None);
         assert_eq!(parts("1.5e1000"), None);
         assert_eq!(parts("nan"), None);
-        // What follows the leading digits decides the reading: a fraction's parts are digits
-        // alone, and a decimal has no '/'.
+        // A fraction's parts are digits alone, and a decimal has no '/'.
         for refused in [
             "", "-", "/3", "3/", "1.5/2", "3/1.5", "3//4", "1e", ".", "1.2.3", "12a",
         ] {
@@ -524,8 +514,13 @@ mod tests {
         }
         assert_eq!(parts(".5"), Some((false, word(5), U256::ONE, 1)));
         assert_eq!(parts("7e2"), Some((false, word(700), U256::ONE, 0)));
-        // 78 digits: past 2^256 as digits alone, and past a decimal's 77.
+        // 78 digits: past 2^256 as digits alone, and past a decimal's 77; below with a
+        // leading zero.
         assert_eq!(parts(&"9".repeat(78)), None);
+        assert_eq!(
+            parts(&format!("0{}", "9".repeat(77))),
+            parts(&"9".repeat(77))
+        );
         assert_eq!(
             parts(&"9".repeat(77)),
             U256::parse_decimal("9".repeat(77).as_bytes()).map(|n| (false, n, U256::ONE, 0))
