@@ -4,6 +4,7 @@
 use super::audit::Finding;
 use super::expected::{Expected, ExpectedEntry};
 use super::plan::{CLAIMS, Diagnosis, SolvedRow};
+use super::rel_error::RelError;
 use crate::field::Q;
 use std::borrow::Cow;
 use std::cmp::Ordering;
@@ -87,8 +88,9 @@ pub struct OutputStats {
     compared: usize,
     wrong: usize,
     not_finite: usize,
-    /// `None` before the first claim; `Some(None)` once an infinite error was seen.
-    max: Option<Option<Q>>,
+    /// `None` before the first claim; `Some(None)` once an infinite error was seen; else the
+    /// largest error as its row computed it (for ties) and reduced (printed).
+    max: Option<Option<(RelError, Q)>>,
     /// The nearest f64 to the largest finite error (0 before one is seen): rounding to
     /// nearest is monotone, so a claim whose error rounds below it is not larger, one that
     /// rounds above it is, and only a tie takes the exact comparison.
@@ -164,15 +166,15 @@ impl Summary {
             let near = v.nearest;
             let bigger = match (&s.max, &v.error) {
                 (None, _) | (Some(Some(_)), None) => true,
-                (Some(Some(old)), Some(new)) => match near.total_cmp(&s.max_nearest) {
-                    Ordering::Equal => new.cmp_value(old) == Ordering::Greater,
+                (Some(Some((old, _))), Some(new)) => match near.total_cmp(&s.max_nearest) {
+                    Ordering::Equal => new.cmp_error(old) == Ordering::Greater,
                     other => other == Ordering::Greater,
                 },
                 _ => false,
             };
             if bigger {
                 // Reduced here, at a new maximum only: the summary's is printed.
-                s.max = Some(v.rel_error());
+                s.max = Some(v.error.as_ref().map(|e| (e.clone(), e.value())));
                 s.max_nearest = near;
             }
             let rounded = match &v.error {
@@ -344,7 +346,7 @@ impl OutputStats {
     /// assert_eq!(v.max_rel_error(), Some(&q(1, 4)));
     /// ```
     pub fn max_rel_error(&self) -> Option<&Q> {
-        self.max.as_ref().and_then(Option::as_ref)
+        self.max.as_ref().and_then(Option::as_ref).map(|(_, q)| q)
     }
 
     /// Counts a wrong claim of the row labelled `label`.
