@@ -24,8 +24,10 @@
 //! [`Expected`]), the totals (`summary.rs`: [`Summary`], rendered by
 //! [`crate::report::batch_summary`]) and the chunked, parallel stream (`stream.rs`: [`run`]).
 //! The word rows are shortcuts that give the general row's line byte for byte: the paper's row
-//! (`word_row.rs`), its f64 twin (`float_row.rs`) and an engine's row with any rod, pivot and
-//! claims, audited on fixed-width integers (`engine_row.rs`).
+//! (`word_row.rs`), its f64 twin (`float_row.rs`), an engine's row with any rod, pivot and
+//! claims, audited on fixed-width integers (`engine_row.rs`), and an engine's row of an oblique
+//! header, its claims checked on words (`engine_row/oblique.rs`). An engine's rows come in runs
+//! of one scene, which both engine rows solve once a run (`last_scene.rs`).
 
 mod audit;
 mod classes;
