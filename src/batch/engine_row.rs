@@ -9,13 +9,13 @@
 //! submodule), in 256 bits, else 512, 1024 or 2560 (an engine's claim of 5e-107 or 5e-324
 //! for a zero, squared).
 //!
-//! A scene is solved once for a run of rows: an engine's log runs each scene at every time
-//! step and iteration count it tries, row after row, and each thread keeps the scene it
-//! solved last ([`last_scene`]), with its exact outputs' text and the audit's part of it
-//! ([`Solved`]).
+//! A scene is solved once, not once a row: an engine's log runs each scene at every time step
+//! and iteration count it tries, row after row, and each thread keeps the scene it solved
+//! last and a table of recent ones ([`last_scene`]), with their exact outputs' text and the
+//! audit's part of it ([`Solved`]).
 //!
 //! An oblique header's rows have a row of their own (the `oblique` submodule): its scene
-//! solved by the general row's solve, once a run, and its claims checked here on words.
+//! solved by the general row's solve, once a scene, and its claims checked here on words.
 //!
 //! It is a shortcut, never a second opinion: a row it does not take (a unit, a part above 18
 //! digits, a non-finite claim, a scene the general row would refuse, a value beyond
@@ -243,7 +243,7 @@ const SCENE_CELLS: usize = 8;
 /// Where the rod's cell sits among the scene cells.
 const ROD: usize = 7;
 
-/// A scene solved on words (kept for its run of rows by [`super::last_scene`]).
+/// A scene solved on words (kept for its rows by [`super::last_scene`]).
 struct Solved {
     scene: Scene,
     exact: Exact,
@@ -355,7 +355,8 @@ fn claim(cell: &[u8]) -> Option<Claim> {
 
 /// A claimed value against the exact one: its check under `agreement`, exactly as
 /// [`super::compare`] decides it (the relative error kept on words, not reduced).
-// Inlined into both rows: six calls a row cost the engine row about 50 instructions.
+// Inlined into the loop over the claims: six calls a row cost the engine row about 50
+// instructions.
 #[inline(always)]
 fn check(k: usize, claim: Claim, x: &Ratio, agreement: &Agreement) -> Option<OutputCheck> {
     let rel_error = if x.n == U256::ZERO {
@@ -374,6 +375,31 @@ fn check(k: usize, claim: Claim, x: &Ratio, agreement: &Agreement) -> Option<Out
         agreement,
         Arithmetic::Exact,
     ))
+}
+
+/// Checks the claim of each claimed output against its exact value under `agreement`, in
+/// order, and writes its cells (`,,` for a claim not given in this row, or an output with no
+/// value: the spin after, for a point projectile); `None` when a check leaves the words.
+// Inlined into each row, where the number of outputs is a constant.
+#[inline(always)]
+fn write_checks(
+    claimed: &[bool],
+    claims: &[Option<Claim>],
+    values: &[Option<Ratio>],
+    agreement: &Agreement,
+    out: &mut String,
+) -> Option<Vec<OutputCheck>> {
+    let mut checks = Vec::with_capacity(claimed.len());
+    for k in (0..claimed.len()).filter(|&k| claimed[k]) {
+        let (Some(claim), Some(value)) = (claims[k], &values[k]) else {
+            out.push_str(",,");
+            continue;
+        };
+        let c = check(k, claim, value, agreement)?;
+        c.write_cells(out, false);
+        checks.push(c);
+    }
+    Some(checks)
 }
 
 /// The engine row of `line` (without its line ending), or `None` when the general row must
@@ -406,17 +432,7 @@ pub(super) fn engine_row(
     out.push_str(line);
     out.push_str(&solved.cells);
     out.push_str(",true");
-    let mut checks = Vec::with_capacity(WORD_CLAIMS);
-    for k in (0..WORD_CLAIMS).filter(|&k| plan.claimed[k]) {
-        let Some(claim) = claims[k] else {
-            out.push_str(",,");
-            continue;
-        };
-        let value = exact.values[k].as_ref()?;
-        let c = check(k, claim, value, agreement)?;
-        c.write_cells(&mut out, false);
-        checks.push(c);
-    }
+    let checks = write_checks(wanted, &claims, &exact.values, agreement, &mut out)?;
     let diagnosis = if plan.audits {
         out.push(',');
         let diagnosis = match [claims[0], claims[1], claims[2]] {

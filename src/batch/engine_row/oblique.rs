@@ -2,11 +2,11 @@
 //! rod-omega; claims of v, V, omega, vt, Vt, the disc's spin after and the tangential
 //! impulse), its claims checked on machine words.
 //!
-//! The scene is solved by the general row's own exact solve ([`oblique_values`]), once for
-//! its run of rows ([`last_scene`]): an engine's log of oblique scenes runs each at every
-//! time step and iteration count it tries. Each row then only reads its claims as written (a
+//! The scene is solved by the general row's own exact solve ([`oblique_values`]), once a
+//! scene ([`last_scene`]): an engine's log of oblique scenes runs each at every time step and
+//! iteration count it tries. Each row then only reads its claims as written (a
 //! decimal is its digits over a power of ten) and compares each with the exact value by
-//! cross-multiplication on words ([`check`]), with no big integer and no GCD.
+//! cross-multiplication on words ([`write_checks`]), with no big integer and no GCD.
 //!
 //! A row it does not take (a unit or a non-finite claim, a scene the general row refuses, an
 //! exact value past 256 bits) goes to the general row, and a row it takes gives the general
@@ -17,7 +17,7 @@ use super::super::last_scene;
 use super::super::plan::{CLAIMS, Role, SolvedRow, WordPlan};
 use super::super::row::oblique_values;
 use super::super::word_row::each_cell;
-use super::{Claim, Ratio, check, claim};
+use super::{Claim, Ratio, claim, write_checks};
 use crate::batch::compare::Agreement;
 use crate::field::Q;
 use crate::field::int::U256;
@@ -103,16 +103,7 @@ pub(in crate::batch) fn oblique_row(
     let mut out = String::with_capacity(line.len() + solved.cells.len() + 200);
     out.push_str(line);
     out.push_str(&solved.cells);
-    let mut checks = Vec::with_capacity(CLAIMS.len());
-    for k in (0..CLAIMS.len()).filter(|&k| plan.claimed[k]) {
-        let (Some(claim), Some(value)) = (claims[k], &solved.values[k]) else {
-            out.push_str(",,");
-            continue;
-        };
-        let c = check(k, claim, value, agreement)?;
-        c.write_cells(&mut out, false);
-        checks.push(c);
-    }
+    let checks = write_checks(&plan.claimed, &claims, &solved.values, agreement, &mut out)?;
     out.push('\n');
     Some(SolvedRow::unlabelled(
         number,
