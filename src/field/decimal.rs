@@ -313,7 +313,8 @@ struct Significant {
 /// exactly `digits` digits and the value `m 10^(e + 1 - digits)`, `exact` when the rounding
 /// lost nothing; `None` when a product on the way would pass 2^256 (the big integers then round
 /// it, to the same result). `near`, the f64 nearest to `n/d` (correctly rounded) if the caller
-/// has it, usually decides the digits alone ([`round_certified`]); where it cannot, it guesses
+/// has it, usually decides the digits alone ([`round_scaled`]), or a product on words
+/// where it lands on an integer of the scale ([`on_an_integer`]); where it cannot, it guesses
 /// the exponent and the digits, which the words then check.
 pub(crate) fn round_on_words(
     negative: bool,
@@ -326,6 +327,15 @@ pub(crate) fn round_on_words(
     if digits > 18 {
         return None;
     }
+    let near = near.filter(|x| x.is_normal() && *x > 0.0);
+    if let Some(on_scale) = near.and_then(|x| scaled(x, digits)) {
+        if let Some(rounded) = round_scaled(negative, on_scale, digits, rounding, NEAREST_ERROR) {
+            return Some(rounded);
+        }
+        if let Some(exactly) = on_an_integer(n, d, on_scale, digits) {
+            return Some(exactly);
+        }
+    }
     let ten = |k: i64| U256::pow10(u32::try_from(k.unsigned_abs()).ok()?);
     // n/d against 10^e, and n/d scaled by 10^k, as a fraction of words.
     let scaled = |k: i64| -> Option<(U256, U256)> {
@@ -335,11 +345,6 @@ pub(crate) fn round_on_words(
             Some((n, d.checked_mul_wide(ten(k)?)?))
         }
     };
-    let near = near.filter(|x| x.is_normal() && *x > 0.0);
-    let certified = |x| round_certified(negative, x, digits, rounding, NEAREST_ERROR);
-    if let Some(rounded) = near.and_then(certified) {
-        return Some(rounded);
-    }
     let estimate = match near {
         Some(x) => log10_of_float_estimate(x),
         None => log10_estimate(n.bits().into(), d.bits().into()),
@@ -395,7 +400,7 @@ pub(crate) const EXACT_POWERS_OF_TEN: [f64; 23] = [
     1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
 ];
 
-/// [`round_certified`]'s bound for an f64 nearest to the value: `2^-50` of the scaled float.
+/// [`round_scaled`]'s bound for an f64 nearest to the value: `2^-50` of the scaled float.
 const NEAREST_ERROR: f64 = 1.0 / (1u64 << 50) as f64;
 
 /// The positive normal `x` itself rounded to `digits` significant digits to nearest, ties to
@@ -439,7 +444,35 @@ fn scaled(x: f64, digits: usize) -> Option<(f64, i64)> {
     None
 }
 
-/// [`round_on_words`] decided from a positive normal f64 `x` where that alone is certain.
+/// `(m, exp, true)` when `n/d` is exactly `m 10^(exp + 1 - digits)`, `m` the integer nearest
+/// `y`, the value's nearest f64 at the scale of `digits` digits ([`scaled`]): the values a
+/// float cannot certify because they sit on an integer of the scale (a relative error of
+/// exactly 1, or 1/4), decided by a product on words each side instead of the division.
+fn on_an_integer(
+    n: U256,
+    d: U256,
+    (y, exp): (f64, i64),
+    digits: usize,
+) -> Option<(u64, i64, bool)> {
+    let m = y.round();
+    if !(EXACT_POWERS_OF_TEN[digits - 1]..EXACT_POWERS_OF_TEN[digits]).contains(&m) {
+        return None;
+    }
+    // An integer below 10^15, exactly.
+    let m = m as u64;
+    let k = digits as i64 - 1 - exp;
+    let ten = U256::pow10(u32::try_from(k.unsigned_abs()).ok()?)?;
+    let m_d = d.checked_mul(u128::from(m))?;
+    let equal = if k >= 0 {
+        n.checked_mul_wide(ten)? == m_d
+    } else {
+        n == m_d.checked_mul_wide(ten)?
+    };
+    equal.then_some((m, exp, true))
+}
+
+/// [`round_on_words`] decided from a positive normal f64 `x`, given [`scaled`] (`y` and its
+/// exponent), where that alone is certain.
 /// `error` bounds the distance, relative to `y = x 10^k` (`k` giving `digits` integer digits),
 /// from `y` to the value scaled alike: for `x` the f64 nearest to a real `r` (`|x - r| <= 2^-53
 /// x`), `r 10^k` is within `2^-51.9 y` of `y` (one more rounding), and [`NEAREST_ERROR`] is
@@ -449,17 +482,6 @@ fn scaled(x: f64, digits: usize) -> Option<(f64, i64)> {
 /// `y` is further than `error y` from an integer and from a half, and the rounding is not exact.
 /// `None` (the words decide) at or near those points, for more than 15 digits, and where `10^k`
 /// is not an exact f64 (`|k| > 22`).
-fn round_certified(
-    negative: bool,
-    x: f64,
-    digits: usize,
-    rounding: Rounding,
-    error: f64,
-) -> Option<(u64, i64, bool)> {
-    round_scaled(negative, scaled(x, digits)?, digits, rounding, error)
-}
-
-/// [`round_certified`] of `x` given [`scaled`]: `y` and its exponent.
 fn round_scaled(
     negative: bool,
     (y, exp): (f64, i64),
@@ -767,6 +789,17 @@ pub fn compact(x: &Q) -> String {
 mod tests {
     use super::*;
 
+    /// [`round_scaled`] of `x` at its scale.
+    fn round_certified(
+        negative: bool,
+        x: f64,
+        digits: usize,
+        rounding: Rounding,
+        error: f64,
+    ) -> Option<(u64, i64, bool)> {
+        round_scaled(negative, scaled(x, digits)?, digits, rounding, error)
+    }
+
     #[test]
     fn unreduced_big_parts_print_as_their_reduced_value() {
         let big = |s: &str| s.parse::<BigInt>().unwrap();
@@ -832,6 +865,39 @@ mod tests {
             let d = U256::from_big(x.denom().magnitude());
             if let (Some(n), Some(d)) = (n, d)
                 && let Some((m, exp, exact)) = round_on_words(x.is_negative(), n, d, digits, rounding, Some(near))
+            {
+                prop_assert_eq!((m.to_string(), exp, exact), (big.m.clone(), big.exp, big.exact));
+            }
+        }
+
+        /// Values on an integer of their scale (`m 10^j` exactly, in unreduced parts: a
+        /// relative error of exactly 1 or 1/4), and their neighbours a part in 10^40 away:
+        /// with the nearest f64, the words give the big integers' digits, exponent and
+        /// exactness, in every direction.
+        #[test]
+        fn values_on_an_integer_of_their_scale(
+            m in 1u64..1_000_000, j in -20i32..20, c in 1u64..1000, off in -1i64..=1,
+            digits in 1usize..=15, direction in 0usize..5, negative: bool,
+        ) {
+            use num_bigint::BigInt;
+            let ten = BigInt::from(10).pow(j.unsigned_abs());
+            let (mut n, mut d) = if j >= 0 {
+                (BigInt::from(m) * &ten * c, BigInt::from(c))
+            } else {
+                (BigInt::from(m) * c, ten * c)
+            };
+            if off != 0 {
+                let part = BigInt::from(10).pow(40);
+                n = n * &part + off;
+                d *= part;
+            }
+            let x = Q::new(if negative { -n.clone() } else { n.clone() }, d.clone());
+            let rounding = DIRECTIONS[direction];
+            let big = Significant::on_big(&x, digits, rounding);
+            let near = crate::field::Field::nearest_f64(&x).abs();
+            let words = |b: &BigInt| U256::from_big(b.magnitude()).unwrap();
+            if let Some((m, exp, exact)) =
+                round_on_words(negative, words(&n), words(&d), digits, rounding, Some(near))
             {
                 prop_assert_eq!((m.to_string(), exp, exact), (big.m.clone(), big.exp, big.exact));
             }
