@@ -139,11 +139,11 @@ impl Scene {
     /// assert_eq!(s.rod_before().v, q(-1, 2)); // -omega0 p
     /// ```
     pub fn rod_before(&self) -> RodMotion<Q> {
+        // The given motion alone, not the whole oblique part copied and lifted (14 rationals:
+        // 2,000 instructions of an oblique scene's solve, which asks for it twice).
         self.oblique
-            .clone()
-            .unwrap_or_default()
-            .params::<Q>()
-            .rod_moving(&self.support)
+            .as_ref()
+            .map_or_else(RodMotion::default, |o| o.rod_before.on(&self.support))
     }
 
     /// The approach speed at the contact: the projectile's normal velocity minus that of the

@@ -27,6 +27,31 @@ pub struct RodMotion<F> {
     pub omega: F,
 }
 
+impl<F: Field> RodMotion<F> {
+    /// This motion, as given, of a rod on `support`, as the impulse equations see it
+    /// ([`ObliqueParams::rod_moving`]): as given for a free rod; on a pivot at p the centre
+    /// moves with -omega p and not along the rod.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::scene::{RodMotion, Support};
+    /// use rodimpact::field::q;
+    /// let given = RodMotion { v: q(5, 1), vt: q(1, 1), omega: q(-2, 1) };
+    /// assert_eq!(given.on(&Support::Free), given);
+    /// assert_eq!(given.on(&Support::Pivot(q(1, 2))), RodMotion { v: q(1, 1), vt: q(0, 1), omega: q(-2, 1) });
+    /// ```
+    pub fn on(&self, support: &Support<F>) -> RodMotion<F> {
+        match support {
+            Support::Free => self.clone(),
+            Support::Pivot(pivot) => RodMotion {
+                v: -(pivot.clone() * &self.omega),
+                vt: F::zero(),
+                omega: self.omega.clone(),
+            },
+        }
+    }
+}
+
 impl<F> RodMotion<F> {
     /// Each velocity mapped by `f`: a change of number type.
     pub(crate) fn map<G>(self, f: &mut impl FnMut(F) -> G) -> RodMotion<G> {
@@ -66,15 +91,7 @@ impl<F: Field> ObliqueParams<F> {
     /// assert_eq!(r, RodMotion { v: q(1, 1), vt: q(0, 1), omega: q(-2, 1) });
     /// ```
     pub fn rod_moving(&self, support: &Support<F>) -> RodMotion<F> {
-        let given = &self.rod_before;
-        match support {
-            Support::Free => given.clone(),
-            Support::Pivot(pivot) => RodMotion {
-                v: -(pivot.clone() * &given.omega),
-                vt: F::zero(),
-                omega: given.omega.clone(),
-            },
-        }
+        self.rod_before.on(support)
     }
 
     /// The slip before the impact, u_t: the velocity along the rod of the projectile's
