@@ -104,6 +104,9 @@ pub struct OutputStats {
     /// never changes once full). A label's rows come together in an engine's log, and each
     /// of them would look through the whole list again.
     absent: String,
+    /// The last nonzero error's nearest f64 (its bits) and that rounded to two digits: an
+    /// engine repeats a wrong value row after row (a J of 0, an error of exactly 1).
+    last_rounded: Option<(u64, f64)>,
 }
 
 /// How many rows with a wrong claim the summary names, per output.
@@ -177,10 +180,15 @@ impl Summary {
                 s.max = Some(v.error.as_ref().map(|e| (e.clone(), e.value())));
                 s.max_nearest = near;
             }
-            let rounded = match &v.error {
-                Some(r) if r.is_zero() => 0.0,
-                Some(_) => two_significant(near),
-                None => f64::INFINITY,
+            let rounded = match (&v.error, s.last_rounded) {
+                (Some(r), _) if r.is_zero() => 0.0,
+                (Some(_), Some((bits, rounded))) if bits == near.to_bits() => rounded,
+                (Some(_), _) => {
+                    let rounded = two_significant(near);
+                    s.last_rounded = Some((near.to_bits(), rounded));
+                    rounded
+                }
+                (None, _) => f64::INFINITY,
             };
             *s.histogram.entry(rounded.to_bits()).or_default() += 1;
         }
@@ -488,6 +496,31 @@ mod tests {
         // The premise: the row's own is not in lowest terms.
         let own = row.checks[0].error.as_ref().unwrap().unreduced();
         assert_ne!(own.numer(), reduced.numer());
+    }
+
+    /// An engine repeats a wrong value row after row: the median counts each row's own error,
+    /// repeated or not (1, 1, 1/2 three times, 1, 1/2: the median is 1/2).
+    #[test]
+    fn repeated_errors_each_count_in_the_median() {
+        use crate::batch::{Arithmetic, Batch};
+        let b = Batch::new("m,M,J", Arithmetic::Exact).unwrap();
+        // m = M = 1 at the end: J = 2/(1 + 1 + 3) = 2/5; a claim of 0 is off by 1, of 3/5 by 1/2.
+        let mut s = Summary::default();
+        for (n, claim) in [
+            (1, "0"),
+            (2, "0"),
+            (3, "0.6"),
+            (4, "0.6"),
+            (5, "0.6"),
+            (6, "0"),
+            (7, "0.6"),
+        ] {
+            s.add(&b.row(n, &format!("1,1,{claim}")).unwrap());
+        }
+        let (_, j) = s.outputs().find(|(name, _)| *name == "J").unwrap();
+        assert_eq!(j.median(), Some(0.5));
+        assert_eq!(j.histogram.values().sum::<usize>(), 7);
+        assert_eq!(j.histogram.get(&1f64.to_bits()), Some(&3));
     }
 
     #[test]
