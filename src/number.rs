@@ -11,7 +11,7 @@ use crate::field::Q;
 use crate::field::decimal::ten_to;
 use crate::field::int::{POWERS_OF_TEN, U256, reduce};
 use num_bigint::BigInt;
-use num_traits::{Signed, Zero};
+use num_traits::Zero;
 
 /// The most decimal digits one input number may contain (mantissas and exponents together).
 pub const MAX_DIGITS: usize = 10_000;
@@ -152,12 +152,11 @@ impl WordRatio {
     /// Whether the value equals `q`, decided by cross-multiplication on machine words without
     /// reducing; `None` when `q`'s numerator or denominator exceeds 256 bits.
     pub(crate) fn equals(&self, q: &Q) -> Option<bool> {
-        let n = U256::from_big(q.numer().magnitude())?;
-        let d = U256::from_big(q.denom().magnitude())?;
+        let (negative, n, d) = U256::parts_of(q)?;
         if self.numer == U256::ZERO || n == U256::ZERO {
             return Some(self.numer == n);
         }
-        let same_sign = self.negative == q.is_negative();
+        let same_sign = self.negative == negative;
         Some(same_sign && U256::cross_equal(self.numer, d, n, self.denom))
     }
 }

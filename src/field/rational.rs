@@ -27,13 +27,12 @@ impl Field for Q {
     /// else by num-rational (also correctly rounded, on heap digits).
     fn nearest_f64(&self) -> f64 {
         let words = || {
-            let n = U256::from_big(self.numer().magnitude())?;
-            let d = U256::from_big(self.denom().magnitude())?;
+            let (negative, n, d) = U256::parts_of(self)?;
             if n == U256::ZERO {
                 return Some(0.0);
             }
             let x = U256::nearest_f64(n, d)?;
-            Some(if self.is_negative() { -x } else { x })
+            Some(if negative { -x } else { x })
         };
         words().unwrap_or_else(|| self.to_f64().unwrap_or(f64::NAN))
     }

@@ -40,11 +40,8 @@ struct Solved {
 impl Ratio {
     /// `x` on words; `None` when its numerator or denominator passes 256 bits.
     fn of_q(x: &Q) -> Option<Ratio> {
-        Some(Ratio {
-            negative: x.numer().sign() == num_bigint::Sign::Minus,
-            n: U256::from_big(x.numer().magnitude())?,
-            d: U256::from_big(x.denom().magnitude())?,
-        })
+        let (negative, n, d) = U256::parts_of(x)?;
+        Some(Ratio { negative, n, d })
     }
 }
 

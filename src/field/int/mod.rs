@@ -117,9 +117,8 @@ fn word_ratio(n: BigInt, d: BigInt) -> Q {
 
 /// Writes `q` as `n` or `n/d` when both fit 256 bits (else `None`, nothing written).
 pub(crate) fn write_ratio(out: &mut String, q: &Q) -> Option<()> {
-    let n = U256::from_big(q.numer().magnitude())?;
-    let d = U256::from_big(q.denom().magnitude())?;
-    if q.is_negative() {
+    let (negative, n, d) = U256::parts_of(q)?;
+    if negative {
         out.push('-');
     }
     n.write_decimal(out);

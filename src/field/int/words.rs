@@ -69,6 +69,14 @@ impl U256 {
     pub(crate) const ZERO: U256 = U256 { hi: 0, lo: 0 };
     pub(crate) const ONE: U256 = U256 { hi: 0, lo: 1 };
 
+    /// A rational's sign, numerator and denominator on words; `None` when a part passes 256
+    /// bits.
+    pub(crate) fn parts_of(q: &Q) -> Option<(bool, U256, U256)> {
+        let n = U256::from_big(q.numer().magnitude())?;
+        let d = U256::from_big(q.denom().magnitude())?;
+        Some((q.numer().sign() == Sign::Minus, n, d))
+    }
+
     pub(crate) fn from_big(x: &BigUint) -> Option<U256> {
         if x.bits() > 256 {
             return None;
