@@ -16,6 +16,7 @@ use crate::field::int::{Frac, FracInt, I256, Wide, within};
 use crate::field::{Field, Q};
 use crate::mechanics::{Motion, kinetic_energy};
 use crate::scene::Scene;
+use crate::solve::oblique::{ContactMode, State};
 use crate::solve::{self, Impact, Route, Why};
 use num_traits::{Signed, Zero};
 
@@ -312,7 +313,24 @@ fn energy_on_words<T: FracInt>(scene: &Scene, motion: &Motion<Q>) -> Option<Q> {
 pub(super) fn oblique_values(scene: &Scene, out: &mut String) -> ([Option<Q>; CLAIMS.len()], bool) {
     let impact = Impact::on_both_axes(scene);
     let done = impact.oblique.as_ref().expect("answered on both axes");
-    let after = &done.after;
+    write_oblique_cells(
+        out,
+        (&done.after, &done.tangential_impulse, done.contact),
+        crate::field::decimal::write_exact,
+    );
+    (
+        oblique_claims(&done.after, &done.tangential_impulse),
+        impact.laws_hold,
+    )
+}
+
+/// Appends an oblique row's exact cells: v, V, omega, vt, Vt, the spin after (empty for a
+/// point projectile), Jt, each by `write`, and the contact (empty without friction).
+pub(super) fn write_oblique_cells<T>(
+    out: &mut String,
+    (after, jt, contact): (&State<T>, &T, Option<ContactMode>),
+    write: impl Fn(&mut String, &T),
+) {
     let values = [
         Some(&after.v),
         Some(&after.rod.v),
@@ -320,17 +338,23 @@ pub(super) fn oblique_values(scene: &Scene, out: &mut String) -> ([Option<Q>; CL
         Some(&after.vt),
         Some(&after.rod.vt),
         after.spin.as_ref(),
-        Some(&done.tangential_impulse),
+        Some(jt),
     ];
     for value in values {
         out.push(',');
         if let Some(x) = value {
-            crate::field::decimal::write_exact(out, x);
+            write(out, x);
         }
     }
     out.push(',');
-    out.push_str(done.contact.map_or("", |c| c.as_str()));
-    let exact = [
+    out.push_str(contact.map_or("", |c| c.as_str()));
+}
+
+/// The exact value of each claim an oblique row checks, in [`CLAIMS`] order: v, V, omega, vt,
+/// Vt, the spin after (a disc only) and Jt; none for J and the energies (the paper's scene's
+/// claims).
+pub(super) fn oblique_claims<T: Clone>(after: &State<T>, jt: &T) -> [Option<T>; CLAIMS.len()] {
+    [
         Some(after.v.clone()),
         Some(after.rod.v.clone()),
         Some(after.rod.omega.clone()),
@@ -340,9 +364,8 @@ pub(super) fn oblique_values(scene: &Scene, out: &mut String) -> ([Option<Q>; CL
         Some(after.vt.clone()),
         Some(after.rod.vt.clone()),
         after.spin.clone(),
-        Some(done.tangential_impulse.clone()),
-    ];
-    (exact, impact.laws_hold)
+        Some(jt.clone()),
+    ]
 }
 
 /// v, V, omega by `route` in f64 (NaN where the system underflowed to a singular one; and J

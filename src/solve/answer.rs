@@ -13,7 +13,7 @@
 
 use super::optimum::{Optimum, PaperForm, optimum};
 use super::{Outcome, Route, Solved, oblique};
-use crate::field::int::{Frac, FracInt, I256, Wide, within};
+use crate::field::int::{FixedInt, Frac, FracInt, I256, U256, Wide, within};
 use crate::field::{Field, Q};
 use crate::mechanics::Motion;
 use crate::scene::Scene;
@@ -247,25 +247,95 @@ fn complete_exactly(
     o: &crate::scene::Oblique,
     response: &Motion<Q>,
 ) -> ObliqueOutcome<Q> {
-    fn on_words<T: FracInt>(
-        scene: &Scene,
-        o: &crate::scene::Oblique,
-        response: &Motion<Q>,
-    ) -> Option<ObliqueOutcome<Q>> {
-        // Lifted inside `within`, which clears the overflow flag as it starts.
-        within(|| {
-            let response = response.as_ref().map(Frac::<T>::from_rational);
-            oblique::complete(&scene.params(), &o.params(), response, None)
-        })?
-        .ok()
+    complete_in::<I256>(scene, o, response)
         .map(|done| done.map(Frac::to_q))
-    }
-    on_words::<I256>(scene, o, response)
-        .or_else(|| on_words::<Wide>(scene, o, response))
+        .or_else(|| complete_in::<Wide>(scene, o, response).map(|done| done.map(Frac::to_q)))
         .unwrap_or_else(|| {
             oblique::complete(&scene.params(), &o.params(), response.clone(), None)
                 .expect("Q decides stick or slide, and every mass is positive")
         })
+}
+
+/// [`oblique::complete`] of `scene` with the oblique part `o` and the normal problem's
+/// answer `response`, over unreduced fractions of `T`; `None` when a value leaves `T`'s width
+/// on the way.
+pub(crate) fn complete_in<T: FracInt>(
+    scene: &Scene,
+    o: &crate::scene::Oblique,
+    response: &Motion<Q>,
+) -> Option<ObliqueOutcome<Frac<T>>> {
+    // Lifted inside `within`, which clears the overflow flag as it starts.
+    within(|| {
+        let response = response.as_ref().map(Frac::<T>::from_rational);
+        oblique::complete(&scene.params(), &o.params(), response, None)
+    })?
+    .ok()
+}
+
+/// An oblique scene's exact answer as a batch's engine row writes and compares it: each value
+/// reduced on words, with no rational built.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct AfterOnWords {
+    /// The motion after the impact: sign, numerator and denominator of each velocity.
+    pub(crate) after: oblique::State<(bool, U256, U256)>,
+    /// The tangential impulse Jt, as the velocities.
+    pub(crate) tangential_impulse: (bool, U256, U256),
+    /// Stick or slide, when friction acts.
+    pub(crate) contact: Option<ContactMode>,
+    /// [`Impact::laws_hold`].
+    pub(crate) laws_hold: bool,
+}
+
+impl AfterOnWords {
+    /// [`Impact::on_both_axes`] of `scene` as far as the motion after, Jt, the contact and
+    /// `laws_hold` go, and by the same work (the normal problem by the fraction-free route,
+    /// completed by [`oblique::complete`] on unreduced fractions, first of 128-bit integers),
+    /// without what a batch row does not write: the normal problem's energies and residuals,
+    /// and a rational for every number of the outcome. `None` when a value passes 512 bits
+    /// on the way or 256 bits reduced.
+    ///
+    /// The batch's oblique engine row ([`crate::batch`]) reads its answers here; the general
+    /// row reads [`Impact::on_both_axes`], and the tests hold the two to the same lines.
+    pub(crate) fn of(scene: &Scene) -> Option<AfterOnWords> {
+        let normal = super::with::<Q>(&scene.normal_problem(), Route::FractionFree)
+            .expect("the fraction-free route takes every paper scene in Q");
+        let normal_laws_hold = normal.laws_hold == Some(true);
+        let at_rest = crate::scene::Oblique::default();
+        let o = scene.oblique().unwrap_or(&at_rest);
+        let response = &normal.after;
+        on_words::<i128>(scene, o, response, normal_laws_hold)
+            .or_else(|| on_words::<I256>(scene, o, response, normal_laws_hold))
+            .or_else(|| on_words::<Wide>(scene, o, response, normal_laws_hold))
+    }
+}
+
+/// [`AfterOnWords::of`] completed in `T`.
+fn on_words<T: FixedInt>(
+    scene: &Scene,
+    o: &crate::scene::Oblique,
+    response: &Motion<Q>,
+    normal_laws_hold: bool,
+) -> Option<AfterOnWords> {
+    let done = complete_in::<T>(scene, o, response)?;
+    let after = done.after;
+    Some(AfterOnWords {
+        after: oblique::State {
+            v: after.v.reduced_words()?,
+            vt: after.vt.reduced_words()?,
+            spin: match after.spin {
+                Some(spin) => Some(spin.reduced_words()?),
+                None => None,
+            },
+            rod: crate::scene::RodMotion {
+                v: after.rod.v.reduced_words()?,
+                vt: after.rod.vt.reduced_words()?,
+                omega: after.rod.omega.reduced_words()?,
+            },
+        },
+        tangential_impulse: done.tangential_impulse.reduced_words()?,
+        contact: done.contact,
+        laws_hold: normal_laws_hold && done.residuals.all_zero(),
+    })
 }
 
 #[cfg(test)]
@@ -288,6 +358,47 @@ mod tests {
                 oblique::complete(&s.params(), &o.params(), slow.after.clone(), None).unwrap();
             assert_eq!(complete_exactly(s, o, &slow.after), want);
         }
+        agree_on_words(s);
+    }
+
+    /// The answer on words is the rationals', value for value; none only when a value
+    /// passes 256 bits reduced or the fixed widths on the way.
+    fn agree_on_words(s: &Scene) {
+        let full = Impact::on_both_axes(s);
+        let done = full.oblique.as_ref().expect("answered on both axes");
+        let a = &done.after;
+        let rationals = [
+            Some(&a.v),
+            Some(&a.vt),
+            a.spin.as_ref(),
+            Some(&a.rod.v),
+            Some(&a.rod.vt),
+            Some(&a.rod.omega),
+            Some(&done.tangential_impulse),
+        ];
+        let wanted: Option<Vec<_>> = rationals
+            .into_iter()
+            .flatten()
+            .map(U256::parts_of)
+            .collect();
+        let Some(w) = AfterOnWords::of(s) else {
+            let normal = super::super::with::<Q>(&s.normal_problem(), Route::FractionFree).unwrap();
+            let at_rest = crate::scene::Oblique::default();
+            let o = s.oblique().unwrap_or(&at_rest);
+            assert!(wanted.is_none() || complete_in::<Wide>(s, o, &normal.after).is_none());
+            return;
+        };
+        let got = [
+            Some(w.after.v),
+            Some(w.after.vt),
+            w.after.spin,
+            Some(w.after.rod.v),
+            Some(w.after.rod.vt),
+            Some(w.after.rod.omega),
+            Some(w.tangential_impulse),
+        ];
+        assert_eq!(Some(got.into_iter().flatten().collect()), wanted);
+        assert_eq!((w.contact, w.laws_hold), (done.contact, full.laws_hold));
     }
 
     proptest! {

@@ -2,7 +2,9 @@
 //! rod-omega; claims of v, V, omega, vt, Vt, the disc's spin after and the tangential
 //! impulse), its claims checked on machine words.
 //!
-//! The scene is solved by the general row's own exact solve ([`oblique_values`]), once a
+//! The scene is built as the general row builds it and solved by the general row's exact work
+//! ([`AfterOnWords`]: the normal problem by the fraction-free route, completed on unreduced
+//! fractions of 128-bit integers first), its values reduced and written on words, once a
 //! scene ([`last_scene`]): an engine's log of oblique scenes runs each at every time step and
 //! iteration count it tries. Each row then only reads its claims as written (a
 //! decimal is its digits over a power of ten) and compares each with the exact value by
@@ -15,13 +17,13 @@
 use super::super::header::put_scene_cell;
 use super::super::last_scene;
 use super::super::plan::{CLAIMS, Role, SolvedRow, WordPlan};
-use super::super::row::oblique_values;
+use super::super::row::{oblique_claims, write_oblique_cells};
 use super::super::word_row::each_cell;
 use super::{Claim, Ratio, claim, write_checks};
 use crate::batch::compare::Agreement;
-use crate::field::Q;
-use crate::field::int::U256;
+use crate::field::int::write_parts;
 use crate::scene::{SCENE_KEYS, SceneInput};
+use crate::solve::answer::AfterOnWords;
 
 /// A row's scene cells as written, trimmed, by their index in [`SCENE_KEYS`]; empty where the
 /// header has no such column.
@@ -37,17 +39,10 @@ struct Solved {
     laws_hold: bool,
 }
 
-impl Ratio {
-    /// `x` on words; `None` when its numerator or denominator passes 256 bits.
-    fn of_q(x: &Q) -> Option<Ratio> {
-        let (negative, n, d) = U256::parts_of(x)?;
-        Some(Ratio { negative, n, d })
-    }
-}
-
 impl Solved {
-    /// The scene of `cells`, built and solved as the general row builds and solves it; `None`
-    /// when the general row must take its rows (a refused scene, a value past the words).
+    /// The scene of `cells`, built as the general row builds it and solved by the same work
+    /// on words ([`AfterOnWords`]); `None` when the general row must take its rows (a refused
+    /// scene, a value past the words).
     fn of(cells: &SceneCells) -> Option<Solved> {
         let mut input = SceneInput::default();
         for (key, cell) in SCENE_KEYS.iter().zip(cells) {
@@ -57,19 +52,20 @@ impl Solved {
             }
         }
         let scene = input.build().ok()?;
+        let done = AfterOnWords::of(&scene)?;
         let mut written = String::with_capacity(160);
-        let (exact, laws_hold) = oblique_values(&scene, &mut written);
-        written.push_str(if laws_hold { ",true" } else { ",false" });
-        let mut values = [None; CLAIMS.len()];
-        for (value, x) in values.iter_mut().zip(&exact) {
-            if let Some(x) = x {
-                *value = Some(Ratio::of_q(x)?);
-            }
-        }
+        write_oblique_cells(
+            &mut written,
+            (&done.after, &done.tangential_impulse, done.contact),
+            |out, &(negative, n, d)| write_parts(out, negative, n, d),
+        );
+        written.push_str(if done.laws_hold { ",true" } else { ",false" });
+        let values = oblique_claims(&done.after, &done.tangential_impulse)
+            .map(|x| x.map(|(negative, n, d)| Ratio { negative, n, d }));
         Some(Solved {
             cells: written,
             values,
-            laws_hold,
+            laws_hold: done.laws_hold,
         })
     }
 }

@@ -10,8 +10,8 @@
 //! [`within`] then answers `None`, so the caller redoes the work in a wider integer or over
 //! unbounded rationals. A flagged value is garbage, never a panic.
 
-use super::Int;
 use super::wide::{Limbs, Wide};
+use super::{FixedInt, Int, U256};
 use crate::field::{Field, Q};
 use num_traits::{One, Zero};
 use std::cell::Cell;
@@ -143,6 +143,17 @@ impl<T: FracInt> Frac<T> {
             n: checked(n.mul(&o.d)),
             d: checked(self.d.mul(&d)),
         }
+    }
+}
+
+impl<T: FixedInt> Frac<T> {
+    /// The value reduced on words (one binary GCD, no big integer): its sign (a zero is not
+    /// negative), numerator and denominator; `None` when a part passes 256 bits.
+    pub(crate) fn reduced_words(self) -> Option<(bool, U256, U256)> {
+        let (negative, n) = self.n.to_words()?;
+        let (_, d) = self.d.to_words()?;
+        let (n, d) = U256::reduced(n, d);
+        Some((negative && n != U256::ZERO, n, d))
     }
 }
 

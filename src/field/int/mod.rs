@@ -118,6 +118,13 @@ fn word_ratio(n: BigInt, d: BigInt) -> Q {
 /// Writes `q` as `n` or `n/d` when both fit 256 bits (else `None`, nothing written).
 pub(crate) fn write_ratio(out: &mut String, q: &Q) -> Option<()> {
     let (negative, n, d) = U256::parts_of(q)?;
+    write_parts(out, negative, n, d);
+    Some(())
+}
+
+/// Writes `-n/d` (when `negative`) or `n/d`, reduced, as [`Q`]'s `Display` writes it: `n`
+/// alone when `d` is 1.
+pub(crate) fn write_parts(out: &mut String, negative: bool, n: U256, d: U256) {
     if negative {
         out.push('-');
     }
@@ -126,7 +133,6 @@ pub(crate) fn write_ratio(out: &mut String, q: &Q) -> Option<()> {
         out.push('/');
         d.write_decimal(out);
     }
-    Some(())
 }
 
 /// The integer operations of the fraction-free route, written once for every width;
