@@ -53,6 +53,8 @@ pub struct Scene {
     e: Q,
     support: Support,
     oblique: Option<Oblique>,
+    /// [`Scene::approach`], worked out once as the scene is validated.
+    approach: Q,
 }
 
 impl Scene {
@@ -157,12 +159,19 @@ impl Scene {
     /// assert_eq!(s.approach(), q(1, 1)); // 3 - (1 + 2 * 1/2)
     /// ```
     pub fn approach(&self) -> Q {
-        if self.oblique.is_none() {
-            // The rod at rest: no arithmetic (this runs for every scene built).
-            return self.v0.clone();
+        self.approach.clone()
+    }
+
+    /// [`Scene::approach`] worked out: `v0` itself for a rod at rest (no arithmetic: this
+    /// runs for every scene built).
+    fn approach_of(v0: &Q, a: &Q, oblique: Option<&Oblique>, support: &Support) -> Q {
+        match oblique {
+            None => v0.clone(),
+            Some(o) => {
+                let rod = o.rod_before.on(support);
+                v0 - (rod.v + rod.omega * a)
+            }
         }
-        let rod = self.rod_before();
-        &self.v0 - (rod.v + rod.omega * &self.a)
     }
 
     /// The paper's scene with the same bodies, impact point, law and support, the rod at rest
@@ -179,7 +188,7 @@ impl Scene {
     /// ```
     pub fn normal_problem(&self) -> Scene {
         Scene {
-            v0: self.approach(),
+            v0: self.approach.clone(),
             oblique: None,
             ..self.clone()
         }
@@ -205,7 +214,12 @@ impl Scene {
     /// ```
     pub fn with_a(&self, a: Q) -> Result<Scene, Error> {
         check_on_rod("a", &a, &self.half_length)?;
-        Ok(Scene { a, ..self.clone() })
+        let approach = Scene::approach_of(&self.v0, &a, self.oblique.as_ref(), &self.support);
+        Ok(Scene {
+            a,
+            approach,
+            ..self.clone()
+        })
     }
 
     /// Lifts the scene's numbers into the field `F` for the solver.
@@ -358,7 +372,11 @@ impl SceneBuilder {
             check_on_rod("pivot", p, l)?;
         }
         let oblique = check_oblique(self.oblique, &self.support)?;
-        let scene = Scene {
+        let approach = Scene::approach_of(&self.v0, &a, oblique.as_ref(), &self.support);
+        if !approach.is_positive() {
+            return Err(no_approach(&format!("is {approach}, not > 0")));
+        }
+        Ok(Scene {
             m: self.m,
             rod_mass: self.rod_mass,
             half_length: self.half_length,
@@ -368,12 +386,8 @@ impl SceneBuilder {
             e: self.e,
             support: self.support,
             oblique,
-        };
-        let approach = scene.approach();
-        if !approach.is_positive() {
-            return Err(no_approach(&format!("is {approach}, not > 0")));
-        }
-        Ok(scene)
+            approach,
+        })
     }
 }
 

@@ -65,7 +65,14 @@ impl FracInt for i128 {
         self.checked_neg()
     }
     fn exact_quotient(&self, d: &Self) -> Option<Self> {
-        (self % d == 0).then(|| self / d)
+        // A magnitude below d's is a multiple only when zero: no division, which is a call
+        // of its own on 128 bits (half of the sums of two denominators end here).
+        if self.unsigned_abs() < d.unsigned_abs() {
+            return (*self == 0).then_some(0);
+        }
+        // One division, checked by a product, where `%` then `/` were two.
+        let quotient = self / d;
+        (quotient * d == *self).then_some(quotient)
     }
 }
 
@@ -262,6 +269,7 @@ impl<T: FracInt> Field for Frac<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::field::int::I256;
     use crate::field::{laws, q};
 
     #[test]
@@ -279,6 +287,49 @@ mod tests {
         assert!(within(|| laws::check_field(&words, |a, b| a == b)).is_some());
         let wide: Vec<Frac<Wide>> = rationals.iter().map(Frac::from_rational).collect();
         assert!(within(|| laws::check_field(&wide, |a, b| a == b)).is_some());
+    }
+
+    /// A 128-bit quotient is taken only when exact: zero, a multiple, not a smaller
+    /// magnitude or a near multiple, whatever the signs.
+    #[test]
+    fn exact_quotients_of_128_bits() {
+        let cases = [
+            (0i128, 7i128, Some(0i128)),
+            (21, 7, Some(3)),
+            (-21, 7, Some(-3)),
+            (7, 7, Some(1)),
+            (6, 7, None),
+            (-6, 7, None),
+            (22, 7, None),
+            (i128::MAX, 1, Some(i128::MAX)),
+            (i128::MIN, 2, Some(i128::MIN / 2)),
+        ];
+        for (x, d, want) in cases {
+            assert_eq!(x.exact_quotient(&d), want, "{x} / {d}");
+        }
+    }
+
+    /// The same fraction reduced on words: its sign (a zero is not negative), numerator and
+    /// denominator, in each width.
+    #[test]
+    fn fractions_reduce_on_words() {
+        let (n, d) = (
+            Frac::<i128>::from_rational(&q(-6, 4)),
+            U256 { hi: 0, lo: 2 },
+        );
+        assert_eq!(n.reduced_words(), Some((true, U256 { hi: 0, lo: 3 }, d)));
+        let zero =
+            within(|| Frac::<Wide>::from_rational(&q(-1, 3)) + Frac::from_rational(&q(1, 3)));
+        assert_eq!(
+            zero.unwrap().reduced_words(),
+            Some((false, U256::ZERO, U256::ONE))
+        );
+        let unreduced =
+            within(|| Frac::<I256>::from_rational(&q(5, 6)) * Frac::from_rational(&q(6, 10)));
+        assert_eq!(
+            unreduced.unwrap().reduced_words(),
+            Some((false, U256::ONE, d))
+        );
     }
 
     #[test]
