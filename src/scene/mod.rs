@@ -168,8 +168,17 @@ impl Scene {
         match oblique {
             None => v0.clone(),
             Some(o) => {
+                // Most oblique scenes have the rod at rest: no rational arithmetic on zeros
+                // (each operation's GCDs cost as much as on any other value).
                 let rod = o.rod_before.on(support);
-                v0 - (rod.v + rod.omega * a)
+                let mut approach = v0.clone();
+                if !rod.v.is_zero() {
+                    approach -= rod.v;
+                }
+                if !rod.omega.is_zero() {
+                    approach -= rod.omega * a;
+                }
+                approach
             }
         }
     }

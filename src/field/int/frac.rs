@@ -119,6 +119,13 @@ impl<T: FracInt> Frac<T> {
     }
 
     fn sum(&self, o: &Frac<T>) -> Frac<T> {
+        // A zero term (a body at rest, a point without spin) adds nothing: no products.
+        if o.n.sign() == Ordering::Equal {
+            return *self;
+        }
+        if self.n.sign() == Ordering::Equal {
+            return *o;
+        }
         let (n, d) = if self.d == o.d {
             (self.n.add(&o.n), self.d)
         } else if let Some(k) = o.d.exact_quotient(&self.d) {
@@ -133,6 +140,9 @@ impl<T: FracInt> Frac<T> {
     }
 
     fn product(&self, o: &Frac<T>) -> Frac<T> {
+        if self.n.sign() == Ordering::Equal || o.n.sign() == Ordering::Equal {
+            return Frac::zero();
+        }
         Frac {
             n: checked(self.n.mul(&o.n)),
             d: checked(self.d.mul(&o.d)),
@@ -143,6 +153,7 @@ impl<T: FracInt> Frac<T> {
         let (n, d) = match o.n.sign() {
             // Division by zero: flagged, like an overflow (the caller falls back).
             Ordering::Equal => return Frac::new_checked(None, T::small(1)),
+            _ if self.n.sign() == Ordering::Equal => return Frac::zero(),
             Ordering::Less => (checked(self.n.negated()), checked(o.n.negated())),
             Ordering::Greater => (self.n, o.n),
         };
