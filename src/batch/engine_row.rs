@@ -14,8 +14,9 @@
 //! last and a table of recent ones ([`last_scene`]), with their exact outputs' text and the
 //! audit's part of it ([`Solved`]).
 //!
-//! An oblique header's rows have a row of their own (the `oblique` submodule): its scene
-//! solved by the general row's solve, once a scene, and its claims checked here on words.
+//! An oblique header's rows have a row of their own (the `oblique` submodule): its scene read
+//! on words as here and solved by the same formulas at the approach speed, completed along the
+//! rod on unreduced fractions, once a scene, and its claims checked here on words.
 //!
 //! It is a shortcut, never a second opinion: a row it does not take (a unit, a part above 18
 //! digits, a non-finite claim, a scene the general row would refuse, a value beyond
@@ -36,7 +37,7 @@ use super::plan::{
 };
 use super::rel_error::RelError;
 use super::word_row::each_cell;
-use crate::field::int::{FixedInt, U256, Wide};
+use crate::field::int::{FixedInt, U256, Wide, reduced_words};
 use crate::number::ScaledRatio;
 use crate::solve::fraction_free::{Parts, Raw, raw_of};
 use crate::solve::words::Part;
@@ -201,13 +202,8 @@ struct Ratio {
 impl Ratio {
     /// `n/d` in `T` (`d > 0`), reduced on words.
     fn reduced<T: FixedInt>(n: &T, d: &T) -> Option<Ratio> {
-        let ((negative, n), (_, d)) = (n.to_words()?, d.to_words()?);
-        let (n, d) = U256::reduced(n, d);
-        Some(Ratio {
-            negative: negative && n != U256::ZERO,
-            n,
-            d,
-        })
+        let (negative, n, d) = reduced_words(n, d)?;
+        Some(Ratio { negative, n, d })
     }
 
     /// Writes `,n` or `,n/d` (with its sign), as [`crate::field::decimal::write_exact`] writes

@@ -209,10 +209,22 @@ pub fn scene_key(name: &str) -> Option<&'static SceneKey> {
 /// assert!(rodimpact::scene::flag_help("mu").starts_with("Coulomb friction"));
 /// ```
 pub const fn flag_help(name: &str) -> &'static str {
+    SCENE_KEYS[key_index(name)].help
+}
+
+/// Where the key `name` sits in [`SCENE_KEYS`] (a compile-time lookup, for a batch row that
+/// reads its scene cells by key).
+///
+/// # Examples
+/// ```
+/// use rodimpact::scene::{SCENE_KEYS, key_index};
+/// assert_eq!(SCENE_KEYS[key_index("rod-vt")].name, "rod-vt");
+/// ```
+pub const fn key_index(name: &str) -> usize {
     let mut i = 0;
     while i < SCENE_KEYS.len() {
         if same(SCENE_KEYS[i].name, name) {
-            return SCENE_KEYS[i].help;
+            return i;
         }
         i += 1;
     }

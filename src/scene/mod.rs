@@ -20,7 +20,7 @@ mod params;
 mod rod;
 
 pub use input::{SceneInput, dimension_of, parse_field};
-pub use keys::{SCENE_KEYS, SceneKey, flag_help, scene_key};
+pub use keys::{SCENE_KEYS, SceneKey, flag_help, key_index, scene_key};
 pub use oblique::{Oblique, no_approach, spin_without_disc};
 pub use params::{Disc, ObliqueParams, Params, RodMotion};
 pub use rod::{RodInertia, gyration_moment};

@@ -316,26 +316,38 @@ fn on_words<T: FixedInt>(
     response: &Motion<Q>,
     normal_laws_hold: bool,
 ) -> Option<AfterOnWords> {
-    let done = complete_in::<T>(scene, o, response)?;
-    let after = done.after;
-    Some(AfterOnWords {
-        after: oblique::State {
-            v: after.v.reduced_words()?,
-            vt: after.vt.reduced_words()?,
-            spin: match after.spin {
-                Some(spin) => Some(spin.reduced_words()?),
-                None => None,
+    AfterOnWords::reduced(complete_in::<T>(scene, o, response)?, normal_laws_hold)
+}
+
+impl AfterOnWords {
+    /// The oblique outcome `done` (completed in `T`) as the batch writes it, each value reduced
+    /// on words; `laws_hold` when `normal_laws_hold` (the normal problem's, as the
+    /// fraction-free route checked them) and every residual of `done` is zero. `None` when a
+    /// value passes 256 bits.
+    pub(crate) fn reduced<T: FixedInt>(
+        done: ObliqueOutcome<Frac<T>>,
+        normal_laws_hold: bool,
+    ) -> Option<AfterOnWords> {
+        let after = done.after;
+        Some(AfterOnWords {
+            after: oblique::State {
+                v: after.v.reduced_words()?,
+                vt: after.vt.reduced_words()?,
+                spin: match after.spin {
+                    Some(spin) => Some(spin.reduced_words()?),
+                    None => None,
+                },
+                rod: crate::scene::RodMotion {
+                    v: after.rod.v.reduced_words()?,
+                    vt: after.rod.vt.reduced_words()?,
+                    omega: after.rod.omega.reduced_words()?,
+                },
             },
-            rod: crate::scene::RodMotion {
-                v: after.rod.v.reduced_words()?,
-                vt: after.rod.vt.reduced_words()?,
-                omega: after.rod.omega.reduced_words()?,
-            },
-        },
-        tangential_impulse: done.tangential_impulse.reduced_words()?,
-        contact: done.contact,
-        laws_hold: normal_laws_hold && done.residuals.all_zero(),
-    })
+            tangential_impulse: done.tangential_impulse.reduced_words()?,
+            contact: done.contact,
+            laws_hold: normal_laws_hold && done.residuals.all_zero(),
+        })
+    }
 }
 
 #[cfg(test)]

@@ -2,12 +2,15 @@
 //! rod-omega; claims of v, V, omega, vt, Vt, the disc's spin after and the tangential
 //! impulse), its claims checked on machine words.
 //!
-//! The scene is built as the general row builds it and solved by the general row's exact work
-//! ([`AfterOnWords`]: the normal problem by the fraction-free route, completed on unreduced
-//! fractions of 128-bit integers first), its values reduced and written on words, once a
-//! scene ([`last_scene`]): an engine's log of oblique scenes runs each at every time step and
-//! iteration count it tries. Each row then only reads its claims as written (a
-//! decimal is its digits over a power of ten) and compares each with the exact value by
+//! The scene is read on words as the plain engine row reads its scene (a decimal is its
+//! digits over a power of ten) and checked as the general row checks it ([`WordScene`]); the
+//! normal problem is solved by the fraction-free formulas ([`raw_of`]) at the approach speed,
+//! and completed along the rod by [`oblique::complete`] on unreduced fractions of 128-bit
+//! integers, else 512-bit ones; its values are reduced and written on words. A scene the
+//! words do not take (a part above 18 digits, a unit) is built and solved as the general row
+//! does ([`AfterOnWords::of`]). Either way once a scene ([`last_scene`]): an engine's log of
+//! oblique scenes runs each at every time step and iteration count it tries. Each row then
+//! only reads its claims as written and compares each with the exact value by
 //! cross-multiplication on words ([`write_checks`]), with no big integer and no GCD.
 //!
 //! A row it does not take (a unit or a non-finite claim, a scene the general row refuses, an
@@ -20,10 +23,18 @@ use super::super::plan::{CLAIMS, Role, SolvedRow, WordPlan};
 use super::super::row::{oblique_claims, write_oblique_cells};
 use super::super::word_row::each_cell;
 use super::{Claim, Ratio, claim, write_checks};
+use super::{Part, Rod, positive, word};
 use crate::batch::compare::Agreement;
-use crate::field::int::write_parts;
-use crate::scene::{SCENE_KEYS, SceneInput};
+use crate::field::Field;
+use crate::field::int::{FixedInt, Frac, Wide, within, write_parts};
+use crate::mechanics::Motion;
+use crate::scene::{
+    Disc, ObliqueParams, Params, RodMotion, SCENE_KEYS, SceneInput, Support, key_index,
+};
 use crate::solve::answer::AfterOnWords;
+use crate::solve::fraction_free::{Raw, raw_of};
+use crate::solve::oblique::{self, normal_params};
+use std::cmp::Ordering;
 
 /// A row's scene cells as written, trimmed, by their index in [`SCENE_KEYS`]; empty where the
 /// header has no such column.
@@ -39,20 +50,166 @@ struct Solved {
     laws_hold: bool,
 }
 
-impl Solved {
-    /// The scene of `cells`, built as the general row builds it and solved by the same work
-    /// on words ([`AfterOnWords`]); `None` when the general row must take its rows (a refused
-    /// scene, a value past the words).
-    fn of(cells: &SceneCells) -> Option<Solved> {
-        let mut input = SceneInput::default();
-        for (key, cell) in SCENE_KEYS.iter().zip(cells) {
-            if key.column {
-                // The general row trims a cell of any white space, not ASCII's alone.
-                put_scene_cell(&mut input, key, std::str::from_utf8(cell).ok()?.trim());
+/// An oblique row's scene on words: the paper's part read and checked as the plain engine row
+/// reads and checks it ([`super::Scene::check`]), and the oblique part as
+/// [`crate::scene::SceneBuilder::build`] checks it (mu >= 0; a disc's radius > 0, and no spin
+/// without a disc; a pivoted rod's centre given no motion of its own; the projectile
+/// approaching the struck point, checked as the scene is solved).
+struct WordScene {
+    paper: super::Scene,
+    v0t: Part,
+    mu: Part,
+    /// The disc's radius and spin.
+    disc: Option<(Part, Part)>,
+    /// The rod's v, vt and omega before the impact.
+    rod_before: [Part; 3],
+}
+
+impl WordScene {
+    /// The scene of `cells`, when every cell is a plain number on words (or the rod's kind)
+    /// and every constraint holds; `None` otherwise (the general row's reading then decides).
+    fn check(cells: &SceneCells) -> Option<WordScene> {
+        let part = |name: &str| -> Option<Option<Part>> {
+            match cells[key_index(name)] {
+                b"" => Some(None),
+                cell => Part::parse(cell).map(Some),
             }
+        };
+        let paper = super::Scene::check(
+            [
+                part("m")?,
+                part("M")?,
+                part("l")?,
+                part("a")?,
+                part("v0")?,
+                part("e")?,
+                part("pivot")?,
+            ],
+            Rod::parse(cells[key_index("rod")])?,
+        )?;
+        let zero = Part {
+            negative: false,
+            n: 0,
+            d: 1,
+        };
+        let mu = part("mu")?.unwrap_or(zero);
+        let disc = match (part("radius")?, part("spin")?) {
+            (Some(radius), spin) if positive(radius) => Some((radius, spin.unwrap_or(zero))),
+            (None, None) => None,
+            _ => return None,
+        };
+        let rod_before =
+            [part("rod-v")?, part("rod-vt")?, part("rod-omega")?].map(|x| x.unwrap_or(zero));
+        let moves_on_pivot = rod_before[0].n != 0 || rod_before[1].n != 0;
+        if (mu.negative && mu.n != 0) || (paper.pivot.is_some() && moves_on_pivot) {
+            return None;
         }
-        let scene = input.build().ok()?;
-        let done = AfterOnWords::of(&scene)?;
+        Some(WordScene {
+            paper,
+            v0t: part("v0t")?.unwrap_or(zero),
+            mu,
+            disc,
+            rod_before,
+        })
+    }
+
+    /// The scene of `cells` read and solved on words, in 128 bits, else 512; `None` when the
+    /// general row's reading and solve must answer.
+    fn answer(cells: &SceneCells) -> Option<AfterOnWords> {
+        let s = WordScene::check(cells)?;
+        s.answer_in::<i128>().or_else(|| s.answer_in::<Wide>())
+    }
+
+    /// The scene solved as the general row solves it: the normal problem by the fraction-free
+    /// formulas at the approach speed, completed along the rod by [`oblique::complete`] on
+    /// unreduced fractions of `T`; `None` when a value leaves `T`, the projectile does not
+    /// approach, or a law fails (the general row then answers).
+    fn answer_in<T: FixedInt>(&self) -> Option<AfterOnWords> {
+        let s = &self.paper;
+        let raw: Raw<T> = raw_of(&s.parts::<T>()?, s.e.n == s.e.d)?;
+        if !raw.laws_hold {
+            return None;
+        }
+        let lift = |x: Part| {
+            let (n, d) = (word(x.n), word(x.d));
+            Some(Frac::of_parts(
+                T::of_words(x.negative, n)?,
+                T::of_words(false, d)?,
+            ))
+        };
+        let whole = |x: T| Frac::of_parts(x, T::small(1));
+        let g = Frac::of_parts(T::of_words(false, s.g.0)?, T::of_words(false, s.g.1)?);
+        let [m, rod_mass, l, a, v0, e] = [s.m, s.big_m, s.l, s.a, s.v0, s.e].map(lift);
+        let support = match s.pivot {
+            None => Support::Free,
+            Some(p) => Support::Pivot(lift(p)?),
+        };
+        let [v, vt, omega] = self.rod_before.map(lift);
+        let disc = match self.disc {
+            None => None,
+            Some((radius, spin)) => Some(Disc {
+                radius: lift(radius)?,
+                spin: lift(spin)?,
+            }),
+        };
+        let o = ObliqueParams {
+            v0t: lift(self.v0t)?,
+            mu: lift(self.mu)?,
+            disc,
+            rod_before: RodMotion {
+                v: v?,
+                vt: vt?,
+                omega: omega?,
+            },
+        };
+        let (rod_mass, a, v0, e) = (rod_mass?, a?, v0?, e?);
+        let done = within(|| {
+            let params = Params {
+                m: m?,
+                rod_mass,
+                half_length: l?,
+                inertia: rod_mass * g,
+                a,
+                v0,
+                e,
+                support,
+            };
+            // The normal problem: the paper's scene at the approach speed u, solved as
+            // v = u nv/den, V = u nV/den, omega = u nw/den.
+            let approach = normal_params(&params, &o).v0;
+            if approach.sign() != Some(Ordering::Greater) {
+                return None;
+            }
+            let scale = approach / whole(raw.den);
+            let response = Motion {
+                v: whole(raw.nv) * scale,
+                rod_v: whole(raw.n_big_v) * scale,
+                omega: whole(raw.nw) * scale,
+            };
+            oblique::complete(&params, &o, response, None).ok()
+        })??;
+        AfterOnWords::reduced(done, raw.laws_hold)
+    }
+}
+
+impl Solved {
+    /// The scene of `cells`, read and solved on words ([`WordScene`]), else built as the
+    /// general row builds it and solved by the same work ([`AfterOnWords`]); `None` when the
+    /// general row must take its rows (a refused scene, a value past the words).
+    fn of(cells: &SceneCells) -> Option<Solved> {
+        let done = match WordScene::answer(cells) {
+            Some(done) => done,
+            None => {
+                let mut input = SceneInput::default();
+                for (key, cell) in SCENE_KEYS.iter().zip(cells) {
+                    if key.column {
+                        // The general row trims a cell of any white space, not ASCII's alone.
+                        put_scene_cell(&mut input, key, std::str::from_utf8(cell).ok()?.trim());
+                    }
+                }
+                AfterOnWords::of(&input.build().ok()?)?
+            }
+        };
         let mut written = String::with_capacity(160);
         write_oblique_cells(
             &mut written,
@@ -138,6 +295,88 @@ mod tests {
             }
         }
         assert_eq!(taken, 189 + 57, "every fixture row is taken on words");
+    }
+
+    /// The scene cells of `line` under `plan`, as the row reads them.
+    fn scene_cells<'a>(plan: &WordPlan, line: &'a str) -> SceneCells<'a> {
+        let mut cells: SceneCells = [b""; SCENE_KEYS.len()];
+        each_cell(plan, line, |role, cell| {
+            if let Role::Input(k) = role {
+                cells[k] = cell.trim_ascii();
+            }
+            Some(())
+        })
+        .expect("the header's cells");
+        cells
+    }
+
+    /// Every scene of the oblique fixtures (frictionless, sliding, sticking, at the
+    /// threshold, a spinning disc, a moving rod) is read and solved on words, with the values
+    /// of the rationals' solve.
+    #[test]
+    fn the_fixtures_scenes_are_solved_on_words() {
+        let fixtures = [
+            include_str!("../../../tests/data/engines/rapier2d-0.36.1-f64-oblique.csv"),
+            include_str!("../../../tests/data/engines/pymunk-7.3.1-f64-oblique.csv"),
+        ];
+        for fixture in fixtures {
+            let mut lines = fixture.lines();
+            let header = lines.next().unwrap();
+            let batch = Batch::new(header, Arithmetic::Exact).unwrap();
+            let plan = batch.word_plan.as_ref().unwrap();
+            for line in lines {
+                let cells = scene_cells(plan, line);
+                let words = WordScene::answer(&cells).unwrap_or_else(|| panic!("{line}"));
+                let mut input = SceneInput::default();
+                for (key, cell) in SCENE_KEYS.iter().zip(&cells) {
+                    if key.column {
+                        put_scene_cell(&mut input, key, std::str::from_utf8(cell).unwrap());
+                    }
+                }
+                let rationals = AfterOnWords::of(&input.build().unwrap()).unwrap();
+                assert_eq!(words, rationals, "{line}");
+            }
+        }
+    }
+
+    /// The word scene refuses what the general row refuses (spin without a disc, a radius
+    /// not above 0, negative friction, a pivoted rod's centre moving on its own, a projectile
+    /// not approaching) and takes the limits it allows (friction -0, a pivoted rod turning,
+    /// a projectile only just approaching); the row gives the general row's line either way.
+    #[test]
+    fn the_word_scene_refuses_what_the_general_row_refuses() {
+        let header = "m,M,l,a,v0,pivot,v0t,mu,radius,spin,rod-v,rod-vt,rod-omega,v,vt";
+        let b = Batch::new(header, Arithmetic::Exact).unwrap();
+        let plan = b.word_plan.as_ref().unwrap();
+        let general = b.clone().with_atol("0").unwrap();
+        let cases = [
+            ("1,1,1,1/2,3,,1,1/2,,2,,,,0.6,0.8", false),
+            ("1,1,1,1/2,3,,1,1/2,0,2,,,,0.6,0.8", false),
+            ("1,1,1,1/2,3,,1,1/2,-1/20,,,,,0.6,0.8", false),
+            ("1,1,1,1/2,3,,1,-1/2,,,,,,0.6,0.8", false),
+            ("1,1,1,1/2,3,-1,1,1/2,,,1,,,0.6,0.8", false),
+            ("1,1,1,1/2,3,-1,1,1/2,,,,1/3,,0.6,0.8", false),
+            ("1,1,1,1/2,3,,1,1/2,,,3,,,0.6,0.8", false),
+            ("1,1,1,1/2,3,,1,1/2,,,2,,2,0.6,0.8", false),
+            ("1,1,1,1/2,3,,1,-0,,,,,,0.6,0.8", true),
+            ("1,1,1,1/2,3,-1,1,1/2,1/20,,0,0,1,0.6,0.8", true),
+            ("1,1,1,1/2,3,,1,1/2,1/20,-7,2,1/3,1,0.6,0.8", true),
+            ("1,1,1,1/2,3,,1,1/2,,,2999/1000,,,0.6,0.8", true),
+        ];
+        for (line, taken) in cases {
+            let cells = scene_cells(plan, line);
+            assert_eq!(WordScene::answer(&cells).is_some(), taken, "{line}");
+            let slow = general.row(1, line);
+            match oblique_row(plan, &Agreement::Exact, 1, line) {
+                Some(fast) => {
+                    let mut slow = slow.unwrap();
+                    slow.label = None;
+                    slow.expectation = None;
+                    assert_eq!(fast, slow, "{line}");
+                }
+                None => assert!(!taken, "{line}"),
+            }
+        }
     }
 
     /// What the oblique row leaves to the general row: a unit in a claim, a non-finite claim,

@@ -99,6 +99,12 @@ pub(crate) struct Frac<T = Wide> {
 }
 
 impl<T: FracInt> Frac<T> {
+    /// `n/d` as it stands, not reduced; `d` must be positive.
+    pub(crate) fn of_parts(n: T, d: T) -> Frac<T> {
+        debug_assert_eq!(d.sign(), Ordering::Greater, "a positive denominator");
+        Frac { n, d }
+    }
+
     /// The value reduced, as a [`Q`] (one GCD, on machine words up to 256 bits).
     pub(crate) fn to_q(self) -> Q {
         T::ratio(self.n, self.d)
@@ -165,13 +171,9 @@ impl<T: FracInt> Frac<T> {
 }
 
 impl<T: FixedInt> Frac<T> {
-    /// The value reduced on words (one binary GCD, no big integer): its sign (a zero is not
-    /// negative), numerator and denominator; `None` when a part passes 256 bits.
+    /// The value reduced on words ([`reduced_words`](super::reduced_words)).
     pub(crate) fn reduced_words(self) -> Option<(bool, U256, U256)> {
-        let (negative, n) = self.n.to_words()?;
-        let (_, d) = self.d.to_words()?;
-        let (n, d) = U256::reduced(n, d);
-        Some((negative && n != U256::ZERO, n, d))
+        super::reduced_words(&self.n, &self.d)
     }
 }
 

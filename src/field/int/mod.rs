@@ -222,6 +222,14 @@ impl FixedInt for i128 {
     }
 }
 
+/// `n/d` (`d > 0`) reduced on words (one binary GCD, no big integer): its sign (a zero is
+/// not negative), numerator and denominator; `None` when a part passes 256 bits.
+pub(crate) fn reduced_words<T: FixedInt>(n: &T, d: &T) -> Option<(bool, U256, U256)> {
+    let ((negative, n), (_, d)) = (n.to_words()?, d.to_words()?);
+    let (n, d) = U256::reduced(n, d);
+    Some((negative && n != U256::ZERO, n, d))
+}
+
 /// Numerator and denominator of a rational, lifted into `T`.
 pub(crate) fn split<T: Int>(x: &Q) -> Option<(T, T)> {
     Some((T::lift(x.numer())?, T::lift(x.denom())?))
