@@ -310,7 +310,7 @@ fn energy_on_words<T: FracInt>(scene: &Scene, motion: &Motion<Q>) -> Option<Q> {
 /// header's row, solved exactly by [`Impact::on_both_axes`]; returns the values a claim may be
 /// compared with (v, V, omega, vt, Vt, the spin after and Jt, in [`CLAIMS`] order) and whether
 /// every law held.
-pub(super) fn oblique_values(scene: &Scene, out: &mut String) -> ([Option<Q>; CLAIMS.len()], bool) {
+fn oblique_values(scene: &Scene, out: &mut String) -> ([Option<Q>; CLAIMS.len()], bool) {
     let impact = Impact::on_both_axes(scene);
     let done = impact.oblique.as_ref().expect("answered on both axes");
     write_oblique_cells(

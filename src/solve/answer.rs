@@ -99,8 +99,7 @@ impl Impact {
 
     /// The paper's scene (no oblique part) solved by the fraction-free route.
     fn normal(scene: &Scene) -> Impact {
-        let solved = super::with::<Q>(scene, Route::FractionFree)
-            .expect("the fraction-free route takes every paper scene in Q");
+        let solved = fraction_free(scene);
         let laws_hold = solved.laws_hold == Some(true);
         Impact {
             outcome: outcome_exactly(scene, solved),
@@ -250,16 +249,30 @@ fn complete_exactly(
     complete_in::<I256>(scene, o, response)
         .map(|done| done.map(Frac::to_q))
         .or_else(|| complete_in::<Wide>(scene, o, response).map(|done| done.map(Frac::to_q)))
-        .unwrap_or_else(|| {
-            oblique::complete(&scene.params(), &o.params(), response.clone(), None)
-                .expect("Q decides stick or slide, and every mass is positive")
-        })
+        .unwrap_or_else(|| complete_over_q(scene, o, response))
+}
+
+/// The paper's scene `scene` (an oblique scene's normal problem) solved by the fraction-free
+/// route, with its laws checked.
+fn fraction_free(scene: &Scene) -> Solved<Q> {
+    super::with::<Q>(scene, Route::FractionFree)
+        .expect("the fraction-free route takes every paper scene in Q")
+}
+
+/// [`oblique::complete`] over Q itself: the last resort of the fixed widths.
+fn complete_over_q(
+    scene: &Scene,
+    o: &crate::scene::Oblique,
+    response: &Motion<Q>,
+) -> ObliqueOutcome<Q> {
+    oblique::complete(&scene.params(), &o.params(), response.clone(), None)
+        .expect("Q decides stick or slide, and every mass is positive")
 }
 
 /// [`oblique::complete`] of `scene` with the oblique part `o` and the normal problem's
 /// answer `response`, over unreduced fractions of `T`; `None` when a value leaves `T`'s width
 /// on the way.
-pub(crate) fn complete_in<T: FracInt>(
+fn complete_in<T: FracInt>(
     scene: &Scene,
     o: &crate::scene::Oblique,
     response: &Motion<Q>,
@@ -297,8 +310,7 @@ impl AfterOnWords {
     /// The batch's oblique engine row ([`crate::batch`]) reads its answers here; the general
     /// row reads [`Impact::on_both_axes`], and the tests hold the two to the same lines.
     pub(crate) fn of(scene: &Scene) -> Option<AfterOnWords> {
-        let normal = super::with::<Q>(&scene.normal_problem(), Route::FractionFree)
-            .expect("the fraction-free route takes every paper scene in Q");
+        let normal = fraction_free(&scene.normal_problem());
         let normal_laws_hold = normal.laws_hold == Some(true);
         let at_rest = crate::scene::Oblique::default();
         let o = scene.oblique().unwrap_or(&at_rest);
@@ -320,8 +332,7 @@ impl AfterOnWords {
             .or_else(|| on_words::<I256>(scene, o, response, normal_laws_hold))
             .or_else(|| on_words::<Wide>(scene, o, response, normal_laws_hold))
             .unwrap_or_else(|| {
-                let done = oblique::complete(&scene.params(), &o.params(), response.clone(), None)
-                    .expect("Q decides stick or slide, and every mass is positive");
+                let done = complete_over_q(scene, o, response);
                 AfterOnWords::reduced(done, normal_laws_hold, |x| U256::parts_of(&x))
             })
     }

@@ -69,44 +69,50 @@ impl WordScene {
     /// The scene of `cells`, when every cell is a plain number on words (or the rod's kind)
     /// and every constraint holds; `None` otherwise (the general row's reading then decides).
     fn check(cells: &SceneCells) -> Option<WordScene> {
-        let part = |name: &str| -> Option<Option<Part>> {
-            match cells[key_index(name)] {
+        // The cell of a key, found at compile time.
+        let part = |key: usize| -> Option<Option<Part>> {
+            match cells[key] {
                 b"" => Some(None),
                 cell => Part::parse(cell).map(Some),
             }
         };
         let paper = super::Scene::check(
             [
-                part("m")?,
-                part("M")?,
-                part("l")?,
-                part("a")?,
-                part("v0")?,
-                part("e")?,
-                part("pivot")?,
+                part(const { key_index("m") })?,
+                part(const { key_index("M") })?,
+                part(const { key_index("l") })?,
+                part(const { key_index("a") })?,
+                part(const { key_index("v0") })?,
+                part(const { key_index("e") })?,
+                part(const { key_index("pivot") })?,
             ],
-            Rod::parse(cells[key_index("rod")])?,
+            Rod::parse(cells[const { key_index("rod") }])?,
         )?;
         let zero = Part {
             negative: false,
             n: 0,
             d: 1,
         };
-        let mu = part("mu")?.unwrap_or(zero);
-        let disc = match (part("radius")?, part("spin")?) {
+        let mu = part(const { key_index("mu") })?.unwrap_or(zero);
+        let radius = part(const { key_index("radius") })?;
+        let disc = match (radius, part(const { key_index("spin") })?) {
             (Some(radius), spin) if positive(radius) => Some((radius, spin.unwrap_or(zero))),
             (None, None) => None,
             _ => return None,
         };
-        let rod_before =
-            [part("rod-v")?, part("rod-vt")?, part("rod-omega")?].map(|x| x.unwrap_or(zero));
+        let rod_before = [
+            part(const { key_index("rod-v") })?,
+            part(const { key_index("rod-vt") })?,
+            part(const { key_index("rod-omega") })?,
+        ]
+        .map(|x| x.unwrap_or(zero));
         let moves_on_pivot = rod_before[0].n != 0 || rod_before[1].n != 0;
         if (mu.negative && mu.n != 0) || (paper.pivot.is_some() && moves_on_pivot) {
             return None;
         }
         Some(WordScene {
             paper,
-            v0t: part("v0t")?.unwrap_or(zero),
+            v0t: part(const { key_index("v0t") })?.unwrap_or(zero),
             mu,
             disc,
             rod_before,
@@ -140,6 +146,7 @@ impl WordScene {
         let whole = |x: T| Frac::of_parts(x, T::small(1));
         let g = Frac::of_parts(T::of_words(false, s.g.0)?, T::of_words(false, s.g.1)?);
         let [m, rod_mass, l, a, v0, e] = [s.m, s.big_m, s.l, s.a, s.v0, s.e].map(lift);
+        let (m, rod_mass, l, a, v0, e) = (m?, rod_mass?, l?, a?, v0?, e?);
         let support = match s.pivot {
             None => Support::Free,
             Some(p) => Support::Pivot(lift(p)?),
@@ -162,12 +169,11 @@ impl WordScene {
                 omega: omega?,
             },
         };
-        let (rod_mass, a, v0, e) = (rod_mass?, a?, v0?, e?);
         let done = within(|| {
             let params = Params {
-                m: m?,
+                m,
                 rod_mass,
-                half_length: l?,
+                half_length: l,
                 inertia: rod_mass * g,
                 a,
                 v0,
