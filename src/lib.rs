@@ -39,7 +39,8 @@
 //! | 4 decide | [`claims`], [`textbook`], [`stability`], [`contact`], [`batch`], [`suite`], [`samples`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes; the designed suites of scenes (engines) |
 //! | 5 output | [`report`], [`io`] | every rendering (text, JSON, Markdown, LaTeX, CSV, SVG); atomic files and directories written all or nothing |
 //!
-//! The command-line tool (`src/main.rs`, `src/commands/`, one file per subcommand) sits on top
+//! The command-line tool (the package `crates/rodimpact-cli`: `main.rs` and `commands/`, one
+//! file per subcommand, and the build of the pages' WebAssembly module) sits on top
 //! and only parses flags, calls one library function and prints what [`report`] renders.
 //!
 //! [`prelude`] gathers the names most programs need:

@@ -684,7 +684,7 @@ mod tests {
     }
 
     /// Refused by their length before any arithmetic (that this is quick is bounded by CPU time in
-    /// `tests/cli/bad_input.rs`, never by a clock here).
+    /// `crates/rodimpact-cli/tests/cli/bad_input.rs`, never by a clock here).
     #[test]
     fn huge_inputs_are_refused() {
         let million = "9".repeat(1_000_000);

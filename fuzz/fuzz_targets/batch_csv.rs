@@ -9,7 +9,7 @@ use rodimpact::batch::{Arithmetic, Batch, run};
 use std::sync::OnceLock;
 
 /// One worker: `run`'s logic without waking threads on every input (tens of ms under the
-/// sanitizer with the other core busy); `tests/cli_batch.rs` runs it on two.
+/// sanitizer with the other core busy); `crates/rodimpact-cli/tests/cli/batch.rs` runs it on two.
 fn pool() -> &'static rayon::ThreadPool {
     static POOL: OnceLock<rayon::ThreadPool> = OnceLock::new();
     POOL.get_or_init(|| {

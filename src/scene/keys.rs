@@ -2,7 +2,7 @@
 //! spelling in a problem file, whether it is a batch column and whether it makes a scene
 //! oblique, and the help text of its command-line flag.
 //!
-//! The command-line flags (`src/commands/mod.rs`) take their help from here, `batch` its scene
+//! The command-line flags (`crates/rodimpact-cli/src/commands/mod.rs`) take their help from here, `batch` its scene
 //! columns, [`SceneInput::slot`](super::SceneInput::slot) its keys, [`dimension_of`](super::dimension_of)
 //! the units a key accepts, and the symbolic readers their lists of numeric and oblique inputs.
 //! A new numeric input is one row here and one field of [`SceneInput`](super::SceneInput).

@@ -1,5 +1,7 @@
 //! Shared test helpers: exact numbers from strings, scenes from `key=value` text, and proptest
-//! strategies for random rational scenes.
+//! strategies for random rational scenes. Included by the library's tests (`tests/lib`) and the
+//! command line's (`crates/rodimpact-cli/tests/cli`), each of which names the repository's
+//! root as `crate::ROOT`.
 #![allow(dead_code)]
 
 use proptest::prelude::*;
@@ -83,28 +85,6 @@ pub fn any_scene() -> impl Strategy<Value = Scene> {
         })
 }
 
-/// Runs the `rodimpact` binary with `args` and returns what it did, any exit code.
-pub fn output<I, A>(args: I) -> std::process::Output
-where
-    I: IntoIterator<Item = A>,
-    A: AsRef<std::ffi::OsStr>,
-{
-    std::process::Command::new(env!("CARGO_BIN_EXE_rodimpact"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the binary runs")
-}
-
-/// `rodimpact solve --json ARGS`, which must succeed, parsed.
-pub fn solve_json(args: &[&str]) -> serde_json::Value {
-    let mut all = vec!["solve", "--json"];
-    all.extend_from_slice(args);
-    let (code, stdout, stderr) = rodimpact(&all);
-    assert_eq!(code, 0, "stderr: {stderr}");
-    serde_json::from_str(&stdout).expect("solve --json prints JSON")
-}
-
 /// A new empty directory of its own for one test (`rodimpact-TAG-XXXXXX` under the system's
 /// temporary directory), created race-free, so tests running side by side (and test runs of
 /// other checkouts) never share a file. The test removes it when it is done.
@@ -116,30 +96,9 @@ pub fn scratch(tag: &str) -> std::path::PathBuf {
         .keep()
 }
 
-/// Asserts that `rodimpact ARGS` is refused as bad input: exit 2, nothing on standard output,
-/// and exactly `message` on standard error.
-pub fn assert_refused(args: &[&str], message: &str) {
-    let (code, out, err) = rodimpact(args);
-    assert_eq!(
-        (code, out.as_str(), err.as_str()),
-        (2, "", message),
-        "{args:?}"
-    );
-}
-
-/// Runs the `rodimpact` binary with `args`: (exit code, stdout, stderr).
-pub fn rodimpact(args: &[&str]) -> (i32, String, String) {
-    let out = output(args);
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
 /// The path of a file of `tests/data/` (the reference batches; see `tests/data/README.md`).
 pub fn data_file(file: &str) -> String {
-    format!("{}/tests/data/{file}", env!("CARGO_MANIFEST_DIR"))
+    format!("{}/tests/data/{file}", crate::ROOT)
 }
 
 /// The first `limit` rows of a reference batch of `tests/data/`: the line, its scene

@@ -87,7 +87,7 @@ fn every_relative_link_of_the_docs_leads_to_a_file() {
 }
 
 /// The repository paths written in backticks in `text` (`src/solve/answer.rs`,
-/// `tests/cli/console.rs:12`), without a line number; globs and placeholders are left out.
+/// `crates/rodimpact-cli/tests/cli/console.rs:12`), without a line number; globs and placeholders are left out.
 fn backticked_paths(text: &str) -> Vec<String> {
     const TOP: [&str; 10] = [
         "src/",

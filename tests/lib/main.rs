@@ -5,6 +5,9 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+/// The repository's root: the examples and reference data the tests read.
+pub const ROOT: &str = env!("CARGO_MANIFEST_DIR");
+
 mod architecture;
 mod batch_header;
 mod batch_words;

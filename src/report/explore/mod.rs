@@ -354,27 +354,30 @@ fn page_number(flag: &str, value: &Q) -> Result<String, Error> {
 /// (a link's `#...` still overrides it), its style and scripts, in the shared shell
 /// ([`document`]).
 ///
+/// `module` is the WebAssembly module the page computes with (compressed, in base64: the
+/// command-line tool's build makes it).
+///
 /// # Errors
-/// As [`reference_answers`].
+/// As [`reference_answers`], or when `module` is empty ([`pages::module_element`]).
 ///
 /// # Examples
 /// ```
 /// use rodimpact::report::explore::{Preset, explore_html};
-/// let page = explore_html(&Preset::default())?;
+/// let page = explore_html(&Preset::default(), "eJwDAAAAAAE=")?;
 /// assert!(page.starts_with("<!DOCTYPE html>"));
 /// assert!(page.contains("\"a_star\":\"sqrt(6)/3\""));
 /// assert!(page.contains("<script type=\"application/json\" id=\"preset\">\"\"</script>"));
 /// assert!(!page.contains("{{"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn explore_html(preset: &Preset) -> Result<String, Error> {
+pub fn explore_html(preset: &Preset, module: &str) -> Result<String, Error> {
     let reference = serde_json::to_string(&reference_answers()?).expect("JSON of strings");
     let preset = serde_json::to_string(&preset.link()).expect("JSON of a string");
     let body = BODY
         .replace("{{VERSION}}", env!("CARGO_PKG_VERSION"))
         .replace("{{REFERENCE}}", &json_script("reference", &reference))
         .replace("{{PRESET}}", &json_script("preset", &preset))
-        + &pages::module_element()?;
+        + &pages::module_element(module)?;
     Ok(document(&Page {
         title: "Where should you hit the rod? An exact explorer",
         style: STYLE,

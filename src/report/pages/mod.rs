@@ -2,8 +2,8 @@
 //! WebAssembly module that carries it into the page.
 //!
 //! The pages (`explore`, and `explore --scene tilted-rod`) compute every number they show with
-//! this library compiled to WebAssembly (`wasm/`, built by `build.rs` and inlined compressed in
-//! each page), never with a second implementation of the physics in JavaScript. The page's
+//! this library compiled to WebAssembly (`wasm/`, built by the command-line tool's `build.rs`
+//! and handed to the page writers, which inline it compressed in each page), never with a second implementation of the physics in JavaScript. The page's
 //! script calls [`call`] through the module (`api.call(name, request)`); the same function
 //! answers here natively, so `cargo test` checks what the pages compute.
 //!
@@ -29,10 +29,6 @@ pub use value::exact;
 use crate::Error;
 use crate::error::ErrorKind;
 use serde_json::{Value, json};
-
-/// The WebAssembly module (zlib-compressed, in base64) that `build.rs` built for the pages:
-/// empty when this build has none (without the feature `pages`, or without the wasm32 target).
-const MODULE: &str = include_str!(concat!(env!("OUT_DIR"), "/pages.wasm.b64"));
 
 /// Unpacks the module in the page and runs the page's script with the API.
 const LOADER: &str = include_str!("loader.js");
@@ -109,21 +105,23 @@ fn field_error(field: &str, message: String) -> Value {
     json!({ "error": { "field": field, "message": message } })
 }
 
-/// The element that carries the WebAssembly module in a page (compressed, in base64): part of
-/// the page's body, read by the loader of [`page_script`].
+/// The element that carries the WebAssembly module in a page: `module` is the module
+/// zlib-compressed and in base64, as the command-line tool's `build.rs` leaves it; part of the
+/// page's body, read by the loader of [`page_script`].
 ///
 /// # Errors
-/// When this build has no WebAssembly module (built without the feature `pages` or without
-/// the `wasm32-unknown-unknown` target), naming the fix.
+/// When `module` is empty (a build without the feature `pages`, without the
+/// `wasm32-unknown-unknown` target, or with `RODIMPACT_PAGES_WASM=none`), naming the fix.
 ///
 /// # Examples
 /// ```
-/// let element = rodimpact::report::pages::module_element()?;
-/// assert!(element.starts_with("<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">"));
+/// let element = rodimpact::report::pages::module_element("eJwDAAAAAAE=")?;
+/// assert!(element.starts_with("<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">eJw"));
+/// assert!(rodimpact::report::pages::module_element("").is_err());
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn module_element() -> Result<String, Error> {
-    if MODULE.is_empty() {
+pub fn module_element(module: &str) -> Result<String, Error> {
+    if module.is_empty() {
         return Err(Error::new(
             "explore",
             ErrorKind::Invalid(
@@ -135,7 +133,7 @@ pub fn module_element() -> Result<String, Error> {
         ));
     }
     Ok(format!(
-        "<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">{MODULE}</script>\n"
+        "<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">{module}</script>\n"
     ))
 }
 
@@ -166,14 +164,4 @@ pub fn link_of(fields: &[(&'static str, String)]) -> String {
         .map(|(key, value)| format!("{key}={value}"))
         .collect::<Vec<_>>()
         .join("&")
-}
-
-/// The size in bytes of the module as a page carries it (compressed, in base64).
-///
-/// # Examples
-/// ```
-/// assert!(rodimpact::report::pages::module_size() < 1_000_000);
-/// ```
-pub fn module_size() -> usize {
-    MODULE.len()
 }

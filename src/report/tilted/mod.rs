@@ -104,22 +104,23 @@ impl TiltedPreset {
 /// The page, complete, opening on `preset` (a link's `#...` still overrides it).
 ///
 /// # Errors
-/// When this build has no WebAssembly module ([`pages::module_element`]).
+/// When `module` (the WebAssembly module, compressed, in base64) is empty
+/// ([`pages::module_element`]).
 ///
 /// # Examples
 /// ```
 /// use rodimpact::report::tilted::{TiltedPreset, tilted_html};
-/// let page = tilted_html(&TiltedPreset::default())?;
+/// let page = tilted_html(&TiltedPreset::default(), "eJwDAAAAAAE=")?;
 /// assert!(page.starts_with("<!DOCTYPE html>") && page.contains("Routh"));
 /// assert!(!page.contains("{{"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn tilted_html(preset: &TiltedPreset) -> Result<String, Error> {
+pub fn tilted_html(preset: &TiltedPreset, module: &str) -> Result<String, Error> {
     let preset = serde_json::to_string(&preset.link()).expect("JSON of a string");
     let body = BODY
         .replace("{{VERSION}}", env!("CARGO_PKG_VERSION"))
         .replace("{{PRESET}}", &json_script("preset", &preset))
-        + &pages::module_element()?;
+        + &pages::module_element(module)?;
     Ok(document(&Page {
         title: "Can a bounce create energy? A tilted rod on a rough floor, under three laws",
         style: STYLE,

@@ -272,7 +272,7 @@ fn flags_a_figure_cannot_use_are_refused() {
     for (args, message) in cases {
         refused(args, message);
     }
-    assert!(!Path::new("x.svg").exists());
+    assert!(!Path::new(crate::ROOT).join("x.svg").exists());
 }
 
 /// Issue 16 item 5: v, V, omega, J and a·J along the rod, exact, against the paper's closed

@@ -49,6 +49,11 @@ pub(crate) struct ExploreArgs {
     pub(crate) oblique: ObliqueFlags,
 }
 
+/// The WebAssembly module (zlib-compressed, in base64) that `build.rs` built for the pages:
+/// empty when this build has none (without the feature `pages`, without the wasm32 target, or
+/// with `RODIMPACT_PAGES_WASM=none`).
+const PAGES_MODULE: &str = include_str!(concat!(env!("OUT_DIR"), "/pages.wasm.b64"));
+
 /// The pages of `--scene`.
 #[derive(ValueEnum, Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum ScenePage {
@@ -104,7 +109,7 @@ fn tilted_page(args: &ExploreArgs) -> Result<String, Failure> {
         input.mu.as_deref(),
         input.e.as_deref(),
     )?;
-    Ok(tilted_html(&preset)?)
+    Ok(tilted_html(&preset, PAGES_MODULE)?)
 }
 
 /// The paper's page, preset by the scene flags, --predict and --frame.
@@ -131,5 +136,5 @@ fn paper_page(args: &ExploreArgs) -> Result<String, Failure> {
         FrameArg::Lab => Frame::Lab,
     });
     let preset = Preset::of_scene(&args.oblique.input(&args.scene), predict, frame)?;
-    Ok(explore_html(&preset)?)
+    Ok(explore_html(&preset, PAGES_MODULE)?)
 }

@@ -20,9 +20,7 @@ use std::collections::BTreeMap;
 
 #[test]
 fn the_engine_suite_is_generated_byte_for_byte() {
-    let committed =
-        std::fs::read_to_string(format!("{}/engines/suite.csv", env!("CARGO_MANIFEST_DIR")))
-            .unwrap();
+    let committed = std::fs::read_to_string(format!("{}/engines/suite.csv", crate::ROOT)).unwrap();
     let (code, stdout, stderr) = rodimpact(&["scenes", "--suite", "engines"]);
     assert_eq!(code, 0, "{stderr}");
     assert_eq!(stdout, committed);

@@ -1,16 +1,18 @@
 //! Builds the WebAssembly module the web pages compute with (`wasm/`, the library compiled for
 //! `wasm32-unknown-unknown`) and leaves it, compressed (zlib) and in base64, in
-//! `$OUT_DIR/pages.wasm.b64` for `report::pages` to inline in every page it writes.
+//! `$OUT_DIR/pages.wasm.b64`, which `explore` inlines in every page it writes.
 //!
-//! Only with the feature `pages` (on with `cli`, the default), and never when the library itself
-//! is being compiled for WebAssembly (that is this build's own nested build). The module is
-//! built by a nested `cargo build --release` in its own target directory beside this build's
-//! (`<target>/wasm-pages`), so it reuses its work from one build to the next.
+//! Only with the feature `pages` (on by default). The module is built by a nested `cargo build
+//! --release` in its own target directory beside this build's (`<target>/wasm-pages`), so it
+//! reuses its work from one build to the next. This script belongs to the command-line tool,
+//! not to the library: `cargo test -p rodimpact` and `cargo check -p rodimpact` never run it.
 //!
 //! `RODIMPACT_PAGES_WASM=FILE` takes a module already built instead (packagers, or a build
-//! without the wasm32 target). Without the target, the build adds it with `rustup target add`
-//! when rustup is there; when that fails too, the build goes on with a warning and the page
-//! commands refuse with a message that names the fix.
+//! without the wasm32 target); `RODIMPACT_PAGES_WASM=none` builds the tool without a module
+//! (the page commands then refuse), for a quick `cargo check` or an editor's checks of the
+//! whole workspace. Without the target, the build adds it with `rustup target add` when rustup
+//! is there; when that fails too, the build goes on with a warning and the page commands refuse
+//! with a message that names the fix.
 
 use std::env;
 use std::fs;
@@ -23,23 +25,27 @@ fn main() {
     let out = PathBuf::from(env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
     let destination = out.join("pages.wasm.b64");
     println!("cargo:rerun-if-env-changed=RODIMPACT_PAGES_WASM");
-    let wanted = env::var_os("CARGO_FEATURE_PAGES").is_some()
-        && env::var("CARGO_CFG_TARGET_ARCH").as_deref() != Ok("wasm32");
+    let wanted = env::var_os("CARGO_FEATURE_PAGES").is_some();
     let module = if wanted { module(&out) } else { None };
     let text = module.map(|bytes| base64(&miniz_oxide::deflate::compress_to_vec_zlib(&bytes, 10)));
     fs::write(&destination, text.unwrap_or_default()).expect("OUT_DIR is writable");
 }
 
 /// The module's bytes: the file `RODIMPACT_PAGES_WASM` names, or the nested build's; `None`
-/// (with a warning) when it cannot be built.
+/// when `RODIMPACT_PAGES_WASM=none`, or (with a warning) when it cannot be built.
 fn module(out: &Path) -> Option<Vec<u8>> {
+    if env::var_os("RODIMPACT_PAGES_WASM").is_some_and(|v| v == "none") {
+        return None;
+    }
     if let Some(file) = env::var_os("RODIMPACT_PAGES_WASM") {
         println!("cargo:rerun-if-changed={}", Path::new(&file).display());
         return Some(fs::read(&file).unwrap_or_else(|e| {
             panic!("RODIMPACT_PAGES_WASM={}: {e}", Path::new(&file).display())
         }));
     }
-    let root = PathBuf::from(env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets it"));
+    // The repository's root: this package is crates/rodimpact-cli.
+    let root =
+        PathBuf::from(env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets it")).join("../..");
     for watched in [
         "src",
         "wasm/src",

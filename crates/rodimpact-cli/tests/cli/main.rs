@@ -5,6 +5,10 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+/// The repository's root (this package lives in `crates/rodimpact-cli/`): the examples, the
+/// reference data and the documentation the tests read, and the binary's working directory.
+pub const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+
 mod backend_reliability;
 mod bad_input;
 mod batch;

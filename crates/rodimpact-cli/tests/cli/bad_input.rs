@@ -1238,7 +1238,7 @@ fn exact_square_roots_at_the_limits() {
 #[test]
 fn a_failed_write_to_stdout_or_stderr_is_an_error() {
     let dir = scratch("full");
-    let textbook = format!("{}/examples/textbook.toml", env!("CARGO_MANIFEST_DIR"));
+    let textbook = format!("{}/examples/textbook.toml", crate::ROOT);
     let csv = write(&dir, "in.csv", b"m,M\n1,1\n");
     let full = || {
         std::fs::OpenOptions::new()

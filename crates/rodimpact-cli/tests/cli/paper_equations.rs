@@ -6,7 +6,7 @@
 /// (continuation lines joined), as argument lists.
 fn readme_commands() -> Vec<Vec<String>> {
     let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md")).unwrap();
     let start = readme
         .find("**The paper's equations, each checked as printed.**")
         .expect("README section");
@@ -101,7 +101,7 @@ fn each_equation_of_the_paper_is_checked_as_printed() {
     );
     // The homogeneous rod's output is shown in full in the README.
     let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md")).unwrap();
     assert!(readme.contains(outputs[3].1.trim_end()), "{}", outputs[3].1);
 }
 

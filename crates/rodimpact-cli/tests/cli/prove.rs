@@ -78,7 +78,7 @@ fn prove_write_reproduces_the_committed_certificates() {
     let dir = crate::common::scratch("proofs");
     let (code, _, stderr) = rodimpact(&["prove", "--write", dir.to_str().unwrap()]);
     assert_eq!(code, 0, "{stderr}");
-    let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("proofs");
+    let committed = std::path::Path::new(crate::ROOT).join("proofs");
     // The subdirectories are the exports for independent checkers (proofs/smt2, proofs/sympy).
     let count = assert_written_as_committed(&dir, &committed);
     assert_eq!(
@@ -306,7 +306,7 @@ fn prove_export_reproduces_the_committed_exports() {
         let dir = crate::common::scratch(&format!("export-{format}"));
         let (code, _, stderr) = rodimpact(&["prove", "--export", format, dir.to_str().unwrap()]);
         assert_eq!(code, 0, "{stderr}");
-        let committed = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        let committed = std::path::Path::new(crate::ROOT)
             .join("proofs")
             .join(format);
         let count = assert_written_as_committed(&dir, &committed);

@@ -11,7 +11,7 @@ use std::process::Command;
 
 /// The Markdown pages whose console blocks are checked.
 fn pages() -> Vec<PathBuf> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = Path::new(crate::ROOT);
     let mut pages = vec![root.join("README.md"), root.join("CONTRIBUTING.md")];
     let mut docs: Vec<PathBuf> = std::fs::read_dir(root.join("docs"))
         .unwrap()
@@ -99,7 +99,7 @@ fn every_console_transcript_is_what_the_tool_prints() {
     // Files the transcripts write land in a scratch directory: the shell runs there, with the
     // repository's files reachable through symbolic links.
     let scratch = crate::common::scratch("console");
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = Path::new(crate::ROOT);
     for entry in std::fs::read_dir(root).unwrap() {
         let entry = entry.unwrap();
         let name = entry.file_name();

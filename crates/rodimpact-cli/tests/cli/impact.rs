@@ -273,7 +273,8 @@ fn bad_inputs_are_refused_naming_the_field() {
 fn batch_audits_engine_claims() {
     let dir = scratch("impact-batch");
     let scene = |file: &str| -> serde_json::Map<String, Value> {
-        let text = std::fs::read_to_string(format!("examples/impacts/{file}.toml")).unwrap();
+        let text = std::fs::read_to_string(format!("{}/examples/impacts/{file}.toml", crate::ROOT))
+            .unwrap();
         let table: toml::Table = toml::from_str(&text).unwrap();
         serde_json::to_value(table)
             .unwrap()
