@@ -17,8 +17,11 @@
 use rodimpact::field::Q;
 use rodimpact::samples::{read_batch, sized_scene};
 use rodimpact::scene::Scene;
-use rodimpact::solve::fraction_free;
-use rodimpact::solve::{closed_form::closed_form, linear::solve, outcome};
+use rodimpact::solve::fast::fraction_free;
+use rodimpact::solve::{
+    fast::{closed_form::closed_form, linear::solve},
+    outcome,
+};
 use rodimpact::stability::SplitMix64;
 use std::hint::black_box;
 use std::time::Instant;

@@ -30,12 +30,15 @@ fn main() -> Result<(), Error> {
     println!("J = {}, Jt = {}", answer.impulse, o.tangential_impulse);
     let contact = o.contact.expect("friction acts");
     println!(
-        "contact: {contact}, mu* = {}",
+        "contact: {}, mu* = {}",
+        contact.kind(),
         answer.mu_star().expect("friction acts")
     );
     println!(
         "energy lost = {} (restitution {} + friction {})",
-        o.energy.lost, o.lost_restitution, o.lost_friction
+        o.energy.lost(),
+        o.lost_restitution,
+        o.lost_friction
     );
     println!("laws hold exactly: {}", answer.laws_hold());
     if let Some(best) = &answer.optimum {

@@ -32,12 +32,14 @@
 //!
 //! | layer | modules | what it holds |
 //! |---|---|---|
-//! | 0 numbers | [`field`] (its [`field::decimal`] exact printing, [`field::int`] word-sized integers), [`echo`], [`error`] | the [`field::Field`] trait and its number types; how numbers print; the error type |
+//! | 0 numbers | [`field`] (its [`field::decimal`] exact printing, [`field::int`] word-sized integers, [`field::linear`] elimination), [`echo`], [`error`] | the [`field::Field`] trait and its number types; how numbers print; the error type |
 //! | 1 input | [`number`], [`units`] | exact parsing of `0.25`, `3/7`, `1.5e-3`; SI units |
-//! | 2 model | [`scene`], [`mechanics`], [`model`] | a validated scene over any field; momentum, angular momentum, energy, the paper's groups; planar bodies and contacts as data |
-//! | 3 solve | [`solve`] | the whole answer to any scene ([`solve::Answer`]); every route to (v, V, omega) by name behind [`solve::with`]; a* and omega_max ([`solve::optimum`]) |
-//! | 4 decide | [`claims`], [`textbook`], [`stability`], [`contact`], [`batch`], [`suite`], [`samples`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes; the designed suites of scenes (engines) |
-//! | 5 output | [`report`], [`io`] | every rendering (text, JSON, Markdown, LaTeX, CSV, SVG); atomic files and directories written all or nothing |
+//! | 2 model | [`mechanics`], [`model`] | momentum, angular momentum and energy of rigid bodies; bodies, shapes, contacts and pins as data ([`model::System`]) |
+//! | 3 core | [`impact`] | the general solver: contacts as Jacobian rows, `W = J M^-1 J^T`; one contact under the three laws with Coulomb friction; several contacts under each model |
+//! | 4 paper | [`scene`] | the paper's scene, a view of the model ([`scene::Scene::system`]): its inputs, motion (v, V, omega) and balances |
+//! | 5 solve | [`solve`] | the whole answer to any scene of the paper ([`solve::Answer`]) by its fast routes, each equal to the core; a* and omega_max ([`solve::optimum`]) |
+//! | 6 decide | [`claims`], [`textbook`], [`stability`], [`contact`], [`batch`], [`suite`], [`samples`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes; the designed suites of scenes (engines) |
+//! | 7 output | [`report`], [`io`] | every rendering (text, JSON, Markdown, LaTeX, CSV, SVG); atomic files and directories written all or nothing |
 //!
 //! The command-line tool (the package `crates/rodimpact-cli`: `main.rs` and `commands/`, one
 //! file per subcommand, and the build of the pages' WebAssembly module) sits on top
@@ -64,11 +66,13 @@ pub mod units;
 // Layer 2: model.
 pub mod mechanics;
 pub mod model;
+// Layer 3: the core.
+pub mod impact;
+// Layer 4: the paper's scene.
 pub mod scene;
-// Layer 3: solve.
-
+// Layer 5: the paper's routes.
 pub mod solve;
-// Layer 4: decide.
+// Layer 6: decide.
 pub mod batch;
 pub mod claims;
 pub mod contact;
@@ -76,7 +80,7 @@ pub mod samples;
 pub mod stability;
 pub mod suite;
 pub mod textbook;
-// Layer 5: output.
+// Layer 7: output.
 pub mod io;
 pub mod report;
 
@@ -86,7 +90,7 @@ pub mod report;
 /// ```
 /// use rodimpact::prelude::*;
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 1)).build()?;
-/// let out = solve::linear::solve(&scene.params::<Q>()).expect("nonsingular");
+/// let out = solve::fast::linear::solve(&scene.params::<Q>()).expect("nonsingular");
 /// assert_eq!(out.after, Motion { v: q(3, 5), rod_v: q(2, 5), omega: q(6, 5) });
 /// assert_eq!(optimum(&scene).map(|o| o.squared), Some(q(2, 3)));
 /// assert_eq!(Answer::of(&scene).impulse, q(2, 5)); // J = 2/(1/m + 1/M + a^2/I) = 2/5
@@ -95,7 +99,7 @@ pub mod report;
 pub mod prelude {
     pub use crate::error::{Error, ErrorKind};
     pub use crate::field::{Field, Q, QSqrt, RatFn, Sym, q};
-    pub use crate::mechanics::Motion;
+    pub use crate::scene::Motion;
     pub use crate::scene::{Params, RodInertia, Scene, SceneInput, Support};
     pub use crate::solve::optimum::{Optimum, optimum};
     pub use crate::solve::{self, Answer, Impact, Outcome, Route, Solved};

@@ -509,11 +509,11 @@ mod tests {
         let suite = engine_suite();
         for s in suite.iter().filter(|s| s.class == "pivot-cop") {
             let params = s.scene().unwrap().params::<Q>();
-            let solved = crate::solve::linear::solve(&params).unwrap();
+            let solved = crate::solve::fast::linear::solve(&params).unwrap();
             assert_eq!(solved.pivot_impulse, Some(q(0, 1)), "{}", s.id);
         }
         for s in suite.iter().filter(|s| s.class == "pivot-at-impact") {
-            let after = crate::solve::fraction_free::solve(&s.scene().unwrap()).after;
+            let after = crate::solve::fast::fraction_free::solve(&s.scene().unwrap()).after;
             assert_eq!(after.omega, q(0, 1), "{}", s.id);
             assert_eq!(after.v, -(&s.e * &s.v0), "{}", s.id);
         }

@@ -9,9 +9,12 @@ mod support;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use rodimpact::field::Q;
 use rodimpact::samples::sized_scene;
-use rodimpact::solve::float::FloatFormula;
-use rodimpact::solve::fraction_free;
-use rodimpact::solve::{closed_form::closed_form, linear::solve, outcome};
+use rodimpact::solve::fast::float::FloatFormula;
+use rodimpact::solve::fast::fraction_free;
+use rodimpact::solve::{
+    fast::{closed_form::closed_form, linear::solve},
+    outcome,
+};
 use rodimpact::stability::SplitMix64;
 use std::hint::black_box;
 use std::time::Duration;

@@ -3,8 +3,8 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rodimpact::field::{Interval, Q};
-use rodimpact::solve::closed_form::closed_form;
-use rodimpact::solve::float::FloatFormula;
+use rodimpact::solve::fast::closed_form::closed_form;
+use rodimpact::solve::fast::float::FloatFormula;
 use rodimpact::stability::suite;
 use std::hint::black_box;
 use std::time::Duration;

@@ -4,9 +4,9 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use rodimpact::field::{Q, QSqrt, q};
-use rodimpact::model::{paper_system, parse_toml};
+use rodimpact::impact::{Law, Model, solve_contact, solve_exact, solve_several};
+use rodimpact::model::parse_toml;
 use rodimpact::scene::Scene;
-use rodimpact::solve::impact::{Law, Model, solve_contact, solve_exact, solve_several};
 use rodimpact::solve::{self, Answer, Route};
 use std::hint::black_box;
 
@@ -23,7 +23,7 @@ fn paper_against_general(c: &mut Criterion) {
         .a(q(1, 2))
         .build()
         .expect("valid");
-    let system = paper_system(&paper);
+    let system = paper.system();
     c.bench_function("impact/paper/fraction-free route", |b| {
         b.iter(|| solve::with::<Q>(black_box(&paper), Route::FractionFree))
     });

@@ -4,7 +4,7 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use rodimpact::field::{Field, Q, RatFn};
 use rodimpact::scene::{Params, Scene, Support};
-use rodimpact::solve::linear::solve;
+use rodimpact::solve::fast::linear::solve;
 use std::hint::black_box;
 
 fn scene(fields: [&str; 5]) -> Scene {

@@ -5,10 +5,10 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use rodimpact::solve::fraction_free;
+use rodimpact::solve::fast::fraction_free;
 use rodimpact::field::Q;
 use rodimpact::scene::{RodInertia, Scene};
-use rodimpact::solve::linear::solve;
+use rodimpact::solve::fast::linear::solve;
 
 /// Reads rationals out of the fuzzer's bytes (zero when they run out).
 struct Bytes<'a>(&'a [u8]);

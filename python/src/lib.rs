@@ -148,7 +148,7 @@ fn impact_json(
     model: Option<String>,
     digits: Option<String>,
 ) -> PyResult<(String, bool, String)> {
-    use rodimpact::solve::impact::Law;
+    use rodimpact::impact::Law;
     use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
     py.detach(|| {
         let (value, label) = match (&path, &scene) {

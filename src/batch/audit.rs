@@ -11,7 +11,7 @@
 use crate::field::big::{Relaxed, relaxed_to_q, to_relaxed};
 use crate::field::int::{Frac, FracInt, I256, Wide, within};
 use crate::field::{Field, Q, abs};
-use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
+use crate::scene::{Motion, angular_momentum, kinetic_energy, linear_momentum};
 use crate::scene::{Params, Scene, Support};
 use crate::solve::optimum::omega_max_squared_of;
 use std::cmp::Ordering;
@@ -99,7 +99,7 @@ impl Finding {
 /// # Examples
 /// A claimed state with 1 % more spin than the paper's exact answer (3/5, 2/5, 6/5):
 /// ```
-/// use rodimpact::{batch::{audit, Finding}, mechanics::Motion, scene::Scene, field::q};
+/// use rodimpact::{batch::{audit, Finding}, scene::{Motion, Scene}, field::q};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
 /// let exact = Motion { v: q(3, 5), rod_v: q(2, 5), omega: q(6, 5) };
 /// let claimed = Motion { omega: q(606, 500), ..exact.clone() };
@@ -133,7 +133,7 @@ fn fraction<F: Field>((n, d): (i64, i64)) -> F {
 /// Box2D 2.3 at v0 = 1 m/s, e = 1 (the paper's rod struck at l/2): it returns the sticking
 /// answer 7/11, 4/11, 6/11 instead of 3/11, 8/11, 12/11.
 /// ```
-/// use rodimpact::{batch::{audit, Finding}, mechanics::Motion, scene::Scene, field::q};
+/// use rodimpact::{batch::{audit, Finding}, scene::{Motion, Scene}, field::q};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build().unwrap();
 /// let exact = Motion { v: q(3, 11), rod_v: q(8, 11), omega: q(12, 11) };
 /// let claimed = Motion { v: q(63592, 100000), rod_v: q(36408, 100000), omega: q(54612, 100000) };
@@ -315,7 +315,7 @@ mod tests {
                         b = b.pivot(l * q(p, 4));
                     }
                     let scene = b.build().ok()?;
-                    let exact = crate::solve::fraction_free::solve(&scene).after;
+                    let exact = crate::solve::fast::fraction_free::solve(&scene).after;
                     let engine = |x: &Q, (k, j, exact_claim): (i64, u32, bool)| {
                         if exact_claim {
                             return x.clone();
@@ -454,7 +454,7 @@ mod tests {
     #[test]
     fn the_state_before_the_impact_is_no_contact_and_momentum_is_checked_on_a_free_rod() {
         let s = Scene::builder(q(1, 1), q(1, 1)).e(q(1, 2)).build().unwrap();
-        let exact = crate::solve::fraction_free::solve(&s).after;
+        let exact = crate::solve::fast::fraction_free::solve(&s).after;
         let before = Motion::before(q(1, 1));
         assert_eq!(audit(&s, &exact, &before).findings, [Finding::NoContact]);
         let pushed = motion(

@@ -3,7 +3,7 @@
 //! the audit of the claimed state, with no big integer and no GCD but the outputs' own.
 //!
 //! The cells are read as written (a decimal is its digits over a power of ten), the scene is
-//! solved by the fraction-free formulas ([`crate::solve::fraction_free::raw_of`]) in `i128` or
+//! solved by the fraction-free formulas ([`crate::solve::fast::fraction_free::raw_of`]) in `i128` or
 //! 512 bits, every exact output is reduced once on words, and the audit's balances, distances
 //! and bound are decided as exact integer comparisons over common denominators (the `audit`
 //! submodule), in 256 bits, else 512, 1024 or 2560 (an engine's claim of 5e-107 or 5e-324
@@ -39,8 +39,8 @@ use super::rel_error::RelError;
 use super::word_row::each_cell;
 use crate::field::int::{FixedInt, U256, Wide, reduced_words};
 use crate::number::ScaledRatio;
-use crate::solve::fraction_free::{Parts, Raw, raw_of};
-use crate::solve::words::Part;
+use crate::solve::fast::fixed_width::Part;
+use crate::solve::fast::fraction_free::{Parts, Raw, raw_of};
 
 mod audit;
 mod oblique;

@@ -16,8 +16,8 @@ use super::word_row::read_cells;
 use crate::field::int::U256;
 use crate::number::WordRatio;
 use crate::scene::{Params, Support};
-use crate::solve::closed_form::closed_form;
-use crate::solve::words::{Inputs, Part};
+use crate::solve::fast::closed_form::closed_form;
+use crate::solve::fast::fixed_width::{Inputs, Part};
 
 /// The nearest f64 to `n/d` (ties to even), for `0 < d` and `n, d < 2^74` (the callers bound
 /// their parts below 2^24).

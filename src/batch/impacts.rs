@@ -12,11 +12,11 @@
 
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, QSqrt};
+use crate::impact::{Law, Model, ModelOutcome, orders, solve_exact, solve_several};
 use crate::mechanics::planar::{
     PlanarBody, Vec2, angular_momentum, kinetic_energy, linear_momentum,
 };
 use crate::model::{Mobility, System, from_value};
-use crate::solve::impact::{Law, Model, ModelOutcome, orders, solve_exact, solve_several};
 use num_traits::{Signed, Zero};
 use serde_json::Value;
 use std::cmp::Ordering;

@@ -69,7 +69,7 @@ pub(super) const OBLIQUE_CLAIMS: usize = 6;
 pub(super) const STATE: usize = 3;
 
 /// The scene columns the word rows read, in this order (the inputs of
-/// [`crate::solve::words`], then the pivot; the `rod` column has a role of its own).
+/// [`crate::solve::fast::fixed_width`], then the pivot; the `rod` column has a role of its own).
 pub(super) const WORD_SCENE: [&str; 7] = ["m", "M", "l", "a", "v0", "e", "pivot"];
 /// The claims the word rows check: v, V, omega, J and the energies ([`CLAIMS`] up to
 /// [`OBLIQUE_CLAIMS`]).

@@ -14,9 +14,10 @@ use crate::error::Error;
 use crate::field::big::{RBig, to_q, to_rbig};
 use crate::field::int::{Frac, FracInt, I256, Wide, within};
 use crate::field::{Field, Q};
-use crate::mechanics::{Motion, kinetic_energy};
+use crate::impact::Mode;
 use crate::scene::Scene;
-use crate::solve::oblique::{ContactMode, State};
+use crate::scene::{Motion, kinetic_energy};
+use crate::solve::fast::oblique::State;
 use crate::solve::{self, Impact, Route, Why};
 use num_traits::{Signed, Zero};
 
@@ -328,7 +329,7 @@ fn oblique_values(scene: &Scene, out: &mut String) -> ([Option<Q>; CLAIMS.len()]
 /// point projectile), Jt, each by `write`, and the contact (empty without friction).
 pub(super) fn write_oblique_cells<T>(
     out: &mut String,
-    (after, jt, contact): (&State<T>, &T, Option<ContactMode>),
+    (after, jt, contact): (&State<T>, &T, Option<Mode>),
     write: impl Fn(&mut String, &T),
 ) {
     let values = [
@@ -347,7 +348,7 @@ pub(super) fn write_oblique_cells<T>(
         }
     }
     out.push(',');
-    out.push_str(contact.map_or("", |c| c.as_str()));
+    out.push_str(contact.map_or("", |c| c.kind()));
 }
 
 /// The exact value of each claim an oblique row checks, in [`CLAIMS`] order: v, V, omega, vt,
@@ -444,7 +445,7 @@ mod tests {
         use crate::field::q;
         for m in [q(2, 3), wide(100), wide(200), wide(600)] {
             let s = Scene::builder(m, q(5, 2)).a(q(1, 3)).build().unwrap();
-            let after = crate::solve::fraction_free::solve(&s).after;
+            let after = crate::solve::fast::fraction_free::solve(&s).after;
             let want = kinetic_energy(&s.params::<Q>(), &after);
             assert_eq!(exact_energy(&s, &after), want);
         }

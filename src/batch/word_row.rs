@@ -1,6 +1,6 @@
 //! The exact row on machine words: the paper's scene (a free uniform rod) read straight from
 //! the line's bytes into 64-bit numerators and denominators and solved by the word route
-//! ([`crate::solve::words`]); its three outputs printed from words. No scene strings, no
+//! ([`crate::solve::fast::fixed_width`]); its three outputs printed from words. No scene strings, no
 //! `BigRational` scene, no big integer.
 //!
 //! It is a shortcut, never a second opinion: a row it does not take (a decimal, a unit, a part
@@ -12,7 +12,7 @@
 use super::plan::{Diagnosis, OutputCheck, Role, STATE, SolvedRow, WordPlan};
 use super::rel_error::RelError;
 use crate::field::int::U256;
-use crate::solve::words::{Inputs, Part, solve_reduced};
+use crate::solve::fast::fixed_width::{Inputs, Part, solve_reduced};
 
 /// Walks the cells of `line` with their roles, giving each to `take`; `None` when the line
 /// has too few or too many cells or `take` refuses one.

@@ -6,7 +6,7 @@ use super::accuracy::{self, Miss, Tolerance};
 use super::slot::{PIVOT_X, POSITIONS, VY};
 use super::{CompliantContact, State};
 use crate::error::Error;
-use crate::solve::linear::solve_linear;
+use crate::field::linear::solve_linear;
 use std::time::Instant;
 
 /// A time integrator for [`simulate`].

@@ -36,7 +36,7 @@ use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q};
 use crate::scene::{Scene, Support};
 use crate::solve::Outcome;
-use crate::solve::linear::solve;
+use crate::solve::fast::linear::solve;
 
 /// Which contact geometry the simulation uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -26,6 +26,7 @@ mod float;
 pub mod int;
 mod interval;
 pub mod laws;
+pub mod linear;
 pub mod notation;
 pub mod poly;
 pub mod quadratic;

@@ -906,7 +906,7 @@ mod tests {
             vec![-k(1), k(1), a.clone()],
         ];
         let rhs = vec![m.clone() * &v0, m.clone() * &a * &v0, e.clone() * &v0];
-        let x = crate::solve::linear::solve_linear(matrix, rhs).unwrap();
+        let x = crate::field::linear::solve_linear(matrix, rhs).unwrap();
         let (v, big_v, w) = (&x[0], &x[1], &x[2]);
 
         let j = (k(1) + &e) * &v0

@@ -3,7 +3,7 @@
 //! material point, and a solid disc's inertia. Stated once, for any number of bodies.
 //!
 //! The paper's laws ([`super::linear_momentum`], [`super::angular_momentum`],
-//! [`super::kinetic_energy`]), the oblique impact's ([`crate::solve::oblique`]) and the general
+//! [`super::kinetic_energy`]), the oblique impact's ([`crate::solve::fast::oblique`]) and the general
 //! planar impacts are all these functions applied to their bodies.
 //!
 //! Conventions: standard axes (x, y), angular velocity and angular momentum counterclockwise

@@ -10,15 +10,12 @@
 //! | `shape.rs` | [`Shape`]: point, disc, rod (with an optional thickness), box, convex polygon |
 //! | `system.rs` | [`Body`], [`Contact`], [`System`] and their validation |
 //! | `input.rs` | a system as written: a TOML scene file or one JSON line of a batch |
-//! | `paper.rs` | the paper's scene (any [`crate::scene::Scene`]) written as bodies |
 
 mod input;
-mod paper;
 mod shape;
 mod system;
 
 pub use input::{MAX_SCENE_BYTES, MAX_VERTICES, from_value, parse_toml, toml_value};
-pub use paper::{PROJECTILE, ROD, paper_system};
 pub use shape::Shape;
 pub use system::{
     Body, Contact, MAX_BODIES, MAX_CONTACTS, MAX_FRICTIONAL_CONTACTS, Mobility, System,

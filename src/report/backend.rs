@@ -6,9 +6,9 @@
 use crate::error::{Error, ErrorKind};
 use crate::field::decimal;
 use crate::field::{Interval, Q};
-use crate::mechanics::Motion;
+use crate::scene::Motion;
 use crate::scene::Scene;
-use crate::solve::float::Real;
+use crate::solve::fast::float::Real;
 use crate::solve::{self, Solvable};
 use crate::stability::{Accuracy, Backend, Class, Reference};
 use num_traits::Zero;
@@ -20,7 +20,7 @@ use serde_json::{Map, Value, json};
 /// # Examples
 /// ```
 /// use rodimpact::{report::{ERROR_BOUND, backend_values}, scene::Scene, field::q};
-/// use rodimpact::{solve::float::FloatFormula, stability::Backend};
+/// use rodimpact::{solve::fast::float::FloatFormula, stability::Backend};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let j = backend_values(&s, Backend::F64(FloatFormula::Sq))?;
 /// // omega = 12/11: error 7.40e-17 <= 4 cond u, cond = 2.91.
@@ -47,7 +47,7 @@ pub const ERROR_BOUND: u32 = 4;
 /// # Examples
 /// ```
 /// use rodimpact::{report::backend_values, scene::Scene, field::q, stability::Backend};
-/// use rodimpact::solve::float::FloatFormula;
+/// use rodimpact::solve::fast::float::FloatFormula;
 /// let s = Scene::builder(q(4, 7), q(1, 1)).a(q(1, 2)).build()?; // v = 0 exactly
 /// let j = backend_values(&s, Backend::F64(FloatFormula::Sq))?;
 /// assert_eq!(j["v"]["exact"], "0");

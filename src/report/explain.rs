@@ -6,9 +6,9 @@
 use super::{markup, mathml};
 use crate::field::notation::{Notation, surd};
 use crate::field::{Q, QSqrt};
-use crate::mechanics::Groups;
+use crate::scene::Groups;
 use crate::scene::{Scene, Support};
-use crate::solve::linear::solve;
+use crate::solve::fast::linear::solve;
 use crate::solve::optimum::{Arm, Placement, optimum, struck_end};
 use num_traits::{One, Signed, Zero};
 
@@ -243,7 +243,7 @@ fn normal_steps(scene: &Scene) -> Vec<Step> {
 /// would stop it, Coulomb's bound, stick or slide, and the velocities along the rod after.
 fn along_the_rod(scene: &Scene, o: &crate::scene::Oblique) -> Step {
     let (p, op) = (scene.params::<Q>(), o.params::<Q>());
-    let out = crate::solve::oblique::solve(&p, &op, None)
+    let out = crate::solve::fast::oblique::solve(&p, &op, None)
         .expect("Q decides stick or slide, and a valid scene is nonsingular");
     let slip = op.slip(&p.support);
     let free = matches!(p.support, Support::Free);
@@ -292,7 +292,7 @@ fn along_the_rod(scene: &Scene, o: &crate::scene::Oblique) -> Step {
             out.stick_impulse.abs(),
             out.impulse
         ));
-        prose.push(if matches!(out.contact, Some(crate::solve::oblique::ContactMode::Stick)) {
+        prose.push(if matches!(out.contact, Some(crate::impact::Mode::Stick)) {
             format!(
                 "`mu = {} >= mu* = {mu_star}`: the slip stops, and `Jt = Jt_stick = {jt}`.",
                 op.mu
@@ -330,12 +330,7 @@ fn numbers(scene: &Scene) -> (&Q, &Q, &Q, &Q, &Q) {
     )
 }
 
-fn free_rod_steps(
-    scene: &Scene,
-    inertia: &Q,
-    x: &crate::mechanics::Motion<Q>,
-    steps: &mut Vec<Step>,
-) {
+fn free_rod_steps(scene: &Scene, inertia: &Q, x: &crate::scene::Motion<Q>, steps: &mut Vec<Step>) {
     let (m, big_m, a, v0, e) = numbers(scene);
     steps.push(Step {
         title: "The three balance equations",
@@ -379,7 +374,7 @@ fn pivot_steps(
     scene: &Scene,
     p: &Q,
     inertia: &Q,
-    x: &crate::mechanics::Motion<Q>,
+    x: &crate::scene::Motion<Q>,
     steps: &mut Vec<Step>,
 ) {
     let (m, big_m, a, v0, e) = numbers(scene);

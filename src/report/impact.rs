@@ -5,9 +5,9 @@
 use super::{surd_json, value_json};
 use crate::field::decimal::{self, COMPACT_CHARS};
 use crate::field::{Q, QSqrt};
+use crate::impact::{Balance, ContactMatrix, LawAnswer, Model, ModelOutcome};
 use crate::mechanics::planar::Vec2;
 use crate::model::{Mobility, Shape, System};
-use crate::solve::impact::{ContactMatrix, LawAnswer, Model, ModelOutcome};
 use num_traits::Zero;
 use serde_json::{Map, Value, json};
 
@@ -22,9 +22,9 @@ use serde_json::{Map, Value, json};
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{field::{q, QSqrt}, model::paper_system, report::impact_json, scene::Scene};
-/// use rodimpact::solve::impact::{solve_contact, Law};
-/// let system = paper_system(&Scene::builder(q(1, 1), q(1, 1)).build()?);
+/// use rodimpact::{field::{q, QSqrt}, report::impact_json, scene::Scene};
+/// use rodimpact::impact::{solve_contact, Law};
+/// let system = Scene::builder(q(1, 1), q(1, 1)).build()?.system();
 /// let answer = solve_contact::<QSqrt>(&system, Law::Poisson).expect("answered");
 /// let json = impact_json(&system, &[answer], 30);
 /// assert_eq!(json["laws"][0]["bodies"]["rod"]["omega"]["exact"], "-6/5");
@@ -36,7 +36,7 @@ pub fn impact_json(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize)
     let surd = |x: &QSqrt| surd_json(x, digits);
     let vector = |v: &Vec2<QSqrt>| json!([surd(&v.x), surd(&v.y)]);
     let c = &system.contacts[0];
-    let (w, _) = crate::solve::impact::contact_matrix::<Q>(system);
+    let (w, _) = crate::impact::contact_matrix::<Q>(system);
     let laws: Vec<Value> = answers
         .iter()
         .map(|a| {
@@ -76,14 +76,14 @@ pub fn impact_json(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize)
                     "after": surd(&a.energy.after),
                     "change": surd(&a.energy.change),
                 },
-                "energy_gain": a.energy_gain,
+                "energy_gain": a.energy.gain(),
                 "laws_hold": {
-                    "momentum": a.laws_hold.momentum,
-                    "angular_momentum": a.laws_hold.angular_momentum,
-                    "total_angular_momentum": a.laws_hold.total_angular_momentum,
-                    "restitution": a.laws_hold.restitution,
-                    "coulomb": a.laws_hold.coulomb,
-                    "energy_equals_work": a.laws_hold.energy,
+                    "momentum": a.balances.holds(Balance::Momentum),
+                    "angular_momentum": a.balances.holds(Balance::AngularMomentum),
+                    "total_angular_momentum": a.balances.checked(Balance::TotalAngularMomentum),
+                    "restitution": a.balances.holds(Balance::Restitution),
+                    "coulomb": a.balances.holds(Balance::Coulomb),
+                    "energy_equals_work": a.balances.holds(Balance::EnergyEqualsWork),
                 },
             })
         })
@@ -215,9 +215,9 @@ fn compact_vector(v: &Vec2<Q>) -> String {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{field::{q, QSqrt}, model::paper_system, report::impact_text, scene::Scene};
-/// use rodimpact::solve::impact::{solve_contact, Law};
-/// let system = paper_system(&Scene::builder(q(1, 1), q(1, 1)).build()?);
+/// use rodimpact::{field::{q, QSqrt}, report::impact_text, scene::Scene};
+/// use rodimpact::impact::{solve_contact, Law};
+/// let system = Scene::builder(q(1, 1), q(1, 1)).build()?.system();
 /// let answers: Vec<_> = Law::ALL.iter().map(|&l| solve_contact::<QSqrt>(&system, l).expect("answered")).collect();
 /// let text = impact_text(&system, &answers, 6);
 /// assert!(text.contains("W is diagonal"));
@@ -256,7 +256,7 @@ pub fn impact_text(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize)
         out.push_str(&format!("  {}{shape}: {what}\n", b.name));
     }
     let c = &system.contacts[0];
-    let (w, u0) = crate::solve::impact::contact_matrix::<Q>(system);
+    let (w, u0) = crate::impact::contact_matrix::<Q>(system);
     out.push_str(&format!(
         "Contact: {} on {} at {} m, normal {} (into {}), e = {}, mu = {}\n",
         system.bodies[c.a].name,
@@ -328,7 +328,7 @@ pub fn impact_text(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize)
             show(&a.energy.before, digits),
             show(&a.energy.after, digits),
             show(&a.energy.change, digits),
-            if a.energy_gain {
+            if a.energy.gain() {
                 ": THIS LAW CREATES ENERGY"
             } else {
                 ""
@@ -336,16 +336,16 @@ pub fn impact_text(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize)
         ));
         out.push_str(&format!(
             "  laws: {}\n",
-            if a.laws_hold.all() {
+            if a.balances.all_zero() {
                 "momentum, angular momentum, the restitution law, Coulomb's cone and energy = work all hold exactly".to_string()
             } else {
-                format!("NOT ALL HOLD: {:?}", a.laws_hold)
+                format!("NOT ALL HOLD: {} fail", a.balances.failing().join(", "))
             }
         ));
     }
     let gains: Vec<String> = answers
         .iter()
-        .filter(|a| a.energy_gain)
+        .filter(|a| a.energy.gain())
         .map(|a| {
             let hundred = QSqrt::rational(Q::from_integer(100.into()));
             let share = (a.energy.change.clone() * &hundred / &a.energy.before).decimal(3);
@@ -368,8 +368,8 @@ pub fn impact_text(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize)
     out
 }
 
-pub(crate) fn law_name(law: crate::solve::impact::Law) -> &'static str {
-    use crate::solve::impact::Law;
+pub(crate) fn law_name(law: crate::impact::Law) -> &'static str {
+    use crate::impact::Law;
     match law {
         Law::Newton => "Newton",
         Law::Poisson => "Poisson",
@@ -377,8 +377,8 @@ pub(crate) fn law_name(law: crate::solve::impact::Law) -> &'static str {
     }
 }
 
-pub(crate) fn law_heading(law: crate::solve::impact::Law) -> &'static str {
-    use crate::solve::impact::Law;
+pub(crate) fn law_heading(law: crate::impact::Law) -> &'static str {
+    use crate::impact::Law;
     match law {
         Law::Newton => "Newton (kinematic: u_n after = -e u_n before)",
         Law::Poisson => "Poisson (kinetic: restitution impulse = e x compression impulse)",
@@ -396,7 +396,7 @@ pub(crate) fn law_heading(law: crate::solve::impact::Law) -> &'static str {
 /// # Examples
 /// ```
 /// use rodimpact::{field::Q, model::parse_toml, report::models_json};
-/// use rodimpact::solve::impact::{Model, solve_several};
+/// use rodimpact::impact::{Model, solve_several};
 /// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/cradle-3.toml")).unwrap();
 /// let system = parse_toml("cradle-3", &text)?;
 /// let model = Model::SimultaneousNewton;
@@ -438,8 +438,8 @@ pub fn models_json(system: &System, outcomes: &[(Model, ModelOutcome<Q>)], digit
                         "ledger": {
                             "momentum": {"before": vector(&l.momentum_before), "after": vector(&l.momentum_after)},
                             "angular_momentum_origin": {"before": value(&l.angular_before), "after": value(&l.angular_after)},
-                            "energy": {"before": value(&l.energy_before), "after": value(&l.energy_after), "change": value(&l.energy_change)},
-                            "energy_gain": l.energy_gain,
+                            "energy": {"before": value(&l.energy.before), "after": value(&l.energy.after), "change": value(&l.energy.change)},
+                            "energy_gain": l.energy.gain(),
                             "normal_velocity_after": l.normal_after.iter().map(&value).collect::<Vec<_>>(),
                             "sinking_contacts": l.sinking().iter().map(|i| i + 1).collect::<Vec<_>>(),
                         },
@@ -453,7 +453,7 @@ pub fn models_json(system: &System, outcomes: &[(Model, ModelOutcome<Q>)], digit
             json!({"model": model.to_string(), "status": status, "answers": answers})
         })
         .collect();
-    let (w, _) = crate::solve::impact::contact_matrix::<Q>(system);
+    let (w, _) = crate::impact::contact_matrix::<Q>(system);
     json!({"scene": scene_json(system, &w, digits), "models": models})
 }
 
@@ -464,7 +464,7 @@ pub fn models_json(system: &System, outcomes: &[(Model, ModelOutcome<Q>)], digit
 /// # Examples
 /// ```
 /// use rodimpact::{field::Q, model::parse_toml, report::models_text};
-/// use rodimpact::solve::impact::{Model, solve_several};
+/// use rodimpact::impact::{Model, solve_several};
 /// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/cradle-3.toml")).unwrap();
 /// let system = parse_toml("cradle-3", &text)?;
 /// let model = Model::Pgs(1);
@@ -561,10 +561,10 @@ pub fn models_text(
             ));
             out.push_str(&format!(
                 "  energy {} -> {} J, change {} J{}\n",
-                show(&l.energy_before),
-                show(&l.energy_after),
-                show(&l.energy_change),
-                if l.energy_gain {
+                show(&l.energy.before),
+                show(&l.energy.after),
+                show(&l.energy.change),
+                if l.energy.gain() {
                     ": THIS MODEL CREATES ENERGY"
                 } else {
                     ""

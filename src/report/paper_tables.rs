@@ -10,8 +10,8 @@ use crate::field::notation::{self, Notation};
 use crate::field::{Q, QSqrt, q};
 use crate::scene::{Disc, Params, RodInertia, Scene};
 use crate::solve::Outcome;
-use crate::solve::linear::solve;
-use crate::solve::oblique;
+use crate::solve::fast::linear::solve;
+use crate::solve::fast::oblique;
 use crate::solve::optimum::{Placement, optimum};
 use num_traits::{One, Signed, Zero};
 
@@ -237,7 +237,7 @@ pub fn t3(opts: &TableOptions) -> Result<Table, Error> {
             Cell::Surd(out.after.rod_v),
             Cell::Surd(omega.clone()),
             Cell::Surd(omega / &reference),
-            Cell::Surd(out.energy.lost / &out.energy.before),
+            Cell::Surd(out.energy.lost() / &out.energy.before),
         ]);
     }
     Ok(Table {
@@ -401,7 +401,7 @@ pub fn t6(opts: &TableOptions) -> Result<Table, Error> {
         let out = solved(&scene(mu)?);
         let contact = match out.contact {
             None => "frictionless",
-            Some(c) => c.as_str(),
+            Some(c) => c.kind(),
         };
         let cell = |x: &RBig| Cell::Rational(to_q(x));
         let mut row = vec![

@@ -392,7 +392,7 @@ fn exact_block(contact: &CompliantContact) -> String {
     rows.push((
         "dE/E",
         "energy change, -lost/before",
-        -(exact.energy.lost.clone() / &exact.energy.before),
+        -(exact.energy.lost() / &exact.energy.before),
     ));
     let width = |i: usize| {
         rows.iter()
@@ -532,7 +532,7 @@ fn model_json(contact: &CompliantContact) -> Value {
     let mut exact_doc = json!({
         "v": exact.after.v.to_string(), "V": exact.after.rod_v.to_string(),
         "omega": exact.after.omega.to_string(),
-        "energy_change": (-(exact.energy.lost.clone() / &exact.energy.before)).to_string(),
+        "energy_change": (-(exact.energy.lost() / &exact.energy.before)).to_string(),
     });
     let [v, rod_v, omega] = contact.reference();
     let mut reference = json!({"v": v, "V": rod_v, "omega": omega});

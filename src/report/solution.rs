@@ -5,10 +5,11 @@ use super::mathml::escape;
 use super::{surd_json, value_json};
 use crate::field::Q;
 use crate::field::decimal::{self, Rounding};
+use crate::impact::EnergyLedger;
+use crate::impact::Mode;
 use crate::scene::{Oblique, RodInertia, Scene, Support};
 use crate::solve::Answer;
-use crate::solve::Energy;
-use crate::solve::oblique::{ContactMode, ObliqueOutcome};
+use crate::solve::fast::oblique::ObliqueOutcome;
 use crate::solve::optimum::{Argmax, Arm, Placement};
 use num_traits::{One, Zero};
 use serde_json::{Map, Value, json};
@@ -107,7 +108,7 @@ fn paper_json(answer: &Answer, out: &mut Map<String, Value>, value: &impl Fn(&Q)
         json!({
             "before": value(&energy.before),
             "after": value(&energy.after),
-            "lost": value(&energy.lost),
+            "lost": value(&energy.lost()),
         }),
     );
     if let Some(p) = &answer.impact.outcome.pivot_impulse {
@@ -303,7 +304,7 @@ fn oblique_json(o: &ObliqueOutcome<Q>, out: &mut Map<String, Value>, value: &imp
     out.insert("impulse".into(), value(&o.impulse));
     out.insert("tangential_impulse".into(), value(&o.tangential_impulse));
     if let Some(contact) = o.contact {
-        out.insert("contact".into(), Value::String(contact.as_str().into()));
+        out.insert("contact".into(), Value::String(contact.kind().into()));
         out.insert("mu_star".into(), value(&o.mu_star()));
     }
     let energy = &o.energy;
@@ -312,7 +313,7 @@ fn oblique_json(o: &ObliqueOutcome<Q>, out: &mut Map<String, Value>, value: &imp
         json!({
             "before": value(&energy.before),
             "after": value(&energy.after),
-            "lost": value(&energy.lost),
+            "lost": value(&energy.lost()),
             "lost_restitution": value(&o.lost_restitution),
             "lost_friction": value(&o.lost_friction),
         }),
@@ -383,10 +384,11 @@ fn oblique_rows(
     );
     if let Some(contact) = o.contact {
         let meaning = match contact {
-            ContactMode::Stick => "contact: the slip stops (mu >= mu*)",
-            ContactMode::Slide { .. } => "contact: slides throughout, |Jt| = mu J",
+            Mode::Stick => "contact: the slip stops (mu >= mu*)",
+            Mode::Slide { .. } => "contact: slides throughout, |Jt| = mu J",
+            Mode::Frictionless => "contact: frictionless",
         };
-        t.row("", meaning, plain(contact.as_str().into()));
+        t.row("", meaning, plain(contact.kind().into()));
         t.row(
             "mu*",
             "friction needed to stick, |Jt_stick|/J",
@@ -420,11 +422,11 @@ fn oblique_rows(
 }
 
 /// The kinetic energy section.
-fn energy_rows(t: &mut Table, e: &Energy<Q>, value: &impl Fn(&Q, &str) -> [String; 2]) {
+fn energy_rows(t: &mut Table, e: &EnergyLedger<Q>, value: &impl Fn(&Q, &str) -> [String; 2]) {
     t.section("Kinetic energy");
     t.row("K0", "before", value(&e.before, "J"));
     t.row("K1", "after", value(&e.after, "J"));
-    t.row("dK", "lost", value(&e.lost, "J"));
+    t.row("dK", "lost", value(&e.lost(), "J"));
 }
 
 /// The conservation residuals section.

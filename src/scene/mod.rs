@@ -1,4 +1,7 @@
-//! Scenes: the projectile, the rod, the impact point, the collision law and the support.
+//! The paper's scenes: the projectile, the rod, the impact point, the collision law and the
+//! support; a view of the general model ([`Scene::system`] writes a scene as bodies and a
+//! contact, which [`crate::impact`] answers), with the paper's own vocabulary: the motion
+//! (v, V, omega), the groups r, s, q, D, and the scene's balances.
 //!
 //! A [`Scene`] is exact (every number in [`Q`]) and valid by construction: it is built only by
 //! [`Scene::builder`] or [`SceneInput::build`], which check the physical constraints and name the
@@ -12,18 +15,24 @@
 //! | `params.rs` | [`Params`], [`ObliqueParams`], [`Disc`], [`RodMotion`]: the scene's numbers in any field |
 //! | `keys.rs` | [`SCENE_KEYS`]: the one table of scene inputs (flags, CSV columns, TOML keys, help) |
 //! | `input.rs` | [`SceneInput`]: a scene as typed, parsed field by field with units |
+//! | `motion.rs` | [`Motion`] (v, V, omega), [`Groups`], the scene's momentum, angular momentum and energy |
+//! | `system.rs` | [`Scene::system`]: the scene as the general model's bodies and contact |
 
 mod input;
 mod keys;
+mod motion;
 mod oblique;
 mod params;
 mod rod;
+mod system;
 
 pub use input::{SceneInput, dimension_of, parse_field};
 pub use keys::{SCENE_KEYS, SceneKey, flag_help, key_index, scene_key};
+pub use motion::{Groups, Motion, angular_momentum, kinetic_energy, linear_momentum};
 pub use oblique::{Oblique, no_approach, spin_without_disc};
 pub use params::{Disc, ObliqueParams, Params, RodMotion};
 pub use rod::{RodInertia, gyration_moment};
+pub use system::{PROJECTILE, ROD};
 
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q};

@@ -146,7 +146,7 @@ impl Params<RatFn> {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::{Field, RatFn}, scene::{Params, RodInertia}, solve::linear::solve};
+    /// use rodimpact::{field::{Field, RatFn}, scene::{Params, RodInertia}, solve::fast::linear::solve};
     /// let (big_m, l) = (RatFn::symbol("M"), RatFn::symbol("l"));
     /// let p = Params::symbolic(RodInertia::Uniform.moment(&big_m, &l), RatFn::from_i64(1));
     /// let omega = solve(&p).unwrap().after.omega;

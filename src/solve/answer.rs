@@ -11,13 +11,15 @@
 //! (what `batch` needs per row); [`super::with`] runs one named route on the paper's scene only
 //! and refuses an oblique one ([`super::Why::Oblique`]).
 
+use super::fast::oblique;
 use super::optimum::{Optimum, PaperForm, optimum};
-use super::{Outcome, Route, Solved, oblique};
+use super::{Outcome, Route, Solved};
 use crate::field::int::{FixedInt, Frac, FracInt, I256, U256, Wide, within};
 use crate::field::{Field, Q};
-use crate::mechanics::Motion;
+use crate::impact::Mode;
+use crate::scene::Motion;
 use crate::scene::Scene;
-use oblique::{ContactMode, ObliqueOutcome};
+use oblique::ObliqueOutcome;
 
 /// The impact of a scene solved exactly: the normal problem's outcome and, for an oblique or
 /// frictional scene, its completion along the rod. No optimum (see [`Answer`]).
@@ -112,12 +114,12 @@ impl Impact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::q, scene::Scene, solve::{answer::Impact, oblique::ContactMode}};
+    /// use rodimpact::{field::q, scene::Scene, impact::Mode, solve::answer::Impact};
     /// let s = Scene::builder(q(1, 1), q(1, 1)).v0t(q(1, 1)).mu(q(1, 2)).build()?;
-    /// assert_eq!(Impact::of(&s).contact(), Some(ContactMode::Slide { forward: true }));
+    /// assert_eq!(Impact::of(&s).contact(), Some(Mode::Slide { forward: true }));
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
-    pub fn contact(&self) -> Option<ContactMode> {
+    pub fn contact(&self) -> Option<Mode> {
         self.oblique.as_ref().and_then(|o| o.contact)
     }
 }
@@ -294,7 +296,7 @@ pub(crate) struct AfterOnWords {
     /// The tangential impulse Jt, as the velocities.
     pub(crate) tangential_impulse: (bool, U256, U256),
     /// Stick or slide, when friction acts.
-    pub(crate) contact: Option<ContactMode>,
+    pub(crate) contact: Option<Mode>,
     /// [`Impact::laws_hold`].
     pub(crate) laws_hold: bool,
 }

@@ -1,16 +1,20 @@
-//! Every route to the answer, by name, behind one front door.
+//! The paper's scenes answered, by fast routes, behind one front door.
 //!
 //! [`answer::Answer::of`] answers any scene the library accepts completely (oblique, moving
-//! rod, disc, pivot: both impulses, the contact mode, mu*, the optimum). The routes below
-//! compute the paper's (v, V, omega), and [`with`] runs one of them by name:
+//! rod, disc, pivot: both impulses, the contact mode, mu*, the optimum). The scene is a special
+//! case of the general model ([`crate::scene::Scene::system`]), and every route here is a fast
+//! case of the general solver ([`crate::impact`]): each route's module says which call of the
+//! core it must equal, and `tests/lib/fast_routes.rs` holds every route equal to it on random
+//! scenes. The routes are in [`fast`]; [`with`] runs one of them by name:
 //!
 //! | route | module | number types | scenes | used by |
 //! |---|---|---|---|---|
-//! | [`Route::Linear`] | [`linear`] | any [`Field`] | free and pivoted | claims, `check`, tables, contact, symbolic proofs |
-//! | [`Route::ClosedForm`] | [`closed_form`] | any [`Field`] | free and pivoted | `stability`'s exact reference, intervals, `batch --backend f64` |
-//! | [`Route::FractionFree`] | [`fraction_free`] | exact rationals ([`Q`]) only | free and pivoted | `solve`, `batch` |
-//! | [`Route::Float`] | [`float`] | `f64`, `f32` only | free rod only | `solve --backend`, `stability` |
-//! | the word rows | [`words`] | machine words, then [`Q`] | free and pivoted, batch cells | `batch` (exact and f64 rows of the paper's columns) |
+//! | [`Route::Linear`] | [`fast::linear`] | any [`Field`] | free and pivoted | claims, `check`, tables, contact, symbolic proofs |
+//! | [`Route::ClosedForm`] | [`fast::closed_form`] | any [`Field`] | free and pivoted | `stability`'s exact reference, intervals, `batch --backend f64` |
+//! | [`Route::FractionFree`] | [`fast::fraction_free`] | exact rationals ([`Q`]) only | free and pivoted | `solve`, `batch` |
+//! | [`Route::Float`] | [`fast::float`] | `f64`, `f32` only | free rod only | `solve --backend`, `stability` |
+//! | the fixed-width rows | [`fast::fixed_width`] | machine words, then [`Q`] | free and pivoted, batch cells | `batch` (exact and f64 rows of the paper's columns) |
+//! | the oblique completion | [`fast::oblique`] | any [`Field`] | oblique, frictional, disc, moving rod | [`answer::Answer`] |
 //!
 //! [`with`] runs a paper [`Scene`] through a named route and returns a [`Solved`], or an
 //! [`Unsupported`] saying why the route cannot take it in that number type (an oblique scene
@@ -18,46 +22,42 @@
 //! rationals bit for bit (property tests in `tests/lib/solve_exact.rs` and
 //! `tests/lib/fraction_free.rs`); the float routes are measured against them by
 //! [`crate::stability`]. Symbolic scenes ([`Params`] over rational functions) go straight to
-//! [`linear::solve`]. [`Outcome`] completes velocities into energies and residuals.
+//! [`fast::linear::solve`]. [`Outcome`] completes velocities into energies and residuals;
+//! [`optimum`] finds a* and the largest omega.
 
 pub mod answer;
-pub mod closed_form;
-pub mod float;
-pub mod fraction_free;
-pub mod impact;
-pub mod linear;
-pub mod oblique;
+pub mod fast;
 pub mod optimum;
 mod outcome;
-pub mod words;
 
 pub use answer::{Answer, Impact};
-pub use outcome::{Energy, Outcome, Residuals, outcome};
+pub use outcome::{Outcome, outcome};
 
 use crate::field::{Field, Interval, Q};
-use crate::mechanics::Motion;
+use crate::scene::Motion;
 use crate::scene::{Params, Scene};
-use float::FloatFormula;
+use fast::float::FloatFormula;
+use fast::{closed_form, fraction_free, linear};
 use std::fmt;
 
 /// A route to (v, V, omega): which code computes the answer.
 ///
 /// # Examples
 /// ```
-/// use rodimpact::solve::{float::FloatFormula, Route};
+/// use rodimpact::solve::{Route, fast::float::FloatFormula};
 /// assert_eq!(Route::FractionFree.to_string(), "fraction-free");
 /// assert_eq!(Route::Float(FloatFormula::Sq).to_string(), "float/sq");
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Route {
-    /// The impulse equations as a linear system, solved by elimination ([`linear::solve`]):
+    /// The impulse equations as a linear system, solved by elimination ([`fast::linear::solve`]):
     /// the reference route, over any field.
     Linear,
-    /// The paper's closed forms generalised to e and to a pivot ([`closed_form::closed_form`]),
+    /// The paper's closed forms generalised to e and to a pivot ([`fast::closed_form::closed_form`]),
     /// over any field; in floats this is the naive formula.
     ClosedForm,
     /// Integers over one common denominator, the laws checked as integer identities, one
-    /// reduction per output ([`fraction_free::solve`]): exact rationals only.
+    /// reduction per output ([`fast::fraction_free::solve`]): exact rationals only.
     FractionFree,
     /// A float formula evaluated from the exact inputs ([`FloatFormula::eval_scene`]): `f64` or `f32`,
     /// free rod only.
@@ -119,7 +119,7 @@ impl fmt::Display for Why {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{field::q, scene::Scene, solve::{self, float::FloatFormula, Route, Why}};
+/// use rodimpact::{field::q, scene::Scene, solve::{self, fast::float::FloatFormula, Route, Why}};
 /// let pivoted = Scene::builder(q(1, 1), q(3, 1)).pivot(q(0, 1)).build()?;
 /// let err = solve::with::<f64>(&pivoted, Route::Float(FloatFormula::Sq)).unwrap_err();
 /// assert_eq!(err.why, Why::FreeRodOnly);
@@ -253,7 +253,7 @@ impl<F: Field> Solved<F> {
     /// let s = Scene::builder(q(1, 1), q(1, 1)).e(q(1, 2)).build()?;
     /// let p = s.params::<Q>();
     /// let fast = solve::with::<Q>(&s, Route::FractionFree)?.outcome(&p);
-    /// assert_eq!(fast, solve::linear::solve(&p).unwrap());
+    /// assert_eq!(fast, solve::fast::linear::solve(&p).unwrap());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn outcome(self, p: &Params<F>) -> Outcome<F> {

@@ -8,7 +8,7 @@
 
 use crate::field::{Field, Q, QSqrt, RatFn};
 use crate::scene::{Params, Scene, Support};
-use crate::solve::linear::motion_after;
+use crate::solve::fast::linear::motion_after;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 
@@ -468,7 +468,7 @@ impl ArmPeak {
 mod tests {
     use super::*;
     use crate::field::{Field, q};
-    use crate::solve::linear::solve;
+    use crate::solve::fast::linear::solve;
 
     fn scene(m: Q, big_m: Q) -> crate::scene::SceneBuilder {
         Scene::builder(m, big_m)

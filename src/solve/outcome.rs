@@ -3,86 +3,9 @@
 //! with the shared [`mechanics`](crate::mechanics) functions: exactly zero over exact fields).
 
 use crate::field::Field;
-use crate::mechanics::{Motion, angular_momentum, kinetic_energy, linear_momentum};
+use crate::impact::{Balance, Balances, EnergyLedger};
+use crate::scene::{Motion, angular_momentum, kinetic_energy, linear_momentum};
 use crate::scene::{Params, Support};
-
-/// Kinetic energy before and after the impact, and the loss.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Energy<F> {
-    /// Kinetic energy before the impact, `m v0^2 / 2`.
-    pub before: F,
-    /// Kinetic energy after the impact.
-    pub after: F,
-    /// `before - after` (zero for e = 1, positive otherwise).
-    pub lost: F,
-}
-
-impl<F> Energy<F> {
-    /// Each energy mapped by `f`: a change of number type.
-    pub(crate) fn map<G>(self, f: &mut impl FnMut(F) -> G) -> Energy<G> {
-        Energy {
-            before: f(self.before),
-            after: f(self.after),
-            lost: f(self.lost),
-        }
-    }
-}
-
-/// Residuals (after minus before) of the conservation laws that apply to the scene.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Residuals<F> {
-    /// Linear momentum: free rod only (a pivot takes an impulse).
-    pub linear_momentum: Option<F>,
-    /// Angular momentum about the rod's centre (free) or about the pivot (pivoted).
-    pub angular_momentum: F,
-    /// Kinetic energy: elastic impacts (e = 1) only.
-    pub energy: Option<F>,
-}
-
-impl<F> Residuals<F> {
-    /// Each residual mapped by `f`: a change of number type.
-    fn map<G>(self, f: &mut impl FnMut(F) -> G) -> Residuals<G> {
-        Residuals {
-            linear_momentum: self.linear_momentum.map(&mut *f),
-            angular_momentum: f(self.angular_momentum),
-            energy: self.energy.map(&mut *f),
-        }
-    }
-}
-
-impl<F: Field> Residuals<F> {
-    /// Every applicable residual, with its name.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::{scene::Scene, solve::linear::solve, field::{q, Q}};
-    /// let out = solve(&Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>()).unwrap();
-    /// let names: Vec<_> = out.residuals.iter().map(|(n, _)| n).collect();
-    /// assert_eq!(names, ["linear_momentum", "angular_momentum", "energy"]);
-    /// ```
-    pub fn iter(&self) -> impl Iterator<Item = (&'static str, &F)> {
-        let lin = self
-            .linear_momentum
-            .as_ref()
-            .map(|r| ("linear_momentum", r));
-        let ang = Some(("angular_momentum", &self.angular_momentum));
-        let en = self.energy.as_ref().map(|r| ("energy", r));
-        [lin, ang, en].into_iter().flatten()
-    }
-
-    /// `true` when every applicable residual is exactly zero (decided for exact fields,
-    /// estimated for floats).
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::{scene::Scene, solve::linear::solve, field::{q, Q}};
-    /// let out = solve(&Scene::builder(q(2, 7), q(5, 3)).build().unwrap().params::<Q>()).unwrap();
-    /// assert!(out.residuals.all_zero());
-    /// ```
-    pub fn all_zero(&self) -> bool {
-        self.iter().all(|(_, r)| r.is_zero())
-    }
-}
 
 /// Everything the solver knows about one impact.
 #[derive(Debug, Clone, PartialEq)]
@@ -91,10 +14,12 @@ pub struct Outcome<F> {
     pub after: Motion<F>,
     /// Impulse the pivot exerts on the rod (x-component); `None` for a free rod.
     pub pivot_impulse: Option<F>,
-    /// Kinetic energy before, after and lost.
-    pub energy: Energy<F>,
-    /// Residuals of the applicable conservation laws.
-    pub residuals: Residuals<F>,
+    /// Kinetic energy before and after.
+    pub energy: EnergyLedger<F>,
+    /// Residuals of the applicable conservation laws (after minus before): linear momentum
+    /// (free rod only: a pivot takes an impulse), angular momentum about the rod's centre or
+    /// the pivot, and kinetic energy (elastic impacts, e = 1, only).
+    pub residuals: Balances<F>,
 }
 
 impl<F> Outcome<F> {
@@ -115,7 +40,7 @@ impl<F: Field> Outcome<F> {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{scene::Scene, solve::linear::solve, field::{q, Q}};
+    /// use rodimpact::{scene::Scene, solve::fast::linear::solve, field::{q, Q}};
     /// let p = Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>();
     /// assert_eq!(solve(&p).unwrap().impulse(&p), q(2, 5));
     /// ```
@@ -129,7 +54,7 @@ impl<F: Field> Outcome<F> {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{scene::Scene, solve::{closed_form::closed_form, outcome}, field::{q, Q}};
+/// use rodimpact::{scene::Scene, solve::{fast::closed_form::closed_form, outcome}, field::{q, Q}};
 /// let p = Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>();
 /// let out = outcome(&p, closed_form(&p).unwrap());
 /// assert!(out.residuals.all_zero());
@@ -139,13 +64,20 @@ pub fn outcome<F: Field>(p: &Params<F>, after: Motion<F>) -> Outcome<F> {
     let about = p.axis();
     let energy_after = kinetic_energy(p, &after);
     let energy_before = kinetic_energy(p, &before);
-    let residuals = Residuals {
-        linear_momentum: matches!(p.support, Support::Free)
-            .then(|| linear_momentum(p, &after) - &linear_momentum(p, &before)),
-        angular_momentum: angular_momentum(p, &after, &about)
-            - &angular_momentum(p, &before, &about),
-        energy: p.e.is_one().then(|| energy_after.clone() - &energy_before),
-    };
+    let mut residuals = Balances::new();
+    if matches!(p.support, Support::Free) {
+        residuals.push(
+            Balance::LinearMomentum,
+            linear_momentum(p, &after) - &linear_momentum(p, &before),
+        );
+    }
+    residuals.push(
+        Balance::AngularMomentum,
+        angular_momentum(p, &after, &about) - &angular_momentum(p, &before, &about),
+    );
+    if p.e.is_one() {
+        residuals.push(Balance::Energy, energy_after.clone() - &energy_before);
+    }
     completed(p, after, energy_before, energy_after, residuals)
 }
 
@@ -159,11 +91,14 @@ pub(super) fn proven<F: Field>(p: &Params<F>, after: Motion<F>) -> Outcome<F> {
     } else {
         kinetic_energy(p, &after)
     };
-    let residuals = Residuals {
-        linear_momentum: matches!(p.support, Support::Free).then(F::zero),
-        angular_momentum: F::zero(),
-        energy: elastic.then(F::zero),
-    };
+    let mut residuals = Balances::new();
+    if matches!(p.support, Support::Free) {
+        residuals.push(Balance::LinearMomentum, F::zero());
+    }
+    residuals.push(Balance::AngularMomentum, F::zero());
+    if elastic {
+        residuals.push(Balance::Energy, F::zero());
+    }
     completed(p, after, energy_before, energy_after, residuals)
 }
 
@@ -173,7 +108,7 @@ fn completed<F: Field>(
     after: Motion<F>,
     energy_before: F,
     energy_after: F,
-    residuals: Residuals<F>,
+    residuals: Balances<F>,
 ) -> Outcome<F> {
     let pivot_impulse = match &p.support {
         Support::Free => None,
@@ -186,11 +121,7 @@ fn completed<F: Field>(
     Outcome {
         after,
         pivot_impulse,
-        energy: Energy {
-            lost: energy_before.clone() - &energy_after,
-            before: energy_before,
-            after: energy_after,
-        },
+        energy: EnergyLedger::new(energy_before, energy_after),
         residuals,
     }
 }

@@ -5,10 +5,10 @@
 use super::{Accuracy, condition};
 use crate::field::big::{RBig, to_q};
 use crate::field::{Field, Interval, Q};
-use crate::mechanics::Motion;
+use crate::scene::Motion;
 use crate::scene::{Params, Scene, Support};
-use crate::solve::closed_form::closed_form;
-use crate::solve::float::{FloatFormula, Real};
+use crate::solve::fast::closed_form::closed_form;
+use crate::solve::fast::float::{FloatFormula, Real};
 use crate::solve::{self, Route};
 use num_traits::{Signed, Zero};
 use std::sync::OnceLock;
@@ -128,7 +128,7 @@ impl Backend {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{solve::{float::FloatFormula, Route}, stability::Backend};
+    /// use rodimpact::{solve::{fast::float::FloatFormula, Route}, stability::Backend};
     /// assert_eq!(Backend::F32(FloatFormula::Scomp).route(), Route::Float(FloatFormula::Scomp));
     /// assert_eq!(Backend::Interval.route(), Route::ClosedForm);
     /// ```
@@ -143,7 +143,7 @@ impl Backend {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{solve::float::FloatFormula, stability::Backend};
+    /// use rodimpact::{solve::fast::float::FloatFormula, stability::Backend};
     /// assert_eq!(Backend::F64(FloatFormula::Sq).name(), "f64/sq");
     /// ```
     pub fn name(self) -> String {
@@ -174,7 +174,7 @@ impl Backend {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{scene::Scene, field::q, stability::Backend, solve::float::FloatFormula};
+    /// use rodimpact::{scene::Scene, field::q, stability::Backend, solve::fast::float::FloatFormula};
     /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).e(q(1, 10)).build()?;
     /// let r = rodimpact::stability::Reference::of(&s).unwrap();
     /// let with_e = Backend::F64(FloatFormula::Sq).condition(&r).rod_v.unwrap();
@@ -207,7 +207,7 @@ impl Backend {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{scene::Scene, field::q, stability::{Backend, Reference}, solve::float::FloatFormula};
+    /// use rodimpact::{scene::Scene, field::q, stability::{Backend, Reference}, solve::fast::float::FloatFormula};
     /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
     /// let r = Reference::of(&s).unwrap();
     /// let (m, encloses) = Backend::F64(FloatFormula::Sq).measure(&s, &r).unwrap();

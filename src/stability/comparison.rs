@@ -4,7 +4,7 @@
 
 use super::{Backend, Case, Class, Reference, median_nanos, suite, sweep};
 use crate::field::{Interval, Q};
-use crate::solve::closed_form::closed_form;
+use crate::solve::fast::closed_form::closed_form;
 
 /// One backend's statistics over the suite and the sweep.
 #[derive(Debug, Clone, PartialEq)]

@@ -2,8 +2,8 @@
 //! (`docs/stability.md`), in the inputs m, M, I, a, v0 (and e when e is not a float of the format).
 
 use crate::field::{Field, abs};
-use crate::mechanics::{Groups, Motion};
 use crate::scene::Params;
+use crate::scene::{Groups, Motion};
 
 /// The condition numbers of (v, V, omega); `None` (infinite) for v when q = e, where the
 /// projectile stops. `e_rounds` adds the e terms (e is not exactly a float of the format).

@@ -5,7 +5,7 @@
 
 use crate::field::big::{RBig, to_q, to_rbig};
 use crate::field::{Interval, Q, abs};
-use crate::solve::float::Real;
+use crate::solve::fast::float::Real;
 use num_traits::{Signed, ToPrimitive, Zero};
 
 /// What a float output is, judged against the exact value.
@@ -42,7 +42,7 @@ impl Accuracy {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::q, solve::float::Real, stability::{Class, Accuracy}};
+    /// use rodimpact::{field::q, solve::fast::float::Real, stability::{Class, Accuracy}};
     /// let m = Accuracy::of(1.0f64 / 3.0, &q(1, 3), Some(&q(1, 1)), &<f64 as Real>::unit_roundoff());
     /// assert_eq!(m.class, Class::Number);
     /// assert!(m.ratio.unwrap() <= 1.0); // correctly rounded: at most u
@@ -69,7 +69,7 @@ impl Accuracy {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::{q, Field, Interval}, solve::float::Real, stability::Accuracy};
+    /// use rodimpact::{field::{q, Field, Interval}, solve::fast::float::Real, stability::Accuracy};
     /// let third = Interval::from_rational(&q(1, 3));
     /// let m = Accuracy::of_interval(&third, &q(1, 3), Some(&q(1, 1)), &<f64 as Real>::unit_roundoff());
     /// assert!(m.ratio.unwrap() <= 2.0); // one ulp wide

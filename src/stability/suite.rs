@@ -3,7 +3,7 @@
 
 use crate::field::Q;
 use crate::scene::{Scene, SceneInput};
-use crate::solve::float::Real;
+use crate::solve::fast::float::Real;
 use num_traits::Zero;
 
 /// One scene of the suite or the sweep.

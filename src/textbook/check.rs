@@ -22,8 +22,8 @@ use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, QSqrt, RatFn};
 use crate::scene::{ObliqueParams, Params, SceneInput, Support};
 use crate::solve::Outcome;
-use crate::solve::linear::solve;
-use crate::solve::oblique::{self, normal_params};
+use crate::solve::fast::linear::solve;
+use crate::solve::fast::oblique::{self, normal_params};
 use crate::solve::optimum::{a_star_squared, optimum};
 use num_traits::{One, Signed, Zero};
 

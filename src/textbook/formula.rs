@@ -14,8 +14,8 @@ use super::symbolic::{GivenScene, SymbolicScene, contact_endings, heaviest_field
 use crate::error::Error;
 use crate::field::{Field, Poly, RatFn};
 use crate::scene::{ObliqueParams, Params, SceneInput, Support};
-use crate::solve::linear::solve;
-use crate::solve::oblique::{ObliqueOutcome, normal_params};
+use crate::solve::fast::linear::solve;
+use crate::solve::fast::oblique::{ObliqueOutcome, normal_params};
 use crate::solve::optimum::a_star_squared;
 use num_traits::{One, Signed, Zero};
 
@@ -131,7 +131,7 @@ fn solved_formulas(
         rational("impulse", out.impulse(p)),
     ];
     if !p.e.is_one() {
-        list.push(rational("energy_lost", out.energy.lost.clone()));
+        list.push(rational("energy_lost", out.energy.lost()));
     }
     if let Some(j) = &out.pivot_impulse {
         list.push(rational("pivot_impulse", j.clone()));
@@ -215,7 +215,7 @@ fn oblique_formulas(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Formulas
             ));
         }
         if friction || !p.e.is_one() {
-            part.push(rational("energy_lost", out.energy.lost.clone()));
+            part.push(rational("energy_lost", out.energy.lost()));
         }
         if parts {
             part.push(rational("energy_lost_friction", out.lost_friction.clone()));

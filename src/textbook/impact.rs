@@ -19,8 +19,8 @@ use super::numeric::decide_value;
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::field::{QSqrt, TrySqrt};
+use crate::impact::{Law, LawAnswer, Model, ModelAnswer, ModelOutcome, solve_several};
 use crate::model::System;
-use crate::solve::impact::{Law, LawAnswer, Model, ModelAnswer, ModelOutcome, solve_several};
 use crate::units::Dimension;
 use num_traits::Zero;
 use serde_json::Value;
@@ -66,9 +66,9 @@ enum Component {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{model::{from_value, paper_system}, field::q, scene::Scene};
+/// use rodimpact::{model::from_value, field::q, scene::Scene};
 /// use rodimpact::textbook::impact::read_impact_claims;
-/// let system = paper_system(&Scene::builder(q(1, 1), q(1, 1)).build()?);
+/// let system = Scene::builder(q(1, 1), q(1, 1)).build()?.system();
 /// let claims = serde_json::json!({"claim": [{"law": "newton", "quantity": "rod.omega", "value": "-1.2"}]});
 /// assert_eq!(read_impact_claims(&claims, &system)?.len(), 1);
 /// let bad = serde_json::json!({"claim": [{"law": "newton", "quantity": "wheel.omega", "value": "1"}]});
@@ -200,10 +200,10 @@ fn what(quantity: &str, system: &System) -> Result<What, String> {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{field::{q, QSqrt}, model::paper_system, scene::Scene};
-/// use rodimpact::solve::impact::{solve_contact, Law};
+/// use rodimpact::{field::{q, QSqrt}, scene::Scene};
+/// use rodimpact::impact::{solve_contact, Law};
 /// use rodimpact::textbook::{AnswerAgreement, impact::{check_impact_claims, read_impact_claims}};
-/// let system = paper_system(&Scene::builder(q(1, 1), q(1, 1)).build()?);
+/// let system = Scene::builder(q(1, 1), q(1, 1)).build()?.system();
 /// let answers = vec![solve_contact::<QSqrt>(&system, Law::Newton).expect("answered")];
 /// let claims = read_impact_claims(&serde_json::json!({"claim": [
 ///     {"law": "newton", "quantity": "rod.omega", "value": "-1.2"},
@@ -288,9 +288,9 @@ pub fn check_model_claims(
                 What::Omega(i) => body(*i).map(|b| b.2.clone()),
                 What::Velocity(i, false) => body(*i).map(|b| b.1.x.clone()),
                 What::Velocity(i, true) => body(*i).map(|b| b.1.y.clone()),
-                What::Energy(0) => Ok(answer.ledger.energy_before.clone()),
-                What::Energy(1) => Ok(answer.ledger.energy_after.clone()),
-                What::Energy(_) => Ok(answer.ledger.energy_change.clone()),
+                What::Energy(0) => Ok(answer.ledger.energy.before.clone()),
+                What::Energy(1) => Ok(answer.ledger.energy.after.clone()),
+                What::Energy(_) => Ok(answer.ledger.energy.change.clone()),
                 What::Impulse(_) => Err("several contacts have several impulses: claim the bodies' motion or the energy".into()),
             };
             let exact = Exact::Rational(value.map_err(|why| invalid(&claim.quantity, &why))?);

@@ -8,10 +8,10 @@ use super::SceneCheck;
 use super::impact::{check_impact_claims, check_model_claims, read_impact_claims};
 use crate::error::{Error, ErrorKind};
 use crate::field::{Q, QSqrt};
-use crate::model::{MAX_SCENE_BYTES, System, from_value, toml_value};
-use crate::solve::impact::{
+use crate::impact::{
     Law, LawAnswer, MAX_ORDERED, Model, ModelOutcome, orders, solve_exact, solve_several,
 };
+use crate::model::{MAX_SCENE_BYTES, System, from_value, toml_value};
 use serde_json::Value;
 
 /// The answers of one scene: per law for one contact, per model for several.
@@ -82,7 +82,7 @@ pub fn read_scene_file(label: &str, path: &std::path::Path) -> Result<Value, Err
 /// # Examples
 /// ```
 /// use rodimpact::textbook::impact_run::{answer_impact, read_scene_file, ImpactAnswers};
-/// use rodimpact::solve::impact::Law;
+/// use rodimpact::impact::Law;
 /// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
 /// let run = answer_impact(&value, "paper.toml", Some(Law::Newton), None)?;
 /// assert!(matches!(&run.answers, ImpactAnswers::Laws(a) if a.len() == 1));

@@ -12,10 +12,11 @@ use super::exact::Exact;
 use super::numeric::decide;
 use super::sigfig::Precision;
 use crate::field::Q;
+use crate::impact::Mode;
 use crate::scene::ObliqueParams;
 use crate::scene::{Params, SceneInput, Support};
 use crate::solve::Outcome;
-use crate::solve::oblique::{self, ContactMode, ObliqueOutcome};
+use crate::solve::fast::oblique::{self, ObliqueOutcome};
 use num_traits::{One, Signed, Zero};
 
 /// A scene as a usual mistake has it: what the mistake is, in words, and its parameters.
@@ -175,7 +176,7 @@ pub(super) fn oblique_mistakes(
     exact: &Q,
     sig: Option<u32>,
 ) -> Option<String> {
-    let value = |p: &Params<Q>, given: Option<ContactMode>| {
+    let value = |p: &Params<Q>, given: Option<Mode>| {
         oblique::solve(p, o, given)
             .ok()
             .and_then(|out| claim.quantity.oblique_value(p, &out).ok().flatten())
@@ -184,12 +185,12 @@ pub(super) fn oblique_mistakes(
         .into_iter()
         .map(|v| (v.mistake, value(&v.params, None)))
         .collect();
-    let others: Vec<(&str, ContactMode)> = match solved.contact {
-        Some(ContactMode::Stick) => [true, false]
-            .map(|forward| ("sliding taken for sticking", ContactMode::Slide { forward }))
+    let others: Vec<(&str, Mode)> = match solved.contact {
+        Some(Mode::Stick) => [true, false]
+            .map(|forward| ("sliding taken for sticking", Mode::Slide { forward }))
             .to_vec(),
-        Some(ContactMode::Slide { .. }) => vec![("sticking taken for sliding", ContactMode::Stick)],
-        None => Vec::new(),
+        Some(Mode::Slide { .. }) => vec![("sticking taken for sliding", Mode::Stick)],
+        None | Some(Mode::Frictionless) => Vec::new(),
     };
     for (mistake, mode) in others {
         values.push((mistake.into(), value(p, Some(mode))));

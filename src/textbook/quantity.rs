@@ -6,7 +6,7 @@ use crate::error::{Error, ErrorKind};
 use crate::field::Field;
 use crate::scene::Params;
 use crate::solve::Outcome;
-use crate::solve::oblique::ObliqueOutcome;
+use crate::solve::fast::oblique::ObliqueOutcome;
 
 /// A quantity a claim is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -130,7 +130,7 @@ impl Quantity {
     /// # Examples
     /// ```
     /// use rodimpact::textbook::Quantity;
-    /// use rodimpact::{scene::Scene, solve::linear::solve, field::{q, Q}};
+    /// use rodimpact::{scene::Scene, solve::fast::linear::solve, field::{q, Q}};
     /// let p = Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>();
     /// let out = solve(&p).unwrap();
     /// assert_eq!(Quantity::VCm.motion_value(&p, &out).unwrap(), Some(q(1, 2)));
@@ -152,7 +152,7 @@ impl Quantity {
             Quantity::Omega => after.omega.clone(),
             Quantity::EnergyBefore => out.energy.before.clone(),
             Quantity::EnergyAfter => out.energy.after.clone(),
-            Quantity::EnergyLost => out.energy.lost.clone(),
+            Quantity::EnergyLost => out.energy.lost(),
             Quantity::Impulse => out.impulse(p),
             Quantity::PivotImpulse => match &out.pivot_impulse {
                 Some(j) => j.clone(),
@@ -183,7 +183,7 @@ impl Quantity {
     /// # Examples
     /// ```
     /// use rodimpact::textbook::Quantity;
-    /// use rodimpact::{scene::Scene, solve::oblique::solve, field::{q, Q}};
+    /// use rodimpact::{scene::Scene, solve::fast::oblique::solve, field::{q, Q}};
     /// let s = Scene::builder(q(1, 1), q(1, 1)).v0t(q(1, 1)).mu(q(1, 2)).build().unwrap();
     /// let p = s.params::<Q>();
     /// let out = solve(&p, &s.oblique().unwrap().params(), None).unwrap();
@@ -218,7 +218,7 @@ impl Quantity {
                 .ok_or_else(|| missing("the projectile is a point (no --radius)"))?,
             Quantity::EnergyBefore => out.energy.before.clone(),
             Quantity::EnergyAfter => out.energy.after.clone(),
-            Quantity::EnergyLost => out.energy.lost.clone(),
+            Quantity::EnergyLost => out.energy.lost(),
             Quantity::Impulse => out.impulse.clone(),
             Quantity::TangentialImpulse => out.tangential_impulse.clone(),
             Quantity::PivotImpulse => match &out.pivot_impulse {

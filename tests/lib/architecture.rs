@@ -250,5 +250,6 @@ fn the_checks_see_what_they_claim_to_see() {
     assert!(circle(&g).is_some());
     g.get_mut("b").unwrap().clear();
     assert!(circle(&g).is_none());
-    assert_eq!(layers().get("solve"), Some(&3));
+    assert_eq!(layers().get("impact"), Some(&3));
+    assert_eq!(layers().get("solve"), Some(&5));
 }

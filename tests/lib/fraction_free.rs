@@ -9,8 +9,8 @@ use proptest::prelude::*;
 use rodimpact::field::Q;
 use rodimpact::samples::sized_scene;
 use rodimpact::scene::{RodInertia, Scene};
-use rodimpact::solve::fraction_free;
-use rodimpact::solve::linear::solve;
+use rodimpact::solve::fast::fraction_free;
+use rodimpact::solve::fast::linear::solve;
 use rodimpact::stability::SplitMix64;
 
 /// Fast and fraction-free-big results equal the generic solver's; the laws hold.

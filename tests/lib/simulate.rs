@@ -9,7 +9,7 @@ use rodimpact::contact::{
 };
 use rodimpact::field::{Q, q};
 use rodimpact::scene::{RodInertia, Scene};
-use rodimpact::solve::linear::solve;
+use rodimpact::solve::fast::linear::solve;
 
 fn scene(rod_mass: Q, a: Q, e: Q) -> Scene {
     Scene::builder(q(1, 1), rod_mass).a(a).e(e).build().unwrap()

@@ -7,9 +7,9 @@ use crate::common;
 use num_traits::Zero;
 use proptest::prelude::*;
 use rodimpact::field::{Field, Interval, Q};
-use rodimpact::mechanics::Motion;
-use rodimpact::solve::closed_form::closed_form;
-use rodimpact::solve::float::{FloatFormula, Real};
+use rodimpact::scene::Motion;
+use rodimpact::solve::fast::closed_form::closed_form;
+use rodimpact::solve::fast::float::{FloatFormula, Real};
 use rodimpact::stability::{Accuracy, Backend, Case, Class, Reference, in_range, suite, sweep};
 
 /// Asserts the goals of docs/stability.md for a stable formula on `cases` in range for `T`:

@@ -9,7 +9,7 @@ use crate::batch::audit::{Finding, LAW_TOLERANCE, STATE_TOLERANCE};
 use crate::batch::plan::{Diagnosis, OutputCheck};
 use crate::field::decimal::{decimal_unreduced, push_decimal_words};
 use crate::field::int::{FixedInt, I256, U256, Wide, Wider, Widest};
-use crate::solve::fraction_free::Parts;
+use crate::solve::fast::fraction_free::Parts;
 use std::cell::OnceCell;
 use std::cmp::Ordering;
 

@@ -27,13 +27,13 @@ use super::{Part, Rod, positive, word};
 use crate::batch::compare::Agreement;
 use crate::field::Field;
 use crate::field::int::{FixedInt, Frac, Wide, within, write_parts};
-use crate::mechanics::Motion;
+use crate::scene::Motion;
 use crate::scene::{
     Disc, ObliqueParams, Params, RodMotion, SCENE_KEYS, SceneInput, Support, key_index,
 };
 use crate::solve::answer::AfterOnWords;
-use crate::solve::fraction_free::{Raw, raw_of};
-use crate::solve::oblique::{self, normal_params};
+use crate::solve::fast::fraction_free::{Raw, raw_of};
+use crate::solve::fast::oblique::{self, normal_params};
 use std::cmp::Ordering;
 
 /// A row's scene cells as written, trimmed, by their index in [`SCENE_KEYS`]; empty where the

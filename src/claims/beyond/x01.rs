@@ -1,6 +1,6 @@
 use crate::claims::dsl::*;
 use crate::field::RatFn;
-use crate::solve::linear::impulse_equations;
+use crate::solve::fast::linear::impulse_equations;
 
 pub(super) const ENTRY: Entry = Entry {
     id: "X1",

@@ -1,5 +1,5 @@
 use crate::claims::dsl::*;
-use crate::mechanics::kinetic_energy;
+use crate::scene::kinetic_energy;
 
 pub(super) const ENTRY: Entry = Entry {
     id: "X2",

@@ -1,6 +1,6 @@
 use crate::claims::dsl::*;
 use crate::field::RatFn;
-use crate::mechanics::{Motion, angular_momentum, linear_momentum};
+use crate::scene::{Motion, angular_momentum, linear_momentum};
 use num_traits::Zero;
 
 pub(super) const ENTRY: Entry = Entry {

@@ -1,6 +1,6 @@
 use crate::claims::dsl::*;
 use crate::field::{RatFn, Sym};
-use crate::mechanics::Motion;
+use crate::scene::Motion;
 
 pub(super) const ENTRY: Entry = Entry {
     id: "X5",

@@ -1,5 +1,5 @@
 use crate::claims::dsl::*;
-use crate::mechanics::{Motion, linear_momentum};
+use crate::scene::{Motion, linear_momentum};
 
 pub(super) const ENTRY: Entry = Entry {
     id: "X9",

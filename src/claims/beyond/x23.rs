@@ -1,5 +1,5 @@
 use crate::claims::dsl::*;
-use crate::mechanics::{Motion, angular_momentum};
+use crate::scene::{Motion, angular_momentum};
 
 pub(super) const ENTRY: Entry = Entry {
     id: "X23",
@@ -66,7 +66,7 @@ fn formalise(paper: &Paper) -> Formalised {
         ),
         Certificate::identity(
             "the generic solver with e = 0 loses the same energy",
-            n("K_lost", newton_zero.energy.lost),
+            n("K_lost", newton_zero.energy.lost()),
             n("K_lost_c", loss),
         ),
         a_star_substitution_cert(paper),

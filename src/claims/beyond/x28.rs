@@ -78,8 +78,8 @@ fn formalise(_paper: &Paper) -> Formalised {
             )
         };
         let mu_star = slip.clone() * &k_n() / &((Formula::int(1) + &f("e")) * &f("v0") * &k_t);
-        let stick = oblique_solved(&rod, &o, ContactMode::Stick);
-        let slide = oblique_solved(&rod, &o, ContactMode::Slide { forward: true });
+        let stick = oblique_solved(&rod, &o, Mode::Stick);
+        let slide = oblique_solved(&rod, &o, Mode::Slide { forward: true });
         certs.push(Certificate::identity(
             format!("{projectile}: stick impulse / normal impulse (solver) = u_t k_n/((1+e) v0 k_t), so |Jt_stick| <= mu_f J iff mu_f >= mu_f*"),
             n("Jt_stick", stick.tangential_impulse.clone()) / &n("J", stick.impulse.clone()),

@@ -53,7 +53,7 @@ fn formalise(_paper: &Paper) -> Formalised {
         ("v0t", sym("v0t") - &sym("Vt0")),
     ];
     let mut certs = Vec::new();
-    for contact in [ContactMode::Stick, ContactMode::Slide { forward: true }] {
+    for contact in [Mode::Stick, Mode::Slide { forward: true }] {
         let there = oblique_solved(&rod, &moving, contact);
         let here = oblique_solved(&rod, &rest, contact);
         let spin = |o: &ObliqueOutcome<crate::field::RatFn>| o.after.spin.clone().expect("a disc");

@@ -72,9 +72,10 @@ fn formalise(_paper: &Paper) -> Formalised {
     let mut certs = Vec::new();
     for contact in CONTACTS {
         let friction = match contact {
-            ContactMode::Stick => slip.pow(2) / &(Formula::int(2) * &k_t),
-            ContactMode::Slide { forward: true } => sliding(slip.clone()),
-            ContactMode::Slide { forward: false } => sliding(-slip.clone()),
+            Mode::Stick => slip.pow(2) / &(Formula::int(2) * &k_t),
+            Mode::Slide { forward: true } => sliding(slip.clone()),
+            Mode::Slide { forward: false } => sliding(-slip.clone()),
+            Mode::Frictionless => unreachable!("CONTACTS are stick and slide"),
         };
         let out = oblique_solved(&rod, &o, contact);
         certs.push(Certificate::identity(
@@ -82,12 +83,12 @@ fn formalise(_paper: &Paper) -> Formalised {
                 "{}: energy lost (K0 - K1 of the solver's states, disc spin included) = restitution + friction closed forms",
                 case(contact)
             ),
-            n("K_lost", out.energy.lost.clone()),
+            n("K_lost", out.energy.lost()),
             restitution.clone() + &friction,
         ));
     }
     // Sliding forward means u_t > mu_f J k_t: write u_t = mu_f J k_t + x with x > 0.
-    let slide = oblique_solved(&rod, &o, ContactMode::Slide { forward: true });
+    let slide = oblique_solved(&rod, &o, Mode::Slide { forward: true });
     let (mu_j_value, k_t_value) = (mu_j.value().clone(), k_t.value().clone());
     let excess = sym("x") + &(mu_j_value * &k_t_value) - &(sym("w") * &sym("r"));
     let k_n_form = sum([
@@ -99,7 +100,7 @@ fn formalise(_paper: &Paper) -> Formalised {
     let k_t_form = sum([quot(pc(3, 1), ps("m")), quot(pc(1, 1), ps("M"))]);
     certs.push(positive(
         "sliding (u_t = mu_f J k_t + x, x > 0): energy lost (solver) - restitution = mu_f J (mu_f J k_t/2 + x) > 0",
-        slide.energy.lost.clone() - restitution.value(),
+        slide.energy.lost() - restitution.value(),
         true,
         &[("v0t", excess)],
         &["m", "M", "I", "v0", "mu_f", "x"],

@@ -48,7 +48,7 @@ fn formalise(paper: &Paper) -> Formalised {
         },
         ..oblique(true)
     };
-    let out = oblique_solved(&rod, &drifting, ContactMode::Slide { forward: true });
+    let out = oblique_solved(&rod, &drifting, Mode::Slide { forward: true });
     certs.push(Certificate::identity(
         "rod drifting with (V0, Vt0), sliding: omega = (1+e) (v0 - V0) a/(a*^2 + a^2)",
         n("omega", out.after.rod.omega.clone()),

@@ -1,7 +1,7 @@
 use crate::claims::dsl::*;
 use crate::field::{Field, Q, RatFn};
 use crate::model::parse_toml;
-use crate::solve::impact::{Model, ModelOutcome, solve_several};
+use crate::impact::{Model, ModelOutcome, solve_several};
 
 pub(super) const ENTRY: Entry = Entry {
     id: "X38",
@@ -124,7 +124,7 @@ fn formalise(_paper: &Paper) -> Formalised {
         .map(|system| solve_several::<Q>(&system, &Model::SimultaneousPoisson))
     {
         Ok(ModelOutcome::Answered(answers)) if answers.len() == 1 => {
-            RatFn::from_rational(&answers[0].ledger.energy_change)
+            RatFn::from_rational(&answers[0].ledger.energy.change)
         }
         other => panic!("X38: the scene has one Poisson answer, got {other:?}"),
     };

@@ -7,7 +7,7 @@
 
 use super::*;
 use crate::field::RatFn;
-use crate::mechanics::Motion;
+use crate::scene::Motion;
 
 /// The free rod with a symbolic I.
 pub(crate) fn rod(e: RatFn) -> crate::scene::Params<RatFn> {

@@ -7,7 +7,7 @@
 
 use super::*;
 use crate::field::{RatFn, Sym};
-use crate::mechanics::Motion;
+use crate::scene::Motion;
 use num_traits::Zero;
 
 /// An identity at a* (see [`a_star_at`]).
@@ -59,7 +59,7 @@ pub(crate) fn after(inertia: &RatFn, e: RatFn) -> Motion<RatFn> {
 
 /// The energy the solver's motion loses, for inertia I and restitution e.
 pub(crate) fn energy_lost(inertia: &RatFn, e: RatFn) -> RatFn {
-    solved(&free_rod(inertia.clone(), e)).energy.lost
+    solved(&free_rod(inertia.clone(), e)).energy.lost()
 }
 
 /// `I` in terms of `A` = a*, from the paper's a*^2 (linear in I): `I = A^2 I / a*^2`.

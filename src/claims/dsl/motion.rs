@@ -3,7 +3,7 @@
 
 use super::*;
 use crate::field::RatFn;
-use crate::mechanics::Motion;
+use crate::scene::Motion;
 
 /// `r_G^2`.
 pub(crate) fn r2() -> RatFn {

@@ -8,26 +8,28 @@ use super::algebra::sym;
 use super::scene::free_rod;
 use crate::field::RatFn;
 use crate::scene::{Disc, Params};
-use crate::solve::oblique::solve;
+use crate::solve::fast::oblique::solve;
 
+pub(crate) use crate::impact::Mode;
 pub(crate) use crate::scene::{ObliqueParams, RodMotion};
-pub(crate) use crate::solve::oblique::{ContactMode, ObliqueOutcome};
+pub(crate) use crate::solve::fast::oblique::ObliqueOutcome;
 use num_traits::Zero;
 
 /// The three ways a frictional contact can end, each a case of every friction claim: sticking,
 /// and sliding with the slip along +y or -y.
-pub(crate) const CONTACTS: [ContactMode; 3] = [
-    ContactMode::Stick,
-    ContactMode::Slide { forward: true },
-    ContactMode::Slide { forward: false },
+pub(crate) const CONTACTS: [Mode; 3] = [
+    Mode::Stick,
+    Mode::Slide { forward: true },
+    Mode::Slide { forward: false },
 ];
 
 /// "stick", "slide (u_t > 0)" or "slide (u_t < 0)": the case in a certificate's title.
-pub(crate) fn case(contact: ContactMode) -> &'static str {
+pub(crate) fn case(contact: Mode) -> &'static str {
     match contact {
-        ContactMode::Stick => "stick",
-        ContactMode::Slide { forward: true } => "slide (u_t > 0)",
-        ContactMode::Slide { forward: false } => "slide (u_t < 0)",
+        Mode::Stick => "stick",
+        Mode::Slide { forward: true } => "slide (u_t > 0)",
+        Mode::Slide { forward: false } => "slide (u_t < 0)",
+        Mode::Frictionless => "frictionless",
     }
 }
 
@@ -57,7 +59,7 @@ pub(crate) fn oblique_rod() -> Params<RatFn> {
 pub(crate) fn oblique_solved(
     p: &Params<RatFn>,
     o: &ObliqueParams<RatFn>,
-    contact: ContactMode,
+    contact: Mode,
 ) -> ObliqueOutcome<RatFn> {
     solve(p, o, Some(contact)).expect("the symbolic oblique system is nonsingular")
 }

@@ -3,7 +3,7 @@
 
 use super::*;
 use crate::field::{RatFn, Sym};
-use crate::mechanics::{Motion, angular_momentum, linear_momentum};
+use crate::scene::{Motion, angular_momentum, linear_momentum};
 
 /// `I = A^2 m M/(M + m)`: the general rod written through A, a positive symbol for a*.
 pub(crate) fn inertia_through_a_star() -> RatFn {

@@ -3,10 +3,10 @@
 
 use super::algebra::{k, sym};
 use crate::field::RatFn;
-use crate::mechanics::Motion;
+use crate::scene::Motion;
 use crate::scene::{Params, RodInertia, Support, gyration_moment};
 use crate::solve::Outcome;
-use crate::solve::linear::solve;
+use crate::solve::fast::linear::solve;
 use num_traits::One;
 
 /// The general free-rod scene in symbols: m, M, I, a, v0 and restitution `e`.

@@ -1,5 +1,5 @@
 use crate::claims::dsl::*;
-use crate::mechanics::{Motion, angular_momentum};
+use crate::scene::{Motion, angular_momentum};
 
 pub(super) const ENTRY: Entry = Entry {
     id: "C6",

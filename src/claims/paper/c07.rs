@@ -27,7 +27,7 @@ const EXPORT: Export = Export::Stated(Statement::new(
 ));
 
 fn formalise(_paper: &Paper) -> Formalised {
-    let lost = |e: RatFn| solved(&rod(e)).energy.lost;
+    let lost = |e: RatFn| solved(&rod(e)).energy.lost();
     // 0 <= e < 1 parametrised as e = s/(s + t) with s >= 0, t > 0.
     let inelastic = [("e", sym("s") / (sym("s") + &sym("t")))];
     let s_plus_t = PosExpr::sum([ps("s"), ps("t")]);

@@ -1,5 +1,5 @@
 use crate::claims::dsl::*;
-use crate::mechanics::{Motion, kinetic_energy};
+use crate::scene::{Motion, kinetic_energy};
 
 pub(super) const ENTRY: Entry = Entry {
     id: "C10",

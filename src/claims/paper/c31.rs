@@ -1,6 +1,6 @@
 use crate::claims::dsl::*;
 use crate::field::RatFn;
-use crate::mechanics::kinetic_energy;
+use crate::scene::kinetic_energy;
 
 pub(super) const ENTRY: Entry = Entry {
     id: "C31",

@@ -12,7 +12,7 @@
 //! - `dashu`: dashu's `IBig` as the unbounded width (the default);
 //! - `malachite` (cargo feature `malachite`): malachite's `Integer` instead;
 //! - the `Int` kit: the checked operations of the fraction-free route
-//!   ([`crate::solve::fraction_free`]), written once for `i128`, `Wide` and big integers;
+//!   ([`crate::solve::fast::fraction_free`]), written once for `i128`, `Wide` and big integers;
 //! - [`reduce`] and `write_ratio`: a fraction reduced, or written, on machine words when it fits.
 
 use crate::field::Q;

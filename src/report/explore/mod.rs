@@ -128,7 +128,7 @@ pub fn reference_answers() -> Result<Vec<Value>, Error> {
                 answer["v"] = json!(outcome.after.v.to_string());
                 answer["V"] = json!(outcome.after.rod_v.to_string());
                 answer["omega"] = json!(outcome.after.omega.to_string());
-                answer["energy_lost"] = json!(outcome.energy.lost.to_string());
+                answer["energy_lost"] = json!(outcome.energy.lost().to_string());
                 if let Some(impulse) = &outcome.pivot_impulse {
                     answer["pivot_impulse"] = json!(impulse.to_string());
                 }

@@ -6,7 +6,7 @@ use super::{exact, kind_message};
 use crate::field::{Field, Q, QSqrt, q};
 use crate::scene::{Params, RodInertia, Scene, SceneBuilder, Support};
 use crate::solve::Outcome;
-use crate::solve::linear::solve;
+use crate::solve::fast::linear::solve;
 use crate::solve::optimum::{Optimum, Placement, a_star_squared, optimum};
 use num_traits::{One, Signed, Zero};
 use serde_json::{Map, Value, json};
@@ -370,8 +370,8 @@ pub fn explore(request: &Value) -> Value {
     if let Some(impulse) = &out.pivot_impulse {
         put("pivot_impulse", impulse);
     }
-    put("energy_lost", &out.energy.lost);
-    put("lost_fraction", &share(out.energy.lost.clone()));
+    put("energy_lost", &out.energy.lost());
+    put("lost_fraction", &share(out.energy.lost()));
     put("a_star", &a_star);
     put("a_star_squared", &lift(&o.squared));
     put("arm", &lift(&o.arm));
@@ -397,7 +397,7 @@ pub fn explore(request: &Value) -> Value {
     });
     let elastic = *scene.e() == Q::from_i64(1);
     if !elastic {
-        energy["lost"] = exact(&share(out.energy.lost.clone()));
+        energy["lost"] = exact(&share(out.energy.lost()));
     }
     let stuck = scene.e().is_zero();
     let mut answer = json!({

@@ -8,7 +8,7 @@ use super::exact;
 use super::explore_api::{FieldErrors, page_scene_with, params_at, read_field};
 use crate::field::{Field, Q, QSqrt, q};
 use crate::scene::{Oblique, Params};
-use crate::solve::oblique::{ObliqueOutcome, solve};
+use crate::solve::fast::oblique::{ObliqueOutcome, solve};
 use num_traits::{Signed, Zero};
 use serde_json::{Value, json};
 
@@ -103,7 +103,7 @@ pub fn oblique(request: &Value) -> Value {
         "J": exact(&out.impulse),
         "Jt": exact(&out.tangential_impulse),
         "energy_before": exact(&out.energy.before),
-        "energy_lost": exact(&out.energy.lost),
+        "energy_lost": exact(&out.energy.lost()),
         "lost_restitution": exact(&out.lost_restitution),
         "lost_friction": exact(&out.lost_friction),
         "omega_frictionless": exact(&without.after.rod.omega),
@@ -116,7 +116,7 @@ pub fn oblique(request: &Value) -> Value {
     }
     json!({
         "values": values,
-        "contact": out.contact.map_or("frictionless", |c| c.as_str()),
+        "contact": out.contact.map_or("frictionless", |c| c.kind()),
         "same_spin": out.after.rod.omega == without.after.rod.omega,
         "pivot_impulse": out.pivot_impulse.as_ref().map(|(x, t)| [exact(x), exact(t)]),
         "loss_curve": match s.a.d() {
@@ -145,7 +145,7 @@ fn loss_curve<F: Field>(params: &Params<F>, oblique: &Oblique, mu_star: Option<&
             solve(params, &at.params::<F>(), None).expect("a valid scene solves");
         mus.push(mu.nearest_f64());
         friction.push((out.lost_friction.clone() / &out.energy.before).nearest_f64());
-        total.push((out.energy.lost.clone() / &out.energy.before).nearest_f64());
+        total.push((out.energy.lost() / &out.energy.before).nearest_f64());
     }
     json!({ "mu": mus, "friction": friction, "total": total, "mu_star": star, "mu_max": mu_max.nearest_f64() })
 }

@@ -6,9 +6,9 @@
 use super::explore_api::read_number;
 use super::{exact, field_error};
 use crate::field::{Field, Q, QSqrt, q};
+use crate::impact::{Law, contact_matrix, contact_path, solve_exact};
 use crate::model::{System, from_value};
 use crate::report::impact::{law_heading, law_name};
-use crate::solve::impact::{Law, contact_matrix, contact_path, solve_exact};
 use num_traits::{Signed, Zero};
 use serde_json::{Value, json};
 
@@ -166,7 +166,7 @@ pub fn tilted(request: &Value) -> Value {
                             },
                             "energy_after": exact(&a.energy.after),
                             "energy_change": exact(&a.energy.change),
-                            "energy_gain": a.energy_gain,
+                            "energy_gain": a.energy.gain(),
                             "energy_percent": exact(&percent),
                             "work": {
                                 "compression": exact(&a.work[0]),
@@ -295,7 +295,9 @@ pub fn tilted_map(request: &Value) -> Value {
             }
             let system = tilt.system();
             for (grid, law) in rows.iter_mut().zip(Law::ALL) {
-                grid.push(solve_exact(&system, law).map_or(Value::Null, |a| json!(a.energy_gain)));
+                grid.push(
+                    solve_exact(&system, law).map_or(Value::Null, |a| json!(a.energy.gain())),
+                );
             }
         }
         for (grid, row) in grids.iter_mut().zip(rows) {

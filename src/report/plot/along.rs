@@ -223,7 +223,7 @@ pub fn energy_figure(scene: &Scene) -> Result<Figure, Error> {
     let (m, big_m, inertia) = (scene.m(), scene.rod_mass(), scene.inertia());
     let before = m * scene.v0() * scene.v0() / &two;
     // An elastic impact loses nothing at any point: no band, legend entry or column for a loss.
-    let lossy = samples.iter().any(|s| !s.out.energy.lost.is_zero());
+    let lossy = samples.iter().any(|s| !s.out.energy.lost().is_zero());
     let columns = ["a", "projectile", "rod_translation", "rod_rotation", "lost"];
     let mut data = PlotData::new(&columns[..if lossy { 5 } else { 4 }]);
     // Cumulative fractions: rotation, + translation, + projectile, + lost (= 1).
@@ -236,7 +236,7 @@ pub fn energy_figure(scene: &Scene) -> Result<Figure, Error> {
             &inertia * &x.omega * &x.omega / &two,
             big_m * &x.rod_v * &x.rod_v / &two,
             m * &x.v * &x.v / &two,
-            s.out.energy.lost.clone(),
+            s.out.energy.lost(),
         ];
         let mut total = Q::from_integer(0.into());
         for (band, part) in bands.iter_mut().zip(&parts) {

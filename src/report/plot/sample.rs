@@ -5,7 +5,7 @@ use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, QSqrt};
 use crate::scene::{Params, Scene, Support};
 use crate::solve::Outcome;
-use crate::solve::linear::solve;
+use crate::solve::fast::linear::solve;
 use crate::solve::optimum::{Optimum, optimum};
 use num_traits::{One, ToPrimitive};
 

@@ -9,7 +9,7 @@ use super::scale::Scale;
 use super::svg::{Shape, Stroke};
 use super::{PALETTE, SIZE};
 use crate::error::Error;
-use crate::solve::float::FloatFormula;
+use crate::solve::fast::float::FloatFormula;
 use crate::stability::{Backend, BackendStats};
 
 /// The colour of a backend: by formula (interval and exact their own).

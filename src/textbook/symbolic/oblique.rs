@@ -7,12 +7,13 @@ use super::SymbolicScene;
 use super::given::value_of;
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, RatFn};
+use crate::impact::Mode;
 use crate::scene::{
     Disc, ObliqueParams, RodMotion, SceneInput, Support, dimension_of, no_approach,
     spin_without_disc,
 };
-use crate::solve::linear;
-use crate::solve::oblique::{self, ContactMode, ObliqueOutcome, normal_params};
+use crate::solve::fast::linear;
+use crate::solve::fast::oblique::{self, ObliqueOutcome, normal_params};
 use crate::textbook::expr::{Budget, OBLIQUE_SYMBOLS, Radical};
 use num_traits::{Signed, Zero};
 use std::cmp::Ordering;
@@ -208,8 +209,8 @@ pub fn contact_endings(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Conta
     let normal = linear::solve(&normal_params(p, o))
         .expect("the impulse equations of a valid scene are nonsingular")
         .after;
-    let with = |given: Option<ContactMode>| oblique::complete(p, o, normal.clone(), given);
-    let stick = with(Some(ContactMode::Stick)).expect("a valid scene's masses are positive");
+    let with = |given: Option<Mode>| oblique::complete(p, o, normal.clone(), given);
+    let stick = with(Some(Mode::Stick)).expect("a valid scene's masses are positive");
     let decided = |contact: &'static str, outcome: ObliqueOutcome<RatFn>| Ending {
         contact,
         condition: None,
@@ -256,11 +257,10 @@ pub fn contact_endings(scene: &SymbolicScene, o: &ObliqueParams<RatFn>) -> Conta
         return done(vec![decided("stick", stick.clone())]);
     }
     if let Ok(out) = with(None) {
-        let contact = out.contact.map_or("stick", ContactMode::as_str);
+        let contact = out.contact.map_or("stick", Mode::kind);
         return done(vec![decided(contact, out)]);
     }
-    let slide =
-        with(Some(ContactMode::Slide { forward })).expect("a valid scene's masses are positive");
+    let slide = with(Some(Mode::Slide { forward })).expect("a valid scene's masses are positive");
     // The symbols may leave the slip's course open while mu - mu* is a number (mu given, mu*
     // free of symbols): that number decides the contact.
     match (o.mu.clone() - &mu_star).as_constant() {

@@ -6,7 +6,7 @@ use rodimpact::report::{
     ExplainFormat, backend_values, explain, latex_document, solution_json, solution_text,
 };
 use rodimpact::solve::Answer;
-use rodimpact::solve::float::FloatFormula;
+use rodimpact::solve::fast::float::FloatFormula;
 use rodimpact::stability::Backend;
 use serde_json::Value;
 

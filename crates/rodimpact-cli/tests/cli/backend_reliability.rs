@@ -8,7 +8,7 @@ use crate::common;
 use common::rodimpact;
 use num_traits::Zero;
 use rodimpact::report::backend_values;
-use rodimpact::solve::float::FloatFormula;
+use rodimpact::solve::fast::float::FloatFormula;
 use rodimpact::stability::{Backend, Reference, in_range, suite, sweep};
 use serde_json::Value;
 

@@ -13,9 +13,9 @@ use common::{data_file, rodimpact};
 use num_traits::Signed;
 use rodimpact::batch::{Finding, audit};
 use rodimpact::field::q;
-use rodimpact::mechanics::Motion;
+use rodimpact::scene::Motion;
 use rodimpact::scene::{Scene, Support};
-use rodimpact::solve::fraction_free::solve;
+use rodimpact::solve::fast::fraction_free::solve;
 use std::collections::BTreeMap;
 
 #[test]

@@ -17,7 +17,7 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 ///
 /// # Examples
 /// ```
-/// use rodimpact::solve::float::Ext;
+/// use rodimpact::solve::fast::float::Ext;
 /// let big = Ext::new(1e300f64);
 /// let x = big * big / big; // 1e600 in the middle, never infinite
 /// assert_eq!(x.value(), 1e300);
@@ -33,7 +33,7 @@ impl<T: Real> Ext<T> {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::float::Ext;
+    /// use rodimpact::solve::fast::float::Ext;
     /// assert_eq!(Ext::new(3.0f32).value(), 3.0);
     /// ```
     pub fn new(x: T) -> Ext<T> {
@@ -48,7 +48,7 @@ impl<T: Real> Ext<T> {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::q, solve::float::Ext};
+    /// use rodimpact::{field::q, solve::fast::float::Ext};
     /// assert_eq!(Ext::<f64>::from_rational(&q(1, 3)).value(), 1.0 / 3.0);
     /// assert_eq!(Ext::<f32>::from_rational(&q(-6, 1)).parts(), (-0.75, 3));
     /// // 10^-400 underflows f64, but not here: times 10^400 it is 1 to the last bit.
@@ -96,7 +96,7 @@ impl<T: Real> Ext<T> {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::float::Ext;
+    /// use rodimpact::solve::fast::float::Ext;
     /// assert_eq!(Ext::from_parts(3.0f64, -1).value(), 1.5);
     /// ```
     pub fn from_parts(f: T, k: i32) -> Ext<T> {
@@ -109,7 +109,7 @@ impl<T: Real> Ext<T> {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::float::Ext;
+    /// use rodimpact::solve::fast::float::Ext;
     /// let tiny = Ext::new(1e-30f32);
     /// assert_eq!((tiny * tiny).value(), 0.0);
     /// ```
@@ -121,7 +121,7 @@ impl<T: Real> Ext<T> {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::float::Ext;
+    /// use rodimpact::solve::fast::float::Ext;
     /// assert_eq!(Ext::new(6.0f64).parts(), (0.75, 3));
     /// ```
     pub fn parts(self) -> (T, i32) {
@@ -184,7 +184,7 @@ impl<T: Real> Sub for Ext<T> {
     }
 }
 
-/// The by-reference right operands, as the generic formulas ([`crate::mechanics::Groups`])
+/// The by-reference right operands, as the generic formulas ([`crate::scene::Groups`])
 /// write them: the same operations on a copy.
 macro_rules! by_reference {
     ($($Trait:ident $method:ident),*) => {$(

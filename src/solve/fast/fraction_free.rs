@@ -28,10 +28,13 @@
 //! `malachite`): the first overflow restarts the scene in the next width
 //! ([`crate::field::int`]). A pivoted rod takes the same route with its own fixed-axis formulas
 //! (see `pivoted`). The GCDs of the final reductions run on machine words up to 256 bits.
+//!
+//! A fast case of the core: it must equal `impact::solve_contact(&scene.system(),
+//! Law::Newton)` in Q, which `tests/lib/fast_routes.rs` checks on random scenes.
 
 use crate::field::Q;
 use crate::field::int::{Big, Int, Wide, split};
-use crate::mechanics::Motion;
+use crate::scene::Motion;
 use crate::scene::{RodInertia, Scene, Support};
 use num_traits::One;
 
@@ -39,7 +42,7 @@ use num_traits::One;
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{solve::fraction_free::{solve, Width}, scene::Scene, field::q};
+/// use rodimpact::{solve::fast::fraction_free::{solve, Width}, scene::Scene, field::q};
 /// let big = q(1 << 62, 3);
 /// let s = Scene::builder(big.clone(), big.clone() * q(7, 5)).build().unwrap();
 /// assert_eq!(solve(&s).width, Width::Wide); // beyond i128
@@ -62,7 +65,7 @@ pub enum Width {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{solve::fraction_free::solve, scene::Scene, field::q};
+/// use rodimpact::{solve::fast::fraction_free::solve, scene::Scene, field::q};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).e(q(0, 1)).build().unwrap();
 /// let out = solve(&s);
 /// assert_eq!((out.after.v, out.after.omega), (q(4, 5), q(3, 5))); // sticking
@@ -84,7 +87,7 @@ pub struct FractionFree {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{solve::fraction_free::{solve, Width}, scene::Scene, field::q};
+/// use rodimpact::{solve::fast::fraction_free::{solve, Width}, scene::Scene, field::q};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).build().unwrap();
 /// let out = solve(&s);
 /// assert_eq!((out.after.v, out.after.rod_v, out.after.omega), (q(3, 5), q(2, 5), q(6, 5)));
@@ -130,7 +133,7 @@ fn input_bits(scene: &Scene) -> u64 {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{solve::fraction_free::{solve, solve_big}, scene::Scene, field::q};
+/// use rodimpact::{solve::fast::fraction_free::{solve, solve_big}, scene::Scene, field::q};
 /// let s = Scene::builder(q(2, 7), q(5, 3)).a(q(-1, 3)).e(q(1, 2)).build().unwrap();
 /// assert_eq!(solve_big(&s).after, solve(&s).after);
 /// ```

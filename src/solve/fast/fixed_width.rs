@@ -10,6 +10,9 @@
 //!
 //! The formulas are those of [`super::fraction_free`] for a free rod (I = M l^2/3, so
 //! g = l^2/3 = gn/gd with gn = ln^2, gd = 3 ld^2), on the unreduced parts as written.
+//!
+//! A fast case of the core: where it answers, it must equal `impact::solve_contact(&scene.
+//! system(), Law::Newton)` in Q, which `tests/lib/fast_routes.rs` checks on random scenes.
 
 use crate::field::int::{Ring, U256, gcd_u64};
 
@@ -176,7 +179,7 @@ struct Raw<const N: usize> {
 
 impl<const N: usize> Raw<N> {
     /// The fraction-free solve of a free rod (the module documentation of
-    /// [`crate::solve::fraction_free`]).
+    /// [`crate::solve::fast::fraction_free`]).
     fn solve(s: &Words<N>) -> Raw<N> {
         let ad2 = s.ad.mul(s.ad);
         let mn_big_d = s.mn.mul(s.big_d);

@@ -10,70 +10,23 @@
 //!
 //! The reference route: the claims, the textbook checks, the tables and the symbolic proofs
 //! run it, over rational functions as over numbers.
+//!
+//! A fast case of the core: over Q it must equal `impact::solve_contact(&scene.system(),
+//! Law::Newton)` (v, V, omega, the pivot's impulse, the energies), which
+//! `tests/lib/fast_routes.rs` checks on random scenes.
 
-use super::{Outcome, outcome};
 use crate::field::Field;
-use crate::mechanics::Motion;
+use crate::field::linear::solve_linear;
+use crate::scene::Motion;
 use crate::scene::{Params, Support};
-use std::cmp::Ordering;
-
-/// Solves a linear system `A x = b` by Gaussian elimination over any field.
-///
-/// Exact fields take the first nonzero pivot (every choice is exact); float fields use partial
-/// pivoting (the largest magnitude). Returns `None` when the system is singular.
-///
-/// # Examples
-/// ```
-/// use rodimpact::solve::linear::solve_linear;
-/// use rodimpact::field::{q, Q};
-/// let a = vec![vec![q(0, 1), q(1, 1)], vec![q(2, 1), q(1, 1)]];
-/// let x = solve_linear(a, vec![q(3, 1), q(5, 1)]).unwrap();
-/// assert_eq!(x, vec![q(1, 1), q(3, 1)]);
-/// ```
-pub fn solve_linear<F: Field>(mut a: Vec<Vec<F>>, mut b: Vec<F>) -> Option<Vec<F>> {
-    let n = b.len();
-    for col in 0..n {
-        let candidates = (col..n).filter(|&r| !a[r][col].is_zero());
-        let pivot = if F::EXACT {
-            candidates.min()?
-        } else {
-            candidates.max_by(|&r, &s| {
-                let (x, y) = (a[r][col].nearest_f64().abs(), a[s][col].nearest_f64().abs());
-                x.partial_cmp(&y).unwrap_or(Ordering::Equal)
-            })?
-        };
-        a.swap(col, pivot);
-        b.swap(col, pivot);
-        for row in col + 1..n {
-            if a[row][col].is_zero() {
-                continue;
-            }
-            let factor = a[row][col].clone() / &a[col][col];
-            let (upper, lower) = a.split_at_mut(row);
-            for (target, pivot_entry) in lower[0][col..].iter_mut().zip(&upper[col][col..]) {
-                *target = target.clone() - &(factor.clone() * pivot_entry);
-            }
-            let delta = factor * &b[col];
-            b[row] = b[row].clone() - &delta;
-        }
-    }
-    let mut x = vec![F::zero(); n];
-    for row in (0..n).rev() {
-        let mut acc = b[row].clone();
-        for k in row + 1..n {
-            acc = acc - &(a[row][k].clone() * &x[k]);
-        }
-        x[row] = acc.checked_div(&a[row][row])?;
-    }
-    Some(x)
-}
+use crate::solve::{Outcome, outcome};
 
 /// The impulse equations of the scene as `(A, b)`: unknowns (v, V, omega) for a free rod,
 /// (v, omega) for a pivoted one.
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{scene::Scene, solve::linear::impulse_equations, field::{q, Q}};
+/// use rodimpact::{scene::Scene, solve::fast::linear::impulse_equations, field::{q, Q}};
 /// let p = Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>();
 /// let (a, b) = impulse_equations(&p);
 /// assert_eq!(a[0], vec![q(1, 1), q(1, 1), q(0, 1)]); // m v + M V = m v0
@@ -113,7 +66,7 @@ pub fn impulse_equations<F: Field>(p: &Params<F>) -> (Vec<Vec<F>>, Vec<F>) {
 /// # Examples
 /// The paper's case M = m, uniform rod hit at the end:
 /// ```
-/// use rodimpact::{scene::Scene, solve::linear::solve, field::{q, Q}};
+/// use rodimpact::{scene::Scene, solve::fast::linear::solve, field::{q, Q}};
 /// let p = Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>();
 /// let out = solve(&p).unwrap();
 /// assert_eq!((out.after.v, out.after.rod_v, out.after.omega), (q(3, 5), q(2, 5), q(6, 5)));
@@ -129,7 +82,7 @@ pub fn solve<F: Field>(p: &Params<F>) -> Option<Outcome<F>> {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{scene::Scene, solve::linear::motion_after, field::{q, Q}};
+/// use rodimpact::{scene::Scene, solve::fast::linear::motion_after, field::{q, Q}};
 /// let p = Scene::builder(q(1, 1), q(1, 1)).build().unwrap().params::<Q>();
 /// assert_eq!(motion_after(&p).unwrap().omega, q(6, 5));
 /// ```

@@ -4,9 +4,9 @@
 
 use super::{Ext, Real, compensated};
 use crate::field::Q;
-use crate::mechanics::{Groups, Motion};
+use crate::scene::{Groups, Motion};
 use crate::scene::{Params, Scene, Support};
-use crate::solve::closed_form::closed_form;
+use crate::solve::fast::closed_form::closed_form;
 
 /// A float formula for (v, V, omega) of a free rod.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -30,7 +30,7 @@ impl FloatFormula {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::float::FloatFormula;
+    /// use rodimpact::solve::fast::float::FloatFormula;
     /// assert_eq!(FloatFormula::Scomp.name(), "scomp");
     /// ```
     pub fn name(self) -> &'static str {
@@ -46,7 +46,7 @@ impl FloatFormula {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{solve::float::FloatFormula, scene::Scene, field::q};
+    /// use rodimpact::{solve::fast::float::FloatFormula, scene::Scene, field::q};
     /// // I = 10^-310 is subnormal: the naive m a/I overflows and v becomes NaN.
     /// let tiny = num_bigint::BigInt::from(10).pow(310);
     /// let s = Scene::builder(q(1, 1), q(1, 1))
@@ -88,7 +88,7 @@ impl FloatFormula {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{solve::float::FloatFormula, scene::Scene, field::q, number::parse};
+    /// use rodimpact::{solve::fast::float::FloatFormula, scene::Scene, field::q, number::parse};
     /// // l = a = 10^-200: I = M l^2/3 = 10^-400/3 underflows f64 to 0.
     /// let l = parse("1e-200").expect("a number");
     /// let s = Scene::builder(q(1, 1), q(1, 1)).half_length(l.clone()).a(l).build()?;

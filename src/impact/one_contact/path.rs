@@ -1,4 +1,4 @@
-//! Routh's construction: the impact followed in the normal impulse `lam` (P = lam n + tau t),
+//! Routh's construction: the impact of one contact followed in the normal impulse `lam` (P = lam n + tau t),
 //! the tangential impulse `tau` following the slip's mode, until the law in force ends it.
 //!
 //! - **slide** with slip sign s: Coulomb's friction opposes the slip, `dtau/dlam = -s mu`;
@@ -14,8 +14,10 @@
 //! (Stronge), where the normal work in restitution, the integral of u_n dlam from `lam_c`,
 //! is e^2 times minus its work in compression: a root of a quadratic in the last phase.
 
-use super::matrix::ContactMatrix;
 use crate::field::{Field, Q, QSqrt, TrySqrt};
+use crate::impact::coulomb::{Mode, within_cone};
+use crate::impact::jacobian::ContactMatrix;
+use crate::impact::law::Law;
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -46,76 +48,6 @@ impl Roots for Q {
 impl Roots for f64 {
     fn root(&self) -> Option<Self> {
         (*self >= 0.0).then(|| self.sqrt())
-    }
-}
-
-/// The law that ends the impact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Law {
-    /// Newton's kinematic law: the normal relative velocity after is -e times before.
-    Newton,
-    /// Poisson's kinetic law: the normal impulse of restitution is e times that of compression.
-    Poisson,
-    /// Stronge's energetic law: the normal work of restitution is -e^2 times that of
-    /// compression.
-    Energetic,
-}
-
-impl Law {
-    /// All three, in the order they are reported.
-    pub const ALL: [Law; 3] = [Law::Newton, Law::Poisson, Law::Energetic];
-
-    /// `newton`, `poisson` or `energetic`.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::solve::impact::Law;
-    /// assert_eq!(Law::Energetic.name(), "energetic");
-    /// ```
-    pub fn name(self) -> &'static str {
-        match self {
-            Law::Newton => "newton",
-            Law::Poisson => "poisson",
-            Law::Energetic => "energetic",
-        }
-    }
-}
-
-impl fmt::Display for Law {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-/// What friction does during a phase.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Mode {
-    /// No friction at the contact (mu = 0).
-    Frictionless,
-    /// The contact points slide, the slip u_t positive (`forward`) or negative.
-    Slide {
-        /// u_t > 0.
-        forward: bool,
-    },
-    /// The slip is zero and stays zero.
-    Stick,
-}
-
-impl Mode {
-    /// `frictionless`, `slide+`, `slide-` or `stick`.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::solve::impact::Mode;
-    /// assert_eq!(Mode::Slide { forward: false }.name(), "slide-");
-    /// ```
-    pub fn name(self) -> &'static str {
-        match self {
-            Mode::Frictionless => "frictionless",
-            Mode::Slide { forward: true } => "slide+",
-            Mode::Slide { forward: false } => "slide-",
-            Mode::Stick => "stick",
-        }
     }
 }
 
@@ -179,15 +111,9 @@ pub(crate) fn path<F: Field>(
     u0: [F; 2],
     mu: &F,
 ) -> Result<Vec<Segment<F>>, Jam> {
-    let stick_allowed = || -> Result<bool, Jam> {
-        let limit = mu.clone() * &w.tt;
-        let nt = if sign(&w.nt)? == Ordering::Less {
-            -w.nt.clone()
-        } else {
-            w.nt.clone()
-        };
-        Ok(sign(&(limit - &nt))? != Ordering::Less)
-    };
+    // Sticking needs the tangential impulse -W_nt/W_tt per unit of lam, inside the cone.
+    let stick_allowed =
+        || -> Result<bool, Jam> { within_cone(&w.nt, &(mu.clone() * &w.tt)).ok_or(Jam::Undecided) };
     let after_stop = || -> Result<Mode, Jam> {
         if stick_allowed()? {
             Ok(Mode::Stick)
@@ -371,14 +297,14 @@ pub(crate) fn end<F: Roots>(
     law: Law,
 ) -> Result<F, Jam> {
     match law {
-        Law::Poisson => Ok((F::one() + e) * lam_c),
+        Law::Poisson => Ok(lam_c.clone() + &Law::poisson_restitution(e, lam_c)),
         Law::Newton => {
-            let target = -(e.clone() * u_n0);
+            let target = Law::newton_leaving(e, u_n0);
             reach(path, lam_c, &target)?.ok_or(Jam::Restitution(law))
         }
         Law::Energetic => {
             let compression = normal_work(path, &F::zero(), lam_c);
-            let mut remaining = -(e.clone() * e * &compression);
+            let mut remaining = Law::energetic_restitution(e, &compression);
             if remaining.is_zero() {
                 return Ok(lam_c.clone());
             }

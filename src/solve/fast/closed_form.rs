@@ -1,9 +1,12 @@
 //! The closed-form route ([`Route::ClosedForm`](super::Route::ClosedForm)): the paper's
 //! formulas, generalised to restitution e and to a pivot, over any [`Field`]. A second path,
 //! independent of the linear solve; the naive float formula is this route in f64.
+//!
+//! A fast case of the core: over Q it must equal `impact::solve_contact(&scene.system(),
+//! Law::Newton)`, which `tests/lib/fast_routes.rs` checks on random scenes.
 
 use crate::field::Field;
-use crate::mechanics::{Groups, Motion};
+use crate::scene::{Groups, Motion};
 use crate::scene::{Params, Support};
 
 /// The closed forms: the paper's Eqs. (v), (V), (omega) generalised to restitution e, and the
@@ -17,7 +20,7 @@ use crate::scene::{Params, Support};
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{scene::Scene, solve::closed_form::closed_form, field::{q, Q}};
+/// use rodimpact::{scene::Scene, solve::fast::closed_form::closed_form, field::{q, Q}};
 /// let p = Scene::builder(q(1, 1), q(3, 1)).pivot(q(0, 1)).e(q(0, 1)).build().unwrap().params::<Q>();
 /// let m = closed_form(&p).unwrap();
 /// assert_eq!((m.v, m.omega), (q(1, 2), q(1, 2)));

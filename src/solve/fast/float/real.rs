@@ -10,7 +10,7 @@ use num_traits::{One, Zero};
 ///
 /// # Examples
 /// ```
-/// use rodimpact::solve::float::Real;
+/// use rodimpact::solve::fast::float::Real;
 /// assert_eq!(Real::frexp(12.0f64), (0.75, 4));
 /// assert_eq!(Real::ldexp(0.75f32, 4), 12.0);
 /// assert_eq!(<f64 as Real>::PRECISION, 53);
@@ -36,7 +36,7 @@ pub trait Real: Field + Copy + PartialOrd {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::float::Real;
+    /// use rodimpact::solve::fast::float::Real;
     /// assert_eq!(Real::binade(12.0f64), Some(4));
     /// assert_eq!(Real::binade(f64::MIN_POSITIVE / 2.0), None);
     /// ```
@@ -47,7 +47,7 @@ pub trait Real: Field + Copy + PartialOrd {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::float::Real;
+    /// use rodimpact::solve::fast::float::Real;
     /// assert_eq!(<f64 as Real>::pow2(-3), 0.125);
     /// assert_eq!(<f32 as Real>::pow2(200), f32::INFINITY);
     /// ```
@@ -69,7 +69,7 @@ pub trait Real: Field + Copy + PartialOrd {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::float::Real;
+    /// use rodimpact::solve::fast::float::Real;
     /// assert_eq!(<f32 as Real>::unit_roundoff().to_string(), "1/16777216");
     /// ```
     fn unit_roundoff() -> Q {
@@ -81,7 +81,7 @@ pub trait Real: Field + Copy + PartialOrd {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::solve::float::Real;
+    /// use rodimpact::solve::fast::float::Real;
     /// assert_eq!(Real::shortest(0.1f64), "0.1");
     /// assert_eq!(Real::shortest(1e-300f64), "1e-300");
     /// assert_eq!(Real::shortest(3.0e20f32), "3e20");

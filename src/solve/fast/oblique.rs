@@ -15,48 +15,24 @@
 //!
 //! `J` and `Jt` are the impulses of the projectile on the rod (along +x and +y). The tangential
 //! impulse acts along the rod's axis, through its centre: it never changes omega.
+//!
+//! A fast case of the core: it must equal `impact::solve_contact(&scene.system(),
+//! Law::Newton)` (both impulses, the contact mode, every body's motion; Poisson's and
+//! Stronge's laws give the same answer here, W being diagonal), which
+//! `tests/lib/fast_routes.rs` checks on random oblique, frictional, disc and moving-rod
+//! scenes in Q.
 
-use super::{Energy, linear};
+use super::linear;
 use crate::field::Field;
 use crate::field::Q;
-use crate::mechanics::Motion;
+use crate::impact::{Balance, Balances, EnergyLedger, Mode, within_cone};
 use crate::mechanics::planar::{
     PlanarBody, Vec2, angular_momentum, disc_inertia, kinetic_energy, linear_momentum,
 };
+use crate::scene::Motion;
 use crate::scene::{ObliqueParams, Params, RodMotion, Support};
 use num_traits::Signed;
 use std::cmp::Ordering;
-use std::fmt;
-
-/// How the contact ends when friction acts: sticking (no slip at the end of the impact) or
-/// sliding throughout.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum ContactMode {
-    /// The slip stops: `|u_t| <= mu J k_t`.
-    Stick,
-    /// The slip never stops; `forward` when the projectile slips along +y over the rod
-    /// (`u_t > 0`).
-    Slide {
-        /// The sign of the slip before the impact.
-        forward: bool,
-    },
-}
-
-impl ContactMode {
-    /// `"stick"` or `"slide"`, the JSON value of `contact`.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::solve::oblique::ContactMode;
-    /// assert_eq!(ContactMode::Slide { forward: false }.as_str(), "slide");
-    /// ```
-    pub fn as_str(self) -> &'static str {
-        match self {
-            ContactMode::Stick => "stick",
-            ContactMode::Slide { .. } => "slide",
-        }
-    }
-}
 
 /// Why an oblique scene has no answer in a number type.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
@@ -95,70 +71,6 @@ impl<F> State<F> {
     }
 }
 
-/// The residuals of the laws that apply, after - before (zero when the law holds), and the
-/// energy lost minus its closed form.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PlanarResiduals<F> {
-    /// Linear momentum along x (free rod only).
-    pub linear_momentum: Option<F>,
-    /// Linear momentum along the rod (free rod only).
-    pub tangential_momentum: Option<F>,
-    /// Angular momentum of rod and projectile (orbit and disc spin) about the rod's centre or
-    /// the pivot.
-    pub angular_momentum: F,
-    /// Energy lost minus `lost_restitution + lost_friction`.
-    pub energy_loss: F,
-}
-
-impl<F> PlanarResiduals<F> {
-    /// Each residual mapped by `f`: a change of number type.
-    fn map<G>(self, f: &mut impl FnMut(F) -> G) -> PlanarResiduals<G> {
-        PlanarResiduals {
-            linear_momentum: self.linear_momentum.map(&mut *f),
-            tangential_momentum: self.tangential_momentum.map(&mut *f),
-            angular_momentum: f(self.angular_momentum),
-            energy_loss: f(self.energy_loss),
-        }
-    }
-}
-
-impl<F: Field> PlanarResiduals<F> {
-    /// `(name, residual)` for each law that applies, in JSON order.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::solve::oblique::PlanarResiduals;
-    /// let r = PlanarResiduals { linear_momentum: None, tangential_momentum: None, angular_momentum: 0.0, energy_loss: 0.0 };
-    /// assert_eq!(r.iter().count(), 2);
-    /// ```
-    pub fn iter(&self) -> impl Iterator<Item = (&'static str, &F)> {
-        [
-            self.linear_momentum
-                .as_ref()
-                .map(|r| ("linear_momentum", r)),
-            self.tangential_momentum
-                .as_ref()
-                .map(|r| ("tangential_momentum", r)),
-            Some(("angular_momentum", &self.angular_momentum)),
-            Some(("energy_loss", &self.energy_loss)),
-        ]
-        .into_iter()
-        .flatten()
-    }
-
-    /// Whether every residual is exactly zero.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::solve::oblique::PlanarResiduals;
-    /// let r = PlanarResiduals { linear_momentum: Some(1.0), tangential_momentum: None, angular_momentum: 0.0, energy_loss: 0.0 };
-    /// assert!(!r.all_zero());
-    /// ```
-    pub fn all_zero(&self) -> bool {
-        self.iter().all(|(_, r)| r.is_zero())
-    }
-}
-
 /// An oblique impact solved: both states, both impulses, the contact, energies and residuals.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ObliqueOutcome<F> {
@@ -170,22 +82,25 @@ pub struct ObliqueOutcome<F> {
     pub impulse: F,
     /// The tangential impulse Jt of the projectile on the rod (+y).
     pub tangential_impulse: F,
-    /// Stick or slide, when friction acts (mu != 0).
-    pub contact: Option<ContactMode>,
+    /// Stick or slide (with the slip's sign before the impact), when friction acts
+    /// (mu != 0).
+    pub contact: Option<Mode>,
     /// The tangential impulse that would stop the slip, u_t/k_t (used when sticking); the
     /// friction needed to stick is mu* = |stick_impulse|/J.
     pub stick_impulse: F,
     /// The pivot's impulse on the rod across and along the rod (pivot only).
     pub pivot_impulse: Option<(F, F)>,
-    /// Kinetic energy before, after and lost.
-    pub energy: Energy<F>,
+    /// Kinetic energy before and after.
+    pub energy: EnergyLedger<F>,
     /// The closed form of the loss to restitution, (1 - e^2) u_n^2/(2 k_n).
     pub lost_restitution: F,
     /// The closed form of the loss to friction: 0 without friction, u_t^2/(2 k_t) when
     /// sticking, mu J (|u_t| - mu J k_t/2) when sliding.
     pub lost_friction: F,
-    /// The conservation residuals.
-    pub residuals: PlanarResiduals<F>,
+    /// The conservation laws' residuals: linear momentum across and along the rod (free rod
+    /// only), angular momentum about the rod's centre or the pivot, and the energy lost minus
+    /// `lost_restitution + lost_friction`.
+    pub residuals: Balances<F>,
 }
 
 impl<F> ObliqueOutcome<F> {
@@ -214,7 +129,7 @@ impl ObliqueOutcome<Q> {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::{field::q, scene::Scene, solve::oblique::solve};
+    /// use rodimpact::{field::q, scene::Scene, solve::fast::oblique::solve};
     /// // The sliding end hit: slip 1, k_t = 2, so sticking needs 1/2 = mu* J with J = 2/5.
     /// let s = Scene::builder(q(1, 1), q(1, 1)).v0t(q(1, 1)).mu(q(1, 2)).build()?;
     /// let out = solve(&s.params(), &s.oblique().expect("oblique").params(), None).expect("solves");
@@ -232,7 +147,7 @@ impl ObliqueOutcome<Q> {
 /// ```
 /// use rodimpact::scene::Scene;
 /// use rodimpact::field::{q, Q};
-/// use rodimpact::solve::oblique::normal_params;
+/// use rodimpact::solve::fast::oblique::normal_params;
 /// let s = Scene::builder(q(1, 1), q(1, 1)).v0(q(3, 1)).rod_before(q(1, 1), q(5, 1), q(0, 1)).build().unwrap();
 /// assert_eq!(normal_params(&s.params::<Q>(), &s.oblique().unwrap().params()).v0, q(2, 1));
 /// ```
@@ -256,20 +171,20 @@ pub fn normal_params<F: Field>(p: &Params<F>, o: &ObliqueParams<F>) -> Params<F>
 /// ```
 /// use rodimpact::scene::Scene;
 /// use rodimpact::field::{q, Q};
-/// use rodimpact::solve::oblique::{solve, ContactMode};
+/// use rodimpact::{impact::Mode, solve::fast::oblique::solve};
 /// // Equal masses, centre hit, v0 = 1 and v0t = 1, mu = 1/4: the contact slides.
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(0, 1)).v0t(q(1, 1)).mu(q(1, 4)).build().unwrap();
 /// let out = solve(&s.params::<Q>(), &s.oblique().unwrap().params(), None).unwrap();
-/// assert_eq!(out.contact, Some(ContactMode::Slide { forward: true }));
+/// assert_eq!(out.contact, Some(Mode::Slide { forward: true }));
 /// assert_eq!(out.tangential_impulse, q(1, 4)); // mu J, J = 1
 /// // Taken as sticking: the slip 1 stopped by k_t = 1/m + 1/M = 2, Jt = 1/2.
-/// let stuck = solve(&s.params::<Q>(), &s.oblique().unwrap().params(), Some(ContactMode::Stick)).unwrap();
+/// let stuck = solve(&s.params::<Q>(), &s.oblique().unwrap().params(), Some(Mode::Stick)).unwrap();
 /// assert_eq!(stuck.tangential_impulse, q(1, 2));
 /// ```
 pub fn solve<F: Field>(
     p: &Params<F>,
     o: &ObliqueParams<F>,
-    given: Option<ContactMode>,
+    given: Option<Mode>,
 ) -> Result<ObliqueOutcome<F>, Refusal> {
     let response = linear::solve(&normal_params(p, o)).ok_or(Refusal::Singular)?;
     complete(p, o, response.after, given)
@@ -286,8 +201,8 @@ pub fn solve<F: Field>(
 /// ```
 /// use rodimpact::scene::Scene;
 /// use rodimpact::field::{q, Q};
-/// use rodimpact::mechanics::Motion;
-/// use rodimpact::solve::oblique::complete;
+/// use rodimpact::scene::Motion;
+/// use rodimpact::solve::fast::oblique::complete;
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(0, 1)).v0t(q(1, 1)).build().unwrap();
 /// let response = Motion { v: q(0, 1), rod_v: q(1, 1), omega: q(0, 1) };
 /// let out = complete(&s.params::<Q>(), &s.oblique().unwrap().params(), response, None).unwrap();
@@ -297,7 +212,7 @@ pub fn complete<F: Field>(
     p: &Params<F>,
     o: &ObliqueParams<F>,
     response: Motion<F>,
-    given: Option<ContactMode>,
+    given: Option<Mode>,
 ) -> Result<ObliqueOutcome<F>, Refusal> {
     let rod0 = o.rod_moving(&p.support);
     let normal = normal_params(p, o);
@@ -326,10 +241,10 @@ pub fn complete<F: Field>(
         )
     };
     let jt = match contact {
-        None => F::zero(),
-        Some(ContactMode::Stick) => stick_impulse.clone(),
-        Some(ContactMode::Slide { forward: true }) => o.mu.clone() * &impulse,
-        Some(ContactMode::Slide { forward: false }) => -(o.mu.clone() * &impulse),
+        None | Some(Mode::Frictionless) => F::zero(),
+        Some(Mode::Stick) => stick_impulse.clone(),
+        Some(Mode::Slide { forward: true }) => o.mu.clone() * &impulse,
+        Some(Mode::Slide { forward: false }) => -(o.mu.clone() * &impulse),
     };
     let before = State {
         v: p.v0.clone(),
@@ -366,9 +281,9 @@ pub fn complete<F: Field>(
     let lost_restitution =
         (F::one() - &(p.e.clone() * &p.e)) * &approach * &approach / &(two.clone() * &k_n);
     let lost_friction = match contact {
-        None => F::zero(),
-        Some(ContactMode::Stick) => slip.clone() * &slip / &(two.clone() * &k_t),
-        Some(ContactMode::Slide { forward }) => {
+        None | Some(Mode::Frictionless) => F::zero(),
+        Some(Mode::Stick) => slip.clone() * &slip / &(two.clone() * &k_t),
+        Some(Mode::Slide { forward }) => {
             let speed = if forward { slip.clone() } else { -slip.clone() };
             let mu_j = o.mu.clone() * &impulse;
             mu_j.clone() * &(speed - &(mu_j * &k_t / &two))
@@ -377,17 +292,23 @@ pub fn complete<F: Field>(
     let (bodies_before, bodies_after) = (bodies(p, o, &before), bodies(p, o, &after));
     let energy_before = kinetic_energy(&bodies_before);
     let energy_after = kinetic_energy(&bodies_after);
-    let lost = energy_before.clone() - &energy_after;
+    let energy = EnergyLedger::new(energy_before, energy_after);
     // Angular momentum about the centre or the pivot, in the paper's sign (-L_z).
     let about = Vec2::new(F::zero(), p.axis());
     let momentum = linear_momentum(&bodies_after).sub(&linear_momentum(&bodies_before));
-    let residuals = PlanarResiduals {
-        linear_momentum: free.then(|| momentum.x.clone()),
-        tangential_momentum: free.then_some(momentum.y),
-        angular_momentum: angular_momentum(&bodies_before, &about)
-            - &angular_momentum(&bodies_after, &about),
-        energy_loss: lost.clone() - &lost_restitution - &lost_friction,
-    };
+    let mut residuals = Balances::new();
+    if free {
+        residuals.push(Balance::LinearMomentum, momentum.x);
+        residuals.push(Balance::TangentialMomentum, momentum.y);
+    }
+    residuals.push(
+        Balance::AngularMomentum,
+        angular_momentum(&bodies_before, &about) - &angular_momentum(&bodies_after, &about),
+    );
+    residuals.push(
+        Balance::EnergyLoss,
+        energy.lost() - &lost_restitution - &lost_friction,
+    );
     Ok(ObliqueOutcome {
         before,
         after,
@@ -396,25 +317,21 @@ pub fn complete<F: Field>(
         contact,
         stick_impulse,
         pivot_impulse,
-        energy: Energy {
-            before: energy_before,
-            after: energy_after,
-            lost,
-        },
+        energy,
         lost_restitution,
         lost_friction,
         residuals,
     })
 }
 
-/// Stick when `|slip| <= limit` (limit = mu J k_t), slide otherwise; `None` when the field
-/// cannot tell.
-fn decide<F: Field>(slip: &F, limit: &F) -> Option<ContactMode> {
+/// Stick when the impulse that stops the slip lies in Coulomb's cone, `|slip| <= limit`
+/// (limit = mu J k_t), slide otherwise; `None` when the field cannot tell.
+fn decide<F: Field>(slip: &F, limit: &F) -> Option<Mode> {
     let forward = slip.sign()? == Ordering::Greater;
-    let speed = if forward { slip.clone() } else { -slip.clone() };
-    match (limit.clone() - &speed).sign()? {
-        Ordering::Less => Some(ContactMode::Slide { forward }),
-        Ordering::Equal | Ordering::Greater => Some(ContactMode::Stick),
+    if within_cone(slip, limit)? {
+        Some(Mode::Stick)
+    } else {
+        Some(Mode::Slide { forward })
     }
 }
 
@@ -444,12 +361,6 @@ fn bodies<F: Field>(p: &Params<F>, o: &ObliqueParams<F>, s: &State<F>) -> [Plana
     ]
 }
 
-impl fmt::Display for ContactMode {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.as_str())
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -472,7 +383,7 @@ mod tests {
             .build()
             .unwrap();
         let out = solved(&s);
-        assert_eq!(out.contact, Some(ContactMode::Slide { forward: true }));
+        assert_eq!(out.contact, Some(Mode::Slide { forward: true }));
         assert_eq!(
             (
                 &out.after.v,
@@ -484,7 +395,7 @@ mod tests {
         );
         assert_eq!(out.after.rod.omega, q(6, 5));
         assert_eq!(out.lost_friction, q(4, 25));
-        assert_eq!(out.energy.lost, q(4, 25));
+        assert_eq!(out.energy.lost(), q(4, 25));
         assert!(out.residuals.all_zero());
     }
 
@@ -502,7 +413,7 @@ mod tests {
             .build()
             .unwrap();
         let out = solved(&s);
-        assert_eq!(out.contact, Some(ContactMode::Stick));
+        assert_eq!(out.contact, Some(Mode::Stick));
         assert_eq!(out.tangential_impulse, q(1, 4));
         assert_eq!(
             (&out.after.vt, out.after.spin.as_ref(), &out.after.rod.vt),
@@ -522,7 +433,7 @@ mod tests {
             .build()
             .unwrap();
         let out = solve(&s.params::<f64>(), &s.oblique().unwrap().params(), None).unwrap();
-        assert_eq!(out.contact, Some(ContactMode::Slide { forward: true }));
+        assert_eq!(out.contact, Some(Mode::Slide { forward: true }));
         for (float, exact) in [
             (out.after.vt, 0.8),
             (out.after.rod.vt, 0.2),
@@ -547,7 +458,7 @@ mod tests {
         let (_, along) = out.pivot_impulse.clone().unwrap();
         assert_eq!(along, -out.tangential_impulse.clone());
         // d = 2, I_p = 4, J = 2/(1 + 4/4) = 1; slip -2 beyond mu J k_t = 1/3: slides back.
-        assert_eq!(out.contact, Some(ContactMode::Slide { forward: false }));
+        assert_eq!(out.contact, Some(Mode::Slide { forward: false }));
         assert_eq!(out.tangential_impulse, q(-1, 3));
         assert!(out.residuals.all_zero());
     }

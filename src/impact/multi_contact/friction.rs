@@ -5,11 +5,11 @@
 //! slip at the phase's end. Each phase tries 6^n modes, so a system with friction holds at most
 //! [`MAX_FRICTIONAL_CONTACTS`](crate::model::MAX_FRICTIONAL_CONTACTS) contacts.
 
-use super::several::{
-    Contacts, Model, ModelAnswer, ModelOutcome, finish, negative_part, nonnegative,
-};
+use super::common::{Contacts, finish, negative_part, nonnegative};
+use super::{Model, ModelAnswer, ModelOutcome};
 use crate::field::Field;
-use crate::mechanics::planar::Vec2;
+use crate::impact::coulomb::cone_excess;
+use crate::impact::law::Law;
 use crate::model::System;
 
 /// What friction does at a contact during a phase.
@@ -100,11 +100,8 @@ fn friction_phase<F: Field>(
             } else {
                 nonnegative(&(un_end[i].clone() + &off[i]))
             };
-            let bound = mu[i].clone() * &ln[i];
             let tangential = match grip {
-                Grip::Stick => {
-                    nonnegative(&(bound.clone() - &lt[i])) && nonnegative(&(bound + &lt[i]))
-                }
+                Grip::Stick => cone_excess(&mu[i], &ln[i], &lt[i]).is_zero(),
                 Grip::Forward => nonnegative(&ut_end[i]),
                 Grip::Backward => nonnegative(&-ut_end[i].clone()),
             };
@@ -170,52 +167,31 @@ pub(super) fn with_friction<F: Field>(
     model: &Model,
 ) -> ModelOutcome<F> {
     let n = contacts.len();
-    let tangents: Vec<Vec2<F>> = contacts.normals.iter().map(Vec2::perp).collect();
     let blocks: Blocks<F> = [
-        contacts.coupling(&contacts.normals, &contacts.normals),
-        contacts.coupling(&contacts.normals, &tangents),
-        contacts.coupling(&tangents, &contacts.normals),
-        contacts.coupling(&tangents, &tangents),
+        w.to_vec(),
+        contacts.coupling(0, 1),
+        contacts.coupling(1, 0),
+        contacts.coupling(1, 1),
     ];
-    let mu: Vec<F> = system
-        .contacts
-        .iter()
-        .map(|c| F::from_rational(&c.mu))
-        .collect();
-    let ut0: Vec<F> = system
-        .contacts
-        .iter()
-        .zip(&tangents)
-        .map(|(c, t)| {
-            let rel = system.relative_velocity(c);
-            Vec2::new(F::from_rational(&rel.x), F::from_rational(&rel.y)).dot(t)
-        })
-        .collect();
+    let mu = &contacts.mu;
+    let ut0 = contacts.before(1);
     let zero = vec![F::zero(); n];
     let finish_one = |(ln, lt, free): (Vec<F>, Vec<F>, bool)| {
-        finish(
-            system,
-            contacts,
-            w,
-            u0,
-            model.clone(),
-            (ln, lt, free),
-            Vec::new(),
-        )
+        finish(system, contacts, model.clone(), (ln, lt, free), Vec::new())
     };
     let answers: Vec<ModelAnswer<F>> = match model {
         Model::SimultaneousNewton => {
             let off: Vec<F> = (0..n)
-                .map(|i| contacts.e[i].clone() * &negative_part(&u0[i]))
+                .map(|i| -Law::newton_leaving(&contacts.e[i], &negative_part(&u0[i])))
                 .collect();
-            friction_phase(&blocks, (u0, &ut0), &mu, (&zero, &off))
+            friction_phase(&blocks, (u0, &ut0), mu, (&zero, &off))
                 .into_iter()
                 .map(finish_one)
                 .collect()
         }
         Model::SimultaneousPoisson => {
             let mut all = Vec::new();
-            for (lc, tc, free_c) in friction_phase(&blocks, (u0, &ut0), &mu, (&zero, &zero)) {
+            for (lc, tc, free_c) in friction_phase(&blocks, (u0, &ut0), mu, (&zero, &zero)) {
                 let after = |start: &[F], bn: &[Vec<F>], bt: &[Vec<F>]| -> Vec<F> {
                     (0..n)
                         .map(|i| {
@@ -227,8 +203,10 @@ pub(super) fn with_friction<F: Field>(
                 };
                 let un_c = after(u0, &blocks[0], &blocks[1]);
                 let ut_c = after(&ut0, &blocks[2], &blocks[3]);
-                let base: Vec<F> = (0..n).map(|i| contacts.e[i].clone() * &lc[i]).collect();
-                for (le, te, free_e) in friction_phase(&blocks, (&un_c, &ut_c), &mu, (&base, &zero))
+                let base: Vec<F> = (0..n)
+                    .map(|i| Law::poisson_restitution(&contacts.e[i], &lc[i]))
+                    .collect();
+                for (le, te, free_e) in friction_phase(&blocks, (&un_c, &ut_c), mu, (&base, &zero))
                 {
                     let ln = (0..n).map(|i| lc[i].clone() + &le[i]).collect();
                     let lt = (0..n).map(|i| tc[i].clone() + &te[i]).collect();
