@@ -38,7 +38,7 @@
 //! | 3 core | [`impact`] | the general solver: contacts as Jacobian rows, `W = J M^-1 J^T`; one contact under the three laws with Coulomb friction; several contacts under each model |
 //! | 4 paper | [`scene`] | the paper's scene, a view of the model ([`scene::Scene::system`]): its inputs, motion (v, V, omega) and balances |
 //! | 5 solve | [`solve`] | the whole answer to any scene of the paper ([`solve::Answer`]) by its fast routes, each equal to the core; a* and omega_max ([`solve::optimum`]) |
-//! | 6 decide | [`claims`], [`textbook`], [`stability`], [`contact`], [`batch`], [`suite`], [`samples`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes; the designed suites of scenes (engines) |
+//! | 6 decide | [`claims`], [`textbook`], [`stability`], [`compliant`], [`batch`], [`suite`], [`samples`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes; the designed suites of scenes (engines) |
 //! | 7 output | [`report`], [`io`] | every rendering (text, JSON, Markdown, LaTeX, CSV, SVG); atomic files and directories written all or nothing |
 //!
 //! The command-line tool (the package `crates/rodimpact-cli`: `main.rs` and `commands/`, one
@@ -75,7 +75,7 @@ pub mod solve;
 // Layer 6: decide.
 pub mod batch;
 pub mod claims;
-pub mod contact;
+pub mod compliant;
 pub mod samples;
 pub mod stability;
 pub mod suite;

@@ -9,7 +9,7 @@
 //! `max(|dv|, |dV|, |d omega| l)` against |v0|.
 
 use crate::field::big::{Relaxed, relaxed_to_q, to_relaxed};
-use crate::field::int::{Frac, FracInt, I256, Wide, within};
+use crate::field::int::{I256, Unreduced, UnreducedInt, Wide, within};
 use crate::field::{Field, Q, abs};
 use crate::scene::{Motion, angular_momentum, kinetic_energy, linear_momentum};
 use crate::scene::{Params, Scene, Support};
@@ -176,14 +176,20 @@ pub fn audit(scene: &Scene, exact: &Motion<Q>, claimed: &Motion<Q>) -> Audit {
 }
 
 /// [`audit`] on unreduced fractions of `T`; `None` when a value leaves its width.
-fn audit_on_words<T: FracInt>(
+fn audit_on_words<T: UnreducedInt>(
     scene: &Scene,
     exact: &Motion<Q>,
     claimed: &Motion<Q>,
 ) -> Option<(Vec<Finding>, Q)> {
-    let lift = |m: &Motion<Q>| m.as_ref().map(Frac::<T>::from_rational);
-    within(|| audit_in(&scene.params::<Frac<T>>(), &lift(exact), &lift(claimed)))
-        .map(|(findings, change)| (findings, change.to_q()))
+    let lift = |m: &Motion<Q>| m.as_ref().map(Unreduced::<T>::from_rational);
+    within(|| {
+        audit_in(
+            &scene.params::<Unreduced<T>>(),
+            &lift(exact),
+            &lift(claimed),
+        )
+    })
+    .map(|(findings, change)| (findings, change.to_q()))
 }
 
 /// [`audit`] in an exact ordered field `F`, on the scene's parameters (a rod at rest before a
@@ -289,7 +295,7 @@ mod tests {
     /// A scene of small fractions (free or pivoted, every rod, e from 0 to 1) and a claimed
     /// state written as an engine writes it: each exact value times (1 + k/10^j), rounded to
     /// 17 significant digits, or the exact value itself.
-    fn engine_row() -> impl Strategy<Value = (Scene, Motion<Q>, Motion<Q>)> {
+    fn claimed_row() -> impl Strategy<Value = (Scene, Motion<Q>, Motion<Q>)> {
         let part = || (1i64..40, 1i64..12).prop_map(|(n, d)| q(n, d));
         let rod = prop_oneof![
             Just(RodInertia::Uniform),
@@ -341,7 +347,7 @@ mod tests {
         /// rationals finds, with the same energy change, whenever it fits (a scene whose
         /// fractions have many distinct denominators may not fit the words).
         #[test]
-        fn the_fixed_width_audit_is_the_unbounded_one((scene, exact, claimed) in engine_row()) {
+        fn the_fixed_width_audit_is_the_unbounded_one((scene, exact, claimed) in claimed_row()) {
             use crate::field::big::{RBig, to_q, to_rbig};
             let lift = |m: &Motion<Q>| m.as_ref().map(to_rbig);
             let (findings, change) =

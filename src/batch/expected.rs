@@ -40,20 +40,20 @@ pub struct ExpectedEntry {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::batch::Expected;
-/// let e = Expected::parse("known.csv", "id,finding\nfree-end-*,no-contact\n*,omega-sign\n")?;
+/// use rodimpact::batch::KnownFindings;
+/// let e = KnownFindings::parse("known.csv", "id,finding\nfree-end-*,no-contact\n*,omega-sign\n")?;
 /// assert_eq!(e.allowing("free-end-3", "no-contact"), Some(0));
 /// assert_eq!(e.allowing("pivot-1", "omega-sign"), Some(1));
 /// assert_eq!(e.allowing("pivot-1", "no-contact"), None);
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
-pub struct Expected {
+pub struct KnownFindings {
     /// The entries, in file order.
     pub entries: Vec<ExpectedEntry>,
 }
 
-impl Expected {
+impl KnownFindings {
     /// Reads a baseline file's text (`label` names it in errors).
     ///
     /// # Errors
@@ -62,13 +62,13 @@ impl Expected {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::batch::Expected;
-    /// let err = Expected::parse("known.csv", "id,finding\nend,energy-loose\n").unwrap_err();
+    /// use rodimpact::batch::KnownFindings;
+    /// let err = KnownFindings::parse("known.csv", "id,finding\nend,energy-loose\n").unwrap_err();
     /// assert_eq!(err.to_string(), "expect: known.csv line 2: unknown finding 'energy-loose' \
     ///     (expected energy-gain, energy-loss, restitution-ignored, no-contact, momentum, \
     ///     angular-momentum, above-omega-max, omega-sign, non-finite, off, wrong or *)");
     /// ```
-    pub fn parse(label: &str, text: &str) -> Result<Expected, Error> {
+    pub fn parse(label: &str, text: &str) -> Result<KnownFindings, Error> {
         let bad = |line: usize, why: String| {
             Error::new(
                 "expect",
@@ -126,7 +126,7 @@ impl Expected {
                 line: n,
             });
         }
-        Ok(Expected { entries })
+        Ok(KnownFindings { entries })
     }
 
     /// The first entry that allows `finding` (a diagnosis name, or `wrong`) on the row `id`.
@@ -142,8 +142,8 @@ impl Expected {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::batch::Expected;
-    /// let e = Expected::parse("b.csv", "id,finding\nend,energy-loss\n")?;
+    /// use rodimpact::batch::KnownFindings;
+    /// let e = KnownFindings::parse("b.csv", "id,finding\nend,energy-loss\n")?;
     /// // The expected finding also explains the row's wrong claims.
     /// assert_eq!(e.check("end", &["energy-loss"], true), (vec![0], vec![]));
     /// assert_eq!(e.check("end", &["energy-loss", "momentum"], true), (vec![0], vec!["momentum"]));
@@ -246,13 +246,13 @@ mod tests {
             ),
         ] {
             assert_eq!(
-                Expected::parse("b.csv", text).unwrap_err().to_string(),
+                KnownFindings::parse("b.csv", text).unwrap_err().to_string(),
                 expected
             );
         }
         let big = format!("id,finding\n{}", "a,off\n".repeat(200_000));
         assert!(
-            Expected::parse("b.csv", &big)
+            KnownFindings::parse("b.csv", &big)
                 .unwrap_err()
                 .to_string()
                 .contains("larger than 1048576 bytes (limit)")
@@ -261,7 +261,7 @@ mod tests {
 
     #[test]
     fn comments_after_a_line_are_dropped() {
-        let e = Expected::parse("b.csv", "id,finding\nend,off   # known since 2.3\n").unwrap();
+        let e = KnownFindings::parse("b.csv", "id,finding\nend,off   # known since 2.3\n").unwrap();
         assert_eq!(e.entries[0].finding, "off");
         assert_eq!(e.entries[0].line, 2);
     }

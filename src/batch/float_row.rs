@@ -11,8 +11,8 @@
 //! same value (`tests/lib/batch_words.rs`).
 
 use super::compare::{Agreement, float_rel_error};
+use super::fixed_width_row::read_cells;
 use super::plan::{Arithmetic, OutputCheck, STATE, SolvedRow, WordPlan, write_float};
-use super::word_row::read_cells;
 use crate::field::int::U256;
 use crate::number::WordRatio;
 use crate::scene::{Params, Support};

@@ -3,7 +3,7 @@
 
 use super::classes::ClassRule;
 use super::compare::{Agreement, Claimed};
-use super::expected::Expected;
+use super::expected::KnownFindings;
 use super::plan::{
     Arithmetic, CLAIMS, OBLIQUE_CLAIMS, OBLIQUE_OUTPUTS, Role, STATE, WORD_CLAIMS, WORD_SCENE,
     WordPlan,
@@ -102,7 +102,7 @@ pub struct Batch {
     /// `--atol`: a claim also agrees within this many of the scene's own units.
     pub(super) atol: Option<Q>,
     /// `--expect`: the findings the batch is allowed to have.
-    pub(super) expected: Option<Arc<Expected>>,
+    pub(super) expected: Option<Arc<KnownFindings>>,
     /// `--tolerance`: the agreement of classes of rows, the first that takes a row.
     pub(super) class_rules: Vec<ClassRule>,
     header: String,
@@ -374,8 +374,8 @@ impl Batch {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::batch::{Arithmetic, Batch, Expected};
-    /// let known = Expected::parse("known.csv", "id,finding\nend,no-contact\n")?;
+    /// use rodimpact::batch::{Arithmetic, Batch, KnownFindings};
+    /// let known = KnownFindings::parse("known.csv", "id,finding\nend,no-contact\n")?;
     /// let b = Batch::new("id,m,M,a,v,V,omega", Arithmetic::Exact)?.with_expected(known.clone())?;
     /// let row = b.row(1, "end,1,1,1,1,0,0")?;
     /// assert_eq!(row.expectation.unwrap().unexpected, Vec::<&str>::new());
@@ -384,7 +384,7 @@ impl Batch {
     ///     "expect: the batch has no id column to match the baseline's ids against");
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
-    pub fn with_expected(mut self, expected: Expected) -> Result<Batch, Error> {
+    pub fn with_expected(mut self, expected: KnownFindings) -> Result<Batch, Error> {
         if self.id_column.is_none() {
             return Err(Error::new(
                 "expect",

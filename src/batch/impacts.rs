@@ -24,7 +24,7 @@ use std::cmp::Ordering;
 /// One exact answer the claimed state is compared with: a law's or a model's name and every
 /// moving body's (index, velocity, spin).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Reference {
+pub struct EngineReference {
     /// `newton`, `poisson`, `energetic`, or a model (`simultaneous-newton`, `pgs:4`, ...).
     pub name: String,
     /// The moving bodies after.
@@ -39,7 +39,7 @@ pub struct ImpactAudit {
     /// The scene.
     pub system: System,
     /// The exact answers, under every law or model.
-    pub references: Vec<Reference>,
+    pub references: Vec<EngineReference>,
     /// The claimed state, when the line has one: every moving body's (index, velocity, spin).
     pub claimed: Option<Vec<(usize, Vec2<Q>, Q)>>,
     /// The engine's name, as the line gives it.
@@ -56,7 +56,7 @@ pub struct ImpactAudit {
 /// The references a system is answered by: the three laws (one contact), or the simultaneous
 /// models and, unless `simultaneous_only`, sequential impacts in every order (up to 4 contacts)
 /// and 1, 4 and 10 sweeps of projected Gauss-Seidel (several).
-fn answers(system: &System, simultaneous_only: bool) -> Result<Vec<Reference>, Error> {
+fn answers(system: &System, simultaneous_only: bool) -> Result<Vec<EngineReference>, Error> {
     let lift = |v: &Vec2<Q>| Vec2::new(QSqrt::rational(v.x.clone()), QSqrt::rational(v.y.clone()));
     if system.contacts.len() == 1 {
         return Law::ALL
@@ -64,7 +64,7 @@ fn answers(system: &System, simultaneous_only: bool) -> Result<Vec<Reference>, E
             .map(|&law| {
                 let answer = solve_exact(system, law)
                     .map_err(|e| Error::new("scene", ErrorKind::Invalid(e.to_string())))?;
-                Ok(Reference {
+                Ok(EngineReference {
                     name: law.name().into(),
                     bodies: answer
                         .bodies
@@ -92,7 +92,7 @@ fn answers(system: &System, simultaneous_only: bool) -> Result<Vec<Reference>, E
                 } else {
                     format!("{model} (answer {})", k + 1)
                 };
-                out.push(Reference {
+                out.push(EngineReference {
                     name,
                     bodies: a
                         .bodies
@@ -179,7 +179,11 @@ fn claimed(value: &Value, system: &System) -> Result<(Option<String>, Option<Bod
 /// body's mass and inertia weighing its own), so every component counts in proportion to the
 /// motion it carries and an exact zero is no special case. `None` when a claimed component is
 /// not finite, or nothing moves before.
-fn error(system: &System, claimed: &[(usize, Vec2<Q>, Q)], reference: &Reference) -> Option<QSqrt> {
+fn error(
+    system: &System,
+    claimed: &[(usize, Vec2<Q>, Q)],
+    reference: &EngineReference,
+) -> Option<QSqrt> {
     if claimed.is_empty() {
         return None;
     }
@@ -303,7 +307,7 @@ pub fn audit_impact(line: &str, number: usize, rtol: &Q) -> Result<ImpactAudit, 
 fn diagnose(
     system: &System,
     claims: &[(usize, Vec2<Q>, Q)],
-    references: &[Reference],
+    references: &[EngineReference],
     rtol: &Q,
 ) -> Vec<&'static str> {
     if claims.is_empty() {

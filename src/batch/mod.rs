@@ -21,19 +21,20 @@
 //! and writing its output line (`row.rs`: [`SolvedRow`]), claimed values against computed ones
 //! (`compare.rs`: [`OutputCheck`], its exact error kept as computed in `rel_error.rs`), the tolerances per class of rows (`classes.rs`:
 //! [`ClassRule`]), the known findings of `--expect` (`expected.rs`:
-//! [`Expected`]), the totals (`summary.rs`: [`Summary`], rendered by
+//! [`KnownFindings`]), the totals (`summary.rs`: [`Summary`], rendered by
 //! [`crate::report::batch_summary`]) and the chunked, parallel stream (`stream.rs`: [`run`]).
 //! The word rows are shortcuts that give the general row's line byte for byte: the paper's row
-//! (`word_row.rs`), its f64 twin (`float_row.rs`), an engine's row with any rod, pivot and
-//! claims, audited on fixed-width integers (`engine_row.rs`), and an engine's row of an oblique
-//! header, its claims checked on words (`engine_row/oblique.rs`). An engine's rows come in runs
+//! (`fixed_width_row.rs`), its f64 twin (`float_row.rs`), an engine's row with any rod, pivot and
+//! claims, audited on fixed-width integers (`claimed_row.rs`), and an engine's row of an oblique
+//! header, its claims checked on words (`claimed_row/oblique.rs`). An engine's rows come in runs
 //! of one scene, which both engine rows solve once a run (`last_scene.rs`).
 
 mod audit;
+mod claimed_row;
 mod classes;
 mod compare;
-mod engine_row;
 mod expected;
+mod fixed_width_row;
 mod float_row;
 mod header;
 mod impacts;
@@ -44,14 +45,13 @@ mod row;
 mod stream;
 mod summary;
 mod ulps;
-mod word_row;
 
 pub use audit::{Audit, Finding, LAW_TOLERANCE, STATE_TOLERANCE, audit};
 pub use classes::{ClassRule, RowClass};
 pub use compare::{Agreement, FLOAT_TOLERANCE, MAX_ULPS};
-pub use expected::{Expected, ExpectedEntry, MAX_EXPECTED_BYTES};
+pub use expected::{ExpectedEntry, KnownFindings, MAX_EXPECTED_BYTES};
 pub use header::{Batch, read_header, scene_columns};
-pub use impacts::{ImpactAudit, Reference, audit_impact};
+pub use impacts::{EngineReference, ImpactAudit, audit_impact};
 pub use plan::{Arithmetic, Diagnosis, OutputCheck, RowExpectation, SolvedRow};
 pub use stream::{CHUNK, MAX_LINE, MAX_ROWS, run};
 pub use summary::{Baseline, FINDING_EXAMPLES, OutputStats, Summary, WRONG_ROWS_SHOWN};

@@ -136,7 +136,7 @@ pub struct SolvedRow {
     pub expectation: Option<RowExpectation>,
 }
 
-/// A row against the baseline of `--expect` ([`Expected::check`](super::Expected::check)).
+/// A row against the baseline of `--expect` ([`KnownFindings::check`](super::KnownFindings::check)).
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct RowExpectation {
     /// The baseline entries (0-based) that allowed its findings.

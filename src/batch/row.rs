@@ -2,17 +2,17 @@
 //! line with v, V, omega, whether the laws held, and each claim's check appended.
 
 use super::audit::{Finding, audit};
+use super::claimed_row::{claimed_row, oblique_row};
 use super::compare::{Agreement, Claimed, compare};
-use super::engine_row::{engine_row, oblique_row};
+use super::fixed_width_row::fixed_width_row;
 use super::float_row::float_word_row;
 use super::header::Batch;
 use super::plan::{
     Arithmetic, CLAIMS, Diagnosis, OutputCheck, RowExpectation, STATE, SolvedRow, write_float,
 };
-use super::word_row::word_row;
 use crate::error::Error;
 use crate::field::big::{RBig, to_q, to_rbig};
-use crate::field::int::{Frac, FracInt, I256, Wide, within};
+use crate::field::int::{I256, Unreduced, UnreducedInt, Wide, within};
 use crate::field::{Field, Q};
 use crate::impact::Mode;
 use crate::scene::Scene;
@@ -49,8 +49,8 @@ impl Batch {
                 Arithmetic::Exact if plan.oblique => {
                     oblique_row(plan, &self.agreement, number, line)
                 }
-                Arithmetic::Exact => word_row(plan, number, line)
-                    .or_else(|| engine_row(plan, &self.agreement, number, line)),
+                Arithmetic::Exact => fixed_width_row(plan, number, line)
+                    .or_else(|| claimed_row(plan, &self.agreement, number, line)),
                 Arithmetic::F64 => float_word_row(plan, &self.agreement, number, line),
             })
         {
@@ -297,13 +297,13 @@ fn exact_energy(scene: &Scene, motion: &Motion<Q>) -> Q {
 }
 
 /// [`exact_energy`] on unreduced fractions of `T`; `None` when a value leaves its width.
-fn energy_on_words<T: FracInt>(scene: &Scene, motion: &Motion<Q>) -> Option<Q> {
+fn energy_on_words<T: UnreducedInt>(scene: &Scene, motion: &Motion<Q>) -> Option<Q> {
     // Lifted inside `within`: a number too wide for `T` is reported there too.
     within(|| {
-        let lifted = motion.as_ref().map(Frac::<T>::from_rational);
-        kinetic_energy(&scene.params::<Frac<T>>(), &lifted)
+        let lifted = motion.as_ref().map(Unreduced::<T>::from_rational);
+        kinetic_energy(&scene.params::<Unreduced<T>>(), &lifted)
     })
-    .map(Frac::to_q)
+    .map(Unreduced::to_q)
 }
 
 /// Writes v, V, omega and the oblique columns (`vt, Vt, spin, tangential_impulse, contact`;

@@ -2,7 +2,7 @@
 //! the median relative error (from a bounded histogram, so memory stays flat in the rows).
 
 use super::audit::Finding;
-use super::expected::{Expected, ExpectedEntry};
+use super::expected::{ExpectedEntry, KnownFindings};
 use super::plan::{CLAIMS, Diagnosis, SolvedRow};
 use super::rel_error::RelError;
 use crate::field::Q;
@@ -61,14 +61,17 @@ impl Baseline {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::batch::{Baseline, Expected};
-    /// let known = Expected::parse("known.csv", "id,finding\nend,off\nold,off\n")?;
+    /// use rodimpact::batch::{Baseline, KnownFindings};
+    /// let known = KnownFindings::parse("known.csv", "id,finding\nend,off\nold,off\n")?;
     /// let tally = Baseline { used: [0].into(), ..Baseline::default() };
     /// let lines: Vec<usize> = tally.unmatched(&known).map(|e| e.line).collect();
     /// assert_eq!(lines, [3]);
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
-    pub fn unmatched<'a>(&self, expected: &'a Expected) -> impl Iterator<Item = &'a ExpectedEntry> {
+    pub fn unmatched<'a>(
+        &self,
+        expected: &'a KnownFindings,
+    ) -> impl Iterator<Item = &'a ExpectedEntry> {
         expected
             .entries
             .iter()
@@ -269,8 +272,8 @@ impl Summary {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::batch::{Arithmetic, Batch, Expected, Summary};
-    /// let known = Expected::parse("known.csv", "id,finding\nend,no-contact\n")?;
+    /// use rodimpact::batch::{Arithmetic, Batch, KnownFindings, Summary};
+    /// let known = KnownFindings::parse("known.csv", "id,finding\nend,no-contact\n")?;
     /// let b = Batch::new("id,m,M,a,v,V,omega", Arithmetic::Exact)?.with_expected(known)?;
     /// let mut s = Summary::default();
     /// s.add(&b.row(1, "end,1,1,1,1,0,0")?); // no contact: known

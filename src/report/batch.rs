@@ -1,7 +1,7 @@
 //! The summary `rodimpact batch` prints on standard error.
 
 use super::counted;
-use crate::batch::{Baseline, Expected, Finding, OutputStats, Summary};
+use crate::batch::{Baseline, Finding, KnownFindings, OutputStats, Summary};
 use crate::field::decimal;
 
 /// The summary of a batch: rows, laws (or that they were not checked, with the f64
@@ -200,9 +200,9 @@ pub fn batch_passed(summary: &Summary) -> bool {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::batch::{Arithmetic, Batch, Expected, Summary};
+/// use rodimpact::batch::{Arithmetic, Batch, KnownFindings, Summary};
 /// use rodimpact::report::expected_report;
-/// let known = Expected::parse("known.csv", "id,finding\nend,no-contact\nold,off\n")?;
+/// let known = KnownFindings::parse("known.csv", "id,finding\nend,no-contact\nold,off\n")?;
 /// let b = Batch::new("id,m,M,a,v,V,omega", Arithmetic::Exact)?.with_expected(known.clone())?;
 /// let mut s = Summary::default();
 /// s.add(&b.row(1, "end,1,1,1,1,0,0")?);
@@ -212,7 +212,11 @@ pub fn batch_passed(summary: &Summary) -> bool {
 ///      known.csv lines that matched no row: 3 (old,off)\n");
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn expected_report(summary: &Summary, expected: &Expected, file: &std::path::Path) -> String {
+pub fn expected_report(
+    summary: &Summary,
+    expected: &KnownFindings,
+    file: &std::path::Path,
+) -> String {
     let file = crate::echo::echo_path(file);
     let empty = Baseline::default();
     let tally = summary.baseline().unwrap_or(&empty);

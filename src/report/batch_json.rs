@@ -2,7 +2,7 @@
 //! the text on standard error.
 
 use super::batch_passed;
-use crate::batch::{Expected, Finding, Summary};
+use crate::batch::{Finding, KnownFindings, Summary};
 use crate::field::decimal;
 use serde_json::{Value, json};
 
@@ -29,7 +29,7 @@ use serde_json::{Value, json};
 /// assert_eq!(json["passed"], false);
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn batch_summary_json(summary: &Summary, expected: Option<&Expected>) -> Value {
+pub fn batch_summary_json(summary: &Summary, expected: Option<&KnownFindings>) -> Value {
     let mut claims = serde_json::Map::new();
     for (name, stats) in summary.outputs() {
         if stats.compared() == 0 {

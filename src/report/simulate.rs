@@ -3,8 +3,8 @@
 //! and the verdict (text and JSON).
 
 use super::solution::{describe, scene_json};
-use crate::contact::{
-    CompliantContact, Ending, Geometry, Integrator, LOOSEST, Run, Slopes, SweepRow, Tolerance,
+use crate::compliant::{
+    CompliantContact, Geometry, Integrator, LOOSEST, Run, RunEnd, Slopes, SweepRow, Tolerance,
     stability_limit,
 };
 use crate::field::Q;
@@ -19,7 +19,7 @@ const DIGITS: usize = 15;
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, simulate};
+/// use rodimpact::compliant::{CompliantContact, Geometry, Integrator, simulate};
 /// use rodimpact::{field::q, report::simulation_text, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
@@ -93,7 +93,7 @@ pub fn simulation_text(contact: &CompliantContact, runs: &[Run]) -> String {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, simulate};
+/// use rodimpact::compliant::{CompliantContact, Geometry, Integrator, simulate};
 /// use rodimpact::{field::q, report::simulation_passes, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let c = CompliantContact::new(&scene, 1e2, Geometry::Exact)?; // too soft: the model floor is 0.43
@@ -110,7 +110,7 @@ pub fn simulation_passes(runs: &[Run]) -> bool {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Geometry, Integrator, sweep_k};
+/// use rodimpact::compliant::{Geometry, Integrator, sweep_k};
 /// use rodimpact::{field::q, report::sweep_passes, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let rows = sweep_k(&scene, &[1e2, 1e6], Geometry::Exact, Integrator::EventRk4, 100)?;
@@ -142,7 +142,7 @@ fn fixed_or_sci(x: f64) -> String {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, simulate};
+/// use rodimpact::compliant::{CompliantContact, Geometry, Integrator, simulate};
 /// use rodimpact::{field::q, report::simulation_json, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
@@ -183,7 +183,7 @@ pub fn simulation_json(contact: &CompliantContact, runs: &[Run]) -> Value {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Geometry, Integrator, sweep_k};
+/// use rodimpact::compliant::{Geometry, Integrator, sweep_k};
 /// use rodimpact::{field::q, report::sweep_text, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let rows = sweep_k(&scene, &[1e4, 1e6, 1e8], Geometry::Exact, Integrator::EventRk4, 400)?;
@@ -283,7 +283,7 @@ pub fn sweep_text(rows: &[SweepRow], steps_per_contact: usize) -> String {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Geometry, Integrator, sweep_k};
+/// use rodimpact::compliant::{Geometry, Integrator, sweep_k};
 /// use rodimpact::{field::q, report::sweep_json, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).pivot(q(0, 1)).build()?;
 /// let rows = sweep_k(&scene, &[1e4, 1e6, 1e8], Geometry::Exact, Integrator::EventRk4, 400)?;
@@ -555,10 +555,10 @@ fn run_json(run: &Run) -> Value {
         "rel_err": {"v": run.errors[0], "V": run.errors[1], "omega": run.errors[2]},
         "lateral": run.lateral, "energy_change": run.energy_change,
         "ending": match run.ending {
-            Ending::Separated => "separated",
-            Ending::Settled => "settled",
-            Ending::SlidOff => "slid off the rod's end",
-            Ending::StillInContact => "still in contact",
+            RunEnd::Separated => "separated",
+            RunEnd::Settled => "settled",
+            RunEnd::SlidOff => "slid off the rod's end",
+            RunEnd::StillInContact => "still in contact",
         },
         "tolerance": {
             "model": run.tolerance.model, "integrator": run.tolerance.integrator,

@@ -14,7 +14,7 @@
 use super::fast::oblique;
 use super::optimum::{Optimum, PaperForm, optimum};
 use super::{Outcome, Route, Solved};
-use crate::field::int::{FixedInt, Frac, FracInt, I256, U256, Wide, within};
+use crate::field::int::{FixedInt, I256, U256, Unreduced, UnreducedInt, Wide, within};
 use crate::field::{Field, Q};
 use crate::impact::Mode;
 use crate::scene::Motion;
@@ -222,17 +222,17 @@ impl Answer {
 /// [`complete_exactly`] works: two kinetic energies over reduced rationals were most of an
 /// oblique batch row's normal problem.
 fn outcome_exactly(scene: &Scene, solved: Solved<Q>) -> Outcome<Q> {
-    fn on_words<T: FracInt>(scene: &Scene, solved: &Solved<Q>) -> Option<Outcome<Q>> {
+    fn on_words<T: UnreducedInt>(scene: &Scene, solved: &Solved<Q>) -> Option<Outcome<Q>> {
         // Lifted inside `within`, which clears the overflow flag as it starts.
         within(|| {
             let lifted = Solved {
                 route: solved.route,
-                after: solved.after.as_ref().map(Frac::<T>::from_rational),
+                after: solved.after.as_ref().map(Unreduced::<T>::from_rational),
                 laws_hold: solved.laws_hold,
             };
             lifted.outcome(&scene.params())
         })
-        .map(|done| done.map(Frac::to_q))
+        .map(|done| done.map(Unreduced::to_q))
     }
     on_words::<I256>(scene, &solved)
         .or_else(|| on_words::<Wide>(scene, &solved))
@@ -249,8 +249,8 @@ fn complete_exactly(
     response: &Motion<Q>,
 ) -> ObliqueOutcome<Q> {
     complete_in::<I256>(scene, o, response)
-        .map(|done| done.map(Frac::to_q))
-        .or_else(|| complete_in::<Wide>(scene, o, response).map(|done| done.map(Frac::to_q)))
+        .map(|done| done.map(Unreduced::to_q))
+        .or_else(|| complete_in::<Wide>(scene, o, response).map(|done| done.map(Unreduced::to_q)))
         .unwrap_or_else(|| complete_over_q(scene, o, response))
 }
 
@@ -274,14 +274,14 @@ fn complete_over_q(
 /// [`oblique::complete`] of `scene` with the oblique part `o` and the normal problem's
 /// answer `response`, over unreduced fractions of `T`; `None` when a value leaves `T`'s width
 /// on the way.
-fn complete_in<T: FracInt>(
+fn complete_in<T: UnreducedInt>(
     scene: &Scene,
     o: &crate::scene::Oblique,
     response: &Motion<Q>,
-) -> Option<ObliqueOutcome<Frac<T>>> {
+) -> Option<ObliqueOutcome<Unreduced<T>>> {
     // Lifted inside `within`, which clears the overflow flag as it starts.
     within(|| {
-        let response = response.as_ref().map(Frac::<T>::from_rational);
+        let response = response.as_ref().map(Unreduced::<T>::from_rational);
         oblique::complete(&scene.params(), &o.params(), response, None)
     })?
     .ok()
@@ -327,7 +327,7 @@ impl AfterOnWords {
             Some(AfterOnWords::reduced(
                 done,
                 normal_laws_hold,
-                Frac::reduced_words,
+                Unreduced::reduced_words,
             ))
         }
         on_words::<i128>(scene, o, response, normal_laws_hold)

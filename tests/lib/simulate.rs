@@ -3,8 +3,8 @@
 //! event-driven RK4's order, the explicit integrators' stability limits, the stated tolerance
 //! over a sample of scenes, and the runs it must flag.
 
-use rodimpact::contact::{
-    CompliantContact, Ending, Geometry, Integrator, LOOSEST, MAX_WORK, Miss, Slopes, fit_slope,
+use rodimpact::compliant::{
+    CompliantContact, Geometry, Integrator, LOOSEST, MAX_WORK, Miss, RunEnd, Slopes, fit_slope,
     simulate, sweep_k, work,
 };
 use rodimpact::field::{Q, q};
@@ -36,7 +36,7 @@ fn not_magic(h_omega: f64) -> f64 {
 
 /// A run of `c` with event-driven RK4 at T_c / 4000, whose error (about 0.007 (h Omega)^4,
 /// 1e-15 here) is below every model error measured.
-fn fine_run(c: &CompliantContact) -> rodimpact::contact::Run {
+fn fine_run(c: &CompliantContact) -> rodimpact::compliant::Run {
     simulate(c, Integrator::EventRk4, c.contact_time() / 4000.0).unwrap()
 }
 
@@ -69,7 +69,7 @@ fn exact_geometry_converges_as_one_over_k_and_lateral_as_root_k() {
         assert!((err / want - 1.0).abs() < 0.05, "{err} against {want}");
     }
     assert!((run.lateral / 1.9e-4 - 1.0).abs() < 0.05, "{}", run.lateral);
-    assert_eq!(run.ending, Ending::Separated);
+    assert_eq!(run.ending, RunEnd::Separated);
     assert_eq!(run.miss, None);
 }
 
@@ -130,7 +130,7 @@ fn pivoted_rod_converges_to_the_exact_velocities_and_pivot_impulse() {
         let stiff = &rows[rows.len() - 1].run;
         assert!(stiff.pivot_error.unwrap() < 1e-8, "{stiff:?}");
         assert!(stiff.errors.iter().all(|e| *e < 1e-8), "{stiff:?}");
-        assert!(rows.iter().all(|r| r.run.ending == Ending::Separated));
+        assert!(rows.iter().all(|r| r.run.ending == RunEnd::Separated));
     }
 }
 
@@ -169,7 +169,7 @@ fn sticking_contact_converges_to_the_exact_sticking_values() {
             let c = CompliantContact::new(&s, k, Geometry::Frozen).unwrap();
             assert!(c.sticking());
             let run = fine_run(&c);
-            assert_eq!(run.ending, Ending::Settled);
+            assert_eq!(run.ending, RunEnd::Settled);
             // The frozen model's only error is the relative motion left at T_s (1e-13 v0).
             assert!(
                 run.errors.iter().all(|e| *e < 1e-12),
@@ -405,7 +405,7 @@ fn hits_at_or_sliding_off_the_end_are_refused_or_flagged() {
     let near = end.with_a(q(9999, 10000)).unwrap();
     let c = CompliantContact::new(&near, 1e3, Geometry::Exact).unwrap();
     let run = fine_run(&c);
-    assert_eq!(run.ending, Ending::SlidOff);
+    assert_eq!(run.ending, RunEnd::SlidOff);
     assert_eq!(run.miss, Some(Miss::SlidOff));
     assert!(run.errors[2] > 0.1, "{run:?}"); // the impulse was cut short
 }

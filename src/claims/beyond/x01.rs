@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Restitution).impulses(),
+        Setting::new(Rod::Free, ExportLaw::Restitution).impulses(),
         &[
             Check::holds(
                 "the impulse and the velocities",
@@ -25,7 +25,7 @@ const EXPORT: Export = Export::Stated(
             ),
         ],
     )
-    .at(&[Impact { at: "a", tag: "" }, Impact { at: "a", tag: "2" }]),
+    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "a", tag: "2" }]),
 );
 
 fn formalise(_paper: &Paper) -> Formalised {

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Restitution),
+    Setting::new(Rod::Free, ExportLaw::Restitution),
     &[
         Check::holds("e = 1 gives Eqs. (v), (V), (omega)", "v = -(1 - m/M - m*a^2/I)/(1 + m/M + m*a^2/I)*v0 and V = (2*m/M)/(1 + m/M + m*a^2/I)*v0 and omega = (2*m*a/I)/(1 + m/M + m*a^2/I)*v0").given(&["e = 1"]),
         Check::holds("e = 1 conserves kinetic energy", "m*v0^2 = m*v^2 + M*V^2 + I*omega^2").given(&["e = 1"]),

@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Sticking),
+    Setting::new(Rod::Free, ExportLaw::Sticking),
     &[
         Check::holds(
             "omega = mu a v0/(I + mu a^2), mu = m M/(M + m)",

@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Restitution).impulses(),
+        Setting::new(Rod::Free, ExportLaw::Restitution).impulses(),
         &[
             Check::holds(
                 "omega_e = (1+e) v0 a/(a*^2 + a^2)",
@@ -31,9 +31,9 @@ const EXPORT: Export = Export::Stated(
         ],
     )
     .at(&[
-        Impact { at: "a", tag: "" },
-        Impact { at: "s", tag: "s" },
-        Impact { at: "0", tag: "0" },
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "s", tag: "s" },
+        StrikePoint { at: "0", tag: "0" },
     ])
     .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]),
 );

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Restitution),
+    Setting::new(Rod::Free, ExportLaw::Restitution),
     &[
         Check::holds("omega(a*) = (1+e) v0/(2a*)", "omega_s = (1 + e)*v0/(2*s)"),
         Check::holds("omega(a*)^2 = ((1+e) v0/2)^2 mu/I", "omega_s^2 = ((1 + e)*v0/2)^2*(m*M/(M + m))/I"),
@@ -18,7 +18,7 @@ const EXPORT: Export = Export::Stated(Statement::new(
         Check::holds("uniform rod: omega(a*) = (1+e)(v0/2l) sqrt(3m/(M+m))", "omega_s^2 = ((1 + e)*v0/(2*l))^2*3*m/(M + m)").given(&["I = M*l^2/3"]),
     ],
 )
-.at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }, Impact { at: "l", tag: "l" }])
+.at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }, StrikePoint { at: "l", tag: "l" }])
 .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]));
 
 fn formalise(paper: &Paper) -> Formalised {

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Restitution),
+        Setting::new(Rod::Free, ExportLaw::Restitution),
         &[
             Check::holds(
                 "omega(a)/omega(a*) = 2s/(1+s^2) with s = a/a*",
@@ -21,9 +21,9 @@ const EXPORT: Export = Export::Stated(
         ],
     )
     .at(&[
-        Impact { at: "a", tag: "" },
-        Impact { at: "s", tag: "s" },
-        Impact {
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "s", tag: "s" },
+        StrikePoint {
             at: "s^2/a",
             tag: "r",
         },

@@ -14,7 +14,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Restitution),
+        Setting::new(Rod::Uniform, ExportLaw::Restitution),
         &[
             Check::holds(
                 "(omega(l)/omega(a*))^2 = 12(1+k)/(4+k)^2, k = M/m",
@@ -32,7 +32,7 @@ const EXPORT: Export = Export::Stated(
             .given(&["M = m", "q > 0", "q^2 = 3"]),
         ],
     )
-    .at(&[Impact { at: "s", tag: "s" }, Impact { at: "l", tag: "l" }])
+    .at(&[StrikePoint { at: "s", tag: "s" }, StrikePoint { at: "l", tag: "l" }])
     .given(&["s > 0", "s^2 = (M + m)*l^2/(3*m)"])
     .partly("the unbounded gain for a general r_G (a statement about a limit over rods)"),
 );

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Elastic),
+    Setting::new(Rod::Free, ExportLaw::Elastic),
     &[
         Check::holds("at a*: v = V = m v0/(M + m), the CM velocity", "v_s = m*v0/(M + m) and V_s = m*v0/(M + m)"),
         Check::holds("at a* the rotational energy is mu v0^2/2, a fraction M/(M+m) of K0", "I*omega_s^2 = (m*M/(M + m))*v0^2 and (m*M/(M + m))*v0^2 = M/(M + m)*(m*v0^2)"),
@@ -19,7 +19,7 @@ const EXPORT: Export = Export::Stated(Statement::new(
         Check::holds("hence omega <= v0/a* for a >= 0", "a >= 0 => omega <= v0/s"),
     ],
 )
-.at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+.at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
 .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]));
 
 fn formalise(paper: &Paper) -> Formalised {

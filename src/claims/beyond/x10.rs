@@ -10,12 +10,12 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Restitution),
+    Setting::new(Rod::Free, ExportLaw::Restitution),
     &[
         Check::holds("at a*: v - V, V and the rotational energy", "v_s - V_s = (1 - e)*v0/2 and V_s = (1 + e)*m*v0/(2*(M + m)) and I*omega_s^2 = ((1 + e)/2)^2*(m*M/(M + m))*v0^2"),
     ],
 )
-.at(&[Impact { at: "s", tag: "s" }])
+.at(&[StrikePoint { at: "s", tag: "s" }])
 .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]));
 
 fn formalise(paper: &Paper) -> Formalised {

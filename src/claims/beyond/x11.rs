@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Restitution),
+        Setting::new(Rod::Free, ExportLaw::Restitution),
         &[
             Check::holds(
                 "energy lost: 2 dK = (1 - e^2) m_eff v0^2, m_eff = 1/(1/m + 1/M + a^2/I)",
@@ -29,7 +29,7 @@ const EXPORT: Export = Export::Stated(
             ),
         ],
     )
-    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
     .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]),
 );
 

@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Gyration, Law::Restitution),
+    Setting::new(Rod::Gyration, ExportLaw::Restitution),
     &[
         Check::holds("v = v0 (m - e M_eff)/(m + M_eff), M_eff = M r_G^2/(r_G^2 + a^2)", "v = v0*(m - e*Me)/(m + Me)"),
         Check::holds("bounces back iff m < e M_eff, stops iff m = e M_eff", "(v < 0 => m < e*Me) and (m < e*Me => v < 0) and (v = 0 => m = e*Me) and (m = e*Me => v = 0)"),
@@ -22,7 +22,7 @@ const EXPORT: Export = Export::Stated(Statement::new(
         Check::holds("e = 1 at a*: it goes on", "v_s > 0").given(&["e = 1"]),
     ],
 )
-.at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+.at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
 .given(&["l > 0", "Me = M*r^2/(r^2 + a^2)", "s > 0", "s^2 = (M + m)*r^2/m"]));
 
 fn formalise(paper: &Paper) -> Formalised {

@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Gyration, Law::Restitution),
+        Setting::new(Rod::Gyration, ExportLaw::Restitution),
         &[
             Check::holds(
                 "the rod point y0 = -r_G^2/a is at rest after the impact",

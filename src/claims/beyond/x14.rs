@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Gyration, Law::Restitution),
+        Setting::new(Rod::Gyration, ExportLaw::Restitution),
         &[
             Check::holds(
                 "the far end moves with V (1 - a l/r_G^2)",

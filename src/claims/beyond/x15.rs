@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, ExportLaw::Elastic),
         &[
             Check::holds(
                 "v = v0 (a^2 - a0^2)/(a^2 + a*^2), a0^2 = l^2 (M - m)/(3m)",
@@ -28,7 +28,7 @@ const EXPORT: Export = Export::Stated(
             ),
         ],
     )
-    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
     .given(&["z = l^2*(M - m)/(3*m)", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
 );
 

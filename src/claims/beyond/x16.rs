@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Gyration, Law::Elastic),
+    Setting::new(Rod::Gyration, ExportLaw::Elastic),
     &[
         Check::holds("bounds vanishing as M -> 0+: |v - v0|, |V - 2 v0 r^2/(r^2 + a^2)| and |V + omega a - 2 v0| are at most 2 v0 M/m, |omega - 2 v0 a/(r^2 + a^2)| at most 2 v0 |a| M/(m (r^2 + a^2))", "(v - v0)^2 <= (2*v0*M/m)^2 and (V - 2*v0*r^2/(r^2 + a^2))^2 <= (2*v0*M/m)^2 and (omega - 2*v0*a/(r^2 + a^2))^2 <= (2*v0*a*M/(m*(r^2 + a^2)))^2 and (V + omega*a - 2*v0)^2 <= (2*v0*M/m)^2"),
         Check::holds("a*^2 - r_G^2 = (M/m) r_G^2", "s^2 - r^2 = (M/m)*r^2"),

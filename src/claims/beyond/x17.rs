@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Gyration, Law::Restitution),
+    Setting::new(Rod::Gyration, ExportLaw::Restitution),
     &[
         Check::holds(
             "bounds vanishing as M -> oo: |v + e v0| <= (1+e) v0 m (r^2 + a^2)/(M r^2), |M omega - (1+e) m a v0/r^2| <= (1+e) m^2 |a| v0 (r^2 + a^2)/(M r^4)",

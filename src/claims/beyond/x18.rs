@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Pivot, Law::Restitution).impulses(),
+        Setting::new(Rod::Pivot, ExportLaw::Restitution).impulses(),
         &[
             Check::holds(
                 "omega = (1+e) m d v0/(I_p + m d^2)",
@@ -50,7 +50,7 @@ const EXPORT: Export = Export::Stated(
             ]),
         ],
     )
-    .at(&[Impact { at: "d", tag: "" }, Impact { at: "ds", tag: "s" }])
+    .at(&[StrikePoint { at: "d", tag: "" }, StrikePoint { at: "ds", tag: "s" }])
     .given(&["ds > 0", "ds^2 = Ip/m"]),
 );
 

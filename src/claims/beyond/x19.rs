@@ -10,12 +10,12 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Elastic),
+    Setting::new(Rod::Free, ExportLaw::Elastic),
     &[
         Check::holds("at a*: v = V = m v0/(M + m) and omega a* = v0 (the projectile rests relative to the rod's centre, which meets it again after half a turn with closing speed omega a* = v0)", "v_s = m*v0/(M + m) and V_s = m*v0/(M + m) and omega_s*s = v0"),
     ],
 )
-.at(&[Impact { at: "s", tag: "s" }])
+.at(&[StrikePoint { at: "s", tag: "s" }])
 .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"])
 .partly("the kinematic step after the impact (the rod turns by pi in time pi a*/v0), argued by hand as in the certificate"));
 

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Restitution),
+        Setting::new(Rod::Free, ExportLaw::Restitution),
         &[
             Check::holds(
                 "the rod's share I omega/(m v0 a) = (1+e)/D",
@@ -25,9 +25,9 @@ const EXPORT: Export = Export::Stated(
         ],
     )
     .at(&[
-        Impact { at: "a", tag: "" },
-        Impact { at: "a1", tag: "1" },
-        Impact { at: "a2", tag: "2" },
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "a1", tag: "1" },
+        StrikePoint { at: "a2", tag: "2" },
     ]),
 );
 

@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Gyration, Law::Restitution),
+        Setting::new(Rod::Gyration, ExportLaw::Restitution),
         &[
             Check::holds(
                 "the struck point's speed is (1+e) v0 m/(m + M_eff)",
@@ -38,9 +38,9 @@ const EXPORT: Export = Export::Stated(
         ],
     )
     .at(&[
-        Impact { at: "a", tag: "" },
-        Impact { at: "a1", tag: "1" },
-        Impact { at: "a2", tag: "2" },
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "a1", tag: "1" },
+        StrikePoint { at: "a2", tag: "2" },
     ]),
 );
 

@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Nothing, Law::Restitution),
+    Setting::new(Rod::Nothing, ExportLaw::Restitution),
     &[
         Check::holds("the solution is the symmetric rod's with a -> a - c", "v = v0 - (1 + e)*v0/(1/m + 1/M + (a - c)^2/I)/m and V = (1 + e)*v0/(1/m + 1/M + (a - c)^2/I)/M and omega = (1 + e)*v0*(a - c)/I/(1/m + 1/M + (a - c)^2/I)"),
         Check::fails("reading: every formula, e.g. the far end's velocity V (1 - a l/r_G^2) of X14, with a -> a - c; refuted at m = M = I = v0 = e = l = 1, a = 1, c = 1/2 (the far end is at -(l + c) from the CM)", "V - omega*(l + c) = V*(1 - (a - c)*l*M/I)").given(&["m = 1", "M = 1", "I = 1", "v0 = 1", "e = 1", "l = 1", "a = 1", "c = 1/2"]),

@@ -11,13 +11,13 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Sticking),
+    Setting::new(Rod::Free, ExportLaw::Sticking),
     &[
         Check::holds("sticking loses (mu v0^2/2) I/(I + mu a^2) = K0/D", "m*v0^2 - (m*v^2 + M*V^2 + I*omega^2) = (m*M/(M + m))*v0^2*I/(I + (m*M/(M + m))*a^2) and (m*M/(M + m))*v0^2*I/(I + (m*M/(M + m))*a^2) = m*v0^2/(1 + m/M + m*a^2/I)"),
         Check::holds("at a*: I_c = 2I and omega = v0/(2a*)", "I + (m*M/(M + m))*s^2 = 2*I and omega_s = v0/(2*s)"),
     ],
 )
-.at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+.at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
 .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]));
 
 fn formalise(paper: &Paper) -> Formalised {

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Restitution),
+    Setting::new(Rod::Free, ExportLaw::Restitution),
     &[Check::holds(
         "omega = (1+e) v0 f(a), f(x) = x/(b^2 + x^2), b^2 = I (1/m + 1/M)",
         "omega = (1 + e)*v0*a/(I*(1/m + 1/M) + a^2)",

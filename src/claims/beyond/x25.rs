@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Gyration, Law::Restitution),
+    Setting::new(Rod::Gyration, ExportLaw::Restitution),
     &[
         Check::holds("K_rot/K_trans = a^2/r_G^2", "I*omega^2 = (a^2/r^2)*M*V^2"),
         Check::holds("uniform rod hit at the end: 3", "I*omega^2 = 3*M*V^2")

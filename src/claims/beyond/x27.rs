@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 // spin, Newton's law) with no friction law at all, so it holds whatever the tangential impulse.
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Restitution).oblique(Friction::Any),
+        Setting::new(Rod::Free, ExportLaw::Restitution).oblique(Friction::Any),
         &[Check::holds(
             "whatever the tangential impulse Jt (stick, slide, any mu_f): omega, V and v are the frictionless impact's, J = (1+e) v0/k_n, k_n = 1/m + 1/M + a^2/I",
             "omega = (1 + e)*v0*a/(I*(1/m + 1/M + a^2/I)) and V = (1 + e)*v0/(M*(1/m + 1/M + a^2/I)) and v = v0 - (1 + e)*v0/(m*(1/m + 1/M + a^2/I))",

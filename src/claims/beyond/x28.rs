@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 // The claim for z3 and SymPy: the physics of a sticking contact (the disc's contact point ends
 // moving with the rod's) and the threshold in closed form; u_t = v0t + w rd.
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Restitution).oblique(Friction::Stick),
+    Setting::new(Rod::Free, ExportLaw::Restitution).oblique(Friction::Stick),
     &[
         Check::holds(
             "disc: the sticking impulse over the normal one is u_t k_n/((1+e) v0 k_t), k_t = 3/m + 1/M",

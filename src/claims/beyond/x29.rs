@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 // impulses depend on the relative approach only and every velocity changes as at rest.
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Restitution)
+        Setting::new(Rod::Free, ExportLaw::Restitution)
             .oblique(Friction::Stick)
             .moving(),
         &[

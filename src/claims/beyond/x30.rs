@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 // the states the physics gives, disc spin included.
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Restitution).oblique(Friction::Slide),
+        Setting::new(Rod::Free, ExportLaw::Restitution).oblique(Friction::Slide),
         &[
             Check::holds(
                 "the normal impulse: J k_n = (1 + e) v0, k_n = 1/m + 1/M + a^2/I",

@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 // The claim for z3 and SymPy: no friction law (any tangential impulse) and the rod drifting,
 // so the shape of omega(a) holds in every contact case.
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Restitution)
+    Setting::new(Rod::Free, ExportLaw::Restitution)
         .oblique(Friction::Any)
         .moving(),
     &[Check::holds(

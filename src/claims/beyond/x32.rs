@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 // u_n = -vn + w lam whatever friction does; each law's end, and the normal work there.
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Nothing, Law::Restitution),
+        Setting::new(Rod::Nothing, ExportLaw::Restitution),
         &[
             Check::holds(
                 "Newton's end (u_n = e vn) is Poisson's (1 + e) lam_c, lam_c = vn/w",

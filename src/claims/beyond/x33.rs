@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 // restitution Wr, friction's Wf <= 0, and the energy change Wc + Wr + Wf.
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Nothing, Law::Restitution),
+        Setting::new(Rod::Nothing, ExportLaw::Restitution),
         &[
             Check::holds(
                 "energetic: Wr = -e^2 Wc, so the energy change Wc + Wr + Wf <= 0",

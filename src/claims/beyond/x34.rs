@@ -16,7 +16,7 @@ pub(super) const ENTRY: Entry = Entry {
 // of that impulse, P.(u_before + u_after)/2, is positive.
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Nothing, Law::Restitution),
+        Setting::new(Rod::Nothing, ExportLaw::Restitution),
         &[Check::exists(
             "a tilted rod (length 2, mass 1, axis (3, 4)/5) landing on its end at 1 while sliding at 1 on a floor with mu = 1, e = 1: the slip stops before the impact ends, sticks, and the kinetic energy rises by 1/10",
             "lam_s < lf and mu*c >= b and dK = 1/10 and dK > 0",

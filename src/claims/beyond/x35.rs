@@ -13,7 +13,7 @@ pub(super) const ENTRY: Entry = Entry {
 // The claim for z3 and SymPy, in pure algebra: W = (1/m) [2, -1; -1, 2], u0 = (-v, 0).
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Nothing, Law::Restitution),
+        Setting::new(Rod::Nothing, ExportLaw::Restitution),
         &[
             Check::holds(
                 "simultaneous Newton, both contacts pushing (l1, l2 > 0) and leaving at v and 0: the velocities are (-v/3, 2v/3, 2v/3), momentum and energy kept",

@@ -14,7 +14,7 @@ pub(super) const ENTRY: Entry = Entry {
 // l2' = l2 - ((2 l2 - l1')/m) m/2, with the error from (4mv/3, 2mv/3).
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Nothing, Law::Restitution),
+        Setting::new(Rod::Nothing, ExportLaw::Restitution),
         &[
             Check::holds(
                 "from lam = (4mv/3, 2mv/3 + d): one sweep gives (4mv/3 + d/2, 2mv/3 + d/4)",

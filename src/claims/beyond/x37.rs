@@ -14,7 +14,7 @@ pub(super) const ENTRY: Entry = Entry {
 // spin), w2 = w^2, h2 = h^2; a = W_11 = W_22, b = W_12; the one-corner impulse l1.
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Nothing, Law::Restitution),
+        Setting::new(Rod::Nothing, ExportLaw::Restitution),
         &[
             Check::holds(
                 "the rising corner moving up (c >= v): after the leading corner's impulse it leaves (Newton's condition) iff c >= cs",

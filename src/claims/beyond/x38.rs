@@ -20,7 +20,7 @@ pub(super) const ENTRY: Entry = Entry {
 // p = e n + x (e = 0 at contact 1, 1 at contact 2).
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Nothing, Law::Restitution),
+        Setting::new(Rod::Nothing, ExportLaw::Restitution),
         &[
             Check::exists(
                 "the two-phase problem has a solution",

@@ -29,7 +29,9 @@ pub(crate) use scene::*;
 
 pub(crate) use super::certificate::{Expected, Integral, Limit, Positive};
 pub(crate) use super::claim::BEYOND;
-pub(crate) use super::export::{Check, Export, Friction, Impact, Law, Rod, Setting, Statement};
+pub(crate) use super::export::{
+    Check, Export, ExportLaw, Friction, Rod, Setting, Statement, StrikePoint,
+};
 pub(crate) use super::{
     Certificate, Decision, Entry, Formalised, Formula, Group, Paper, PosExpr, Relation,
 };

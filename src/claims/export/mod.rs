@@ -16,8 +16,8 @@ mod sympy;
 pub use expr::{Expr, ParseError, Prop, parse};
 pub use physics::{Hypothesis, hypotheses, unknowns};
 pub use statement::{
-    AT_A, Balance, Check, Expect, Export, Friction, Impact, Law, ObliqueSetting, Rod, Setting,
-    Statement,
+    AT_A, BalanceForm, Check, Expect, Export, ExportLaw, Friction, ObliqueSetting, Rod, Setting,
+    Statement, StrikePoint,
 };
 pub use sympy::supported as sympy_supported;
 

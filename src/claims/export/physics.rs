@@ -2,7 +2,9 @@
 //! inertia, and for each impact the balance equations and the contact law in its own unknowns.
 //! Nothing here comes from rodimpact's solver.
 
-use super::statement::{Balance, Friction, Impact, Law, ObliqueSetting, Rod, Setting, Statement};
+use super::statement::{
+    BalanceForm, ExportLaw, Friction, ObliqueSetting, Rod, Setting, Statement, StrikePoint,
+};
 
 /// A hypothesis: what it says in words and the proposition.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -26,19 +28,19 @@ fn hyp(label: impl Into<String>, text: impl Into<String>) -> Hypothesis {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::claims::export::{Friction, Impact, Setting, Rod, Law, AT_A, unknowns};
-/// let scene = Setting::new(Rod::Uniform, Law::Elastic);
-/// assert_eq!(unknowns(&scene, &Impact { at: "l", tag: "1" }), ["v_1", "V_1", "omega_1"]);
-/// let oblique = Setting::new(Rod::Free, Law::Elastic).oblique(Friction::Stick);
+/// use rodimpact::claims::export::{Friction, StrikePoint, Setting, Rod, ExportLaw, AT_A, unknowns};
+/// let scene = Setting::new(Rod::Uniform, ExportLaw::Elastic);
+/// assert_eq!(unknowns(&scene, &StrikePoint { at: "l", tag: "1" }), ["v_1", "V_1", "omega_1"]);
+/// let oblique = Setting::new(Rod::Free, ExportLaw::Elastic).oblique(Friction::Stick);
 /// assert_eq!(unknowns(&oblique, &AT_A[0]), ["v", "V", "omega", "J", "vt", "Vt", "spin", "Jt"]);
 /// ```
-pub fn unknowns(scene: &Setting, impact: &Impact) -> Vec<String> {
+pub fn unknowns(scene: &Setting, impact: &StrikePoint) -> Vec<String> {
     let mut names = match scene.rod {
         Rod::Nothing => vec![],
         Rod::Pivot => vec!["v", "omega"],
         _ => vec!["v", "V", "omega"],
     };
-    if scene.balance == Balance::Impulses && scene.rod != Rod::Nothing {
+    if scene.balance == BalanceForm::Impulses && scene.rod != Rod::Nothing {
         names.push("J");
         if scene.rod == Rod::Pivot {
             names.push("P");
@@ -89,7 +91,7 @@ fn domain(scene: &Setting) -> Vec<Hypothesis> {
         Rod::Pivot => out.push(hyp("rod mass, moment about the pivot", "M > 0 and Ip > 0")),
         Rod::Nothing => {}
     }
-    if scene.law == Law::Restitution {
+    if scene.law == ExportLaw::Restitution {
         out.push(hyp("restitution coefficient", "0 <= e <= 1"));
     }
     if let Some(oblique) = scene.oblique {
@@ -109,7 +111,7 @@ fn domain(scene: &Setting) -> Vec<Hypothesis> {
 }
 
 /// The balance equations and the contact law of one impact.
-fn impact_physics(scene: &Setting, impact: &Impact) -> Vec<Hypothesis> {
+fn impact_physics(scene: &Setting, impact: &StrikePoint) -> Vec<Hypothesis> {
     let [v, big_v, w, j, p] = ["v", "V", "omega", "J", "P"].map(|n| tagged(n, impact.tag));
     let a = format!("({})", impact.at);
     let at = if impact.tag.is_empty() {
@@ -133,7 +135,7 @@ fn impact_physics(scene: &Setting, impact: &Impact) -> Vec<Hypothesis> {
         format!("{j}*{a}")
     };
     match (scene.balance, pivot) {
-        (Balance::Momentum, false) => {
+        (BalanceForm::Momentum, false) => {
             out.push(hyp(
                 format!("linear momentum{at}"),
                 format!("m*v0 = m*{v} + M*{big_v}"),
@@ -143,11 +145,11 @@ fn impact_physics(scene: &Setting, impact: &Impact) -> Vec<Hypothesis> {
                 format!("m*v0*{a} = m*{v}*{a} + I*{w}"),
             ));
         }
-        (Balance::Momentum, true) => out.push(hyp(
+        (BalanceForm::Momentum, true) => out.push(hyp(
             format!("angular momentum about the pivot{at}"),
             format!("m*v0*{a} = m*{v}*{a} + Ip*{w}"),
         )),
-        (Balance::Impulses, _) => {
+        (BalanceForm::Impulses, _) => {
             out.push(hyp(
                 format!("projectile: impulse -J{at}"),
                 format!("m*{v} - m*v0 = -{j}"),
@@ -180,19 +182,19 @@ fn impact_physics(scene: &Setting, impact: &Impact) -> Vec<Hypothesis> {
         format!("{big_v} + {w}*{a}")
     };
     match scene.law {
-        Law::Elastic => out.push(hyp(
+        ExportLaw::Elastic => out.push(hyp(
             format!("Newton's law, e = 1{at}"),
             format!("{struck} - {v} = {approach}"),
         )),
-        Law::Restitution => out.push(hyp(
+        ExportLaw::Restitution => out.push(hyp(
             format!("Newton's law, restitution e{at}"),
             format!("{struck} - {v} = e*{approach}"),
         )),
-        Law::Sticking => out.push(hyp(
+        ExportLaw::Sticking => out.push(hyp(
             format!("sticking: the projectile moves with the struck point{at}"),
             format!("{v} = {struck}"),
         )),
-        Law::Energy => {
+        ExportLaw::Energy => {
             let rod = if pivot {
                 format!("Ip*{w}^2")
             } else {
@@ -252,9 +254,9 @@ fn along_the_rod(oblique: ObliqueSetting, pivot: bool) -> Vec<Hypothesis> {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::claims::export::{Check, Law, Rod, Setting, Statement, hypotheses};
+/// use rodimpact::claims::export::{Check, ExportLaw, Rod, Setting, Statement, hypotheses};
 /// const CHECKS: &[Check] = &[Check::holds("V > 0", "V > 0")];
-/// let s = Statement::new(Setting::new(Rod::Free, Law::Elastic), CHECKS);
+/// let s = Statement::new(Setting::new(Rod::Free, ExportLaw::Elastic), CHECKS);
 /// let texts: Vec<String> = hypotheses(&s).into_iter().map(|h| h.text).collect();
 /// assert!(texts.contains(&"m*v0 = m*v + M*V".to_string()));
 /// assert!(texts.contains(&"V + omega*(a) - v = v0".to_string()));

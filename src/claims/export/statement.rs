@@ -17,7 +17,7 @@ pub struct Statement {
     /// The scene whose physics is assumed.
     pub scene: Setting,
     /// The impacts considered (the same scene struck at each point, with its own unknowns).
-    pub impacts: &'static [Impact],
+    pub impacts: &'static [StrikePoint],
     /// Hypotheses every check shares, in the statement language.
     pub given: &'static [&'static str],
     /// The checks, in order.
@@ -29,7 +29,7 @@ pub struct Statement {
 /// One impact of the scene: where it strikes and the suffix of its unknowns (`v_1`, `V_1`,
 /// `omega_1` for the tag `1`; `v`, `V`, `omega` for the empty tag).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Impact {
+pub struct StrikePoint {
     /// The point struck: the signed distance from the rod's centre (from the pivot for a
     /// pivoted rod), an expression.
     pub at: &'static str,
@@ -38,7 +38,7 @@ pub struct Impact {
 }
 
 /// The single impact at `a` with the unknowns `v`, `V`, `omega`.
-pub const AT_A: &[Impact] = &[Impact { at: "a", tag: "" }];
+pub const AT_A: &[StrikePoint] = &[StrikePoint { at: "a", tag: "" }];
 
 /// The body struck and how its moment of inertia is given.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -60,7 +60,7 @@ pub enum Rod {
 
 /// The form of the balance equations.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Balance {
+pub enum BalanceForm {
     /// Conservation of the system's linear momentum and of its angular momentum about the
     /// fixed point at the rod's centre (about the pivot for a pivoted rod).
     Momentum,
@@ -71,7 +71,7 @@ pub enum Balance {
 
 /// The contact law closing the equations.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Law {
+pub enum ExportLaw {
     /// Newton's law with `e = 1`: the struck point separates at `v0`.
     Elastic,
     /// Newton's law with a restitution coefficient `0 <= e <= 1`.
@@ -113,19 +113,19 @@ pub struct Setting {
     /// The body struck.
     pub rod: Rod,
     /// The balance equations.
-    pub balance: Balance,
+    pub balance: BalanceForm,
     /// The contact law.
-    pub law: Law,
+    pub law: ExportLaw,
     /// The motion along the rod and its friction, for an oblique impact.
     pub oblique: Option<ObliqueSetting>,
 }
 
 impl Setting {
     /// The scene with the momentum balances.
-    pub const fn new(rod: Rod, law: Law) -> Setting {
+    pub const fn new(rod: Rod, law: ExportLaw) -> Setting {
         Setting {
             rod,
-            balance: Balance::Momentum,
+            balance: BalanceForm::Momentum,
             law,
             oblique: None,
         }
@@ -136,14 +136,14 @@ impl Setting {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::claims::export::{Balance, Friction, Law, Rod, Setting};
-    /// let scene = Setting::new(Rod::Free, Law::Restitution).oblique(Friction::Stick);
-    /// assert_eq!(scene.balance, Balance::Impulses);
+    /// use rodimpact::claims::export::{BalanceForm, Friction, ExportLaw, Rod, Setting};
+    /// let scene = Setting::new(Rod::Free, ExportLaw::Restitution).oblique(Friction::Stick);
+    /// assert_eq!(scene.balance, BalanceForm::Impulses);
     /// assert!(!scene.oblique.unwrap().moving);
     /// ```
     pub const fn oblique(self, friction: Friction) -> Setting {
         Setting {
-            balance: Balance::Impulses,
+            balance: BalanceForm::Impulses,
             oblique: Some(ObliqueSetting {
                 friction,
                 moving: false,
@@ -157,8 +157,8 @@ impl Setting {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::claims::export::{Friction, Law, Rod, Setting};
-    /// let scene = Setting::new(Rod::Free, Law::Restitution).oblique(Friction::Any).moving();
+    /// use rodimpact::claims::export::{Friction, ExportLaw, Rod, Setting};
+    /// let scene = Setting::new(Rod::Free, ExportLaw::Restitution).oblique(Friction::Any).moving();
     /// assert!(scene.oblique.unwrap().moving);
     /// ```
     pub const fn moving(self) -> Setting {
@@ -172,7 +172,7 @@ impl Setting {
     /// The same scene written with the impulses of each body.
     pub const fn impulses(self) -> Setting {
         Setting {
-            balance: Balance::Impulses,
+            balance: BalanceForm::Impulses,
             ..self
         }
     }
@@ -268,7 +268,7 @@ impl Statement {
     }
 
     /// The statement about these impacts.
-    pub const fn at(self, impacts: &'static [Impact]) -> Statement {
+    pub const fn at(self, impacts: &'static [StrikePoint]) -> Statement {
         Statement { impacts, ..self }
     }
 

@@ -102,12 +102,12 @@ fn all_unknowns(statement: &Statement) -> BTreeSet<String> {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::claims::export::{Check, Law, Rod, Setting, Statement, sympy_supported};
+/// use rodimpact::claims::export::{Check, ExportLaw, Rod, Setting, Statement, sympy_supported};
 /// const CHECKS: &[Check] = &[
 ///     Check::holds("V", "V = 2*m*v0/(M + m)").given(&["a = 0"]),
 ///     Check::holds("V > 0", "V > 0"),
 /// ];
-/// let scene = Setting::new(Rod::Free, Law::Elastic);
+/// let scene = Setting::new(Rod::Free, ExportLaw::Elastic);
 /// assert_eq!(sympy_supported(&Statement::new(scene, CHECKS)), [true, false]);
 /// ```
 pub fn supported(statement: &Statement) -> Vec<bool> {

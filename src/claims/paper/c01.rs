@@ -10,12 +10,12 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Uniform, Law::Elastic),
+    Setting::new(Rod::Uniform, ExportLaw::Elastic),
     &[
         Check::exists("a point a < l where omega exceeds omega(l): the witness M = m = l = v0 = 1, a = a* (a^2 = 2/3)", "0 <= a and a < l and omega > omega_l").given(&["m = 1", "M = 1", "l = 1", "v0 = 1", "a^2 = 2/3"]),
     ],
 )
-.at(&[Impact { at: "a", tag: "" }, Impact { at: "l", tag: "l" }])
+.at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "l", tag: "l" }])
 .given(&["a >= 0"]));
 
 fn formalise(_paper: &Paper) -> Formalised {

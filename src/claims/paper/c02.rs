@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Elastic),
+        Setting::new(Rod::Free, ExportLaw::Elastic),
         &[
             Check::holds("pure translation and V", "omega = 0 and V = 2*m*v0/(M + m)"),
             Check::holds("V > 0", "V > 0"),

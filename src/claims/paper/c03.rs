@@ -12,14 +12,14 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, ExportLaw::Elastic),
         &[Check::fails(
             "the intuition, refuted at M = m = l = v0 = 1 between a1 = a* (a1^2 = 2/3) and a2 = l",
             "0 <= a1 and a1 < a2 and a2 <= l => omega_1 < omega_2",
         )
         .given(&["m = 1", "M = 1", "l = 1", "v0 = 1", "a1^2 = 2/3", "a2 = 1"])],
     )
-    .at(&[Impact { at: "a1", tag: "1" }, Impact { at: "a2", tag: "2" }])
+    .at(&[StrikePoint { at: "a1", tag: "1" }, StrikePoint { at: "a2", tag: "2" }])
     .given(&["a1 >= 0"]),
 );
 

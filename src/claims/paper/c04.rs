@@ -12,13 +12,13 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, ExportLaw::Elastic),
         &[Check::holds(
             "M < 2m: a* < l and omega(a*) > omega(l)",
             "s < l and omega_s > omega_l",
         )],
     )
-    .at(&[Impact { at: "s", tag: "s" }, Impact { at: "l", tag: "l" }])
+    .at(&[StrikePoint { at: "s", tag: "s" }, StrikePoint { at: "l", tag: "l" }])
     .given(&["M < 2*m", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
 );
 

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Restitution).impulses(),
+    Setting::new(Rod::Free, ExportLaw::Restitution).impulses(),
     &[Check::holds(
         "Eq. (linear) from each body's impulse law",
         "m*v0 = m*v + M*V",

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Restitution).impulses(),
+    Setting::new(Rod::Free, ExportLaw::Restitution).impulses(),
     &[Check::holds(
         "Eq. (angular) about the fixed point at the rod's centre, from each body's impulse law",
         "m*v0*a = m*v*a + I*omega",

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Restitution),
+    Setting::new(Rod::Free, ExportLaw::Restitution),
     &[
         Check::holds(
             "e = 1: kinetic energy conserved",

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Elastic),
+    Setting::new(Rod::Free, ExportLaw::Elastic),
     &[
         Check::fails(
             "reading: v and V are speeds (>= 0); refuted at M = 3m, a = 0",

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Restitution),
+    Setting::new(Rod::Free, ExportLaw::Restitution),
     &[Check::holds(
         "Eq. (linear-angular), any restitution",
         "V = (m/M)*(v0 - v) and omega = (m*a/I)*(v0 - v)",

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Energy),
+    Setting::new(Rod::Free, ExportLaw::Energy),
     &[Check::holds(
         "Eq. (kinetic2)",
         "m*(v0^2 - v^2) = (m^2/M)*(v0 - v)^2 + (m^2*a^2/I)*(v0 - v)^2",

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Energy),
+    Setting::new(Rod::Free, ExportLaw::Energy),
     &[Check::holds(
         "the roots of (kinetic2): v = v0 with V = omega = 0 (no collision), or Eq. (v)",
         "(v = v0 and V = 0 and omega = 0) or v = -(1 - m/M - m*a^2/I)/(1 + m/M + m*a^2/I)*v0",

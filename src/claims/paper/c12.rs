@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Energy),
+    Setting::new(Rod::Free, ExportLaw::Energy),
     &[Check::holds(
         "for v != v0, Eq. (kinetic-divided)",
         "m*(v0 + v) = (m^2/M)*(v0 - v) + (m^2*a^2/I)*(v0 - v)",

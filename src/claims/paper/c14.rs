@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Elastic),
+    Setting::new(Rod::Free, ExportLaw::Elastic),
     &[Check::holds(
         "Eq. (V)",
         "V = (2*m/M)/(1 + m/M + m*a^2/I)*v0",

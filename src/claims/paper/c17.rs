@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Elastic),
+    Setting::new(Rod::Free, ExportLaw::Elastic),
     &[Check::holds("a = 0, M = m: v = 0, V = v0", "v = 0 and V = v0").given(&["a = 0", "M = m"])],
 ));
 

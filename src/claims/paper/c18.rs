@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Gyration, Law::Elastic),
+    Setting::new(Rod::Gyration, ExportLaw::Elastic),
     &[Check::holds(
         "bounds vanishing as M -> oo with r fixed: |v + v0| <= 2 v0 (m/M)(1 + a^2/r^2), |V| <= 2 m v0/M, |omega| <= 2 m |a| v0/(M r^2); hence v -> -v0, V -> 0, omega -> 0",
         "(v + v0)^2 <= (2*v0*(m/M)*(1 + a^2/r^2))^2 and V^2 <= (2*m*v0/M)^2 and omega^2 <= (2*m*a*v0/(M*r^2))^2",

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Nothing, Law::Elastic),
+        Setting::new(Rod::Nothing, ExportLaw::Elastic),
         &[
             Check::holds("f(b/c) = 1/(2bc)", "(b/c)/(b^2 + c^2*(b/c)^2) = 1/(2*b*c)"),
             Check::holds(

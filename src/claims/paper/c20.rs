@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Elastic),
+        Setting::new(Rod::Free, ExportLaw::Elastic),
         &[
             Check::holds("omega = 2 v0 a/(a*^2 + a^2)", "omega = 2*v0*a/(s^2 + a^2)"),
             Check::holds(
@@ -20,7 +20,7 @@ const EXPORT: Export = Export::Stated(
             ),
         ],
     )
-    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
     .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]),
 );
 

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, ExportLaw::Elastic),
         &[
             Check::holds(
                 "a* = sqrt((M+m)/(3m)) l is the a*^2 = (M+m) I/(mM) of C20 for I = M l^2/3",
@@ -23,7 +23,7 @@ const EXPORT: Export = Export::Stated(
             ),
         ],
     )
-    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
     .given(&["s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
 );
 

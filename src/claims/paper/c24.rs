@@ -11,13 +11,13 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, ExportLaw::Elastic),
         &[Check::holds(
             "M > 2m: omega strictly increasing on [0, l]",
             "0 <= a1 and a1 < a2 and a2 <= l => omega_1 < omega_2",
         )],
     )
-    .at(&[Impact { at: "a1", tag: "1" }, Impact { at: "a2", tag: "2" }])
+    .at(&[StrikePoint { at: "a1", tag: "1" }, StrikePoint { at: "a2", tag: "2" }])
     .given(&["M > 2*m"]),
 );
 

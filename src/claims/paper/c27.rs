@@ -12,16 +12,16 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, ExportLaw::Elastic),
         &[Check::holds(
             "M < 2m: a* < l, omega(a*) > omega(l), and a* is the only maximiser on [0, l]",
             "s < l and omega_s > omega_l and (0 <= a and a <= l and a != s => omega < omega_s)",
         )],
     )
     .at(&[
-        Impact { at: "a", tag: "" },
-        Impact { at: "s", tag: "s" },
-        Impact { at: "l", tag: "l" },
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "s", tag: "s" },
+        StrikePoint { at: "l", tag: "l" },
     ])
     .given(&["M < 2*m", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
 );

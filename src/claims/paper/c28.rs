@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, ExportLaw::Elastic),
         &[Check::holds("M = m: a*^2 = 2 l^2/3", "s^2 = 2*l^2/3")],
     )
     .at(&[])

@@ -11,13 +11,13 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Sticking),
+        Setting::new(Rod::Uniform, ExportLaw::Sticking),
         &[Check::holds(
             "sticking: omega = m a v0/(I + mu a^2) is maximal at the same a* over a >= 0",
             "a >= 0 and a != s => omega < omega_s",
         )],
     )
-    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
     .given(&["s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
 );
 

@@ -12,7 +12,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Free, Law::Sticking),
+    Setting::new(Rod::Free, ExportLaw::Sticking),
     &[
         Check::holds(
             "the reading that omega after sticking needs the composite's CM and I_c is refuted: the momentum balances about the rod's centre with the rod's own I give the composite's omega = mu a v0/(I + mu a^2), mu = m M/(M + m), for every a",

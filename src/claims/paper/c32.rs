@@ -11,13 +11,13 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Pivot, Law::Restitution),
+    Setting::new(Rod::Pivot, ExportLaw::Restitution),
     &[
         Check::fails("reading: omega grows with the arm d; refuted for a door (Ip = M (2l)^2/3) with M = m = l = v0 = 1, e = 1 between d1 = 1 and d2 = 2", "0 < d1 and d1 < d2 => omega_1 < omega_2").given(&["m = 1", "M = 1", "Ip = 4/3", "v0 = 1", "e = 1", "d1 = 1", "d2 = 2"]),
         Check::holds("qualified: it grows on every arm up to d* = sqrt(Ip/m)", "0 <= d1 and d1 < d2 and d2 <= ds => omega_1 < omega_2").given(&["ds > 0", "ds^2 = Ip/m"]),
     ],
 )
-.at(&[Impact { at: "d1", tag: "1" }, Impact { at: "d2", tag: "2" }]));
+.at(&[StrikePoint { at: "d1", tag: "1" }, StrikePoint { at: "d2", tag: "2" }]));
 
 fn formalise(_paper: &Paper) -> Formalised {
     let general = pivoted_rod(sym("I"), sym("e"));

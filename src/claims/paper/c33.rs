@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Nothing, Law::Elastic),
+        Setting::new(Rod::Nothing, ExportLaw::Elastic),
         &[Check::holds(
             "for a given impulse J > 0, omega = J a/I is largest at a = l",
             "0 <= a and a < l => omega < omega_l",

@@ -11,14 +11,14 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Elastic).impulses(),
+        Setting::new(Rod::Uniform, ExportLaw::Elastic).impulses(),
         &[Check::exists(
             "the impulse differs between a = 0 and a = l (M = m = l = v0 = 1)",
             "J_1 != J_2",
         )
         .given(&["m = 1", "M = 1", "l = 1", "v0 = 1", "a1 = 0", "a2 = 1"])],
     )
-    .at(&[Impact { at: "a1", tag: "1" }, Impact { at: "a2", tag: "2" }]),
+    .at(&[StrikePoint { at: "a1", tag: "1" }, StrikePoint { at: "a2", tag: "2" }]),
 );
 
 fn formalise(_paper: &Paper) -> Formalised {

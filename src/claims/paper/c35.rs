@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Uniform, Law::Elastic),
+    Setting::new(Rod::Uniform, ExportLaw::Elastic),
     &[Check::holds(
         "Eq. (impulse-linear)",
         "M*V = 2*m*v0/(1 + m/M + 3*m*a^2/(M*l^2))",

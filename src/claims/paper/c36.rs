@@ -11,13 +11,13 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, ExportLaw::Elastic),
         &[Check::holds(
             "I_lin = M V decreases as a increases (a >= 0)",
             "0 <= a1 and a1 < a2 => M*V_2 < M*V_1",
         )],
     )
-    .at(&[Impact { at: "a1", tag: "1" }, Impact { at: "a2", tag: "2" }]),
+    .at(&[StrikePoint { at: "a1", tag: "1" }, StrikePoint { at: "a2", tag: "2" }]),
 );
 
 fn formalise(paper: &Paper) -> Formalised {

@@ -10,7 +10,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Uniform, Law::Elastic),
+    Setting::new(Rod::Uniform, ExportLaw::Elastic),
     &[Check::holds(
         "Eq. (impulse-angular)",
         "(M*l^2/3)*omega = a*M*V",

@@ -12,16 +12,16 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Free, Law::Restitution),
+        Setting::new(Rod::Free, ExportLaw::Restitution),
         &[Check::holds(
             "I omega = a (M V) with M V > 0 strictly decreasing on a >= 0",
             "I*omega = a*M*V and M*V > 0 and (0 <= a1 and a1 < a2 => M*V_2 < M*V_1)",
         )],
     )
     .at(&[
-        Impact { at: "a", tag: "" },
-        Impact { at: "a1", tag: "1" },
-        Impact { at: "a2", tag: "2" },
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "a1", tag: "1" },
+        StrikePoint { at: "a2", tag: "2" },
     ]),
 );
 

@@ -11,13 +11,13 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Uniform, Law::Elastic),
+        Setting::new(Rod::Uniform, ExportLaw::Elastic),
         &[Check::holds(
             "M >= 2m: a = l wins on [0, l]",
             "0 <= a and a < l => omega < omega_l",
         )],
     )
-    .at(&[Impact { at: "a", tag: "" }, Impact { at: "l", tag: "l" }])
+    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "l", tag: "l" }])
     .given(&["M >= 2*m"]),
 );
 

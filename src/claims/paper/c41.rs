@@ -12,13 +12,13 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Gyration, Law::Elastic),
+        Setting::new(Rod::Gyration, ExportLaw::Elastic),
         &[Check::holds(
             "a* = sqrt((M+m)/m) r_G maximises omega over a >= 0",
             "a >= 0 and a != s => omega < omega_s",
         )],
     )
-    .at(&[Impact { at: "a", tag: "" }, Impact { at: "s", tag: "s" }])
+    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
     .given(&["s > 0", "s^2 = (M + m)*r^2/m"]),
 );
 

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Gyration, Law::Elastic),
+    Setting::new(Rod::Gyration, ExportLaw::Elastic),
     &[
         Check::fails("reading: a small r_G/l gives a* < l even for M >> m; refuted at r_G = l/20, M = 1000 m", "s < l").given(&["m = 1", "M = 1000", "l = 20", "r = 1"]),
         Check::holds("qualified: M < m (l^2/r_G^2 - 1) gives a* < l", "s < l").given(&["M < m*(l^2/r^2 - 1)"]),

@@ -11,7 +11,7 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Gyration, Law::Elastic),
+    Setting::new(Rod::Gyration, ExportLaw::Elastic),
     &[
         Check::holds("a* < l iff M/m < l^2/r_G^2 - 1 = u (2l - u)/(l - u)^2 for r_G = l - u, a bound that vanishes as u -> 0+", "(s < l => M/m < u*(2*l - u)/(l - u)^2) and (M/m < u*(2*l - u)/(l - u)^2 => s < l)"),
     ],

@@ -11,13 +11,13 @@ pub(super) const ENTRY: Entry = Entry {
 
 const EXPORT: Export = Export::Stated(
     Statement::new(
-        Setting::new(Rod::Dumbbell, Law::Elastic),
+        Setting::new(Rod::Dumbbell, ExportLaw::Elastic),
         &[Check::holds(
             "a* > l always, and the maximum on [0, l] is at a = l",
             "s > l and (0 <= a and a < l => omega < omega_l)",
         )],
     )
-    .at(&[Impact { at: "a", tag: "" }, Impact { at: "l", tag: "l" }])
+    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "l", tag: "l" }])
     .given(&["s > 0", "s^2 = (M + m)*l^2/m"]),
 );
 

@@ -10,13 +10,13 @@ pub(super) const ENTRY: Entry = Entry {
 };
 
 const EXPORT: Export = Export::Stated(Statement::new(
-    Setting::new(Rod::Gyration, Law::Elastic),
+    Setting::new(Rod::Gyration, ExportLaw::Elastic),
     &[
         Check::holds("every r_G < l has masses with an interior optimum: M = m (l^2 - r_G^2)/(2 r_G^2) gives a* < l and omega(a*) > omega(l)", "s < l and omega_s > omega_l").given(&["r < l", "M = m*(l^2 - r^2)/(2*r^2)"]),
         Check::holds("r_G = l (the dumbbell): a* > l for all masses", "s > l").given(&["r = l"]),
     ],
 )
-.at(&[Impact { at: "s", tag: "s" }, Impact { at: "l", tag: "l" }])
+.at(&[StrikePoint { at: "s", tag: "s" }, StrikePoint { at: "l", tag: "l" }])
 .given(&["l > 0", "s > 0", "s^2 = (M + m)*r^2/m"]));
 
 fn formalise(paper: &Paper) -> Formalised {

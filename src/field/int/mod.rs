@@ -7,7 +7,7 @@
 //! - `wide`: checked signed integers of 512 bits (`Wide`), 1024 (`Wider`) and 2560 (`Widest`);
 //! - `signed`: a checked 256-bit signed integer (`I256`);
 //! - `frac`: unreduced fractions of `i128`, `I256` or `Wide`, a field whose overflow is
-//!   reported (`Frac`);
+//!   reported (`Unreduced`);
 //! - `ring`: fixed-width integers that wrap (`Ring<N>`), for values proven in range in advance;
 //! - `dashu`: dashu's `IBig` as the unbounded width (the default);
 //! - `malachite` (cargo feature `malachite`): malachite's `Integer` instead;
@@ -16,11 +16,11 @@
 //! - [`reduce`] and `write_ratio`: a fraction reduced, or written, on machine words when it fits.
 
 use crate::field::Q;
-pub(crate) use frac::{Frac, FracInt, within};
 use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive, Zero};
 pub(crate) use ring::Ring;
 pub(crate) use signed::I256;
+pub(crate) use unreduced::{Unreduced, UnreducedInt, within};
 pub(crate) use wide::{Wide, Wider, Widest};
 pub(crate) use words::{POWERS_OF_TEN, U256, gcd, gcd_u64, powers};
 
@@ -47,12 +47,12 @@ macro_rules! unbounded_arithmetic {
 
 #[cfg(not(feature = "malachite"))]
 mod dashu;
-mod frac;
 #[cfg(feature = "malachite")]
 mod malachite;
 mod quotient;
 mod ring;
 mod signed;
+mod unreduced;
 mod wide;
 mod words;
 
@@ -191,7 +191,7 @@ impl Int for i128 {
 
 /// The fixed widths a batch row's word route computes in (`i128`, `I256`, `Wide`): numbers
 /// enter from machine words and leave as 256-bit magnitudes, with no big integer between.
-pub(crate) trait FixedInt: FracInt {
+pub(crate) trait FixedInt: UnreducedInt {
     /// The magnitudes held: below `2^BITS`.
     const BITS: u32;
     /// `-x` (when `negative`) or `x`, if it fits.

@@ -1,9 +1,9 @@
 //! A 256-bit signed integer with checked arithmetic (`I256`, sign and [`U256`] magnitude): the
-//! narrowest width of [`super::Frac`] that holds an engine's 17-digit cells squared against a
+//! narrowest width of [`super::Unreduced`] that holds an engine's 17-digit cells squared against a
 //! tolerance, at two machine words' cost instead of the eight of `Wide`.
 
 use super::Int;
-use super::frac::FracInt;
+use super::unreduced::UnreducedInt;
 use super::words::U256;
 use crate::field::Q;
 use num_bigint::{BigInt, Sign};
@@ -89,7 +89,7 @@ impl super::FixedInt for I256 {
     }
 }
 
-impl FracInt for I256 {
+impl UnreducedInt for I256 {
     fn sign(&self) -> Ordering {
         match (self.negative, self.mag == U256::ZERO) {
             (true, _) => Ordering::Less,

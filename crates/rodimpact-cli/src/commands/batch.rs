@@ -4,7 +4,7 @@ use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use rodimpact::batch::{
-    Agreement, Arithmetic, Batch, ClassRule, Expected, FloatFormat, MAX_EXPECTED_BYTES,
+    Agreement, Arithmetic, Batch, ClassRule, FloatFormat, KnownFindings, MAX_EXPECTED_BYTES,
     read_header, run, scene_columns,
 };
 use rodimpact::echo::{echo, echo_path};
@@ -195,7 +195,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
 }
 
 /// The baseline of `--expect`.
-fn read_expected(path: &Path) -> Result<Expected, Error> {
+fn read_expected(path: &Path) -> Result<KnownFindings, Error> {
     let name = echo_path(path);
     let mut text = String::new();
     std::fs::File::open(path)
@@ -204,7 +204,7 @@ fn read_expected(path: &Path) -> Result<Expected, Error> {
                 .read_to_string(&mut text)
         })
         .map_err(|why| Error::io("expect", format!("cannot read {name}"), why))?;
-    Expected::parse(&name, &text)
+    KnownFindings::parse(&name, &text)
 }
 
 /// The help of the FILE argument: every scene column, the claims, and the rest passed through.

@@ -1,11 +1,11 @@
 //! `rodimpact simulate`: the compliant (penalty) contact integrated in time, against the exact
 //! impulsive result; `--sweep-k` prints the convergence in the stiffness with fitted slopes.
-//! The model lives in `rodimpact::contact`, the report in `rodimpact::report`.
+//! The model lives in `rodimpact::compliant`, the report in `rodimpact::report`.
 
 use super::{Failure, SceneFlags, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::Error;
-use rodimpact::contact::{
+use rodimpact::compliant::{
     CompliantContact, Geometry, Integrator, MAX_WORK, simulate, sweep_k, work,
 };
 use rodimpact::field::Field;

@@ -62,7 +62,7 @@ pub(super) fn read_cells<'a>(
 
 /// The word row of `line` (without its line ending), or `None` when the general row must take
 /// it. See the module documentation.
-pub(super) fn word_row(plan: &WordPlan, number: usize, line: &str) -> Option<SolvedRow> {
+pub(super) fn fixed_width_row(plan: &WordPlan, number: usize, line: &str) -> Option<SolvedRow> {
     let (inputs, claims) = read_cells(plan, line)?;
     let outputs = solve_reduced(&inputs)?;
     // Room for the six numbers (at most 78 digits each) and the check cells: no regrowth.

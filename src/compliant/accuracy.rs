@@ -1,13 +1,13 @@
 //! How far a run is from the exact impulsive values, how far it may be, and the verdict.
 
-use super::{CompliantContact, Ending, Integrator};
+use super::{CompliantContact, Integrator, RunEnd};
 use std::fmt;
 
 /// The largest tolerance at which a run still cross-checks the impulse: 10 %.
 ///
 /// # Examples
 /// ```
-/// assert_eq!(rodimpact::contact::LOOSEST, 0.1);
+/// assert_eq!(rodimpact::compliant::LOOSEST, 0.1);
 /// ```
 pub const LOOSEST: f64 = 0.1;
 
@@ -41,7 +41,7 @@ pub const LOOSEST: f64 = 0.1;
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, Tolerance};
+/// use rodimpact::compliant::{CompliantContact, Geometry, Integrator, Tolerance};
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let c = CompliantContact::new(&scene, 1e6, Geometry::Frozen)?;
@@ -66,7 +66,7 @@ impl Tolerance {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry, Integrator, Tolerance};
+    /// use rodimpact::compliant::{CompliantContact, Geometry, Integrator, Tolerance};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
     /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
@@ -101,7 +101,7 @@ impl Tolerance {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::Tolerance;
+    /// use rodimpact::compliant::Tolerance;
     /// let t = Tolerance { model: 1e-6, integrator: 1e-3, rounding: 1e-12 };
     /// assert_eq!(t.total(), 1e-6 + 1e-3 + 1e-12);
     /// ```
@@ -146,7 +146,7 @@ impl fmt::Display for Miss {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::Miss;
+    /// use rodimpact::compliant::Miss;
     /// let miss = Miss::Error { quantity: "v", error: 0.5, tolerance: 1e-3 };
     /// assert_eq!(miss.to_string(), "the error of v, 5.0e-1, exceeds the tolerance 1.0e-3");
     /// ```
@@ -201,7 +201,7 @@ impl fmt::Display for Miss {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, stability_limit};
+/// use rodimpact::compliant::{CompliantContact, Geometry, Integrator, stability_limit};
 /// use rodimpact::{field::q, scene::Scene};
 /// let elastic = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let c = CompliantContact::new(&elastic, 1e6, Geometry::Frozen)?;
@@ -276,7 +276,7 @@ pub(super) fn judge(
     c: &CompliantContact,
     integrator: Integrator,
     h_omega: f64,
-    ending: Ending,
+    ending: RunEnd,
     errors: &[f64; 3],
     pivot_error: Option<f64>,
     tolerance: &Tolerance,
@@ -285,9 +285,9 @@ pub(super) fn judge(
         return Some(Miss::Unstable { h_omega, limit });
     }
     match ending {
-        Ending::SlidOff => return Some(Miss::SlidOff),
-        Ending::StillInContact => return Some(Miss::StillInContact),
-        Ending::Separated | Ending::Settled => {}
+        RunEnd::SlidOff => return Some(Miss::SlidOff),
+        RunEnd::StillInContact => return Some(Miss::StillInContact),
+        RunEnd::Separated | RunEnd::Settled => {}
     }
     let named = ["v", "V", "omega"].into_iter().zip(errors.iter().copied());
     let pivot = pivot_error.map(|e| ("P", e));

@@ -19,7 +19,7 @@ impl SweepRow {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Geometry, Integrator, sweep_k};
+    /// use rodimpact::compliant::{Geometry, Integrator, sweep_k};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
     /// let row = &sweep_k(&scene, &[1e6], Geometry::Exact, Integrator::EventRk4, 100)?[0];
@@ -47,7 +47,7 @@ impl Slopes {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{Geometry, Integrator, Slopes, sweep_k};
+    /// use rodimpact::compliant::{Geometry, Integrator, Slopes, sweep_k};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
     /// let rows = sweep_k(&scene, &[1e4, 1e6, 1e8], Geometry::Exact, Integrator::EventRk4, 400)?;
@@ -84,7 +84,7 @@ impl Slopes {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Geometry, Integrator, sweep_k};
+/// use rodimpact::compliant::{Geometry, Integrator, sweep_k};
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let rows = sweep_k(&scene, &[1e4, 1e6], Geometry::Exact, Integrator::EventRk4, 200)?;
@@ -112,7 +112,7 @@ pub fn sweep_k(
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::fit_slope;
+/// use rodimpact::compliant::fit_slope;
 /// let slope = fit_slope(&[1.0, 10.0, 100.0], &[2.0, 0.2, 0.02]).unwrap();
 /// assert!((slope + 1.0).abs() < 1e-12);
 /// ```

@@ -29,7 +29,7 @@ mod integrate;
 mod sweep;
 
 pub use accuracy::{LOOSEST, Miss, Tolerance, stability_limit};
-pub use integrate::{Ending, Integrator, MAX_WORK, Run, simulate, work};
+pub use integrate::{Integrator, MAX_WORK, Run, RunEnd, simulate, work};
 pub use sweep::{Slopes, SweepRow, fit_slope, sweep_k};
 
 use crate::error::{Error, ErrorKind};
@@ -52,7 +52,7 @@ pub enum Geometry {
 ///
 /// # Examples
 /// ```
-/// assert_eq!(rodimpact::contact::SETTLE_TOLERANCE, 1e-13);
+/// assert_eq!(rodimpact::compliant::SETTLE_TOLERANCE, 1e-13);
 /// ```
 pub const SETTLE_TOLERANCE: f64 = 1e-13;
 
@@ -84,7 +84,7 @@ use slot::*;
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{CompliantContact, Geometry};
+/// use rodimpact::compliant::{CompliantContact, Geometry};
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let c = CompliantContact::new(&scene, 1e6, Geometry::Frozen)?;
@@ -145,7 +145,7 @@ impl CompliantContact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry};
+    /// use rodimpact::compliant::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(3, 1)).a(q(1, 2)).pivot(q(0, 1)).e(q(0, 1)).build()?;
     /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
@@ -248,7 +248,7 @@ impl CompliantContact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry};
+    /// use rodimpact::compliant::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
     /// assert_eq!(CompliantContact::new(&scene, 1e6, Geometry::Exact)?.scene(), &scene);
@@ -262,7 +262,7 @@ impl CompliantContact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry};
+    /// use rodimpact::compliant::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
     /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
@@ -277,7 +277,7 @@ impl CompliantContact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry};
+    /// use rodimpact::compliant::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
     /// let r = CompliantContact::new(&scene, 1e2, Geometry::Exact)?.reference();
@@ -292,7 +292,7 @@ impl CompliantContact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry};
+    /// use rodimpact::compliant::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).pivot(q(0, 1)).build()?;
     /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
@@ -307,7 +307,7 @@ impl CompliantContact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry};
+    /// use rodimpact::compliant::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).e(q(0, 1)).build()?;
     /// assert!(CompliantContact::new(&scene, 1e6, Geometry::Frozen)?.sticking());
@@ -321,7 +321,7 @@ impl CompliantContact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry};
+    /// use rodimpact::compliant::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).build()?;
     /// assert_eq!(CompliantContact::new(&scene, 1e6, Geometry::Frozen)?.geometry(), Geometry::Frozen);
@@ -335,7 +335,7 @@ impl CompliantContact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry};
+    /// use rodimpact::compliant::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).build()?;
     /// assert_eq!(CompliantContact::new(&scene, 1e6, Geometry::Frozen)?.stiffness(), 1e6);
@@ -373,7 +373,7 @@ impl CompliantContact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry};
+    /// use rodimpact::compliant::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(0, 1)).build()?;
     /// let c = CompliantContact::new(&scene, 8.0, Geometry::Frozen)?;
@@ -390,7 +390,7 @@ impl CompliantContact {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::{CompliantContact, Geometry};
+    /// use rodimpact::compliant::{CompliantContact, Geometry};
     /// use rodimpact::{field::q, scene::Scene};
     /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(0, 1)).build()?;
     /// let c = CompliantContact::new(&scene, 8.0, Geometry::Frozen)?;

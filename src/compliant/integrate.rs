@@ -30,7 +30,7 @@ impl Integrator {
     ///
     /// # Examples
     /// ```
-    /// assert_eq!(rodimpact::contact::Integrator::ALL.len(), 5);
+    /// assert_eq!(rodimpact::compliant::Integrator::ALL.len(), 5);
     /// ```
     pub const ALL: [Integrator; 5] = [
         Integrator::Verlet,
@@ -44,7 +44,7 @@ impl Integrator {
     ///
     /// # Examples
     /// ```
-    /// assert_eq!(rodimpact::contact::Integrator::EventRk4.name(), "event-rk4");
+    /// assert_eq!(rodimpact::compliant::Integrator::EventRk4.name(), "event-rk4");
     /// ```
     pub fn name(self) -> &'static str {
         match self {
@@ -62,7 +62,7 @@ impl Integrator {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::contact::Integrator;
+    /// use rodimpact::compliant::Integrator;
     /// assert_eq!(Integrator::Midpoint.cost_per_step(), 60.0);
     /// ```
     pub fn cost_per_step(self) -> f64 {
@@ -82,7 +82,7 @@ impl Integrator {
 
 /// How a run's contact ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Ending {
+pub enum RunEnd {
     /// The point left the rod's line (bouncing contact, e > 0).
     Separated,
     /// The contact was read settled: a sticking contact (e = 0) at its settle time, or a nearly
@@ -119,7 +119,7 @@ pub struct Run {
     /// (E_end - E_0) / E_0, kinetic plus spring energy.
     pub energy_change: f64,
     /// How the contact ended.
-    pub ending: Ending,
+    pub ending: RunEnd,
     /// The error the run may have.
     pub tolerance: Tolerance,
     /// Why the run does not reproduce the exact values; `None` when every error is within the
@@ -137,7 +137,7 @@ pub struct Run {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{Integrator, MAX_WORK};
+/// use rodimpact::compliant::{Integrator, MAX_WORK};
 /// assert_eq!(MAX_WORK / Integrator::BackwardEuler.cost_per_step(), 5e6);
 /// ```
 pub const MAX_WORK: f64 = 3e8;
@@ -169,7 +169,7 @@ fn steps_needed(c: &CompliantContact, integrator: Integrator, h: f64) -> f64 {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{CompliantContact, Geometry, Integrator, work};
+/// use rodimpact::compliant::{CompliantContact, Geometry, Integrator, work};
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let c = CompliantContact::new(&scene, 1e6, Geometry::Exact)?;
@@ -189,13 +189,13 @@ pub fn work(c: &CompliantContact, integrator: Integrator, h: f64) -> f64 {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::contact::{CompliantContact, Ending, Geometry, Integrator, simulate};
+/// use rodimpact::compliant::{CompliantContact, RunEnd, Geometry, Integrator, simulate};
 /// use rodimpact::{field::q, scene::Scene};
 /// let scene = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
 /// let c = CompliantContact::new(&scene, 1e6, Geometry::Frozen)?;
 /// let run = simulate(&c, Integrator::EventRk4, c.contact_time() / 100.0)?;
 /// assert!(run.errors.iter().all(|e| *e < 1e-8));
-/// assert_eq!(run.ending, Ending::Separated);
+/// assert_eq!(run.ending, RunEnd::Separated);
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn simulate(c: &CompliantContact, integrator: Integrator, h: f64) -> Result<Run, Error> {
@@ -253,7 +253,7 @@ pub fn simulate(c: &CompliantContact, integrator: Integrator, h: f64) -> Result<
 /// A fixed-step run from rest, the point l/10 short of the rod, through the approach and the
 /// contact: to the first step after separation (bouncing) or over the settle time (sticking).
 /// A pivoted rod's centre turns on after the contact, so the velocities are read when it ends.
-fn fixed_step(c: &CompliantContact, integrator: Integrator, h: f64) -> (State, usize, Ending) {
+fn fixed_step(c: &CompliantContact, integrator: Integrator, h: f64) -> (State, usize, RunEnd) {
     let limit = steps_needed(c, integrator, h) as usize;
     let mut s = c.start(c.gap());
     let mut touched = false;
@@ -265,12 +265,12 @@ fn fixed_step(c: &CompliantContact, integrator: Integrator, h: f64) -> (State, u
             _ => implicit(c, &s, h, 1.0),
         };
         if c.slid_off(&s) {
-            return (s, taken, Ending::SlidOff);
+            return (s, taken, RunEnd::SlidOff);
         }
         if !c.sticking {
             let in_contact = c.gap_function(&s) > 0.0;
             if touched && !in_contact {
-                return (s, taken, Ending::Separated);
+                return (s, taken, RunEnd::Separated);
             }
             touched |= in_contact;
         }
@@ -281,11 +281,11 @@ fn fixed_step(c: &CompliantContact, integrator: Integrator, h: f64) -> (State, u
 /// How a run that reached its last step without a separation ended: settled if the contact is
 /// sticking or its relative motion has decayed (a nearly critically damped bouncing contact
 /// whose penetration lingers at the rounding level), else still in contact.
-fn unfinished(c: &CompliantContact, s: &State) -> Ending {
+fn unfinished(c: &CompliantContact, s: &State) -> RunEnd {
     if c.sticking || c.settled(s) {
-        Ending::Settled
+        RunEnd::Settled
     } else {
-        Ending::StillInContact
+        RunEnd::StillInContact
     }
 }
 
@@ -362,7 +362,7 @@ fn implicit(c: &CompliantContact, y0: &State, h: f64, theta: f64) -> State {
 /// settle time of a sticking contact (the last step shortened to end on it). Returns the state
 /// then (free flight after it does not change the velocities), the number of steps and how the
 /// contact ended. A bouncing contact still acting after four contact times is given up.
-fn event_rk4(c: &CompliantContact, h: f64) -> (State, usize, Ending) {
+fn event_rk4(c: &CompliantContact, h: f64) -> (State, usize, RunEnd) {
     let mut s = c.start(0.0);
     let span = contact_span(c);
     let (steps, last, settles) = if c.sticking {
@@ -387,16 +387,16 @@ fn event_rk4(c: &CompliantContact, h: f64) -> (State, usize, Ending) {
             let end = rk4(c, &s, hi * step, false);
             let (delta, arm, _, _) = c.geometry_of(&end);
             let ending = if c.sticking || c.on_rod(arm) < delta {
-                Ending::SlidOff
+                RunEnd::SlidOff
             } else {
-                Ending::Separated
+                RunEnd::Separated
             };
             return (end, taken, ending);
         }
         s = next;
     }
     let ending = if settles {
-        Ending::Settled
+        RunEnd::Settled
     } else {
         unfinished(c, &s)
     };

@@ -17,16 +17,16 @@
 //! exact value past 256 bits) goes to the general row, and a row it takes gives the general
 //! row's line byte for byte.
 
+use super::super::fixed_width_row::each_cell;
 use super::super::header::put_scene_cell;
 use super::super::last_scene;
 use super::super::plan::{CLAIMS, Role, SolvedRow, WordPlan};
 use super::super::row::{oblique_claims, write_oblique_cells};
-use super::super::word_row::each_cell;
 use super::{Claim, Ratio, claim, write_checks};
 use super::{Part, Rod, positive, word};
 use crate::batch::compare::Agreement;
 use crate::field::Field;
-use crate::field::int::{FixedInt, Frac, Wide, within, write_parts};
+use crate::field::int::{FixedInt, Unreduced, Wide, within, write_parts};
 use crate::scene::Motion;
 use crate::scene::{
     Disc, ObliqueParams, Params, RodMotion, SCENE_KEYS, SceneInput, Support, key_index,
@@ -138,13 +138,13 @@ impl WordScene {
         }
         let lift = |x: Part| {
             let (n, d) = (word(x.n), word(x.d));
-            Some(Frac::of_parts(
+            Some(Unreduced::of_parts(
                 T::of_words(x.negative, n)?,
                 T::of_words(false, d)?,
             ))
         };
-        let whole = |x: T| Frac::of_parts(x, T::small(1));
-        let g = Frac::of_parts(T::of_words(false, s.g.0)?, T::of_words(false, s.g.1)?);
+        let whole = |x: T| Unreduced::of_parts(x, T::small(1));
+        let g = Unreduced::of_parts(T::of_words(false, s.g.0)?, T::of_words(false, s.g.1)?);
         let [m, rod_mass, l, a, v0, e] = [s.m, s.big_m, s.l, s.a, s.v0, s.e].map(lift);
         let (m, rod_mass, l, a, v0, e) = (m?, rod_mass?, l?, a?, v0?, e?);
         let support = match s.pivot {
@@ -194,7 +194,7 @@ impl WordScene {
             };
             oblique::complete(&params, &o, response, None).ok()
         })??;
-        AfterOnWords::reduced(done, raw.laws_hold, Frac::reduced_words)
+        AfterOnWords::reduced(done, raw.laws_hold, Unreduced::reduced_words)
     }
 }
 

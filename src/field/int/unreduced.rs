@@ -1,4 +1,4 @@
-//! Fractions of fixed-width integers that are never reduced ([`Frac`], on `i128` or the
+//! Fractions of fixed-width integers that are never reduced ([`Unreduced`], on `i128` or the
 //! 512-bit `Wide`): a [`Field`] for the exact work of a batch row whose numbers are short (an
 //! engine's 17-digit decimals, a scene's small fractions), where reducing after every
 //! operation (a GCD each) cost far more than the arithmetic.
@@ -24,9 +24,9 @@ thread_local! {
     static OVERFLOWED: Cell<bool> = const { Cell::new(false) };
 }
 
-/// Runs `work` (exact work over [`Frac`]) and returns its result, or `None` when a value left
+/// Runs `work` (exact work over [`Unreduced`]) and returns its result, or `None` when a value left
 /// its integers' width on the way (the result is then meaningless). Not reentrant: `work` must
-/// not call `within` itself. Every [`Frac`] of the work must be made inside `work` (lifting a
+/// not call `within` itself. Every [`Unreduced`] of the work must be made inside `work` (lifting a
 /// value can overflow too, and the flag is cleared as `within` starts).
 pub(crate) fn within<R>(work: impl FnOnce() -> R) -> Option<R> {
     OVERFLOWED.with(|flag| flag.set(false));
@@ -35,15 +35,15 @@ pub(crate) fn within<R>(work: impl FnOnce() -> R) -> Option<R> {
 }
 
 /// A checked result, or 1 with the overflow flagged (1 keeps every denominator nonzero).
-fn checked<T: FracInt>(x: Option<T>) -> T {
+fn checked<T: UnreducedInt>(x: Option<T>) -> T {
     x.unwrap_or_else(|| {
         OVERFLOWED.with(|flag| flag.set(true));
         T::small(1)
     })
 }
 
-/// What a [`Frac`] needs of its integers beyond [`Int`].
-pub(crate) trait FracInt: Int + Copy + fmt::Debug {
+/// What a [`Unreduced`] needs of its integers beyond [`Int`].
+pub(crate) trait UnreducedInt: Int + Copy + fmt::Debug {
     /// The sign.
     fn sign(&self) -> Ordering;
     /// The order of the values.
@@ -54,7 +54,7 @@ pub(crate) trait FracInt: Int + Copy + fmt::Debug {
     fn exact_quotient(&self, d: &Self) -> Option<Self>;
 }
 
-impl FracInt for i128 {
+impl UnreducedInt for i128 {
     fn sign(&self) -> Ordering {
         self.cmp(&0)
     }
@@ -76,7 +76,7 @@ impl FracInt for i128 {
     }
 }
 
-impl<const N: usize> FracInt for Limbs<N> {
+impl<const N: usize> UnreducedInt for Limbs<N> {
     fn sign(&self) -> Ordering {
         Limbs::sign(self)
     }
@@ -93,16 +93,16 @@ impl<const N: usize> FracInt for Limbs<N> {
 
 /// `n/d` with `d > 0`, never reduced. See the module documentation.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Frac<T = Wide> {
+pub(crate) struct Unreduced<T = Wide> {
     n: T,
     d: T,
 }
 
-impl<T: FracInt> Frac<T> {
+impl<T: UnreducedInt> Unreduced<T> {
     /// `n/d` as it stands, not reduced; `d` must be positive.
-    pub(crate) fn of_parts(n: T, d: T) -> Frac<T> {
+    pub(crate) fn of_parts(n: T, d: T) -> Unreduced<T> {
         debug_assert_eq!(d.sign(), Ordering::Greater, "a positive denominator");
-        Frac { n, d }
+        Unreduced { n, d }
     }
 
     /// The value reduced, as a [`Q`] (one GCD, on machine words up to 256 bits).
@@ -110,12 +110,12 @@ impl<T: FracInt> Frac<T> {
         T::ratio(self.n, self.d)
     }
 
-    fn new_checked(n: Option<T>, d: T) -> Frac<T> {
-        Frac { n: checked(n), d }
+    fn new_checked(n: Option<T>, d: T) -> Unreduced<T> {
+        Unreduced { n: checked(n), d }
     }
 
     /// `self * o` on both sides: `(self.n o.d) cmp (o.n self.d)`.
-    fn cross(&self, o: &Frac<T>) -> Ordering {
+    fn cross(&self, o: &Unreduced<T>) -> Ordering {
         if self.d == o.d {
             return self.n.order(&o.n);
         }
@@ -124,7 +124,7 @@ impl<T: FracInt> Frac<T> {
         left.order(&right)
     }
 
-    fn sum(&self, o: &Frac<T>) -> Frac<T> {
+    fn sum(&self, o: &Unreduced<T>) -> Unreduced<T> {
         // A zero term (a body at rest, a point without spin) adds nothing: no products.
         if o.n.sign() == Ordering::Equal {
             return *self;
@@ -142,71 +142,71 @@ impl<T: FracInt> Frac<T> {
             let n = checked(self.n.mul(&o.d)).add(&checked(o.n.mul(&self.d)));
             (n, checked(self.d.mul(&o.d)))
         };
-        Frac::new_checked(n, d)
+        Unreduced::new_checked(n, d)
     }
 
-    fn product(&self, o: &Frac<T>) -> Frac<T> {
+    fn product(&self, o: &Unreduced<T>) -> Unreduced<T> {
         if self.n.sign() == Ordering::Equal || o.n.sign() == Ordering::Equal {
-            return Frac::zero();
+            return Unreduced::zero();
         }
-        Frac {
+        Unreduced {
             n: checked(self.n.mul(&o.n)),
             d: checked(self.d.mul(&o.d)),
         }
     }
 
-    fn quotient(&self, o: &Frac<T>) -> Frac<T> {
+    fn quotient(&self, o: &Unreduced<T>) -> Unreduced<T> {
         let (n, d) = match o.n.sign() {
             // Division by zero: flagged, like an overflow (the caller falls back).
-            Ordering::Equal => return Frac::new_checked(None, T::small(1)),
-            _ if self.n.sign() == Ordering::Equal => return Frac::zero(),
+            Ordering::Equal => return Unreduced::new_checked(None, T::small(1)),
+            _ if self.n.sign() == Ordering::Equal => return Unreduced::zero(),
             Ordering::Less => (checked(self.n.negated()), checked(o.n.negated())),
             Ordering::Greater => (self.n, o.n),
         };
-        Frac {
+        Unreduced {
             n: checked(n.mul(&o.d)),
             d: checked(self.d.mul(&d)),
         }
     }
 }
 
-impl<T: FixedInt> Frac<T> {
+impl<T: FixedInt> Unreduced<T> {
     /// The value reduced on words ([`reduced_words`](super::reduced_words)).
     pub(crate) fn reduced_words(self) -> Option<(bool, U256, U256)> {
         super::reduced_words(&self.n, &self.d)
     }
 }
 
-impl<T: FracInt> PartialEq for Frac<T> {
-    fn eq(&self, o: &Frac<T>) -> bool {
+impl<T: UnreducedInt> PartialEq for Unreduced<T> {
+    fn eq(&self, o: &Unreduced<T>) -> bool {
         self.cross(o) == Ordering::Equal
     }
 }
 
-impl<T: FracInt> PartialOrd for Frac<T> {
-    fn partial_cmp(&self, o: &Frac<T>) -> Option<Ordering> {
+impl<T: UnreducedInt> PartialOrd for Unreduced<T> {
+    fn partial_cmp(&self, o: &Unreduced<T>) -> Option<Ordering> {
         Some(self.cross(o))
     }
 }
 
-impl<T: FracInt> fmt::Display for Frac<T> {
+impl<T: UnreducedInt> fmt::Display for Unreduced<T> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}", self.to_q())
     }
 }
 
-/// `impl $trait<Frac>` and `impl $trait<&Frac>` for `Frac` by the method `$by`.
+/// `impl $trait<Unreduced>` and `impl $trait<&Unreduced>` for `Unreduced` by the method `$by`.
 macro_rules! operator {
     ($trait:ident, $method:ident, $by:ident) => {
-        impl<T: FracInt> $trait<Frac<T>> for Frac<T> {
-            type Output = Frac<T>;
-            fn $method(self, o: Frac<T>) -> Frac<T> {
+        impl<T: UnreducedInt> $trait<Unreduced<T>> for Unreduced<T> {
+            type Output = Unreduced<T>;
+            fn $method(self, o: Unreduced<T>) -> Unreduced<T> {
                 self.$by(&o)
             }
         }
-        impl<'a, T: FracInt> $trait<&'a Frac<T>> for Frac<T> {
-            type Output = Frac<T>;
-            fn $method(self, o: &'a Frac<T>) -> Frac<T> {
+        impl<'a, T: UnreducedInt> $trait<&'a Unreduced<T>> for Unreduced<T> {
+            type Output = Unreduced<T>;
+            fn $method(self, o: &'a Unreduced<T>) -> Unreduced<T> {
                 self.$by(o)
             }
         }
@@ -217,30 +217,30 @@ operator!(Add, add, sum);
 operator!(Mul, mul, product);
 operator!(Div, div, quotient);
 
-impl<T: FracInt> Neg for Frac<T> {
-    type Output = Frac<T>;
-    fn neg(self) -> Frac<T> {
-        Frac::new_checked(self.n.negated(), self.d)
+impl<T: UnreducedInt> Neg for Unreduced<T> {
+    type Output = Unreduced<T>;
+    fn neg(self) -> Unreduced<T> {
+        Unreduced::new_checked(self.n.negated(), self.d)
     }
 }
 
-impl<T: FracInt> Sub<Frac<T>> for Frac<T> {
-    type Output = Frac<T>;
-    fn sub(self, o: Frac<T>) -> Frac<T> {
+impl<T: UnreducedInt> Sub<Unreduced<T>> for Unreduced<T> {
+    type Output = Unreduced<T>;
+    fn sub(self, o: Unreduced<T>) -> Unreduced<T> {
         self.sum(&-o)
     }
 }
 
-impl<'a, T: FracInt> Sub<&'a Frac<T>> for Frac<T> {
-    type Output = Frac<T>;
-    fn sub(self, o: &'a Frac<T>) -> Frac<T> {
+impl<'a, T: UnreducedInt> Sub<&'a Unreduced<T>> for Unreduced<T> {
+    type Output = Unreduced<T>;
+    fn sub(self, o: &'a Unreduced<T>) -> Unreduced<T> {
         self.sum(&-*o)
     }
 }
 
-impl<T: FracInt> Zero for Frac<T> {
-    fn zero() -> Frac<T> {
-        Frac {
+impl<T: UnreducedInt> Zero for Unreduced<T> {
+    fn zero() -> Unreduced<T> {
+        Unreduced {
             n: T::small(0),
             d: T::small(1),
         }
@@ -250,21 +250,21 @@ impl<T: FracInt> Zero for Frac<T> {
     }
 }
 
-impl<T: FracInt> One for Frac<T> {
-    fn one() -> Frac<T> {
-        Frac {
+impl<T: UnreducedInt> One for Unreduced<T> {
+    fn one() -> Unreduced<T> {
+        Unreduced {
             n: T::small(1),
             d: T::small(1),
         }
     }
 }
 
-impl<T: FracInt> Field for Frac<T> {
+impl<T: UnreducedInt> Field for Unreduced<T> {
     const NAME: &'static str = "Q (unreduced, fixed width)";
     const EXACT: bool = true;
 
-    fn from_rational(q: &Q) -> Frac<T> {
-        Frac {
+    fn from_rational(q: &Q) -> Unreduced<T> {
+        Unreduced {
             n: checked(T::lift(q.numer())),
             d: checked(T::lift(q.denom())),
         }
@@ -296,9 +296,9 @@ mod tests {
             q(7, 5),
             q(3, 10),
         ];
-        let words: Vec<Frac<i128>> = rationals.iter().map(Frac::from_rational).collect();
+        let words: Vec<Unreduced<i128>> = rationals.iter().map(Unreduced::from_rational).collect();
         assert!(within(|| laws::check_field(&words, |a, b| a == b)).is_some());
-        let wide: Vec<Frac<Wide>> = rationals.iter().map(Frac::from_rational).collect();
+        let wide: Vec<Unreduced<Wide>> = rationals.iter().map(Unreduced::from_rational).collect();
         assert!(within(|| laws::check_field(&wide, |a, b| a == b)).is_some());
     }
 
@@ -327,18 +327,20 @@ mod tests {
     #[test]
     fn fractions_reduce_on_words() {
         let (n, d) = (
-            Frac::<i128>::from_rational(&q(-6, 4)),
+            Unreduced::<i128>::from_rational(&q(-6, 4)),
             U256 { hi: 0, lo: 2 },
         );
         assert_eq!(n.reduced_words(), Some((true, U256 { hi: 0, lo: 3 }, d)));
-        let zero =
-            within(|| Frac::<Wide>::from_rational(&q(-1, 3)) + Frac::from_rational(&q(1, 3)));
+        let zero = within(|| {
+            Unreduced::<Wide>::from_rational(&q(-1, 3)) + Unreduced::from_rational(&q(1, 3))
+        });
         assert_eq!(
             zero.unwrap().reduced_words(),
             Some((false, U256::ZERO, U256::ONE))
         );
-        let unreduced =
-            within(|| Frac::<I256>::from_rational(&q(5, 6)) * Frac::from_rational(&q(6, 10)));
+        let unreduced = within(|| {
+            Unreduced::<I256>::from_rational(&q(5, 6)) * Unreduced::from_rational(&q(6, 10))
+        });
         assert_eq!(
             unreduced.unwrap().reduced_words(),
             Some((false, U256::ONE, d))
@@ -348,23 +350,26 @@ mod tests {
     #[test]
     fn values_compare_and_reduce_as_rationals() {
         let got = within(|| {
-            let x = Frac::<i128>::from_rational(&q(2, 6)) + Frac::from_rational(&q(-1, 4));
-            (x.to_q(), x > Frac::zero(), x.sign())
+            let x =
+                Unreduced::<i128>::from_rational(&q(2, 6)) + Unreduced::from_rational(&q(-1, 4));
+            (x.to_q(), x > Unreduced::zero(), x.sign())
         });
         assert_eq!(got, Some((q(1, 12), true, Some(Ordering::Greater))));
     }
 
     #[test]
     fn leaving_the_width_is_reported_not_wrapped() {
-        let big = Frac::<Wide>::from_rational(&Q::from_integer(num_bigint::BigInt::from(1) << 300));
+        let big =
+            Unreduced::<Wide>::from_rational(&Q::from_integer(num_bigint::BigInt::from(1) << 300));
         assert!(within(|| big * big).is_none());
-        let word =
-            Frac::<i128>::from_rational(&Q::from_integer(num_bigint::BigInt::from(1u128 << 70)));
+        let word = Unreduced::<i128>::from_rational(&Q::from_integer(num_bigint::BigInt::from(
+            1u128 << 70,
+        )));
         assert!(within(|| word * word).is_none());
         // A decimal's power of ten takes the larger denominator: 1/100 + 1/1000 = 11/1000.
         let (a, b) = (
-            Frac::<i128>::from_rational(&q(1, 100)),
-            Frac::from_rational(&q(1, 1000)),
+            Unreduced::<i128>::from_rational(&q(1, 100)),
+            Unreduced::from_rational(&q(1, 1000)),
         );
         assert_eq!(
             within(|| {
@@ -373,7 +378,7 @@ mod tests {
             }),
             Some((11, 1000))
         );
-        assert!(within(|| big / Frac::zero()).is_none());
+        assert!(within(|| big / Unreduced::zero()).is_none());
         // The flag is cleared for the next computation.
         assert_eq!(within(|| (big / big).to_q()), Some(q(1, 1)));
     }

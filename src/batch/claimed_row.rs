@@ -31,12 +31,12 @@
 //! state (times `q^2`), `Ke` for the exact one (before `vn^2/S^2`).
 
 use super::compare::Agreement;
+use super::fixed_width_row::each_cell;
 use super::last_scene;
 use super::plan::{
     Arithmetic, Diagnosis, OutputCheck, Role, STATE, SolvedRow, WORD_CLAIMS, WordPlan,
 };
 use super::rel_error::RelError;
-use super::word_row::each_cell;
 use crate::field::int::{FixedInt, U256, Wide, reduced_words};
 use crate::number::ScaledRatio;
 use crate::solve::fast::fixed_width::Part;
@@ -400,7 +400,7 @@ fn write_checks(
 
 /// The engine row of `line` (without its line ending), or `None` when the general row must
 /// take it. See the module documentation.
-pub(super) fn engine_row(
+pub(super) fn claimed_row(
     plan: &WordPlan,
     agreement: &Agreement,
     number: usize,
@@ -483,7 +483,7 @@ mod tests {
             // A float's residue for a zero V: its square needs the audit's 1024 bits.
             "pivot-centre-1,rapier2d,0.36.1,f64,1/240,1,pivot-centre,1,1,1,1,3,uniform,1,0,1.740000000087535,5.0579153677743847e-107,3.779999999737395,1.2599999999124651,4.5,3.895199999821429",
         ] {
-            let fast = engine_row(plan, &Agreement::Exact, 1, line).expect(line);
+            let fast = claimed_row(plan, &Agreement::Exact, 1, line).expect(line);
             let mut slow = general.row(1, line).unwrap();
             slow.label = None;
             slow.expectation = None;
@@ -492,7 +492,7 @@ mod tests {
         // A centre hit at 1 m/s (exact: v = 0, V = 1) claimed as the state before the impact:
         // the same energy and momentum, named as no contact; v infinitely off, V and J by 1.
         let still = "c,x,1,f64,1/60,1,c,1,1,1,0,1,uniform,1,,1,0,0,0,1/2,1/2";
-        let row = engine_row(plan, &Agreement::Exact, 1, still).unwrap();
+        let row = claimed_row(plan, &Agreement::Exact, 1, still).unwrap();
         let want = ",0,1,0,1,1/2,1/2,true,false,inf,false,1.00,true,0,false,1.00,true,0,true,0,0,no-contact\n";
         assert!(row.line.ends_with(want), "{}", row.line);
     }
@@ -526,7 +526,7 @@ mod tests {
                 let mut slow = general.row(1, &line).unwrap();
                 slow.label = None;
                 slow.expectation = None;
-                let fast = engine_row(plan, &Agreement::Exact, 1, &line);
+                let fast = claimed_row(plan, &Agreement::Exact, 1, &line);
                 if line.starts_with('c') {
                     assert!(fast.is_none(), "{line}");
                 } else {
@@ -551,7 +551,7 @@ mod tests {
             "1,-1,uniform,,0.6,0.4,1.2",
         ] {
             assert!(
-                engine_row(plan, &Agreement::Exact, 1, line).is_none(),
+                claimed_row(plan, &Agreement::Exact, 1, line).is_none(),
                 "{line}"
             );
         }
