@@ -38,12 +38,14 @@
 //! | 3 core | [`impact`] | the general solver: contacts as Jacobian rows, `W = J M^-1 J^T`; one contact under the three laws with Coulomb friction; several contacts under each model |
 //! | 4 paper | [`scene`] | the paper's scene, a view of the model ([`scene::Scene::system`]): its inputs, motion (v, V, omega) and balances |
 //! | 5 solve | [`solve`] | the whole answer to any scene of the paper ([`solve::Answer`]) by its fast routes, each equal to the core; a* and omega_max ([`solve::optimum`]) |
-//! | 6 decide | [`claims`], [`textbook`], [`stability`], [`compliant`], [`batch`], [`suite`], [`samples`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes; the designed suites of scenes (engines) |
+//! | 6 decide | [`claims`], [`textbook`], [`stability`], [`compliant`], [`batch`], [`suite`], [`samples`], [`tables`], [`sampling`] | the paper's claims and their certificates; published answers checked; float error; the stiff-contact cross-check; many scenes; the designed suites of scenes (engines); the exact tables T1-T6 as data; the exact values the figures draw |
 //! | 7 output | [`report`], [`io`] | every rendering (text, JSON, Markdown, LaTeX, CSV, SVG); atomic files and directories written all or nothing |
+//! | 8 application | [`app`] | one place per use (an impact file answered, the pages' requests, a batch's options): input in, solvers called, complete results rendered |
 //!
 //! The command-line tool (the package `crates/rodimpact-cli`: `main.rs` and `commands/`, one
 //! file per subcommand, and the build of the pages' WebAssembly module) sits on top
-//! and only parses flags, calls one library function and prints what [`report`] renders.
+//! and only parses flags, calls one library function ([`app`] where a use needs several) and
+//! prints what [`report`] renders.
 //!
 //! [`prelude`] gathers the names most programs need:
 //!
@@ -77,12 +79,16 @@ pub mod batch;
 pub mod claims;
 pub mod compliant;
 pub mod samples;
+pub mod sampling;
 pub mod stability;
 pub mod suite;
+pub mod tables;
 pub mod textbook;
 // Layer 7: output.
 pub mod io;
 pub mod report;
+// Layer 8: application.
+pub mod app;
 
 /// The names most programs need, in one `use rodimpact::prelude::*;`.
 ///

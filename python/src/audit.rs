@@ -8,7 +8,8 @@ use crate::value_error;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyBytes;
-use rodimpact::batch::{Agreement, Arithmetic, Batch, FloatFormat, Summary, read_header, run};
+use rodimpact::app::batch::{BatchOptions, Spelling};
+use rodimpact::batch::{Agreement, Batch, Summary, read_header, run};
 use rodimpact::{Error, ErrorKind};
 use std::io::{BufRead, BufReader, Read, Write};
 use std::path::PathBuf;
@@ -151,61 +152,21 @@ pub(crate) struct AuditStream {
     atol: Option<String>,
 }
 
-/// The batch for `header` with the options of `rodimpact batch`.
+/// The batch for `header` with the options of `rodimpact batch`, read by the library's one
+/// reader of them ([`BatchOptions`]).
 fn batch_for(header: &str, options: &Options) -> Result<(Batch, Option<Agreement>), Error> {
-    let arithmetic = match options.backend.as_deref().map(str::trim) {
-        None | Some("exact") => Arithmetic::Exact,
-        Some("f64") => Arithmetic::F64,
-        Some(other) => {
-            return Err(Error::new(
-                "backend",
-                ErrorKind::Invalid(format!(
-                    "expected exact or f64, got '{}'",
-                    rodimpact::echo::echo(other)
-                )),
-            ));
-        }
+    let batch_options = BatchOptions {
+        arithmetic: BatchOptions::arithmetic_of(options.backend.as_deref())?,
+        float: BatchOptions::float_of(options.float.as_deref())?,
+        rtol: options.rtol.clone(),
+        ulps: options.ulps.clone(),
+        atol: options.atol.clone(),
+        tolerance: Vec::new(),
+        spelling: Spelling::Keywords,
     };
-    let format = match options.float.as_deref().map(str::trim) {
-        None | Some("f64") => FloatFormat::F64,
-        Some("f32") => FloatFormat::F32,
-        Some(other) => {
-            return Err(Error::new(
-                "float",
-                ErrorKind::Invalid(format!(
-                    "expected f32 or f64, got '{}'",
-                    rodimpact::echo::echo(other)
-                )),
-            ));
-        }
-    };
-    let agreement = match (&options.rtol, &options.ulps) {
-        (Some(_), Some(_)) => {
-            return Err(Error::new(
-                "rtol",
-                ErrorKind::Conflict("give either rtol or ulps, not both".into()),
-            ));
-        }
-        (Some(r), None) => Some(Agreement::parse_rtol(r)?),
-        (None, Some(n)) => Some(Agreement::parse_ulps(n, format)?),
-        (None, None) if options.float.is_some() => {
-            return Err(Error::new(
-                "float",
-                ErrorKind::Conflict("the float format of ulps: give ulps too".into()),
-            ));
-        }
-        (None, None) => None,
-    };
-    let batch = Batch::new(header, arithmetic)?;
-    let batch = match &agreement {
-        Some(a) => batch.with_agreement(a.clone())?,
-        None => batch,
-    };
-    let batch = match &options.atol {
-        Some(x) => batch.with_atol(x)?,
-        None => batch,
-    };
-    Ok((batch, agreement))
+    let checked = batch_options.checked()?;
+    let batch = batch_options.batch(header, &checked)?;
+    Ok((batch, checked.agreement))
 }
 
 /// The options of `rodimpact batch`, as text (each read by the library's own parser).

@@ -149,7 +149,7 @@ fn impact_json(
     digits: Option<String>,
 ) -> PyResult<(String, bool, String)> {
     use rodimpact::impact::Law;
-    use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
+    use rodimpact::app::impact::{answer_impact, read_scene_file};
     py.detach(|| {
         let (value, label) = match (&path, &scene) {
             (Some(path), _) => {

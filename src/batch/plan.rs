@@ -19,9 +19,10 @@ use crate::solve::Route;
 /// let row = Batch::new("m,M", Arithmetic::F64).unwrap().row(1, "1,1").unwrap();
 /// assert_eq!(row.laws_held, None); // f64 decides nothing exactly
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Arithmetic {
     /// Exact rationals by [`Route::FractionFree`]: claims agree only when exactly equal.
+    #[default]
     Exact,
     /// The naive closed form in f64 ([`Route::ClosedForm`], the paper's formulas as a float
     /// code would write them): claims agree within [`FLOAT_TOLERANCE`](super::FLOAT_TOLERANCE);

@@ -8,8 +8,8 @@ use crate::field::notation::{Notation, surd};
 use crate::field::{Q, QSqrt};
 use crate::scene::Groups;
 use crate::scene::{Scene, Support};
-use crate::solve::fast::linear::solve;
-use crate::solve::optimum::{Arm, Placement, optimum, struck_end};
+use crate::solve::optimum::{Arm, Placement, struck_end};
+use crate::solve::working::Working;
 use num_traits::{One, Signed, Zero};
 
 /// The output format of [`explain`].
@@ -43,12 +43,13 @@ fn n(x: &Q) -> String {
     }
 }
 
-/// The working for `scene`.
+/// The working of a scene, written out from its solved `working` ([`Working::of`]).
 ///
 /// # Examples
 /// ```
 /// use rodimpact::{field::q, scene::Scene, report::{explain, ExplainFormat}};
-/// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 1)).build()?;
+/// use rodimpact::solve::working::Working;
+/// let s = Working::of(&Scene::builder(q(1, 1), q(1, 1)).a(q(1, 1)).build()?);
 /// let text = explain(&s, ExplainFormat::Text);
 /// assert!(text.contains("1*1 = 1*v + 1*V"));
 /// assert!(text.contains("D = 1 + q = 5"));
@@ -60,8 +61,8 @@ fn n(x: &Q) -> String {
 /// assert!(html.contains("<math display=\"block\">") && !html.contains("merror"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn explain(scene: &Scene, format: ExplainFormat) -> String {
-    let steps = steps(scene);
+pub fn explain(working: &Working, format: ExplainFormat) -> String {
+    let steps = steps(working);
     match format {
         ExplainFormat::Text => render(
             &steps,
@@ -197,27 +198,22 @@ fn latex(e: &str) -> String {
     s
 }
 
-fn steps(scene: &Scene) -> Vec<Step> {
+fn steps(working: &Working) -> Vec<Step> {
     // An oblique scene: the normal problem's working (a rod at rest meets the projectile's
     // normal speed v0), then the step along the rod.
-    let normal = scene.normal_problem();
-    let mut steps = normal_steps(if scene.oblique().is_some() {
-        &normal
-    } else {
-        scene
-    });
-    if let Some(o) = scene.oblique() {
-        steps.insert(steps.len() - 1, along_the_rod(scene, o));
+    let mut steps = normal_steps(working);
+    if let (Some(o), Some(out)) = (working.scene.oblique(), &working.oblique) {
+        steps.insert(steps.len() - 1, along_the_rod(&working.scene, o, out));
     }
     steps
 }
 
 /// The working of the paper's scene: the balances, their solution, and where omega is largest.
-fn normal_steps(scene: &Scene) -> Vec<Step> {
+fn normal_steps(working: &Working) -> Vec<Step> {
+    let scene = &working.normal;
     let (m, big_m, a, v0, e) = numbers(scene);
     let inertia = scene.inertia();
-    let out = solve(&scene.params::<Q>()).expect("a valid scene is nonsingular");
-    let x = &out.after;
+    let x = &working.outcome.after;
     let mut steps = vec![Step {
         title: "The scene",
         prose: vec![format!(
@@ -235,16 +231,18 @@ fn normal_steps(scene: &Scene) -> Vec<Step> {
         Support::Free => free_rod_steps(scene, &inertia, x, &mut steps),
         Support::Pivot(p) => pivot_steps(scene, p, &inertia, x, &mut steps),
     }
-    steps.push(a_star_step(scene));
+    steps.push(a_star_step(scene, &working.optimum));
     steps
 }
 
 /// The step along the rod of an oblique impact (a rod at rest): the slip, the impulse that
 /// would stop it, Coulomb's bound, stick or slide, and the velocities along the rod after.
-fn along_the_rod(scene: &Scene, o: &crate::scene::Oblique) -> Step {
+fn along_the_rod(
+    scene: &Scene,
+    o: &crate::scene::Oblique,
+    out: &crate::solve::fast::oblique::ObliqueOutcome<Q>,
+) -> Step {
     let (p, op) = (scene.params::<Q>(), o.params::<Q>());
-    let out = crate::solve::fast::oblique::solve(&p, &op, None)
-        .expect("Q decides stick or slide, and a valid scene is nonsingular");
     let slip = op.slip(&p.support);
     let free = matches!(p.support, Support::Free);
     let (m, big_m) = (scene.m(), scene.rod_mass());
@@ -413,8 +411,7 @@ fn pivot_steps(
     });
 }
 
-fn a_star_step(scene: &Scene) -> Step {
-    let o = optimum(scene).expect("a rod at rest before the impact has an optimum");
+fn a_star_step(scene: &Scene, o: &crate::solve::optimum::Optimum) -> Step {
     let root = surd(&QSqrt::sqrt_of(&o.squared), Notation::Ascii);
     let approx = QSqrt::sqrt_of(&o.squared).decimal(6);
     let (lever, moment, star, from) = match scene.support() {

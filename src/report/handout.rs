@@ -8,12 +8,12 @@
 use super::mathml::escape;
 use super::page::{Page, document, inline_svg};
 use super::paper_html::{formula_table, wide};
-use super::{
-    ExplainFormat, Table, TableOptions, explain, markup, omega_figure, solution_html, t1, t2,
-};
+use super::{ExplainFormat, explain, markup, omega_figure, solution_html};
 use crate::error::Error;
 use crate::scene::{RodInertia, Scene, Support};
 use crate::solve::Answer;
+use crate::solve::working::Working;
+use crate::tables::{Table, TableOptions, t1, t2};
 use crate::textbook::formula::Formulas;
 use std::fmt::Write as _;
 
@@ -24,7 +24,7 @@ const STYLE: &str = include_str!("handout.css");
 /// The significant digits of the decimals beside the exact answer (a handout's precision).
 const DIGITS: usize = 6;
 
-/// The handout for `scene`: its exact answer, the working, `formulas` (the scene's kind in
+/// The handout for `answer`'s scene: its exact answer, the `working`, `formulas` (the scene's kind in
 /// symbols, as `rodimpact formula` gives them), omega against the impact point, and the
 /// velocities along the rod (T2; T1, a* against M/m, for a rod on a pivot).
 ///
@@ -35,14 +35,21 @@ const DIGITS: usize = 6;
 /// # Examples
 /// ```
 /// use rodimpact::{field::q, scene::{Scene, SceneInput}, textbook::formula::formulas};
+/// use rodimpact::solve::{Answer, working::Working};
 /// let s = Scene::builder(q(1, 1), q(1, 1)).a(q(1, 2)).build()?;
-/// let page = rodimpact::report::handout_html(&s, &formulas(&SceneInput::default())?)?;
+/// let (answer, working) = (Answer::of(&s), Working::of(&s));
+/// let page = rodimpact::report::handout_html(&answer, &working, &formulas(&SceneInput::default())?)?;
 /// assert!(page.starts_with("<!DOCTYPE html>") && !page.contains("<script"));
 /// assert!(page.contains("<td>12/11 rad/s</td>") && page.contains("<svg role=\"img\""));
 /// assert!(page.contains("<table id=\"T2\">") && !page.contains("https://"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn handout_html(scene: &Scene, formulas: &Formulas) -> Result<String, Error> {
+pub fn handout_html(
+    answer: &Answer,
+    working: &Working,
+    formulas: &Formulas,
+) -> Result<String, Error> {
+    let scene = &answer.scene;
     if scene.oblique().is_some() {
         return Err(Error::new(
             "scene",
@@ -51,7 +58,6 @@ pub fn handout_html(scene: &Scene, formulas: &Formulas) -> Result<String, Error>
             ),
         ));
     }
-    let answer = Answer::of(scene);
     let figure = omega_figure(std::slice::from_ref(scene))?;
     let table = table(scene)?;
     let mut body = String::from(
@@ -67,13 +73,13 @@ pub fn handout_html(scene: &Scene, formulas: &Formulas) -> Result<String, Error>
         body,
         "<section id=\"answer\">\n<h2>The scene and its exact answer</h2>\n\
          {}</section>\n",
-        solution_html(&answer, DIGITS)
+        solution_html(answer, DIGITS)
     );
     let _ = write!(
         body,
         "<section id=\"working\">\n<h2>The working</h2>\n<div class=\"working\">\n{}</div>\n\
          </section>\n",
-        explain(scene, ExplainFormat::Html)
+        explain(working, ExplainFormat::Html)
     );
     body.push_str(&formula_section(formulas));
     let caption = "The rod’s angular velocity ω after the impact against the impact point a, \

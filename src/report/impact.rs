@@ -22,21 +22,26 @@ use serde_json::{Map, Value, json};
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{field::{q, QSqrt}, report::impact_json, scene::Scene};
-/// use rodimpact::impact::{solve_contact, Law};
+/// use rodimpact::{field::{q, Q, QSqrt}, report::impact_json, scene::Scene};
+/// use rodimpact::impact::{contact_matrix, solve_contact, Law};
 /// let system = Scene::builder(q(1, 1), q(1, 1)).build()?.system();
 /// let answer = solve_contact::<QSqrt>(&system, Law::Poisson).expect("answered");
-/// let json = impact_json(&system, &[answer], 30);
+/// let (w, _) = contact_matrix::<Q>(&system);
+/// let json = impact_json(&system, &w, &[answer], 30);
 /// assert_eq!(json["laws"][0]["bodies"]["rod"]["omega"]["exact"], "-6/5");
 /// assert_eq!(json["laws"][0]["energy_gain"], false);
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn impact_json(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize) -> Value {
+pub fn impact_json(
+    system: &System,
+    w: &ContactMatrix<Q>,
+    answers: &[LawAnswer<QSqrt>],
+    digits: usize,
+) -> Value {
     let digits = digits.max(30);
     let surd = |x: &QSqrt| surd_json(x, digits);
     let vector = |v: &Vec2<QSqrt>| json!([surd(&v.x), surd(&v.y)]);
     let c = &system.contacts[0];
-    let (w, _) = crate::impact::contact_matrix::<Q>(system);
     let laws: Vec<Value> = answers
         .iter()
         .map(|a| {
@@ -89,7 +94,7 @@ pub fn impact_json(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize)
         })
         .collect();
     json!({
-        "scene": scene_json(system, &w, digits),
+        "scene": scene_json(system, w, digits),
         "laws": laws,
     })
 }
@@ -215,16 +220,21 @@ fn compact_vector(v: &Vec2<Q>) -> String {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{field::{q, QSqrt}, report::impact_text, scene::Scene};
-/// use rodimpact::impact::{solve_contact, Law};
+/// use rodimpact::{field::{q, Q, QSqrt}, report::impact_text, scene::Scene};
+/// use rodimpact::impact::{contact_matrix, solve_contact, Law};
 /// let system = Scene::builder(q(1, 1), q(1, 1)).build()?.system();
 /// let answers: Vec<_> = Law::ALL.iter().map(|&l| solve_contact::<QSqrt>(&system, l).expect("answered")).collect();
-/// let text = impact_text(&system, &answers, 6);
+/// let text = impact_text(&system, &contact_matrix::<Q>(&system), &answers, 6);
 /// assert!(text.contains("W is diagonal"));
 /// assert!(text.contains("No law creates energy"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn impact_text(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize) -> String {
+pub fn impact_text(
+    system: &System,
+    (w, u0): &(ContactMatrix<Q>, [Q; 2]),
+    answers: &[LawAnswer<QSqrt>],
+    digits: usize,
+) -> String {
     let mut out = String::new();
     if let Some(title) = &system.title {
         out.push_str(&format!("{title}\n\n"));
@@ -256,7 +266,6 @@ pub fn impact_text(system: &System, answers: &[LawAnswer<QSqrt>], digits: usize)
         out.push_str(&format!("  {}{shape}: {what}\n", b.name));
     }
     let c = &system.contacts[0];
-    let (w, u0) = crate::impact::contact_matrix::<Q>(system);
     out.push_str(&format!(
         "Contact: {} on {} at {} m, normal {} (into {}), e = {}, mu = {}\n",
         system.bodies[c.a].name,
@@ -396,15 +405,21 @@ pub(crate) fn law_heading(law: crate::impact::Law) -> &'static str {
 /// # Examples
 /// ```
 /// use rodimpact::{field::Q, model::parse_toml, report::models_json};
-/// use rodimpact::impact::{Model, solve_several};
+/// use rodimpact::impact::{Model, contact_matrix, solve_several};
 /// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/cradle-3.toml")).unwrap();
 /// let system = parse_toml("cradle-3", &text)?;
 /// let model = Model::SimultaneousNewton;
-/// let json = models_json(&system, &[(model.clone(), solve_several::<Q>(&system, &model))], 30);
+/// let w = contact_matrix::<Q>(&system).0;
+/// let json = models_json(&system, &w, &[(model.clone(), solve_several::<Q>(&system, &model))], 30);
 /// assert_eq!(json["models"][0]["answers"][0]["bodies"]["ball1"]["velocity"][0]["exact"], "-1/3");
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn models_json(system: &System, outcomes: &[(Model, ModelOutcome<Q>)], digits: usize) -> Value {
+pub fn models_json(
+    system: &System,
+    w: &ContactMatrix<Q>,
+    outcomes: &[(Model, ModelOutcome<Q>)],
+    digits: usize,
+) -> Value {
     let digits = digits.max(30);
     let value = |x: &Q| value_json(x, digits);
     let vector = |v: &Vec2<Q>| json!([value(&v.x), value(&v.y)]);
@@ -453,8 +468,7 @@ pub fn models_json(system: &System, outcomes: &[(Model, ModelOutcome<Q>)], digit
             json!({"model": model.to_string(), "status": status, "answers": answers})
         })
         .collect();
-    let (w, _) = crate::impact::contact_matrix::<Q>(system);
-    json!({"scene": scene_json(system, &w, digits), "models": models})
+    json!({"scene": scene_json(system, w, digits), "models": models})
 }
 
 /// The text report of `rodimpact impact` for several contacts: each model's answer (or why it

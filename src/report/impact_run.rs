@@ -4,7 +4,7 @@
 use super::{
     check_json, check_summary, check_table, impact_json, impact_text, models_json, models_text,
 };
-use crate::textbook::impact_run::{ImpactAnswers, ImpactRun};
+use crate::textbook::impact::{ImpactAnswers, ImpactRun};
 use serde_json::Value;
 
 /// The JSON of `impact --format json`: [`impact_json`] for one contact, [`models_json`] for
@@ -13,7 +13,7 @@ use serde_json::Value;
 /// # Examples
 /// ```
 /// use rodimpact::report::impact_run_json;
-/// use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
+/// use rodimpact::app::impact::{answer_impact, read_scene_file};
 /// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
 /// let json = impact_run_json(&answer_impact(&value, "paper.toml", None, None)?, 30);
 /// assert_eq!(json["laws"].as_array().map(Vec::len), Some(3));
@@ -21,8 +21,10 @@ use serde_json::Value;
 /// ```
 pub fn impact_run_json(run: &ImpactRun, digits: usize) -> Value {
     let mut json = match &run.answers {
-        ImpactAnswers::Laws(answers) => impact_json(&run.system, answers, digits),
-        ImpactAnswers::Models(outcomes) => models_json(&run.system, outcomes, digits),
+        ImpactAnswers::Laws(answers) => impact_json(&run.system, &run.contact.0, answers, digits),
+        ImpactAnswers::Models(outcomes) => {
+            models_json(&run.system, &run.contact.0, outcomes, digits)
+        }
     };
     if run.has_claims() {
         json["claims"] = check_json(&run.checked);
@@ -36,7 +38,7 @@ pub fn impact_run_json(run: &ImpactRun, digits: usize) -> Value {
 /// # Examples
 /// ```
 /// use rodimpact::report::impact_run_text;
-/// use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
+/// use rodimpact::app::impact::{answer_impact, read_scene_file};
 /// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
 /// let text = impact_run_text(&answer_impact(&value, "paper.toml", None, None)?, 6);
 /// assert!(text.contains("Newton (kinematic") && text.contains("omega = -12/11"));
@@ -44,7 +46,10 @@ pub fn impact_run_json(run: &ImpactRun, digits: usize) -> Value {
 /// ```
 pub fn impact_run_text(run: &ImpactRun, digits: usize) -> String {
     let (mut text, under) = match &run.answers {
-        ImpactAnswers::Laws(answers) => (impact_text(&run.system, answers, digits), "law"),
+        ImpactAnswers::Laws(answers) => (
+            impact_text(&run.system, &run.contact, answers, digits),
+            "law",
+        ),
         ImpactAnswers::Models(outcomes) => (models_text(&run.system, outcomes, digits), "model"),
     };
     if run.has_claims() {

@@ -17,9 +17,7 @@ mod impact_run;
 pub mod markup;
 pub mod mathml;
 pub mod page;
-pub mod pages;
 mod paper_html;
-mod paper_tables;
 mod plot;
 mod proofs;
 mod simulate;
@@ -28,7 +26,7 @@ mod stability;
 mod table;
 pub mod tilted;
 
-pub use backend::{ERROR_BOUND, backend_values};
+pub use backend::backend_json;
 pub use batch::{batch_passed, batch_report, batch_summary, expected_report};
 pub use batch_json::batch_summary_json;
 pub use certificate::certificate_markdown;
@@ -41,11 +39,9 @@ pub use explain::{ExplainFormat, explain};
 pub use formula::{formula_json, formula_latex, formula_markdown, formula_text};
 pub use handout::handout_html;
 pub use impact::{impact_audit_json, impact_json, impact_text, models_json, models_text};
+pub(crate) use impact::{law_heading, law_name};
 pub use impact_run::{impact_run_json, impact_run_text};
 pub use paper_html::{PaperEdition, paper_html};
-pub use paper_tables::{
-    ALL_TABLE_IDS, TABLE_IDS, TableOptions, all_tables, t1, t2, t3, t4, t5, t6, tables,
-};
 pub use plot::{
     Figure, PlotData, PlotValue, energy_figure, mass_ratio_family, omega_figure, optimum_figure,
     plot_figure1, plot_omega, plot_optimum, plot_stability, quantities_figure, velocity_figure,
@@ -61,7 +57,7 @@ pub use simulate::{
 };
 pub use solution::{solution_html, solution_json, solution_text};
 pub use stability::{stability_json, stability_markdown};
-pub use table::{Cell, Column, Format, Table, render_document};
+pub use table::{Format, render_document};
 
 use crate::field::decimal;
 use crate::field::{Q, QSqrt};

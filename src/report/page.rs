@@ -8,6 +8,8 @@
 //! style (after [`BASE_STYLE`], the print rules every page shares) and the script.
 
 pub use super::mathml::escape;
+use crate::Error;
+use crate::error::ErrorKind;
 
 /// The rules every page starts from: in print, no controls (buttons, sliders, anything marked
 /// `no-print`) and links as plain text. A page's own style comes after and may add to them.
@@ -113,6 +115,70 @@ pub fn json_script(id: &str, json: &str) -> String {
         escape(id),
         json.replace("</", "<\\/")
     )
+}
+
+/// Unpacks the module in the page and runs the page's script with the API.
+const LOADER: &str = include_str!("page_loader.js");
+
+/// The element that carries the WebAssembly module in a page: `module` is the module
+/// zlib-compressed and in base64, as the command-line tool's `build.rs` leaves it; part of the
+/// page's body, read by the loader of [`page_script`].
+///
+/// # Errors
+/// When `module` is empty (a build without the feature `pages`, without the
+/// `wasm32-unknown-unknown` target, or with `RODIMPACT_PAGES_WASM=none`), naming the fix.
+///
+/// # Examples
+/// ```
+/// let element = rodimpact::report::page::module_element("eJwDAAAAAAE=")?;
+/// assert!(element.starts_with("<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">eJw"));
+/// assert!(rodimpact::report::page::module_element("").is_err());
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn module_element(module: &str) -> Result<String, Error> {
+    if module.is_empty() {
+        return Err(Error::new(
+            "explore",
+            ErrorKind::Invalid(
+                "this build has no WebAssembly module for the pages: install the target \
+                 (rustup target add wasm32-unknown-unknown) and build again with the feature \
+                 `pages` (on by default)"
+                    .into(),
+            ),
+        ));
+    }
+    Ok(format!(
+        "<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">{module}</script>\n"
+    ))
+}
+
+/// The script of a page that computes with the library: the loader, which unpacks the module
+/// of [`module_element`] and then runs `ui` as the body of a function of `api`
+/// (`api.call(name, request)` answers as [`call`] does).
+///
+/// # Examples
+/// ```
+/// let script = rodimpact::report::page::page_script("api.call('number', {text: '1'});");
+/// assert!(script.contains("rodimpactPage(function (api) {"));
+/// ```
+pub fn page_script(ui: &str) -> String {
+    format!("{LOADER}\nrodimpactPage(function (api) {{\n{ui}\n}});\n")
+}
+
+/// A page's preset as its link spells it after `#`: `key=value` joined by `&` (empty: nothing
+/// preset). The values are the program's own (numbers, `/`, `-`, `.`, `=`, words): no escaping.
+///
+/// # Examples
+/// ```
+/// let fields = [("M", "1/2".to_string()), ("a", "1".to_string())];
+/// assert_eq!(rodimpact::report::page::link_of(&fields), "M=1/2&a=1");
+/// ```
+pub fn link_of(fields: &[(&'static str, String)]) -> String {
+    fields
+        .iter()
+        .map(|(key, value)| format!("{key}={value}"))
+        .collect::<Vec<_>>()
+        .join("&")
 }
 
 #[cfg(test)]

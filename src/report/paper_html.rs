@@ -11,8 +11,9 @@ use super::page::{Page, document, inline_svg};
 use super::proofs::{
     METHOD, TITLE, groups, refutes_intuition_as_paper, summary_line, verdict_label, verdict_mark,
 };
-use super::{PaperFigure, Table, claim_markdown, hand_step_note, markup};
+use super::{PaperFigure, claim_markdown, hand_step_note, markup};
 use crate::claims::Decided;
+use crate::tables::Table;
 use crate::textbook::formula::{AnswerFormula, Condition, Formulas};
 use pulldown_cmark::{Event, HeadingLevel, Parser, Tag, TagEnd};
 use std::fmt::Write as _;

@@ -15,8 +15,9 @@
 
 use super::certificate::certificate_markdown;
 use super::markup;
-use super::table::{Format, Table, render_document};
+use super::table::{Format, render_document};
 use crate::claims::{self, Certificate, Claim, Decided, Decision, Group, Verdict};
+use crate::tables::Table;
 use serde_json::{Map, Value, json};
 use std::fmt::Write as _;
 

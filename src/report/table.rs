@@ -10,7 +10,7 @@
 use super::{markup, mathml};
 use crate::field::decimal;
 use crate::field::notation::{self, Notation};
-use crate::field::{Q, QSqrt};
+use crate::tables::{Cell, Table};
 use std::fmt::Write as _;
 
 /// Output format of a table.
@@ -64,37 +64,12 @@ const TABLE_DIGITS: usize = 12;
 /// Significant digits of the CSV decimals: enough to round-trip an `f64`.
 const CSV_DIGITS: usize = 17;
 
-/// One table cell.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Cell {
-    /// An exact rational.
-    Rational(Q),
-    /// An exact element x + y sqrt(d) of a quadratic field.
-    Surd(QSqrt),
-    /// Plain text (`inside`, `centre`).
-    Text(String),
-    /// No value (a threshold that does not exist): `none` in Markdown and LaTeX, empty in CSV.
-    Absent,
-}
-
 impl Cell {
-    /// The square root of a rational `x >= 0`, exact.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::report::{Cell, Format};
-    /// use rodimpact::field::q;
-    /// assert_eq!(Cell::root(&q(2, 3)).render(Format::Markdown), "√6/3");
-    /// ```
-    pub fn root(x: &Q) -> Cell {
-        Cell::Surd(QSqrt::sqrt_of(x))
-    }
-
     /// The cell in `format`.
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::report::{Cell, Format};
+    /// use rodimpact::{report::Format, tables::Cell};
     /// use rodimpact::field::{q, QSqrt};
     /// let c = Cell::Surd(QSqrt::sqrt_of(&q(24, 25)));
     /// assert_eq!(c.render(Format::Markdown), "2√6/5");
@@ -123,7 +98,7 @@ impl Cell {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::report::Cell;
+    /// use rodimpact::tables::Cell;
     /// use rodimpact::field::q;
     /// assert_eq!(Cell::root(&q(2, 1)).decimal(5).as_deref(), Some("1.4142"));
     /// assert_eq!(Cell::Absent.decimal(5), None);
@@ -141,7 +116,7 @@ impl Cell {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::report::Cell;
+    /// use rodimpact::tables::Cell;
     /// use rodimpact::field::q;
     /// assert_eq!(Cell::Rational(q(1, 25)).approx(12).as_deref(), Some("0.04"));
     /// assert_eq!(Cell::root(&q(2, 1)).approx(5).as_deref(), Some("1.4142"));
@@ -159,78 +134,13 @@ impl Cell {
     }
 }
 
-/// A column: its heading ([`markup`](super::markup)), its CSV name, and whether Markdown and
-/// LaTeX show its decimals beside it.
-///
-/// # Examples
-/// ```
-/// use rodimpact::report::Column;
-/// let c = Column::with_decimals("$v/v_0$", "v/v0");
-/// assert_eq!((c.heading.as_str(), c.csv.as_str(), c.approx), ("$v/v_0$", "v/v0", true));
-/// ```
-#[derive(Debug, Clone, PartialEq)]
-pub struct Column {
-    /// The heading, plain text with `$…$` math (`$a^*/l$`).
-    pub heading: String,
-    /// The CSV column name: ASCII, no commas, units in the name (`v/v0`, `a_star/l`).
-    pub csv: String,
-    /// Show a `≈` column of decimals beside it (Markdown, LaTeX).
-    pub approx: bool,
-}
-
-impl Column {
-    /// A column of exact values (or text) only.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::report::Column;
-    /// assert!(!Column::exact("$M/m$", "M/m").approx);
-    /// ```
-    pub fn exact(heading: &str, csv: &str) -> Column {
-        Column {
-            heading: heading.into(),
-            csv: csv.into(),
-            approx: false,
-        }
-    }
-
-    /// A column of exact values followed by their decimals.
-    ///
-    /// # Examples
-    /// ```
-    /// use rodimpact::report::Column;
-    /// assert!(Column::with_decimals("$a^*/l$", "a_star/l").approx);
-    /// ```
-    pub fn with_decimals(heading: &str, csv: &str) -> Column {
-        Column {
-            approx: true,
-            ..Column::exact(heading, csv)
-        }
-    }
-}
-
-/// A table: id, title, a note on units and conventions, columns and rows of cells.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Table {
-    /// Short id (`T1`).
-    pub id: &'static str,
-    /// Title ([`markup`](super::markup)).
-    pub title: String,
-    /// Units and conventions, printed under the title ([`markup`](super::markup)).
-    pub note: String,
-    /// The columns.
-    pub columns: Vec<Column>,
-    /// Rows; each as long as `columns`.
-    pub rows: Vec<Vec<Cell>>,
-}
-
 impl Table {
     /// The table in `format`: a Markdown section, a LaTeX `table` environment (without the
     /// document preamble), or a CSV file (header line, one line per row).
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::report::{Cell, Column, Format, Table};
+    /// use rodimpact::{report::Format, tables::{Cell, Column, Table}};
     /// use rodimpact::field::q;
     /// let t = Table { id: "T0", title: "Demo".into(), note: "$x$ exact.".into(),
     ///     columns: vec![Column::with_decimals("$x$", "x")], rows: vec![vec![Cell::Rational(q(1, 3))]] };
@@ -262,7 +172,7 @@ impl Table {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::report::{Cell, Column, Table};
+    /// use rodimpact::tables::{Cell, Column, Table};
     /// use rodimpact::field::q;
     /// let t = Table { id: "T0", title: "Demo".into(), note: "$x$ exact.".into(),
     ///     columns: vec![Column::exact("$x$", "x")], rows: vec![vec![Cell::Rational(q(1, 3))]] };
@@ -277,7 +187,7 @@ impl Table {
     ///
     /// # Examples
     /// ```
-    /// use rodimpact::report::{Cell, Column, Table};
+    /// use rodimpact::tables::{Cell, Column, Table};
     /// use rodimpact::field::q;
     /// let t = Table { id: "T0", title: "Demo".into(), note: "$x$ exact.".into(),
     ///     columns: vec![Column::with_decimals("$x$", "x")], rows: vec![vec![Cell::Rational(q(1, 3))]] };
@@ -491,7 +401,7 @@ fn csv_document(tables: &[&Table]) -> String {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::report::{render_document, Cell, Column, Format, Table};
+/// use rodimpact::{report::{render_document, Format}, tables::{Cell, Column, Table}};
 /// use rodimpact::field::q;
 /// let t = |id, x| Table { id, title: "Demo".into(), note: "Exact.".into(),
 ///     columns: vec![Column::exact("$x$", "x")], rows: vec![vec![Cell::Rational(x)]] };

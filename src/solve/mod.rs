@@ -29,6 +29,7 @@ pub mod answer;
 pub mod fast;
 pub mod optimum;
 mod outcome;
+pub mod working;
 
 pub use answer::{Answer, Impact};
 pub use outcome::{Outcome, outcome};

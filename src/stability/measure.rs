@@ -157,7 +157,7 @@ impl Accuracy {
     }
 
     /// `cond u <= 1e-3`: well enough conditioned to trust a float (one of the conditions of
-    /// `reliable` in `docs/stability.md`; [`crate::report::backend_values`] checks the others).
+    /// `reliable` in `docs/stability.md`; [`super::judge`] checks the others).
     ///
     /// # Examples
     /// ```

@@ -7,6 +7,7 @@
 mod backend;
 mod comparison;
 mod condition;
+mod judged;
 mod measure;
 mod suite;
 mod timing;
@@ -14,6 +15,7 @@ mod timing;
 pub use backend::{Backend, Reference};
 pub use comparison::{BackendStats, compare_backends};
 pub use condition::condition;
+pub use judged::{ERROR_BOUND, Enclosure, Judged, JudgedFloat, judge};
 pub use measure::{Accuracy, Class};
 pub use suite::{Case, SplitMix64, in_range, suite, sweep};
 pub use timing::median_nanos;

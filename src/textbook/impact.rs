@@ -12,6 +12,7 @@
 //! value = "-16.714"         # as printed, in the scene's signs (counterclockwise, x, y)
 //! ```
 
+use super::SceneCheck;
 use super::answer::CheckedAnswer;
 use super::claim::{ClaimedValue, read_claimed};
 use super::exact::Exact;
@@ -19,7 +20,9 @@ use super::numeric::decide_value;
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::field::{QSqrt, TrySqrt};
-use crate::impact::{Law, LawAnswer, Model, ModelAnswer, ModelOutcome, solve_several};
+use crate::impact::{
+    ContactMatrix, Law, LawAnswer, Model, ModelAnswer, ModelOutcome, solve_several,
+};
 use crate::model::System;
 use crate::units::Dimension;
 use num_traits::Zero;
@@ -344,4 +347,39 @@ fn value_of(what: &What, system: &System, answer: &LawAnswer<QSqrt>) -> Result<E
 
 fn invalid(field: &str, why: &str) -> Error {
     Error::new(field, ErrorKind::Invalid(why.into()))
+}
+/// The answers of one scene: per law for one contact, per model for several.
+#[derive(Debug, Clone)]
+pub enum ImpactAnswers {
+    /// One contact: its answer under each law asked for.
+    Laws(Vec<LawAnswer<QSqrt>>),
+    /// Several contacts: the outcome of each model asked for.
+    Models(Vec<(Model, ModelOutcome<Q>)>),
+}
+
+/// A scene answered: the system, its answers, and the file's claims checked (none when the
+/// file has no `[[claim]]`).
+#[derive(Debug, Clone)]
+pub struct ImpactRun {
+    /// The bodies, contacts and pins.
+    pub system: System,
+    /// The contact matrix W of the first contact and the relative velocity (u_n, u_t) there
+    /// before the impact (the scene's description prints them).
+    pub contact: (ContactMatrix<Q>, [Q; 2]),
+    /// The answers.
+    pub answers: ImpactAnswers,
+    /// The file's published answers, checked.
+    pub checked: SceneCheck,
+}
+
+impl ImpactRun {
+    /// Whether the file's claims all agree (true without claims): the command's exit 0.
+    pub fn all_agree(&self) -> bool {
+        self.checked.all_agree()
+    }
+
+    /// Whether the file holds published answers.
+    pub fn has_claims(&self) -> bool {
+        !self.checked.answers.is_empty()
+    }
 }

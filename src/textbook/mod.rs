@@ -34,7 +34,6 @@ mod exact;
 pub mod expr;
 pub mod formula;
 pub mod impact;
-pub mod impact_run;
 mod mistakes;
 pub mod numeric;
 pub mod problems;

@@ -253,3 +253,51 @@ fn the_checks_see_what_they_claim_to_see() {
     assert_eq!(layers().get("impact"), Some(&3));
     assert_eq!(layers().get("solve"), Some(&5));
 }
+
+/// `report/` renders: it calls no solver. A report receives what it prints (an answer, a
+/// working, a table's rows, a figure's samples from `sampling`), computed by the layers below
+/// it or by `app/`; the solvers' types (`Outcome`, `Optimum`, `LawAnswer`, ...) are what it
+/// reads. A call of any solver entry point in a code line of `src/report/` fails.
+#[test]
+fn report_calls_no_solver() {
+    const SOLVERS: [&str; 18] = [
+        "Answer::of(",
+        "Impact::of(",
+        "Working::of(",
+        "solve::with",
+        "fast::linear",
+        "fast::oblique::solve",
+        "fast::oblique::complete",
+        "fast::fraction_free",
+        "fast::closed_form",
+        "optimum::optimum",
+        "optimum(&",
+        "contact_matrix(",
+        "contact_matrix::<",
+        "solve_contact",
+        "solve_exact",
+        "solve_several",
+        "contact_path",
+        "stability::judge",
+    ];
+    let mut files = Vec::new();
+    rust_files(&src().join("report"), &mut files);
+    let mut calls = Vec::new();
+    for file in &files {
+        let text = std::fs::read_to_string(file).unwrap();
+        for (n, line) in code_lines(&text).iter().enumerate() {
+            for solver in SOLVERS {
+                if line.contains(solver) {
+                    calls.push(format!("{}:{}: {solver}", file.display(), n + 1));
+                }
+            }
+        }
+    }
+    assert!(
+        calls.is_empty(),
+        "report calls a solver:\n{}",
+        calls.join("\n")
+    );
+    // The check sees a call where there is one.
+    assert!(code_lines("let a = Answer::of(&scene); // Answer::of")[0].contains(SOLVERS[0]));
+}

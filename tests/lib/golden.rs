@@ -8,10 +8,11 @@
 use rodimpact::claims::{Paper, decide_all};
 use rodimpact::field::q;
 use rodimpact::report::{
-    Format, TableOptions, all_tables, claim_markdown, claims_markdown, index_markdown,
-    plot_figure1, plot_omega, plot_optimum, render_document, tables, velocity_figure,
+    Format, claim_markdown, claims_markdown, index_markdown, plot_figure1, plot_omega,
+    plot_optimum, render_document, velocity_figure,
 };
 use rodimpact::scene::{RodInertia, Scene};
+use rodimpact::tables::{TableOptions, all_tables, tables};
 use std::collections::BTreeSet;
 use std::path::Path;
 
@@ -132,7 +133,7 @@ fn assert_all(problems: Vec<String>) {
 }
 
 /// The problems of `tables` rendered in every format against `{stem}.md`, `.tex`, `.csv`.
-fn tables_against(tables: &[rodimpact::report::Table], stem: &str) -> Vec<String> {
+fn tables_against(tables: &[rodimpact::tables::Table], stem: &str) -> Vec<String> {
     [Format::Markdown, Format::Latex, Format::Csv]
         .into_iter()
         .filter_map(|f| {

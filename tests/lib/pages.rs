@@ -1,11 +1,11 @@
-//! What the web pages compute (`report::pages`, the functions their WebAssembly module
+//! What the web pages compute (`app::pages`, the functions their WebAssembly module
 //! answers): the explore page's answer against `solve`'s for random scenes, its a* scenes
 //! against the hand results, its motion against X19, its field errors; the tilted-rod page
 //! against the independent oracle's fixtures, and its energy map.
 
 use proptest::prelude::*;
+use rodimpact::app::pages::{call, call_json, explore, explore_motion, tilted, tilted_map};
 use rodimpact::field::{Q, QSqrt, q};
-use rodimpact::report::pages::{call, call_json, explore, explore_motion, tilted, tilted_map};
 use rodimpact::report::solution_json;
 use rodimpact::scene::SceneInput;
 use rodimpact::solve::Answer;
@@ -344,7 +344,7 @@ fn the_energy_map_marks_where_newton_gains() {
 /// friction impulse acts along the rod's axis).
 #[test]
 fn the_oblique_tab_answers_as_solve_does() {
-    use rodimpact::report::pages::oblique;
+    use rodimpact::app::pages::oblique;
     let slide = oblique(
         &json!({"ratio": "1", "a": "1/2", "e": "1", "kind": "uniform", "v0t": "1", "mu": "1/4"}),
     );

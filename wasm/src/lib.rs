@@ -4,7 +4,7 @@
 //! response at [`response_ptr`], [`response_len`] bytes long.
 //!
 //! A request is `{"name": "...", "request": {...}}`; the response is the JSON of
-//! `rodimpact::report::pages::call` (an `{"error": ...}` object on a bad request).
+//! `rodimpact::app::pages::call` (an `{"error": ...}` object on a bad request).
 
 use std::cell::RefCell;
 
@@ -28,7 +28,7 @@ pub extern "C" fn alloc(len: usize) -> *mut u8 {
 pub extern "C" fn call() -> usize {
     BUFFERS.with_borrow_mut(|(request, response)| {
         let text = String::from_utf8_lossy(request);
-        *response = rodimpact::report::pages::call_json(&text).into_bytes();
+        *response = rodimpact::app::pages::call_json(&text).into_bytes();
         response.len()
     })
 }

@@ -7,12 +7,12 @@
 use super::chart::{Axis, Chart, Swatch};
 use super::data::{PlotData, Value};
 use super::describe::{numbers, pivot_of, scene_line};
-use super::sample::{PER_L, arm_optima, check_sampling_cost, f, point, solve_at};
 use super::scale::Scale;
 use super::svg::Stroke;
 use super::{Figure, PALETTE, SIZE};
 use crate::error::Error;
 use crate::field::Q;
+use crate::sampling::{PER_L, arm_optima, check_sampling_cost, f, outcome_at, point};
 use crate::scene::{Params, Scene};
 use crate::solve::Outcome;
 use crate::solve::optimum::Argmax;
@@ -31,7 +31,7 @@ fn samples(scene: &Scene) -> Result<Vec<Sample>, Error> {
     (first..=PER_L)
         .map(|k| {
             let a = point(scene, k);
-            let out = solve_at(scene, &a)?;
+            let out = outcome_at(scene, &a)?;
             Ok(Sample { a, out })
         })
         .collect()

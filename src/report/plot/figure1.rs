@@ -6,10 +6,10 @@
 use super::PALETTE;
 use super::chart::{LABEL, Obstacles, SUBTITLE, TITLE};
 use super::describe::{multiple, pivot_of, scene_line, signed};
-use super::sample::{f, solve_at};
 use super::svg::{Anchor, Point, Rect, Shape, Stroke, Svg, Text};
 use crate::error::Error;
 use crate::field::Q;
+use crate::sampling::{f, outcome_at};
 use crate::scene::{RodInertia, Scene};
 use crate::solve::Outcome;
 use num_traits::Zero;
@@ -294,7 +294,7 @@ struct After {
 }
 
 fn after(scene: &Scene) -> Result<After, Error> {
-    let out = solve_at(scene, scene.a())?;
+    let out = outcome_at(scene, scene.a())?;
     let rest = (!out.after.omega.is_zero()).then(|| -(&out.after.rod_v / &out.after.omega));
     Ok(After { out, rest })
 }

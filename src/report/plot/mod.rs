@@ -17,7 +17,6 @@ mod omega;
 mod optimum;
 #[cfg(feature = "png")]
 mod png;
-mod sample;
 mod scale;
 mod stability;
 mod svg;

@@ -5,13 +5,13 @@
 use super::chart::{Axis, Chart, Swatch};
 use super::data::{PlotData, Value};
 use super::describe::{multiple, numbers, pivot_of, scene_line, signed};
-use super::sample::{PER_L, arm_optima, check_sampling_cost, f, point, solve_at};
 use super::scale::Scale;
 use super::svg::{Shape, Stroke};
 use super::{Figure, PALETTE, SIZE};
 use crate::error::Error;
 use crate::field::decimal;
 use crate::field::{Field, Q, QSqrt};
+use crate::sampling::{PER_L, arm_optima, check_sampling_cost, f, outcome_at, point};
 use crate::scene::{RodInertia, Scene};
 use crate::solve::optimum::Argmax;
 
@@ -33,7 +33,7 @@ fn curve(scene: &Scene, data: &mut PlotData) -> Result<Curve, Error> {
     let (mut on_rod, mut low, mut high) = (Vec::new(), Vec::new(), Vec::new());
     for k in first..=reach {
         let a = point(scene, k);
-        let omega = solve_at(scene, &a)?.after.omega;
+        let omega = outcome_at(scene, &a)?.after.omega;
         let xy = (k as f64 / PER_L as f64, f(&(&omega * &scale)));
         if k.abs() <= PER_L {
             on_rod.push(xy);

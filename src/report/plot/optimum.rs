@@ -6,15 +6,15 @@ use super::chart::{Axis, Chart, Swatch};
 use super::data::{PlotData, Value};
 use super::describe::{multiple, pivot_of, rod, signed};
 use super::omega::mass_ratio_family;
-use super::sample::{check_sampling_cost, f};
 use super::scale::Scale;
 use super::svg::{Shape, Stroke};
 use super::{Figure, PALETTE, SIZE};
 use crate::error::Error;
 use crate::field::decimal;
 use crate::field::{Q, TrySqrt};
+use crate::sampling::{a_star_squared_of, check_sampling_cost, f, optimum_of};
 use crate::scene::{RodInertia, Scene};
-use crate::solve::optimum::{Optimum, a_star_squared, optimum};
+use crate::solve::optimum::Optimum;
 use num_bigint::BigInt;
 use num_traits::{One, Signed};
 
@@ -83,7 +83,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
     let l = base.half_length().clone();
     let pivoted = pivot_of(base).is_some();
     let probe = struck(base)?;
-    let probe_optimum = optimum(&probe).expect("a rod at rest before the impact has an optimum");
+    let probe_optimum = optimum_of(&probe);
     let arm = f(&(&probe_optimum.arm / &l));
     let threshold = probe_optimum.threshold_mass.as_ref().map(|t| t / base.m());
     let own = base.rod_mass() / base.m();
@@ -112,7 +112,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
         let ratio = ten_power_hundredths(j);
         // Only a* moves along the axis: the struck arm is the probe's.
         let scene = struck(&mass_ratio_family(base, std::slice::from_ref(&ratio))?[0])?;
-        let squared = a_star_squared(&scene.params::<Q>());
+        let squared = a_star_squared_of(&scene);
         let best = best_of(&squared, &arm_squared);
         let x = f(&ratio);
         star_curve.push((x, f(&decimal::sqrt_bounds(&(&squared / &l_squared), 17).0)));
@@ -242,7 +242,7 @@ pub fn optimum_figure(base: &Scene, mark: bool) -> Result<Figure, Error> {
     };
     labels.push((end_text, (x_lo * 3.0, arm), "#000000"));
     if mark {
-        let o = optimum(&probe).expect("a rod at rest before the impact has an optimum");
+        let o = optimum_of(&probe);
         let best = best_squared(&o);
         let at = chart.marker(
             (

@@ -18,7 +18,7 @@
 use crate::field::Field;
 use crate::field::linear::solve_linear;
 use crate::scene::Motion;
-use crate::scene::{Params, Support};
+use crate::scene::{Params, Scene, Support};
 use crate::solve::{Outcome, outcome};
 
 /// The impulse equations of the scene as `(A, b)`: unknowns (v, V, omega) for a free rod,
@@ -74,6 +74,26 @@ pub fn impulse_equations<F: Field>(p: &Params<F>) -> (Vec<Vec<F>>, Vec<F>) {
 /// ```
 pub fn solve<F: Field>(p: &Params<F>) -> Option<Outcome<F>> {
     motion_after(p).map(|after| outcome(p, after))
+}
+
+/// The scene struck at `a` instead of its own impact point, solved in `F`: an irrational
+/// point (a* in Q(sqrt d)) as well as a rational one (the samples of a figure). `None` when
+/// the impulse equations are singular there.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{field::{q, QSqrt}, scene::Scene, solve::fast::linear::solve_at};
+/// let s = Scene::builder(q(1, 1), q(1, 1)).build()?;
+/// // At a* = sqrt(2/3) (m = M = 1, uniform): omega = (1 + e) a*/(2 a*^2) = sqrt(6)/2.
+/// let out = solve_at(&s, QSqrt::sqrt_of(&q(2, 3))).unwrap();
+/// assert_eq!(out.after.omega.to_string(), "sqrt(6)/2");
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn solve_at<F: Field>(scene: &Scene, a: F) -> Option<Outcome<F>> {
+    solve(&Params {
+        a,
+        ..scene.params::<F>()
+    })
 }
 
 /// The velocities after the impact alone, without the energies and residuals [`solve`] adds:

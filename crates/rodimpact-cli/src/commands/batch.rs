@@ -3,9 +3,10 @@
 use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
+use rodimpact::app::batch::{BatchOptions, Spelling};
 use rodimpact::batch::{
-    Agreement, Arithmetic, Batch, ClassRule, FloatFormat, KnownFindings, MAX_EXPECTED_BYTES,
-    read_header, run, scene_columns,
+    Arithmetic, Batch, FloatFormat, KnownFindings, MAX_EXPECTED_BYTES, read_header, run,
+    scene_columns,
 };
 use rodimpact::echo::{echo, echo_path};
 use rodimpact::io::{AtomicFile, write_atomic};
@@ -90,13 +91,23 @@ fn parse_jobs(text: &str) -> Result<usize, Error> {
 }
 
 pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
-    let arithmetic = match args.backend {
-        BackendArg::Exact => Arithmetic::Exact,
-        BackendArg::F64 => Arithmetic::F64,
+    let options = BatchOptions {
+        arithmetic: match args.backend {
+            BackendArg::Exact => Arithmetic::Exact,
+            BackendArg::F64 => Arithmetic::F64,
+        },
+        float: args.float.map(|f| match f {
+            FloatArg::F32 => FloatFormat::F32,
+            FloatArg::F64 => FloatFormat::F64,
+        }),
+        rtol: args.rtol.clone(),
+        ulps: args.ulps.clone(),
+        atol: args.atol.clone(),
+        tolerance: args.tolerance.clone(),
+        spelling: Spelling::Flags,
     };
     let jobs = args.jobs.as_deref().map(parse_jobs).transpose()?;
-    let agreement = agreement(args)?;
-    let rules = class_rules(args)?;
+    let checked = options.checked()?;
     let expected = args.expect.as_deref().map(read_expected).transpose()?;
     let read_error = |why: std::io::Error| {
         Error::io(
@@ -109,16 +120,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     let size = file.metadata().map(|m| m.len()).unwrap_or(0);
     let mut input = BufReader::with_capacity(1 << 16, file);
     let header = read_header(&mut input, &echo_path(&args.file))?;
-    let batch = Batch::new(&header, arithmetic)?;
-    let batch = match &agreement {
-        Some(agreement) => batch.with_agreement(agreement.clone())?,
-        None => batch,
-    };
-    let batch = match &args.atol {
-        Some(x) => batch.with_atol(x)?,
-        None => batch,
-    };
-    let batch = batch.with_class_rules(rules)?;
+    let batch = options.batch(&header, &checked)?;
     let batch = match &expected {
         Some(expected) => batch.with_expected(expected.clone())?,
         None => batch,
@@ -174,7 +176,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     let mut text = batch_report(
         &summary,
         &batch.passed_through(),
-        agreement.as_ref(),
+        checked.agreement.as_ref(),
         batch.class_rules(),
         args.atol.as_deref(),
     );
@@ -213,49 +215,6 @@ fn file_help() -> String {
         "CSV file: header among {} (m and M required), claimed v,V,omega,J,energy_before,energy_after (an oblique scene: v,V,omega,vt,Vt,spin_after,tangential_impulse), and any other columns (passed through)",
         scene_columns()
     )
-}
-
-/// The float format of `--float` [default: f64].
-fn float_format(args: &BatchArgs) -> FloatFormat {
-    match args.float {
-        Some(FloatArg::F32) => FloatFormat::F32,
-        Some(FloatArg::F64) | None => FloatFormat::F64,
-    }
-}
-
-/// The rules of `--tolerance`, in order; `--float` refused when no ulps count reads it.
-fn class_rules(args: &BatchArgs) -> Result<Vec<ClassRule>, Error> {
-    let rules: Vec<ClassRule> = args
-        .tolerance
-        .iter()
-        .map(|text| ClassRule::parse(text, float_format(args)))
-        .collect::<Result<_, _>>()?;
-    let ulps_rule = rules
-        .iter()
-        .any(|r| matches!(r.agreement, Agreement::Ulps(..)));
-    if args.float.is_some() && args.ulps.is_none() && !ulps_rule {
-        return Err(Error::new(
-            "float",
-            rodimpact::ErrorKind::Invalid(
-                "the float format of an ulps count: give --ulps N or a --tolerance CLASS=ulps:N"
-                    .into(),
-            ),
-        ));
-    }
-    Ok(rules)
-}
-
-/// The agreement rule of `--rtol` or `--ulps [--float]` (clap refuses both at once), checked
-/// before the file is opened.
-fn agreement(args: &BatchArgs) -> Result<Option<Agreement>, Error> {
-    if let Some(r) = &args.rtol {
-        return Agreement::parse_rtol(r).map(Some);
-    }
-    let format = float_format(args);
-    args.ulps
-        .as_deref()
-        .map(|n| Agreement::parse_ulps(n, format))
-        .transpose()
 }
 
 /// A writer that keeps its first error, so that the command can tell a failed write to

@@ -5,8 +5,9 @@ use clap::Args;
 use rodimpact::claims::export::{ExportFormat, export_all};
 use rodimpact::claims::{self, Decided, Paper};
 use rodimpact::io::{write_atomic, write_directory};
-use rodimpact::report::{self, Format, TableOptions};
+use rodimpact::report::{self, Format};
 use rodimpact::scene::{RodInertia, SceneInput};
+use rodimpact::tables::{self, TableOptions};
 use rodimpact::textbook::formula::formulas;
 use rodimpact::{Error, ErrorKind};
 use std::path::{Path, PathBuf};
@@ -202,7 +203,7 @@ pub(crate) fn run_prove(args: &ProveArgs) -> Result<(), Failure> {
 pub(crate) fn run_paper(args: &PaperArgs) -> Result<(), Failure> {
     let paper = Paper::as_printed();
     let decided = claims::decide_all(&paper);
-    let tables = report::all_tables(&TableOptions::default())?;
+    let tables = tables::all_tables(&TableOptions::default())?;
     if args.summary && args.format != PaperFormat::Html {
         return Err(Error::new(
             "summary",

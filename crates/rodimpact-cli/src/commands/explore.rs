@@ -2,9 +2,8 @@
 
 use super::{Failure, ObliqueFlags, SceneFlags, print_out};
 use clap::{Args, ValueEnum};
+use rodimpact::app::pages::{self, Frame, Preset, TiltedPreset, explore_page};
 use rodimpact::io::write_atomic;
-use rodimpact::report::explore::{Frame, Preset, explore_html};
-use rodimpact::report::tilted::{TiltedPreset, tilted_html};
 use std::path::PathBuf;
 
 #[derive(Args, Debug)]
@@ -109,7 +108,7 @@ fn tilted_page(args: &ExploreArgs) -> Result<String, Failure> {
         input.mu.as_deref(),
         input.e.as_deref(),
     )?;
-    Ok(tilted_html(&preset, PAGES_MODULE)?)
+    Ok(pages::tilted_page(&preset, PAGES_MODULE)?)
 }
 
 /// The paper's page, preset by the scene flags, --predict and --frame.
@@ -136,5 +135,5 @@ fn paper_page(args: &ExploreArgs) -> Result<String, Failure> {
         FrameArg::Lab => Frame::Lab,
     });
     let preset = Preset::of_scene(&args.oblique.input(&args.scene), predict, frame)?;
-    Ok(explore_html(&preset, PAGES_MODULE)?)
+    Ok(explore_page(&preset, PAGES_MODULE)?)
 }

@@ -6,6 +6,7 @@ use clap::Args;
 use rodimpact::io::write_atomic;
 use rodimpact::report::handout_html;
 use rodimpact::scene::{RodInertia, SceneInput};
+use rodimpact::solve::{Answer, working::Working};
 use rodimpact::textbook::formula::formulas;
 use std::path::PathBuf;
 
@@ -41,7 +42,8 @@ pub(crate) fn run_handout(args: &HandoutArgs) -> Result<(), Failure> {
         l: lengths_given.then(|| scene.half_length().to_string()),
         ..SceneInput::default()
     };
-    let page = handout_html(&scene, &formulas(&symbols)?)?;
+    let (answer, working) = (Answer::of(&scene), Working::of(&scene));
+    let page = handout_html(&answer, &working, &formulas(&symbols)?)?;
     match &args.out {
         Some(file) => write_atomic("out", file, &page)?,
         None => print_out(&page),

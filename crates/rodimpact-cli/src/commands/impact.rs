@@ -2,12 +2,12 @@
 
 use super::{Failure, parse_digits, print_out};
 use clap::{Args, ValueEnum};
+use rodimpact::app::impact::{answer_impact, read_scene_file};
 use rodimpact::batch::audit_impact;
 use rodimpact::field::Q;
 use rodimpact::impact::Law;
 use rodimpact::model::MAX_SCENE_BYTES;
 use rodimpact::report::{impact_audit_json, impact_run_json, impact_run_text};
-use rodimpact::textbook::impact_run::{answer_impact, read_scene_file};
 use rodimpact::{Error, ErrorKind};
 use std::io::Read;
 use std::path::PathBuf;

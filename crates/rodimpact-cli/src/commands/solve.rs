@@ -3,10 +3,11 @@
 use super::{Failure, ObliqueFlags, SceneFlags, format_choice, parse_digits, print_out};
 use clap::{Args, ValueEnum};
 use rodimpact::report::{
-    ExplainFormat, backend_values, explain, latex_document, solution_json, solution_text,
+    ExplainFormat, backend_json, explain, latex_document, solution_json, solution_text,
 };
 use rodimpact::solve::Answer;
 use rodimpact::solve::fast::float::FloatFormula;
+use rodimpact::solve::working::Working;
 use rodimpact::stability::Backend;
 use serde_json::Value;
 
@@ -125,7 +126,7 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
             )
             .into());
         }
-        let working = explain(&scene, format);
+        let working = explain(&Working::of(&scene), format);
         print_out(&match (args.standalone, format) {
             (true, ExplainFormat::Latex) => latex_document(&[], &working),
             _ => working,
@@ -134,7 +135,7 @@ pub(crate) fn run_solve(args: &SolveArgs) -> Result<(), Failure> {
     }
     let floats = match backend {
         Backend::Exact => None,
-        _ => Some(backend_values(&scene, backend)?),
+        _ => Some(backend_json(&rodimpact::stability::judge(&scene, backend)?)),
     };
     let answer = Answer::of(&scene);
     if args.json {

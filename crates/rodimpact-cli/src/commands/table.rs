@@ -5,8 +5,9 @@ use clap::Args;
 use num_traits::{One, Signed};
 use rodimpact::field::Q;
 use rodimpact::io::write_atomic;
-use rodimpact::report::{self, Format, TableOptions};
+use rodimpact::report::{self, Format};
 use rodimpact::scene::{Disc, RodInertia, parse_field, spin_without_disc};
+use rodimpact::tables::{self, TableOptions};
 use rodimpact::{Error, ErrorKind};
 use std::path::PathBuf;
 
@@ -154,11 +155,11 @@ fn refuse_unused(args: &TableArgs) -> Result<(), Error> {
             .split(',')
             .map(|t| t.trim().to_ascii_uppercase())
             .collect(),
-        None => report::TABLE_IDS.iter().map(|t| t.to_string()).collect(),
+        None => tables::TABLE_IDS.iter().map(|t| t.to_string()).collect(),
     };
     if wanted
         .iter()
-        .any(|w| !report::ALL_TABLE_IDS.contains(&w.as_str()))
+        .any(|w| !tables::ALL_TABLE_IDS.contains(&w.as_str()))
     {
         return Ok(());
     }
@@ -185,8 +186,8 @@ pub(crate) fn run_table(args: &TableArgs) -> Result<(), Failure> {
     let opts = table_options(args)?;
     refuse_unused(args)?;
     let tables = match &args.only {
-        Some(only) => report::tables(&only.split(',').collect::<Vec<_>>(), &opts)?,
-        None => report::all_tables(&opts)?,
+        Some(only) => tables::tables(&only.split(',').collect::<Vec<_>>(), &opts)?,
+        None => tables::all_tables(&opts)?,
     };
     let text = report::render_document(&tables, format);
     match &args.out {

@@ -7,8 +7,9 @@ use crate::common;
 
 use common::rodimpact;
 use num_traits::Zero;
-use rodimpact::report::backend_values;
+use rodimpact::report::backend_json as judged_json;
 use rodimpact::solve::fast::float::FloatFormula;
+use rodimpact::stability::judge;
 use rodimpact::stability::{Backend, Reference, in_range, suite, sweep};
 use serde_json::Value;
 
@@ -123,7 +124,7 @@ fn a_large_exact_error_is_never_reliable() {
         let reference = Reference::of(&case.scene).unwrap();
         let cond = naive.condition(&reference);
         let (measured, _) = naive.measure(&case.scene, &reference).unwrap();
-        let j = backend_values(&case.scene, naive).unwrap();
+        let j = judged_json(&judge(&case.scene, naive).unwrap());
         let u = naive.unit_roundoff();
         let outputs = [
             ("v", &measured.v, &cond.v),

@@ -121,7 +121,7 @@ fn the_reference_answers_are_rodimpacts() {
     );
     assert_eq!(
         reference.as_array().unwrap().len(),
-        rodimpact::report::explore::REFERENCE_SCENES.len()
+        rodimpact::app::pages::REFERENCE_SCENES.len()
     );
 }
 

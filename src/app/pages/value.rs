@@ -11,7 +11,7 @@ use serde_json::{Value, json};
 /// # Examples
 /// ```
 /// use rodimpact::field::{q, QSqrt};
-/// let x = rodimpact::report::pages::exact(&(QSqrt::sqrt_of(&q(2, 3)) * &QSqrt::rational(q(-1, 1))));
+/// let x = rodimpact::app::pages::exact(&(QSqrt::sqrt_of(&q(2, 3)) * &QSqrt::rational(q(-1, 1))));
 /// assert_eq!(x["text"], "-sqrt(6)/3");
 /// assert_eq!(x["pretty"], "−√6/3");
 /// assert_eq!((x["decimal"].as_str(), x["approx"].as_str()), (Some("−0.816497"), Some("−0.8165")));

@@ -28,7 +28,7 @@ const CURVE_POINTS: i64 = 100;
 /// 11/16), yet omega = 12/11 as without friction.
 /// ```
 /// use serde_json::json;
-/// let answer = rodimpact::report::pages::oblique(&json!({
+/// let answer = rodimpact::app::pages::oblique(&json!({
 ///     "ratio": "1", "a": "1/2", "e": "1", "kind": "uniform", "v0t": "1", "mu": "1/4"
 /// }));
 /// assert_eq!(answer["values"]["omega"]["text"], "12/11");

@@ -8,7 +8,7 @@ use super::{exact, field_error};
 use crate::field::{Field, Q, QSqrt, q};
 use crate::impact::{Law, contact_matrix, contact_path, solve_exact};
 use crate::model::{System, from_value};
-use crate::report::impact::{law_heading, law_name};
+use crate::report::{law_heading, law_name};
 use num_traits::{Signed, Zero};
 use serde_json::{Value, json};
 
@@ -110,14 +110,14 @@ impl Tilt {
 /// law creates 197125/9435168 of energy; Poisson's and Stronge's lose.
 /// ```
 /// use serde_json::json;
-/// let answer = rodimpact::report::pages::tilted(&json!({"tan_half": "1/2", "slip": "1", "mu": "1/3", "e": "1"}));
+/// let answer = rodimpact::app::pages::tilted(&json!({"tan_half": "1/2", "slip": "1", "mu": "1/3", "e": "1"}));
 /// let newton = &answer["laws"][0];
 /// assert_eq!(newton["energy_change"]["text"], "197125/9435168");
 /// assert_eq!(newton["energy_gain"], true);
 /// assert_eq!(answer["laws"][1]["energy_gain"], false);
 /// assert_eq!(answer["lam_c"]["text"], "25/64");
 /// assert_eq!(answer["path"][1]["lam"]["text"], "75/181");
-/// let wrong = rodimpact::report::pages::tilted(&json!({"tan_half": "1/2", "slip": "1", "mu": "-1", "e": "1"}));
+/// let wrong = rodimpact::app::pages::tilted(&json!({"tan_half": "1/2", "slip": "1", "mu": "-1", "e": "1"}));
 /// assert_eq!(wrong["error"]["message"], "mu: must be ≥ 0");
 /// ```
 pub fn tilted(request: &Value) -> Value {
@@ -250,7 +250,7 @@ fn unicode_rule(heading: &str) -> String {
 /// # Examples
 /// ```
 /// use serde_json::json;
-/// let map = rodimpact::report::pages::tilted_map(&json!({
+/// let map = rodimpact::app::pages::tilted_map(&json!({
 ///     "mu": "1/3", "e": "1", "tan_halves": ["1/2", "1/40"], "slips": ["1", "0"]
 /// }));
 /// assert_eq!(map["newton"], json!([[true, false], [false, false]]));

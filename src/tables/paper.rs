@@ -3,14 +3,14 @@
 //! Every scene is taken with m = 1, l = 1 and v0 = 1, so lengths are in units of l, velocities
 //! in units of v0 and angular velocities in units of v0/l; the mass ratio M/m is the parameter.
 
-use super::table::{Cell, Column, Table};
+use super::{Cell, Column, Table};
 use crate::error::{Error, ErrorKind};
 use crate::field::big::{RBig, to_q};
 use crate::field::notation::{self, Notation};
 use crate::field::{Q, QSqrt, q};
-use crate::scene::{Disc, Params, RodInertia, Scene};
+use crate::scene::{Disc, RodInertia, Scene};
 use crate::solve::Outcome;
-use crate::solve::fast::linear::solve;
+use crate::solve::fast::linear;
 use crate::solve::fast::oblique;
 use crate::solve::optimum::{Placement, optimum};
 use num_traits::{One, Signed, Zero};
@@ -153,12 +153,8 @@ pub fn t1(opts: &TableOptions) -> Result<Table, Error> {
 }
 
 /// `scene` hit at `a` (possibly irrational), solved exactly in Q(sqrt d).
-pub(super) fn solve_at(scene: &Scene, a: QSqrt) -> Outcome<QSqrt> {
-    let params = Params {
-        a,
-        ..scene.params::<QSqrt>()
-    };
-    solve(&params).expect("a valid scene is nonsingular")
+fn solve_at(scene: &Scene, a: QSqrt) -> Outcome<QSqrt> {
+    linear::solve_at(scene, a).expect("a valid scene is nonsingular")
 }
 
 /// T2: v, V and omega along the rod for one mass ratio, a* included (once: when a* is one of
@@ -346,7 +342,7 @@ pub fn t5(opts: &TableOptions) -> Result<Table, Error> {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::report::{t6, Cell, TableOptions};
+/// use rodimpact::tables::{t6, Cell, TableOptions};
 /// use rodimpact::field::q;
 /// let t = t6(&TableOptions::default()).unwrap();
 /// // M = m, end hit, e = 1, v0t = v0: mu* = 5/4, where the contact starts to stick.
@@ -483,7 +479,7 @@ pub const ALL_TABLE_IDS: [&str; 6] = ["T1", "T2", "T3", "T4", "T5", "T6"];
 ///
 /// # Examples
 /// ```
-/// use rodimpact::report::{tables, TableOptions};
+/// use rodimpact::tables::{tables, TableOptions};
 /// let t = tables(&["t5", "T2"], &TableOptions::default()).unwrap();
 /// assert_eq!(t.iter().map(|t| t.id).collect::<Vec<_>>(), ["T2", "T5"]);
 /// assert_eq!(tables(&["T9"], &TableOptions::default()).unwrap_err().to_string(),
@@ -516,7 +512,7 @@ pub fn tables(wanted: &[&str], opts: &TableOptions) -> Result<Vec<Table>, Error>
 ///
 /// # Examples
 /// ```
-/// use rodimpact::report::{all_tables, TableOptions};
+/// use rodimpact::tables::{all_tables, TableOptions};
 /// let tables = all_tables(&TableOptions::default()).unwrap();
 /// assert_eq!(tables.iter().map(|t| t.id).collect::<Vec<_>>(), ["T1", "T2", "T3", "T4", "T5"]);
 /// ```

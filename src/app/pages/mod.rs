@@ -1,5 +1,6 @@
-//! The web pages' computing core: what the pages ask of the library, answered in JSON, and the
-//! WebAssembly module that carries it into the page.
+//! The web pages' computing core: what the pages ask of the library, answered in JSON (the
+//! WebAssembly module of the pages calls [`call_json`]), and the pages themselves written with
+//! what they carry computed ([`explore_page`], [`tilted_page`]).
 //!
 //! The pages (`explore`, and `explore --scene tilted-rod`) compute every number they show with
 //! this library compiled to WebAssembly (`wasm/`, built by the command-line tool's `build.rs`
@@ -16,28 +17,29 @@
 //! | `tilted` | a tilted rod on a rough floor under the three laws, with Routh's path |
 //! | `tilted_map` | where each law creates energy, over a grid of tilted-rod scenes |
 
+mod explore;
 mod explore_api;
 mod oblique;
 mod tilted;
+mod tilted_page;
 mod value;
 
+pub use explore::{Frame, Preset, REFERENCE_SCENES, explore_page, reference_answers};
 pub use explore_api::{PAGE_DIGITS, explore, explore_motion, is_a_star};
 pub use oblique::oblique;
 pub use tilted::{tilted, tilted_map};
+pub use tilted_page::{TiltedPreset, tilted_page};
 pub use value::exact;
 
 use crate::Error;
 use crate::error::ErrorKind;
 use serde_json::{Value, json};
 
-/// Unpacks the module in the page and runs the page's script with the API.
-const LOADER: &str = include_str!("loader.js");
-
 /// Answers one request of a page: `name` is the function, `request` its argument.
 ///
 /// # Examples
 /// ```
-/// use rodimpact::report::pages::call;
+/// use rodimpact::app::pages::call;
 /// use serde_json::json;
 /// let answer = call("number", &json!({"text": "0.25"}));
 /// assert_eq!(answer["value"]["text"], "1/4");
@@ -63,7 +65,7 @@ pub fn call(name: &str, request: &Value) -> Value {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::report::pages::call_json;
+/// use rodimpact::app::pages::call_json;
 /// assert!(call_json(r#"{"name": "number", "request": {"text": "3/6"}}"#).contains(r#""text":"1/2""#));
 /// assert!(call_json("{").contains("error"));
 /// ```
@@ -103,65 +105,4 @@ fn kind_message(kind: &ErrorKind) -> String {
 /// `{"error": {"field": field, "message": message}}`.
 fn field_error(field: &str, message: String) -> Value {
     json!({ "error": { "field": field, "message": message } })
-}
-
-/// The element that carries the WebAssembly module in a page: `module` is the module
-/// zlib-compressed and in base64, as the command-line tool's `build.rs` leaves it; part of the
-/// page's body, read by the loader of [`page_script`].
-///
-/// # Errors
-/// When `module` is empty (a build without the feature `pages`, without the
-/// `wasm32-unknown-unknown` target, or with `RODIMPACT_PAGES_WASM=none`), naming the fix.
-///
-/// # Examples
-/// ```
-/// let element = rodimpact::report::pages::module_element("eJwDAAAAAAE=")?;
-/// assert!(element.starts_with("<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">eJw"));
-/// assert!(rodimpact::report::pages::module_element("").is_err());
-/// # Ok::<(), rodimpact::Error>(())
-/// ```
-pub fn module_element(module: &str) -> Result<String, Error> {
-    if module.is_empty() {
-        return Err(Error::new(
-            "explore",
-            ErrorKind::Invalid(
-                "this build has no WebAssembly module for the pages: install the target \
-                 (rustup target add wasm32-unknown-unknown) and build again with the feature \
-                 `pages` (on by default)"
-                    .into(),
-            ),
-        ));
-    }
-    Ok(format!(
-        "<script type=\"application/octet-stream\" id=\"rodimpact-wasm\">{module}</script>\n"
-    ))
-}
-
-/// The script of a page that computes with the library: the loader, which unpacks the module
-/// of [`module_element`] and then runs `ui` as the body of a function of `api`
-/// (`api.call(name, request)` answers as [`call`] does).
-///
-/// # Examples
-/// ```
-/// let script = rodimpact::report::pages::page_script("api.call('number', {text: '1'});");
-/// assert!(script.contains("rodimpactPage(function (api) {"));
-/// ```
-pub fn page_script(ui: &str) -> String {
-    format!("{LOADER}\nrodimpactPage(function (api) {{\n{ui}\n}});\n")
-}
-
-/// A page's preset as its link spells it after `#`: `key=value` joined by `&` (empty: nothing
-/// preset). The values are the program's own (numbers, `/`, `-`, `.`, `=`, words): no escaping.
-///
-/// # Examples
-/// ```
-/// let fields = [("M", "1/2".to_string()), ("a", "1".to_string())];
-/// assert_eq!(rodimpact::report::pages::link_of(&fields), "M=1/2&a=1");
-/// ```
-pub fn link_of(fields: &[(&'static str, String)]) -> String {
-    fields
-        .iter()
-        .map(|(key, value)| format!("{key}={value}"))
-        .collect::<Vec<_>>()
-        .join("&")
 }

@@ -2,50 +2,17 @@
 //! restitution laws asked for, several contacts under the models asked for, and the file's
 //! published answers (`[[claim]]`) checked. The command line and the Python package both call
 //! [`answer_impact`]; [`crate::report::impact_run_json`] and [`crate::report::impact_run_text`]
-//! render what it returns.
+//! render the [`ImpactRun`] it returns.
 
-use super::SceneCheck;
-use super::impact::{check_impact_claims, check_model_claims, read_impact_claims};
 use crate::error::{Error, ErrorKind};
-use crate::field::{Q, QSqrt};
-use crate::impact::{
-    Law, LawAnswer, MAX_ORDERED, Model, ModelOutcome, orders, solve_exact, solve_several,
+use crate::field::Q;
+use crate::impact::{Law, MAX_ORDERED, Model, contact_matrix, orders, solve_exact, solve_several};
+use crate::model::{MAX_SCENE_BYTES, from_value, toml_value};
+use crate::textbook::SceneCheck;
+use crate::textbook::impact::{
+    ImpactAnswers, ImpactRun, check_impact_claims, check_model_claims, read_impact_claims,
 };
-use crate::model::{MAX_SCENE_BYTES, System, from_value, toml_value};
 use serde_json::Value;
-
-/// The answers of one scene: per law for one contact, per model for several.
-#[derive(Debug, Clone)]
-pub enum ImpactAnswers {
-    /// One contact: its answer under each law asked for.
-    Laws(Vec<LawAnswer<QSqrt>>),
-    /// Several contacts: the outcome of each model asked for.
-    Models(Vec<(Model, ModelOutcome<Q>)>),
-}
-
-/// A scene answered: the system, its answers, and the file's claims checked (none when the
-/// file has no `[[claim]]`).
-#[derive(Debug, Clone)]
-pub struct ImpactRun {
-    /// The bodies, contacts and pins.
-    pub system: System,
-    /// The answers.
-    pub answers: ImpactAnswers,
-    /// The file's published answers, checked.
-    pub checked: SceneCheck,
-}
-
-impl ImpactRun {
-    /// Whether the file's claims all agree (true without claims): the command's exit 0.
-    pub fn all_agree(&self) -> bool {
-        self.checked.all_agree()
-    }
-
-    /// Whether the file holds published answers.
-    pub fn has_claims(&self) -> bool {
-        !self.checked.answers.is_empty()
-    }
-}
 
 /// The scene file at `path` (named `label` in errors) as the JSON value of its TOML, read no
 /// further than [`MAX_SCENE_BYTES`].
@@ -55,7 +22,7 @@ impl ImpactRun {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::textbook::impact_run::read_scene_file;
+/// use rodimpact::app::impact::read_scene_file;
 /// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
 /// assert!(value["body"].is_array());
 /// # Ok::<(), rodimpact::Error>(())
@@ -81,7 +48,8 @@ pub fn read_scene_file(label: &str, path: &std::path::Path) -> Result<Value, Err
 ///
 /// # Examples
 /// ```
-/// use rodimpact::textbook::impact_run::{answer_impact, read_scene_file, ImpactAnswers};
+/// use rodimpact::app::impact::{answer_impact, read_scene_file};
+/// use rodimpact::textbook::impact::ImpactAnswers;
 /// use rodimpact::impact::Law;
 /// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
 /// let run = answer_impact(&value, "paper.toml", Some(Law::Newton), None)?;
@@ -122,6 +90,7 @@ pub fn answer_impact(
             answers: check_model_claims(&claims, &system).map_err(at_file)?,
         };
         return Ok(ImpactRun {
+            contact: contact_matrix::<Q>(&system),
             system,
             answers: ImpactAnswers::Models(outcomes),
             checked,
@@ -153,6 +122,7 @@ pub fn answer_impact(
         answers: check_impact_claims(&claims, &system, &answers).map_err(at_file)?,
     };
     Ok(ImpactRun {
+        contact: contact_matrix::<Q>(&system),
         system,
         answers: ImpactAnswers::Laws(answers),
         checked,
@@ -168,7 +138,7 @@ pub fn answer_impact(
 ///
 /// # Examples
 /// ```
-/// use rodimpact::textbook::impact_run::parse_models;
+/// use rodimpact::app::impact::parse_models;
 /// assert_eq!(parse_models("all", 2)?.len(), 6); // 2 simultaneous, 2 orders, pgs:1, pgs:10
 /// assert_eq!(parse_models("sequential", 3)?.len(), 6);
 /// assert!(parse_models("newton", 2).unwrap_err().to_string().starts_with("model: expected"));

@@ -227,7 +227,7 @@ pub(super) fn page_scene_with(
 ///
 /// # Examples
 /// ```
-/// use rodimpact::report::pages::{PAGE_DIGITS, explore};
+/// use rodimpact::app::pages::{PAGE_DIGITS, explore};
 /// let long = "1".repeat(PAGE_DIGITS + 1);
 /// let answer = explore(&serde_json::json!({"ratio": long, "a": "1", "e": "1"}));
 /// assert_eq!(answer["errors"]["ratio"], "M/m: more than 30 digits");
@@ -279,7 +279,7 @@ fn name_of(id: &str) -> &str {
 ///
 /// # Examples
 /// ```
-/// use rodimpact::report::pages::is_a_star;
+/// use rodimpact::app::pages::is_a_star;
 /// assert!(is_a_star("a*") && is_a_star("p - a*") && !is_a_star("1/2"));
 /// ```
 pub fn is_a_star(text: &str) -> bool {
@@ -326,13 +326,13 @@ fn spin_at(scene: &Scene, a: f64) -> f64 {
 /// The paper's M = m rod struck at l/2: omega = 12/11 v0/l, a* = sqrt(6)/3 l on the rod.
 /// ```
 /// use serde_json::json;
-/// let answer = rodimpact::report::pages::explore(&json!({
+/// let answer = rodimpact::app::pages::explore(&json!({
 ///     "ratio": "1", "a": "1/2", "e": "1", "kind": "uniform", "pivoted": false
 /// }));
 /// assert_eq!(answer["values"]["omega"]["text"], "12/11");
 /// assert_eq!(answer["values"]["a_star"]["text"], "sqrt(6)/3");
 /// assert_eq!(answer["inside"], true);
-/// let wrong = rodimpact::report::pages::explore(&json!({"ratio": "-1", "a": "1/2", "e": "2"}));
+/// let wrong = rodimpact::app::pages::explore(&json!({"ratio": "-1", "a": "1/2", "e": "2"}));
 /// assert_eq!(wrong["errors"]["ratio"], "M/m: must be > 0");
 /// assert_eq!(wrong["errors"]["e"], "e: must lie in 0 ≤ e ≤ 1");
 /// ```
@@ -627,7 +627,7 @@ impl Kinematics {
 /// # Examples
 /// ```
 /// use serde_json::json;
-/// let states = rodimpact::report::pages::explore_motion(&json!({
+/// let states = rodimpact::app::pages::explore_motion(&json!({
 ///     "ratio": "1", "a": "1/2", "e": "1", "times": [-1.0, 0.0, 11.0]
 /// }));
 /// assert_eq!(states["states"][0]["ball"], json!([-1.0, 0.5]));
