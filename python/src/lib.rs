@@ -148,8 +148,8 @@ fn impact_json(
     model: Option<String>,
     digits: Option<String>,
 ) -> PyResult<(String, bool, String)> {
-    use rodimpact::impact::Law;
     use rodimpact::app::impact::{answer_impact, read_scene_file};
+    use rodimpact::impact::Law;
     py.detach(|| {
         let (value, label) = match (&path, &scene) {
             (Some(path), _) => {

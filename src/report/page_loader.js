@@ -3,7 +3,7 @@
 // rodimpact's library, compiled to WebAssembly and inlined in this page (zlib, base64,
 // in the element #rodimpact-wasm), and runs the page's script with it: the page computes every
 // number it shows by `api.call(name, request)`, which answers with the library's own code
-// (rodimpact::report::pages::call). Nothing is fetched: the page works from a file, offline.
+// (rodimpact::app::pages::call). Nothing is fetched: the page works from a file, offline.
 
 /** An SVG element `name` with the attributes `attrs` and, when given, the text `text`. */
 function svgElement(name, attrs, text) {

@@ -137,7 +137,7 @@ const USES: [(&str, &[&str]); 9] = [
 
 /// Refuses, by name, a flag that changes none of the tables asked for (`--only T6 --pivot 0`
 /// printed T6 unchanged, as `plot` refuses flags that change nothing in its figure). Ids that
-/// are not tables are left to `report::tables`, which names them.
+/// are not tables are left to `tables::tables`, which names them.
 fn refuse_unused(args: &TableArgs) -> Result<(), Error> {
     let given = [
         args.ratios.is_some(),
