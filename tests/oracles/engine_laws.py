@@ -142,9 +142,9 @@ class Contact:
         self.n2 = dot(self.normal, self.normal)   # |n|^2 (rational)
 
 
-class Scene:
-    """Bodies, contacts, Jacobian rows, Delassus blocks; the same interface as
-    multi_contact.Scene (n, contacts, rows_n, rows_t, delassus, initial_state, apply, rowvel)."""
+class Scene(mc.Scene):
+    """Bodies (pinned ones too), contacts, Jacobian rows, Delassus blocks: multi_contact.Scene
+    with pins, sharing its couplings (coupling, delassus, un, ut)."""
 
     def __init__(self, data, source=""):
         self.source = source
@@ -215,24 +215,6 @@ class Scene:
             else:
                 state[bi][0] += b.inv_mass * jx * lam
                 state[bi][1] += b.inv_mass * jy * lam
-
-    def coupling(self, r1, r2):
-        s = ZERO
-        for bi, (x1, y1, w1) in r1.items():
-            if bi in r2:
-                x2, y2, w2 = r2[bi]
-                b = self.bodies[bi]
-                s += b.inv_mass * (x1 * x2 + y1 * y2) + b.inv_inertia * w1 * w2
-        return s
-
-    def delassus(self, rows1, rows2):
-        return [[self.coupling(a, b) for b in rows2] for a in rows1]
-
-    def un(self, state):
-        return [self.rowvel(r, state) for r in self.rows_n]
-
-    def ut(self, state):
-        return [self.rowvel(r, state) for r in self.rows_t]
 
     def after(self, LN, LT):
         s = self.initial_state()
