@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Run the planar impact suite (engines/impacts.jsonl) in Box2D 2.3.10 (pybox2d; single
-precision), one impact per scene, and write OUTDIR/box2d-2.3.10.jsonl (default OUTDIR:
+"""Run the planar impact suite (engines/impacts.jsonl) and every example of examples/impacts/ it
+does not hold in Box2D 2.3.10 (pybox2d; single precision), one impact per scene, and write OUTDIR/box2d-2.3.10.jsonl (default OUTDIR:
 tests/data/engines/impacts): each line the scene plus "claimed", the velocity and spin of every
 moving body right after the impact.
 
@@ -44,6 +44,10 @@ import impacts_common as ic
 VERSION = "2.3.10"
 SCALE = 16.0
 ROD_HALF_THICKNESS = 0.005          # m, the polygon's core
+# Diagnostics only (never for the fixtures; see impacts_common): a larger scale shrinks the skin
+# in scene units, a thinner core the rod.
+SCALE = float(os.environ.get("IMPACTS_BOX2D_SCALE", SCALE))
+ROD_HALF_THICKNESS = float(os.environ.get("IMPACTS_BOX2D_ROD_HALF_THICKNESS", ROD_HALF_THICKNESS))
 SKIN = B.b2_polygonRadius            # m
 VELOCITY_ITERATIONS, POSITION_ITERATIONS = 8, 3
 SKINS = {"rod": (ROD_HALF_THICKNESS + SKIN) / SCALE, "box": SKIN / SCALE}
@@ -143,7 +147,13 @@ def main():
     lines = []
     for scene in ic.load(skins=SKINS):
         states, steps, ended, unexpected = run(scene)
-        lines.append(ic.claimed_line(scene, engine, states))
+        settings = dict(ic.common_settings(steps, ended), float="f32", scale=repr(SCALE),
+                        velocity_iterations=VELOCITY_ITERATIONS,
+                        position_iterations=POSITION_ITERATIONS, warm_start="on",
+                        velocity_threshold="1 m/s = 1/16 scene units",
+                        rod_half_thickness=f"{ROD_HALF_THICKNESS!r} m + skin {SKIN!r} m",
+                        coefficients="PreSolve sets each contact's restitution and friction")
+        lines.append(ic.claimed_line(scene, engine, states, settings))
         note = f" ({ended})"
         if unexpected:
             note += f" (contacts outside the scene: {unexpected[0]})"

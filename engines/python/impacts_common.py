@@ -1,6 +1,8 @@
-"""Shared by the planar-impact harnesses (pymunk_impacts.py, box2d_impacts.py): reading the suite
-engines/impacts.jsonl, the engine geometry of a scene, the start state, the reading rule and the
-output line. The Rapier harness (engines/rapier2d/src/bin/impacts.rs) does the same in Rust.
+"""Shared by the planar-impact harnesses (pymunk_impacts.py, box2d_impacts.py, pybullet_impacts.py,
+mujoco_impacts.py): reading the suite engines/impacts.jsonl and every example of examples/impacts/
+it does not hold (the TOML files as the same JSON structure, id = the file's stem), the engine
+geometry of a scene, the start state, the reading rule and the output line. The Rapier harness
+(engines/rapier2d/src/bin/impacts.rs) does the same in Rust (on the suite only).
 
 Geometry (scene units; every body keeps the scene's mass, inertia and centre of mass, set
 explicitly, so no shape's area enters):
@@ -31,10 +33,15 @@ gravity they are the values right after the impact.
 import json
 import math
 import os
+import tomllib
 from fractions import Fraction
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SUITE = os.path.join(HERE, "..", "impacts.jsonl")
+EXAMPLES = os.path.join(HERE, "..", "..", "examples", "impacts")
+# The class of an example of examples/impacts/ that the suite engines/impacts.jsonl does not hold
+# (the suite holds the examples that existed when it was generated; engines/impact_suite.py).
+EXAMPLE_CLASSES = {"cradle-12-two-balls": "multi-cradle"}
 OUT_DIR = os.path.join(HERE, "..", "..", "tests", "data", "engines", "impacts")
 
 DT_TEXT = "1/1000"
@@ -43,6 +50,11 @@ ROD_RADIUS = 1 / 200          # rods in the suite have length 2: 1/400 of the le
 POINT_RADIUS = 1 / 100
 PEG_RADIUS = 1 / 100
 START_STEPS = 0.99
+# Diagnostics only (never for the fixtures): the environment may change the start and the
+# thickness, to trace a residual to its cause (docs/engines-conformance.md); the fixture line
+# then records the values in claimed.settings.
+ROD_RADIUS = float(os.environ.get("IMPACTS_ROD_RADIUS", ROD_RADIUS))
+START_STEPS = float(os.environ.get("IMPACTS_START_STEPS", START_STEPS))
 MAX_SECONDS = 0.1
 TAIL_RATIO = 1 / 100
 APPROACH_TOLERANCE = 1e-6
@@ -179,6 +191,7 @@ class Scene:
                 else:
                     raise SystemExit(f"error: {self.id}: fixed body {fixed.name} with shape {fixed.shape}")
                 self._set_coefficients(moving.name, st.tag, c)
+                c["static"] = st.tag
                 continue
             # two moving bodies: move a disc or a point away from the other body's surface
             for X, Y, sign in ((A, B, 1), (B, A, -1)):
@@ -219,9 +232,59 @@ def reading(body, vx, vy, angle):
     return math.cos(a) * vx - math.sin(a) * vy, math.sin(a) * vx + math.cos(a) * vy
 
 
-def load(path=SUITE, skins=None):
+def _exact_strings(value):
+    """A TOML value as the suite's JSON keeps it: numbers as exact strings, the rest as is."""
+    if isinstance(value, bool):
+        return value
+    if isinstance(value, (int, Fraction)):
+        return str(value)
+    if isinstance(value, float):
+        raise SystemExit(f"error: a float {value!r} in an example (numbers are exact strings)")
+    if isinstance(value, dict):
+        return {k: _exact_strings(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_exact_strings(v) for v in value]
+    return value
+
+
+def example_lines(suite_lines):
+    """Every scene of examples/impacts/*.toml (not published/) as a suite line, id = the file's
+    stem, in file-name order. An example the suite already holds must be converted to that very
+    line (it is then not repeated); the others get their class from EXAMPLE_CLASSES."""
+    held = {line["id"]: line for line in suite_lines}
+    out = []
+    for name in sorted(os.listdir(EXAMPLES)):
+        if not name.endswith(".toml"):
+            continue
+        stem = name[:-5]
+        with open(os.path.join(EXAMPLES, name), "rb") as f:
+            doc = tomllib.load(f)
+        if stem in held:
+            cls = held[stem]["class"]
+        elif stem in EXAMPLE_CLASSES:
+            cls = EXAMPLE_CLASSES[stem]
+        else:
+            raise SystemExit(f"error: example {stem}: no class (add it to EXAMPLE_CLASSES)")
+        line = {"id": stem, "class": cls}
+        for key in ("title", "body", "contact", "pin"):
+            if key in doc:
+                line[key] = _exact_strings(doc[key])
+        if stem in held:
+            if line != held[stem]:
+                raise SystemExit(f"error: example {stem} differs from its line in {SUITE}")
+            continue
+        out.append(line)
+    return out
+
+
+def load(path=SUITE, skins=None, examples=True):
+    """The scenes to run: every line of the suite (its order and ids), then every example of
+    examples/impacts/ the suite does not hold (ids = file stems)."""
     with open(path) as f:
-        return [Scene(json.loads(text), skins) for text in f if text.strip()]
+        lines = [json.loads(text) for text in f if text.strip()]
+    if examples:
+        lines += example_lines(lines)
+    return [Scene(line, skins) for line in lines]
 
 
 def max_steps(dt):
@@ -272,12 +335,24 @@ def run_until_resolved(scene, step, snapshot, dt):
                                    f"contacts {late} still approach at the end")
 
 
-def claimed_line(scene, engine, states):
-    """The fixture line: the scene's own JSON plus "claimed" (states: name -> (vx, vy, omega))."""
+def claimed_line(scene, engine, states, settings=None):
+    """The fixture line: the scene's own JSON plus "claimed" (states: name -> (vx, vy, omega)),
+    with the run's "settings" (engine parameters, dt, steps taken, how the reading ended)."""
     out = dict(scene.line)
     out["claimed"] = {"engine": engine, "bodies": {
         name: {"velocity": [repr(float(v[0])), repr(float(v[1]))], "omega": repr(float(v[2]))}
         for name, v in states.items()}}
+    if settings is not None:
+        out["claimed"]["settings"] = settings
+    return out
+
+
+def common_settings(steps, ended):
+    """The set-up shared by every harness, as recorded in a fixture line's claimed.settings."""
+    out = {"dt": DT_TEXT, "start_steps": repr(START_STEPS), "gravity": "0", "damping": "0",
+           "sleeping": "off", "steps": steps, "ended": ended}
+    if ROD_RADIUS != 1 / 200:
+        out["rod_radius_diagnostic"] = repr(ROD_RADIUS)
     return out
 
 
