@@ -18,6 +18,8 @@ Fraction(12, 11)
 - :func:`impact` any planar impact from a TOML file or a dict (``rodimpact impact``)
 - :func:`audit` many scenes, an engine's output audited (``rodimpact batch``), as a pandas
   DataFrame
+- :func:`audit_impacts` an engine's output on planar impacts audited (``rodimpact impact
+  --batch``), against the physical laws, the engines' own laws and the engine's replayed step
 
 Numbers are given as ``int``, ``Fraction`` or strings (``"3/7"``, ``"0.25"``, ``"1.5e-3"``,
 ``"100 g"``), read exactly; a Python ``float`` is refused (it is a binary approximation: pass
@@ -33,6 +35,7 @@ from typing import Any, Dict, Iterable, List, Mapping, Optional, Tuple, Union
 from . import _native
 from ._values import Exact, Record, Report, Surd, as_text, exact
 from ._audit import AuditSummary, audit
+from ._impact_audit import ImpactAuditSummary, audit_impacts
 
 __all__ = [
     "solve",
@@ -40,12 +43,14 @@ __all__ = [
     "check",
     "impact",
     "audit",
+    "audit_impacts",
     "Solution",
     "Formulas",
     "Check",
     "Impact",
     "Record",
     "AuditSummary",
+    "ImpactAuditSummary",
     "Surd",
     "Exact",
     "exact",

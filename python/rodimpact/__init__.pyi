@@ -79,6 +79,8 @@ class Impact(Record):
     @property
     def all_agree(self) -> bool: ...
     def law(self, name: str) -> Record: ...
+    @property
+    def engine_step(self) -> Optional[Record]: ...
 
 class AuditSummary:
     """What ``rodimpact batch`` prints on standard error after the rows."""
@@ -180,3 +182,28 @@ def audit(
     jobs: Optional[int] = ...,
 ) -> Any:
     """The batch audit (``rodimpact batch``) as a pandas DataFrame."""
+
+class ImpactAuditSummary:
+    """What ``rodimpact impact --batch`` prints on standard error, and its JSON summary."""
+
+    text: str
+    data: Dict[str, Any]
+    ok: bool
+    @property
+    def scenes(self) -> int: ...
+    @property
+    def findings(self) -> Dict[str, List[str]]: ...
+    def __contains__(self, text: str) -> bool: ...
+
+def audit_impacts(
+    source: Any,
+    *,
+    rtol: Optional[Union[str, int, Fraction, float]] = ...,
+    atol: Optional[Union[str, int, Fraction, float]] = ...,
+    ulps: Optional[Union[str, int]] = ...,
+    float_format: Optional[str] = ...,
+    engine: Optional[str] = ...,
+    expect: Optional[Union[str, os.PathLike]] = ...,
+) -> Any:
+    """The audit of an engine's planar impacts (``rodimpact impact --batch``) as a pandas
+    DataFrame."""

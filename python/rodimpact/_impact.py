@@ -33,11 +33,24 @@ class Impact(Report):
         return self._verdict
 
     def law(self, name: str) -> Record:
-        """The answer under the law ``name`` (``"newton"``, ``"poisson"``, ``"energetic"``)."""
+        """The answer under the law ``name`` (``"newton"``, ``"poisson"``, ``"energetic"``,
+        ``"lcp-newton"``, ``"lcp-poisson"``, ``"split"``); an engine's step is
+        :attr:`engine_step`."""
         for answer in self._data.get("laws", []):
-            if answer.get("law") == name:
+            if answer.get("law") == name and answer.get("engine") is None:
                 return Record(answer)
         raise KeyError(f"no law {name!r} in this answer")
+
+    @property
+    def engine_step(self) -> Optional[Record]:
+        """The answer of the engine asked for with ``engine=`` (one step of its solver replayed
+        exactly, or the law it converges to): with one contact the record whose ``engine`` is
+        its name, with several the model named after it (``answers``, as every model's); ``None``
+        without ``engine=``."""
+        for answer in self._data.get("laws", []) + self._data.get("models", []):
+            if answer.get("engine") is not None:
+                return Record(answer)
+        return None
 
     def __repr__(self) -> str:
         kind = "laws" if "laws" in self._data else "models"
@@ -78,6 +91,7 @@ def impact(
     law: Optional[str] = None,
     model: Optional[str] = None,
     digits: Optional[int] = None,
+    engine: Optional[str] = None,
 ) -> Impact:
     """Answers a planar impact exactly, as ``rodimpact impact``.
 
@@ -85,21 +99,25 @@ def impact(
     file's structure: ``{"body": [{"name": "rod", "mass": "1", "inertia": "1/3", ...},
     {"name": "floor", "fixed": True}], "contact": [{"bodies": ["rod", "floor"], "point": [...],
     "normal": [...], "e": "1"}]}`` (numbers as strings, ints or Fractions; a float is
-    refused). ``law``: ``"newton"``, ``"poisson"``, ``"energetic"`` or ``"all"`` (one
-    contact; default all three); ``model`` for several contacts: ``"simultaneous-newton"``,
-    ``"simultaneous-poisson"``, ``"sequential"``, ``"sequential:2,1"``, ``"pgs:K"`` or
-    ``"all"`` (default). ``digits``: significant digits of the decimals (at least 30).
+    refused). ``law``: ``"newton"``, ``"poisson"``, ``"energetic"`` (``"stronge"``), the
+    laws engines converge to, ``"lcp-newton"``, ``"lcp-poisson"``, ``"split"``, or ``"all"``
+    (one contact; default the three physical laws); ``model`` for several contacts:
+    ``"simultaneous-newton"``, ``"simultaneous-poisson"``, ``"split"``, ``"sequential"``,
+    ``"sequential:2,1"``, ``"pgs:K"`` or ``"all"`` (default). ``engine``: also answer as an
+    engine's solver does (``"pymunk-7"``, ``"box2d-2.3"``, ``"box2d-2.3:scale=16"``,
+    ``"box2d-3"``, ``"rapier-0.36"``, ``"bullet-3"``). ``digits``: significant digits of the
+    decimals (at least 30).
     """
     if digits is not None and (isinstance(digits, bool) or not isinstance(digits, (int, str))):
         raise ValueError(f"digits: must be a whole number from 1 to 10000, got {digits!r}")
     text_digits = None if digits is None else str(digits)
     if isinstance(scene, Mapping):
         data, agree, text = _native.impact_json(
-            None, json.dumps(_plain(scene, "")), "scene", law, model, text_digits
+            None, json.dumps(_plain(scene, "")), "scene", law, model, text_digits, engine
         )
     elif isinstance(scene, (str, os.PathLike)):
         data, agree, text = _native.impact_json(
-            os.fspath(scene), None, "scene", law, model, text_digits
+            os.fspath(scene), None, "scene", law, model, text_digits, engine
         )
     else:
         raise ValueError(

@@ -8,8 +8,13 @@ def check_json(pairs: List[Tuple[str, str]], claims: List[str], sig: Optional[in
 def check_file_json(path: str, sig: Optional[int] = ...) -> Tuple[str, bool, str]: ...
 def impact_json(
     path: Optional[str], scene: Optional[str], label: str, law: Optional[str] = ...,
-    model: Optional[str] = ..., digits: Optional[str] = ...,
+    model: Optional[str] = ..., digits: Optional[str] = ..., engine: Optional[str] = ...,
 ) -> Tuple[str, bool, str]: ...
+def impact_audit_json(
+    path: Optional[str], lines: Optional[str], label: str, rtol: Optional[str] = ...,
+    atol: Optional[str] = ..., ulps: Optional[str] = ..., float: Optional[str] = ...,
+    engine: Optional[str] = ..., expect: Optional[str] = ...,
+) -> Tuple[List[str], str, str, bool]: ...
 def scene_keys() -> List[Tuple[str, bool, str]]: ...
 
 class AuditStream:

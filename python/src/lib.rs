@@ -137,7 +137,7 @@ fn check_file_json(
 /// dict with the file's structure (`scene`, named `label` in errors); the JSON text, whether
 /// the file's claims all agree, and the text report.
 #[pyfunction]
-#[pyo3(signature = (path, scene, label, law=None, model=None, digits=None))]
+#[pyo3(signature = (path, scene, label, law=None, model=None, digits=None, engine=None))]
 #[allow(clippy::too_many_arguments)]
 fn impact_json(
     py: Python<'_>,
@@ -147,9 +147,9 @@ fn impact_json(
     law: Option<String>,
     model: Option<String>,
     digits: Option<String>,
+    engine: Option<String>,
 ) -> PyResult<(String, bool, String)> {
-    use rodimpact::app::impact::{answer_impact, read_scene_file};
-    use rodimpact::impact::Law;
+    use rodimpact::app::impact::{answer_impact, parse_engine, parse_law, read_scene_file};
     py.detach(|| {
         let (value, label) = match (&path, &scene) {
             (Some(path), _) => {
@@ -166,28 +166,82 @@ fn impact_json(
                 return Err(Error::new(label, ErrorKind::Missing));
             }
         };
-        let law = match law.as_deref().map(str::trim) {
-            None | Some("all") => None,
-            Some("newton") => Some(Law::Newton),
-            Some("poisson") => Some(Law::Poisson),
-            Some("energetic") => Some(Law::Energetic),
-            Some(other) => {
-                return Err(Error::new(
-                    "law",
-                    ErrorKind::Invalid(format!(
-                        "expected newton, poisson, energetic or all, got '{}'",
-                        rodimpact::echo::echo(other)
-                    )),
-                ));
-            }
+        let law = match law.as_deref() {
+            None => None,
+            Some(text) => parse_law(text)?,
         };
+        let engine = engine.as_deref().map(parse_engine).transpose()?;
         let digits_json = rodimpact::report::parse_digits(digits.as_deref(), 30)?;
         let digits_text = rodimpact::report::parse_digits(digits.as_deref(), 6)?;
-        let run = answer_impact(&value, &label, law, model.as_deref())?;
+        let run = answer_impact(&value, &label, law, model.as_deref(), engine.as_ref())?;
         Ok::<_, Error>((
             to_json(&rodimpact::report::impact_run_json(&run, digits_json)),
             run.all_agree(),
             rodimpact::report::impact_run_text(&run, digits_text),
+        ))
+    })
+    .map_err(value_error)
+}
+
+/// `impact --batch`: every JSON line of the file at `path`, or of `lines` (named `label` in
+/// errors), audited as the command line audits it; the audit of each line as JSON text, the
+/// summary as JSON text (`--summary-json`), the summary's text (what the CLI prints on standard
+/// error) and whether the audit passed (the CLI's exit 0).
+#[pyfunction]
+#[pyo3(signature = (path, lines, label, rtol=None, atol=None, ulps=None, float=None, engine=None, expect=None))]
+#[allow(clippy::too_many_arguments)]
+fn impact_audit_json(
+    py: Python<'_>,
+    path: Option<std::path::PathBuf>,
+    lines: Option<String>,
+    label: String,
+    rtol: Option<String>,
+    atol: Option<String>,
+    ulps: Option<String>,
+    float: Option<String>,
+    engine: Option<String>,
+    expect: Option<std::path::PathBuf>,
+) -> PyResult<(Vec<String>, String, String, bool)> {
+    use rodimpact::app::batch::BatchOptions;
+    use rodimpact::app::impact_batch::{ImpactBatchOptions, read_known_findings, run};
+    use rodimpact::report::{impact_audit_json, impact_batch_json, impact_batch_text};
+    py.detach(|| {
+        let float = BatchOptions::float_of(float.as_deref())?;
+        let expected = expect.as_deref().map(read_known_findings).transpose()?;
+        let options = ImpactBatchOptions::parse(
+            rtol.as_deref(),
+            atol.as_deref(),
+            ulps.as_deref(),
+            float,
+            engine.as_deref(),
+            expected,
+        )?;
+        let mut audits = Vec::new();
+        let collect = |audit: &rodimpact::batch::ImpactAudit| {
+            audits.push(to_json(&impact_audit_json(audit)));
+            Ok(())
+        };
+        let summary = match (&path, &lines) {
+            (Some(path), _) => {
+                let name = rodimpact::echo::echo_path(path);
+                let file = std::fs::File::open(path)
+                    .map_err(|e| Error::io(name.clone(), "cannot read", e))?;
+                run(std::io::BufReader::new(file), &name, &options, collect)?
+            }
+            (None, Some(text)) => run(text.as_bytes(), &label, &options, collect)?,
+            (None, None) => return Err(Error::new(label, ErrorKind::Missing)),
+        };
+        let expect_name = expect.as_deref().map(rodimpact::echo::echo_path);
+        let with_expected = options.expected.is_some();
+        let text = impact_batch_text(
+            &summary,
+            options.expected.as_ref().zip(expect_name.as_deref()),
+        );
+        Ok::<_, Error>((
+            audits,
+            to_json(&impact_batch_json(&summary, with_expected)),
+            text,
+            summary.passed(with_expected),
         ))
     })
     .map_err(value_error)
@@ -216,6 +270,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(check_json, m)?)?;
     m.add_function(wrap_pyfunction!(check_file_json, m)?)?;
     m.add_function(wrap_pyfunction!(impact_json, m)?)?;
+    m.add_function(wrap_pyfunction!(impact_audit_json, m)?)?;
     audit::register(m)?;
     Ok(())
 }

@@ -1,12 +1,13 @@
 """impact(): planar impacts from files and dicts; the paper's scene as bodies is solve's."""
 
+import json
 import sys
 from fractions import Fraction as F
 
 import pytest
 
 import rodimpact
-from conftest import EXAMPLES
+from conftest import EXAMPLES, REPO
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -65,7 +66,7 @@ def test_several_contacts_models():
 def test_bad_scenes():
     with pytest.raises(ValueError, match=r"the float 0\.5 is not exact"):
         rodimpact.impact({"body": [{"name": "a", "mass": 0.5}]})
-    with pytest.raises(ValueError, match=r"^law: expected newton, poisson, energetic or all"):
+    with pytest.raises(ValueError, match=r"^law: expected newton, poisson, energetic \(stronge\), lcp-newton, lcp-poisson, split or all"):
         rodimpact.impact(PAPER, law="hooke")
     with pytest.raises(ValueError, match=r"cannot read"):
         rodimpact.impact(EXAMPLES / "impacts" / "no-such-scene.toml")
@@ -83,3 +84,94 @@ def test_to_dict_is_the_clis_json(cli_json):
         assert rodimpact.impact(EXAMPLES / "impacts" / name).to_dict() == cli_json(
             "impact", path, "--format", "json"
         ), name
+
+
+def test_engine_laws_and_an_engines_step():
+    tilted = EXAMPLES / "impacts" / "tilted-rod-rough-floor.toml"
+    # lcp-newton: Newton's target on the final normal velocity and Coulomb's law on the final
+    # slip; the end sticks (u_t' = 0) under P = (1/5, 11/10), and the rod gains 1/10 J (X39).
+    r = rodimpact.impact(tilted, law="lcp-newton")
+    answer = r.law("lcp-newton")
+    assert answer.bodies.rod.velocity == [F(6, 5), F(1, 10)]
+    assert answer.bodies.rod.omega == F(-3, 2)
+    assert answer.energy.change == F(1, 10)
+    assert r.engine_step is None
+    # pymunk's step of 10 iterations, replayed exactly: not yet lcp-newton, gaining energy too.
+    r = rodimpact.impact(tilted, law="lcp-newton", engine="pymunk-7")
+    step = r.engine_step
+    assert step.engine == "pymunk-7" and step.law == "lcp-newton"
+    assert 0 < step.energy.change < F(1, 10)
+    assert r.law("lcp-newton").energy.change == F(1, 10)
+    # Box2D 2.3: an approach at exactly its threshold (1 m/s) does not bounce.
+    step = rodimpact.impact(tilted, law="split", engine="box2d-2.3").engine_step
+    assert step.contact_velocity.normal.after == 0
+    # Several contacts: the engine's step is a model named after it.
+    step = rodimpact.impact(EXAMPLES / "impacts" / "cradle-3.toml", engine="pymunk-7").engine_step
+    assert step.model == "pymunk-7" and step.engine == "pymunk-7"
+    with pytest.raises(ValueError, match=r"^engine: "):
+        rodimpact.impact(tilted, engine="havok")
+
+
+def _scene(claimed_velocity):
+    return {
+        "id": "wall",
+        "body": [
+            {"name": "p", "mass": "1", "velocity": ["1", "0"]},
+            {"name": "wall", "fixed": True},
+        ],
+        "contact": [{"bodies": ["p", "wall"], "point": ["0", "0"], "normal": ["-1", "0"]}],
+        "claimed": {"engine": "pymunk 7.3.1", "bodies": {"p": {"velocity": claimed_velocity, "omega": "0"}}},
+    }
+
+
+def test_audit_impacts_of_records():
+    # A ball bouncing elastically off a wall: claimed right, then at half the speed.
+    rows = rodimpact.audit_impacts([_scene(["-1", "0"]), _scene(["-0.5", "0"])])
+    records = rows.to_dict("records")
+    assert [r["diagnosis"] for r in records] == ["ok", "energy-loss"]
+    assert records[0]["closest"] == "newton" and records[0]["rel_error"]["newton"] == 0.0
+    # sqrt(K(claim - exact)/K(before)) = sqrt((1/2)(1/2)^2/(1/2)) = 1/2
+    assert records[1]["rel_error"]["newton"] == 0.5 and records[1]["matches"] == []
+    summary = rows.attrs["summary"]
+    assert not summary.ok and summary.scenes == 2
+    assert summary.findings == {"energy-loss": ["wall"]}
+    # pymunk's step is exact here: the whole error is what the replay leaves out.
+    assert records[1]["error_split"]["of_rounding"] == 0.5
+
+
+def test_audit_impacts_of_a_file_is_the_clis(cli):
+    # The file of pymunk's planar impacts: the same lines and summary as the command line's.
+    path = REPO / "tests" / "data" / "engines" / "impacts" / "pymunk-7.3.1.jsonl"
+    rows = rodimpact.audit_impacts(path, rtol="1e-2")
+    code, out, err = cli("impact", "--batch", str(path), "--rtol", "1e-2")
+    assert code == 1
+    cli_lines = [json.loads(line) for line in out.splitlines()]
+    assert list(rows["id"]) == [line["id"] for line in cli_lines]
+    assert list(rows["closest"]) == [line["closest"] for line in cli_lines]
+    assert str(rows.attrs["summary"]) == err
+    assert rows.attrs["summary"].findings == {"off": ["ball-on-column", "cradle-12-two-balls"]}
+    split = rows.set_index("id").loc["box-corner", "error_split"]
+    assert split["profile"] == "pymunk-7" and split["of_law"] == 0.0
+    assert 1e-3 < split["of_iterations"] < 2e-3 and split["of_rounding"] < 1e-5
+
+
+def test_audit_impacts_options_and_errors(tmp_path):
+    path = REPO / "tests" / "data" / "engines" / "impacts" / "pymunk-7.3.1.jsonl"
+    known = tmp_path / "known.csv"
+    known.write_text("id,finding\nball-on-column,off\ncradle-12-two-balls,off\n")
+    rows = rodimpact.audit_impacts(path, rtol=F(1, 100), expect=known)
+    assert rows.attrs["summary"].ok
+    rows = rodimpact.audit_impacts(path, rtol="1e-2", engine="bullet-3")
+    assert set(rows["error_split"].dropna().map(lambda s: s["profile"])) == {"bullet-3"}
+    with pytest.raises(ValueError, match=r"^rtol: must be >= 0, got -1$"):
+        rodimpact.audit_impacts(path, rtol="-1")
+    with pytest.raises(ValueError, match=r"^engine: "):
+        rodimpact.audit_impacts(path, engine="havok")
+    with pytest.raises(ValueError, match=r"^float: expected f32 or f64"):
+        rodimpact.audit_impacts(path, ulps=4, float_format="f16")
+    with pytest.raises(ValueError, match=r"^scenes: line 1"):
+        rodimpact.audit_impacts([{"body": []}])
+    with pytest.raises(ValueError, match=r"one scene"):
+        rodimpact.audit_impacts(_scene(["-1", "0"]))
+    with pytest.raises(ValueError, match=r"cannot read"):
+        rodimpact.audit_impacts(tmp_path / "missing.jsonl")

@@ -6,7 +6,10 @@
 
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
-use crate::impact::{Law, MAX_ORDERED, Model, contact_matrix, orders, solve_exact, solve_several};
+use crate::impact::{
+    Law, MAX_ORDERED, Model, Profile, contact_matrix, orders, solve_engine_exact, solve_exact,
+    solve_several,
+};
 use crate::model::{MAX_SCENE_BYTES, from_value, toml_value};
 use crate::textbook::SceneCheck;
 use crate::textbook::impact::{
@@ -39,8 +42,9 @@ pub fn read_scene_file(label: &str, path: &std::path::Path) -> Result<Value, Err
 }
 
 /// Answers the scene `value` (a scene file's structure; `label` names it in errors): with one
-/// contact under `law` (`None`: all three laws; every law when the file has claims, whose
-/// sources each name theirs), with several under the models `model` names (`None`: all).
+/// contact under `law` (`None`: the three physical laws; every one of them, and `law`, when the
+/// file has claims, whose sources each name theirs), with several under the models `model`
+/// names (`None`: all); and as `engine`'s solver computes it, after the laws or models.
 ///
 /// # Errors
 /// A bad scene (`LABEL: field: why`), no approach at the contact, `model` with one contact,
@@ -52,9 +56,9 @@ pub fn read_scene_file(label: &str, path: &std::path::Path) -> Result<Value, Err
 /// use rodimpact::textbook::impact::ImpactAnswers;
 /// use rodimpact::impact::Law;
 /// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
-/// let run = answer_impact(&value, "paper.toml", Some(Law::Newton), None)?;
+/// let run = answer_impact(&value, "paper.toml", Some(Law::Newton), None, None)?;
 /// assert!(matches!(&run.answers, ImpactAnswers::Laws(a) if a.len() == 1));
-/// let err = answer_impact(&value, "paper.toml", None, Some("pgs:3")).unwrap_err();
+/// let err = answer_impact(&value, "paper.toml", None, Some("pgs:3"), None).unwrap_err();
 /// assert!(err.to_string().starts_with("model: one contact"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
@@ -63,6 +67,7 @@ pub fn answer_impact(
     label: &str,
     law: Option<Law>,
     model: Option<&str>,
+    engine: Option<&Profile>,
 ) -> Result<ImpactRun, Error> {
     let at_file = |e: Error| Error::new(format!("{label}: {}", e.field), e.kind);
     let system = from_value(value).map_err(at_file)?;
@@ -77,7 +82,8 @@ pub fn answer_impact(
                 ),
             ));
         }
-        let models = parse_models(model.unwrap_or("all"), system.contacts.len())?;
+        let mut models = parse_models(model.unwrap_or("all"), system.contacts.len())?;
+        models.extend(engine.cloned().map(Model::Engine));
         let outcomes = models
             .into_iter()
             .map(|m| {
@@ -108,15 +114,18 @@ pub fn answer_impact(
     // A file's published answers need their laws answered whatever `law` says.
     let laws: Vec<Law> = match law {
         Some(law) if claims.is_empty() => vec![law],
+        Some(law) if !Law::ALL.contains(&law) => Law::ALL.into_iter().chain([law]).collect(),
         _ => Law::ALL.to_vec(),
     };
-    let answers = laws
+    let unanswered =
+        |e: crate::impact::ImpactError| Error::new(label, ErrorKind::Invalid(e.to_string()));
+    let mut answers = laws
         .iter()
-        .map(|&law| {
-            solve_exact(&system, law)
-                .map_err(|e| Error::new(label, ErrorKind::Invalid(e.to_string())))
-        })
+        .map(|&law| solve_exact(&system, law).map_err(unanswered))
         .collect::<Result<Vec<_>, _>>()?;
+    if let Some(profile) = engine {
+        answers.push(solve_engine_exact(&system, profile).map_err(unanswered)?);
+    }
     let checked = SceneCheck {
         symbolic: None,
         answers: check_impact_claims(&claims, &system, &answers).map_err(at_file)?,
@@ -127,6 +136,51 @@ pub fn answer_impact(
         answers: ImpactAnswers::Laws(answers),
         checked,
     })
+}
+
+/// The law `text` names (`newton`, `poisson`, `energetic` or `stronge`, `lcp-newton`,
+/// `lcp-poisson`, `split`), or `None` for `all` (the three physical laws).
+///
+/// # Errors
+/// `law: expected ...` for any other text.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{app::impact::parse_law, impact::Law};
+/// assert_eq!(parse_law("stronge")?, Some(Law::Energetic));
+/// assert_eq!(parse_law("all")?, None);
+/// assert!(parse_law("euler").unwrap_err().to_string().starts_with("law: expected"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn parse_law(text: &str) -> Result<Option<Law>, Error> {
+    if text.trim() == "all" {
+        return Ok(None);
+    }
+    Law::parse(text).map(Some).ok_or_else(|| {
+        Error::new(
+            "law",
+            ErrorKind::Invalid(format!(
+                "expected newton, poisson, energetic (stronge), lcp-newton, lcp-poisson, split or all, got '{}'",
+                crate::echo::echo(text)
+            )),
+        )
+    })
+}
+
+/// The engine profile `text` names ([`Profile::parse`]: `pymunk-7`, `box2d-2.3:scale=16`, ...).
+///
+/// # Errors
+/// `engine: ...` naming what is wrong.
+///
+/// # Examples
+/// ```
+/// use rodimpact::app::impact::parse_engine;
+/// assert_eq!(parse_engine("bullet-3")?.to_string(), "bullet-3");
+/// assert!(parse_engine("havok").unwrap_err().to_string().starts_with("engine: expected one of"));
+/// # Ok::<(), rodimpact::Error>(())
+/// ```
+pub fn parse_engine(text: &str) -> Result<Profile, Error> {
+    Profile::parse(text).map_err(|why| Error::new("engine", ErrorKind::Invalid(why)))
 }
 
 /// The models `text` names, for `n` contacts: `all` (the simultaneous models, sequential in
@@ -172,7 +226,7 @@ pub fn parse_models(text: &str, n: usize) -> Result<Vec<Model>, Error> {
                 why
             } else {
                 format!(
-                    "expected simultaneous-newton, simultaneous-poisson, sequential, sequential:ORDER, pgs:K or all, got '{}'",
+                    "expected simultaneous-newton (lcp-newton), simultaneous-poisson (lcp-poisson), split, sequential, sequential:ORDER, pgs:K, an engine (pymunk-7, box2d-2.3, box2d-3, rapier-0.36, bullet-3) or all, got '{}'",
                     crate::echo::echo(other)
                 )
             })

@@ -7,8 +7,10 @@
 //! |---|---|
 //! | `pages/` | the web pages: what their WebAssembly module answers ([`pages::call_json`]), and the pages written with what they carry |
 //! | `batch.rs` | the options of a batch audit, read once for `rodimpact batch` and Python's `audit()` |
+//! | `impact_batch.rs` | `impact --batch` and Python's `audit_impacts()`: an engine's claimed impacts audited line by line, the summary |
 //! | `impact.rs` | `rodimpact impact` and Python's `impact()`: a scene file answered under the laws or models asked for, its published answers checked |
 
 pub mod batch;
 pub mod impact;
+pub mod impact_batch;
 pub mod pages;

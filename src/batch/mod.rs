@@ -51,7 +51,10 @@ pub use classes::{ClassRule, RowClass};
 pub use compare::{Agreement, FLOAT_TOLERANCE, MAX_ULPS};
 pub use expected::{ExpectedEntry, KnownFindings, MAX_EXPECTED_BYTES};
 pub use header::{Batch, read_header, scene_columns};
-pub use impacts::{EngineReference, ImpactAudit, audit_impact};
+pub use impacts::{
+    EngineChoice, EngineReference, ErrorSplit, ImpactAudit, ImpactBatchSummary, ImpactTolerance,
+    Kind, audit_impact, profile_of_claim,
+};
 pub use plan::{Arithmetic, Diagnosis, OutputCheck, RowExpectation, SolvedRow};
 pub use stream::{CHUNK, MAX_LINE, MAX_ROWS, run};
 pub use summary::{Baseline, FINDING_EXAMPLES, OutputStats, Summary, WRONG_ROWS_SHOWN};

@@ -1,11 +1,19 @@
 //! The restitution laws, stated once: what ends an impact under Newton's, Poisson's and
 //! Stronge's law, as the one-contact path ([`super::one_contact`]), the several-contact models
-//! ([`super::multi_contact`]) and the checks of an answer all use them.
+//! ([`super::multi_contact`]) and the checks of an answer all use them; and the laws that
+//! velocity-level engines converge to, which impose them on the final velocities at once.
 //!
 //! - **newton** (kinematic): the normal relative velocity after is `-e` times before;
 //! - **poisson** (kinetic): the normal impulse of restitution is `e` times that of compression;
 //! - **energetic** (Stronge): the normal work of restitution is `-e^2` times that of
-//!   compression.
+//!   compression;
+//! - **lcp-newton**: Newton's restitution and Coulomb's law on the *final* velocities, in one
+//!   phase (the Stewart-Trinkle / Anitescu-Potra velocity-level impact; what projected
+//!   Gauss-Seidel converges to);
+//! - **lcp-poisson**: its two-phase form: a compression with Coulomb's law, then an expansion
+//!   of `e` times the compression impulse (or more), Coulomb's law again;
+//! - **split**: friction and no restitution, then restitution without friction (Rapier's
+//!   restitution pass, Box2D v3's).
 
 use crate::field::Field;
 use std::fmt;
@@ -20,25 +28,64 @@ pub enum Law {
     /// Stronge's energetic law: the normal work of restitution is -e^2 times that of
     /// compression.
     Energetic,
+    /// Newton's restitution and Coulomb's law on the final velocities, one phase.
+    LcpNewton,
+    /// A compression with Coulomb's law, then an expansion of e times its impulse.
+    LcpPoisson,
+    /// Friction without restitution, then restitution without friction.
+    Split,
 }
 
 impl Law {
-    /// All three, in the order they are reported.
+    /// The three physical laws, in the order they are reported.
     pub const ALL: [Law; 3] = [Law::Newton, Law::Poisson, Law::Energetic];
 
-    /// `newton`, `poisson` or `energetic`.
+    /// The laws engines converge to, in the order they are reported.
+    pub const ENGINES: [Law; 3] = [Law::LcpNewton, Law::LcpPoisson, Law::Split];
+
+    /// `newton`, `poisson`, `energetic`, `lcp-newton`, `lcp-poisson` or `split`.
     ///
     /// # Examples
     /// ```
     /// use rodimpact::impact::Law;
     /// assert_eq!(Law::Energetic.name(), "energetic");
+    /// assert_eq!(Law::LcpNewton.name(), "lcp-newton");
     /// ```
     pub fn name(self) -> &'static str {
         match self {
             Law::Newton => "newton",
             Law::Poisson => "poisson",
             Law::Energetic => "energetic",
+            Law::LcpNewton => "lcp-newton",
+            Law::LcpPoisson => "lcp-poisson",
+            Law::Split => "split",
         }
+    }
+
+    /// The law named `text` (its [`Law::name`], or `stronge` for the energetic law); `None`
+    /// for any other text.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::impact::Law;
+    /// assert_eq!(Law::parse("stronge"), Some(Law::Energetic));
+    /// assert_eq!(Law::parse(" split "), Some(Law::Split));
+    /// assert_eq!(Law::parse("euler"), None);
+    /// ```
+    pub fn parse(text: &str) -> Option<Law> {
+        match text.trim() {
+            "stronge" => Some(Law::Energetic),
+            name => Law::ALL
+                .into_iter()
+                .chain(Law::ENGINES)
+                .find(|law| law.name() == name),
+        }
+    }
+
+    /// Whether the law follows the impact along Routh's path in the normal impulse (the three
+    /// physical laws), rather than imposing itself on the final velocities (the engines').
+    pub fn follows_the_path(self) -> bool {
+        Law::ALL.contains(&self)
     }
 
     /// Newton's law: the normal relative velocity at which a contact that approached at
@@ -78,12 +125,25 @@ impl Law {
         -(e.clone() * e * compression)
     }
 
-    /// What the law leaves over at the end of an impact (zero when it holds): newton
-    /// `u_n' - (-e u_n)`, poisson `lam - (lam_c + e lam_c)`, energetic `W_r - (-e^2 W_c)`.
+    /// What the law leaves over at the end of an impact (zero when it holds): newton, lcp-newton
+    /// and split `u_n' - (-e u_n)`, poisson `lam - (lam_c + e lam_c)` (lcp-poisson: that, or
+    /// `u_n'` where the expansion had to exceed it), energetic `W_r - (-e^2 W_c)`.
     pub(crate) fn residual<F: Field>(self, e: &F, end: &Ends<F>) -> F {
         match self {
-            Law::Newton => end.u_n_after.clone() - &Law::newton_leaving(e, &end.u_n_before),
+            Law::Newton | Law::LcpNewton | Law::Split => {
+                end.u_n_after.clone() - &Law::newton_leaving(e, &end.u_n_before)
+            }
             Law::Poisson => end.lam.clone() - &end.lam_c - &Law::poisson_restitution(e, &end.lam_c),
+            // The expansion is e times the compression's impulse, or more where the contact
+            // would sink: then it ends touching.
+            Law::LcpPoisson => {
+                let short = end.lam.clone() - &end.lam_c - &Law::poisson_restitution(e, &end.lam_c);
+                if short.is_zero() {
+                    short
+                } else {
+                    end.u_n_after.clone()
+                }
+            }
             Law::Energetic => {
                 end.work_restitution.clone() - &Law::energetic_restitution(e, &end.work_compression)
             }

@@ -14,6 +14,7 @@
 //! |---|---|
 //! | `law.rs` | the restitution laws ([`Law`]), stated once |
 //! | `coulomb.rs` | Coulomb's law: what friction does in a phase ([`Mode`]), the cone |
+//! | `engines.rs` | the engines' profiles: the law each converges to, its iterations, threshold, rules |
 //! | `ledger.rs` | what an impact conserves and changes: [`EnergyLedger`], [`Balances`] |
 //! | `jacobian.rs` | the bodies' coordinates, the contacts' rows, W, the impulses' effect |
 //! | `planar.rs` | the plane's bodies and contacts as coordinates and rows, and back |
@@ -21,6 +22,7 @@
 //! | `multi_contact/` | several contacts under each model: LCPs, sequential, PGS, friction |
 
 mod coulomb;
+mod engines;
 mod jacobian;
 mod law;
 mod ledger;
@@ -29,14 +31,15 @@ mod one_contact;
 mod planar;
 
 pub use coulomb::{Mode, cone_excess, within_cone};
+pub use engines::{Combine, Engine, Profile};
 pub use jacobian::ContactMatrix;
 pub use law::Law;
 pub use ledger::{Balance, Balances, EnergyLedger};
 pub use multi_contact::{
-    Ledger, MAX_ENUMERATED, MAX_ORDERED, MAX_SEQUENTIAL_IMPACTS, MAX_SWEEPS, Model, ModelAnswer,
-    ModelOutcome, orders, solve_several,
+    Ledger, MAX_ENGINE_STEPS, MAX_ENUMERATED, MAX_ORDERED, MAX_SEQUENTIAL_IMPACTS, MAX_SWEEPS,
+    Model, ModelAnswer, ModelOutcome, orders, solve_several,
 };
 pub use one_contact::{
     BodyAfter, ImpactError, Jam, LawAnswer, PathPoint, Phase, Roots, contact_matrix, contact_path,
-    solve_contact, solve_exact,
+    solve_contact, solve_engine, solve_engine_exact, solve_exact,
 };

@@ -56,7 +56,7 @@ pub fn impact_json(
                 bodies.insert(system.bodies[b.index].name.clone(), Value::Object(body));
             }
             let world = |u: &[QSqrt; 2]| world_vector(u, &c.normal);
-            json!({
+            let mut entry = json!({
                 "law": a.law.name(),
                 "bodies": bodies,
                 "impulse": vector(&a.impulse),
@@ -90,7 +90,11 @@ pub fn impact_json(
                     "coulomb": a.balances.holds(Balance::Coulomb),
                     "energy_equals_work": a.balances.holds(Balance::EnergyEqualsWork),
                 },
-            })
+            });
+            if let Some(profile) = &a.engine {
+                entry["engine"] = json!(profile.to_string());
+            }
+            entry
         })
         .collect();
     json!({
@@ -294,7 +298,11 @@ pub fn impact_text(
         }
     ));
     for a in answers {
-        out.push_str(&format!("\n{}\n", law_heading(a.law)));
+        let heading = match &a.engine {
+            Some(profile) => engine_heading(profile),
+            None => law_heading(a.law).to_string(),
+        };
+        out.push_str(&format!("\n{heading}\n"));
         for b in &a.bodies {
             let pin = b
                 .pin_impulse
@@ -343,14 +351,25 @@ pub fn impact_text(
                 ""
             }
         ));
-        out.push_str(&format!(
-            "  laws: {}\n",
-            if a.balances.all_zero() {
-                "momentum, angular momentum, the restitution law, Coulomb's cone and energy = work all hold exactly".to_string()
-            } else {
-                format!("NOT ALL HOLD: {} fail", a.balances.failing().join(", "))
-            }
-        ));
+        let laws = if a.balances.all_zero() {
+            "momentum, angular momentum, the restitution law, Coulomb's cone and energy = work all hold exactly".to_string()
+        } else if let Some(profile) = &a.engine {
+            format!(
+                "momentum and angular momentum {}; after the step's {} iterations not yet {}'s: {} left over",
+                if a.balances.holds(Balance::Momentum) && a.balances.holds(Balance::AngularMomentum)
+                {
+                    "hold exactly"
+                } else {
+                    "FAIL"
+                },
+                profile.engine.iterations(),
+                a.law.name(),
+                a.balances.failing().join(", ")
+            )
+        } else {
+            format!("NOT ALL HOLD: {} fail", a.balances.failing().join(", "))
+        };
+        out.push_str(&format!("  laws: {laws}\n"));
     }
     let gains: Vec<String> = answers
         .iter()
@@ -358,9 +377,12 @@ pub fn impact_text(
         .map(|a| {
             let hundred = QSqrt::rational(Q::from_integer(100.into()));
             let share = (a.energy.change.clone() * &hundred / &a.energy.before).decimal(3);
+            let who = match &a.engine {
+                Some(profile) => format!("{profile}'s step"),
+                None => format!("{}'s law", law_name(a.law)),
+            };
             format!(
-                "{}'s law gains {} J ({share} % of the energy before)",
-                law_name(a.law),
+                "{who} gains {} J ({share} % of the energy before)",
                 show(&a.energy.change, digits)
             )
         })
@@ -383,7 +405,34 @@ pub(crate) fn law_name(law: crate::impact::Law) -> &'static str {
         Law::Newton => "Newton",
         Law::Poisson => "Poisson",
         Law::Energetic => "Stronge",
+        Law::LcpNewton => "LCP-Newton",
+        Law::LcpPoisson => "LCP-Poisson",
+        Law::Split => "Split",
     }
+}
+
+/// The heading of an engine's answer: its name, what rodimpact computes of it, its settings.
+fn engine_heading(profile: &crate::impact::Profile) -> String {
+    let engine = profile.engine;
+    let what = if engine.replayed() {
+        format!(
+            "one step of its solver replayed exactly, {} iterations; it converges to {}",
+            engine.iterations(),
+            engine.law().name()
+        )
+    } else {
+        format!(
+            "its soft substeps have no rational replay: the law they converge to, {}",
+            engine.law().name()
+        )
+    };
+    let (e, mu) = engine.combine();
+    format!(
+        "{profile} (engine: {what}; restitution threshold {} in the scene's units; combines e by {}, mu by {})",
+        decimal::compact(&profile.threshold),
+        e.name(),
+        mu.name()
+    )
 }
 
 pub(crate) fn law_heading(law: crate::impact::Law) -> &'static str {
@@ -392,6 +441,15 @@ pub(crate) fn law_heading(law: crate::impact::Law) -> &'static str {
         Law::Newton => "Newton (kinematic: u_n after = -e u_n before)",
         Law::Poisson => "Poisson (kinetic: restitution impulse = e x compression impulse)",
         Law::Energetic => "Stronge (energetic: restitution work = -e^2 x compression work)",
+        Law::LcpNewton => {
+            "LCP-Newton (engines' one phase: u_n after = -e u_n before and Coulomb's law on the final slip)"
+        }
+        Law::LcpPoisson => {
+            "LCP-Poisson (engines' two phases: a compression with Coulomb's law, then e x its impulse)"
+        }
+        Law::Split => {
+            "Split (friction without restitution, then restitution without friction: Rapier, Box2D v3)"
+        }
     }
 }
 
@@ -465,7 +523,11 @@ pub fn models_json(
                     out
                 })
                 .collect();
-            json!({"model": model.to_string(), "status": status, "answers": answers})
+            let mut entry = json!({"model": model.to_string(), "status": status, "answers": answers});
+            if let Model::Engine(profile) = model {
+                entry["engine"] = json!(profile.to_string());
+            }
+            entry
         })
         .collect();
     json!({"scene": scene_json(system, w, digits), "models": models})
@@ -623,23 +685,38 @@ fn model_meaning(model: &Model) -> &'static str {
         Model::Sequential(_) => {
             "one contact at a time, in this order, in passes until none approaches"
         }
-        Model::Pgs(_) => "sweeps of projected Gauss-Seidel from zero impulses, as engines run them",
+        Model::Pgs(_) => {
+            "sweeps of projected Gauss-Seidel from zero impulses, as engines run them (a friction row after each rough contact's normal)"
+        }
+        Model::Split => {
+            "friction without restitution, then restitution without friction, as Rapier and Box2D v3 converge to"
+        }
+        Model::Engine(profile) if profile.engine.replayed() => {
+            "one step of the engine's solver, replayed exactly from its source"
+        }
+        Model::Engine(_) => {
+            "the law the engine's substeps converge to (its soft contact is not rational)"
+        }
     }
 }
 
 /// One line of `impact --batch`'s output for an audited scene: `id`, `engine`, `contacts`,
-/// `exact` (every law's or model's bodies, exact strings), `rel_error` (the claim's error in
-/// energy against each, `sqrt(K(claim - exact)/K(before))`, three digits, `nan` for a claim
-/// that is not finite), `matches` (those within the tolerance), `closest`, and `diagnosis`
-/// (`ok`, or `;`-joined findings).
+/// `exact` (every distinct answer's bodies, exact strings, under its first name: the physical
+/// laws or models, the engines' laws, the engine's replayed step), `equal` (for an answer that
+/// others equal, their names), `rel_error` (the claim's error in energy against each,
+/// `sqrt(K(claim - exact)/K(before))`, three digits, `nan` for a claim that is not finite),
+/// `matches` (the answers within the tolerance, by their first names), `closest`, `error_split` (where the engine's
+/// step is replayed: the distance of its law from the nearest physical one, of its step from
+/// its law, of the claim from its step) and `diagnosis` (`ok`, or `;`-joined findings).
 ///
 /// # Examples
 /// ```
-/// use rodimpact::{batch::audit_impact, field::q, report::impact_audit_json};
+/// use rodimpact::{batch::{EngineChoice, ImpactTolerance, audit_impact}, report::impact_audit_json};
 /// let line = r#"{"id": "p", "body": [{"name": "p", "mass": "1", "velocity": ["1", "0"]},
 ///   {"name": "wall", "fixed": true}], "contact": [{"bodies": ["p", "wall"], "point": ["0", "0"], "normal": ["-1", "0"]}],
 ///   "claimed": {"bodies": {"p": {"velocity": ["-1", "0"], "omega": "0"}}}}"#;
-/// let json = impact_audit_json(&audit_impact(line, 1, &q(1, 1000))?);
+/// let audit = audit_impact(line, 1, &ImpactTolerance::default(), &EngineChoice::FromClaim)?;
+/// let json = impact_audit_json(&audit);
 /// assert_eq!(json["diagnosis"], "ok");
 /// assert_eq!(json["exact"]["newton"]["p"]["velocity"][0], "-1");
 /// # Ok::<(), rodimpact::Error>(())
@@ -647,6 +724,7 @@ fn model_meaning(model: &Model) -> &'static str {
 pub fn impact_audit_json(audit: &crate::batch::ImpactAudit) -> Value {
     let system = &audit.system;
     let mut exact = Map::new();
+    let mut equal = Map::new();
     for r in &audit.references {
         let mut bodies = Map::new();
         for (index, v, w) in &r.bodies {
@@ -656,7 +734,12 @@ pub fn impact_audit_json(audit: &crate::batch::ImpactAudit) -> Value {
             );
         }
         exact.insert(r.name.clone(), Value::Object(bodies));
+        if !r.equal.is_empty() {
+            equal.insert(r.name.clone(), json!(r.equal));
+        }
     }
+    // The square root of an energy ratio's upper bound: 3 digits.
+    let error = |e: &QSqrt| QSqrt::sqrt_of(&e.bounds(20).1).decimal(3);
     let mut out = Map::new();
     out.insert("id".into(), json!(audit.id));
     if let Some(engine) = &audit.engine {
@@ -664,28 +747,33 @@ pub fn impact_audit_json(audit: &crate::batch::ImpactAudit) -> Value {
     }
     out.insert("contacts".into(), json!(system.contacts.len()));
     out.insert("exact".into(), Value::Object(exact));
+    if !equal.is_empty() {
+        out.insert("equal".into(), Value::Object(equal));
+    }
     if audit.claimed.is_some() {
         let mut errors = Map::new();
         for (r, e) in audit.references.iter().zip(&audit.errors) {
             errors.insert(
                 r.name.clone(),
-                json!(e.as_ref().map_or_else(
-                    || "nan".to_string(),
-                    // The square root of the energy ratio's upper bound: 3 digits.
-                    |e| QSqrt::sqrt_of(&e.bounds(20).1).decimal(3)
-                )),
+                json!(e.as_ref().map_or_else(|| "nan".to_string(), error)),
             );
         }
         out.insert("rel_error".into(), Value::Object(errors));
         out.insert("matches".into(), json!(audit.matches));
-        let closest = audit
-            .references
-            .iter()
-            .zip(&audit.errors)
-            .filter_map(|(r, e)| e.as_ref().map(|e| (r, e)))
-            .min_by(|a, b| a.1.cmp_exact(b.1))
-            .map(|(r, _)| r.name.clone());
-        out.insert("closest".into(), json!(closest));
+        out.insert("closest".into(), json!(audit.closest));
+        if let Some(split) = &audit.split {
+            out.insert(
+                "error_split".into(),
+                json!({
+                    "profile": split.profile.to_string(),
+                    "law": split.law,
+                    "nearest_physical": split.nearest,
+                    "of_law": error(&split.of_law),
+                    "of_iterations": error(&split.of_iterations),
+                    "of_rounding": split.of_rounding.as_ref().map_or_else(|| "nan".to_string(), error),
+                }),
+            );
+        }
         let diagnosis = if audit.findings.is_empty() {
             "ok".to_string()
         } else {

@@ -15,7 +15,7 @@ use serde_json::Value;
 /// use rodimpact::report::impact_run_json;
 /// use rodimpact::app::impact::{answer_impact, read_scene_file};
 /// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
-/// let json = impact_run_json(&answer_impact(&value, "paper.toml", None, None)?, 30);
+/// let json = impact_run_json(&answer_impact(&value, "paper.toml", None, None, None)?, 30);
 /// assert_eq!(json["laws"].as_array().map(Vec::len), Some(3));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
@@ -40,7 +40,7 @@ pub fn impact_run_json(run: &ImpactRun, digits: usize) -> Value {
 /// use rodimpact::report::impact_run_text;
 /// use rodimpact::app::impact::{answer_impact, read_scene_file};
 /// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
-/// let text = impact_run_text(&answer_impact(&value, "paper.toml", None, None)?, 6);
+/// let text = impact_run_text(&answer_impact(&value, "paper.toml", None, None, None)?, 6);
 /// assert!(text.contains("Newton (kinematic") && text.contains("omega = -12/11"));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```

@@ -13,6 +13,7 @@ pub mod explore;
 mod formula;
 mod handout;
 mod impact;
+mod impact_batch;
 mod impact_run;
 pub mod markup;
 pub mod mathml;
@@ -40,6 +41,7 @@ pub use formula::{formula_json, formula_latex, formula_markdown, formula_text};
 pub use handout::handout_html;
 pub use impact::{impact_audit_json, impact_json, impact_text, models_json, models_text};
 pub(crate) use impact::{law_heading, law_name};
+pub use impact_batch::{impact_batch_json, impact_batch_text};
 pub use impact_run::{impact_run_json, impact_run_text};
 pub use paper_html::{PaperEdition, paper_html};
 pub use plot::{

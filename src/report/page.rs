@@ -154,7 +154,7 @@ pub fn module_element(module: &str) -> Result<String, Error> {
 
 /// The script of a page that computes with the library: the loader, which unpacks the module
 /// of [`module_element`] and then runs `ui` as the body of a function of `api`
-/// (`api.call(name, request)` answers as [`call`] does).
+/// (`api.call(name, request)` answers as [`crate::app::pages::call`] does).
 ///
 /// # Examples
 /// ```

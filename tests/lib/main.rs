@@ -12,6 +12,7 @@ mod architecture;
 mod batch_header;
 mod batch_words;
 mod docs;
+mod engine_laws;
 mod fast_routes;
 mod fraction_free;
 mod golden;

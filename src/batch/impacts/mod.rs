@@ -4,31 +4,95 @@
 //! `"claimed"` object, what an engine produced: `{"engine": "...", "bodies": {"rod":
 //! {"velocity": ["x", "y"], "omega": "w"}, ...}}`, every number a decimal or fraction string
 //! read exactly (a float's shortest text is its exact value's nearest decimal). The line is
-//! answered exactly under every law (one contact) or model (several contacts), and the claimed
-//! state is compared with each: its error in energy, `sqrt(K(claim - exact)/K(before))` (K the
-//! kinetic energy of the velocity differences), which answers it matches within a tolerance,
-//! which it is closest to, and a diagnosis as `batch` gives (`ok`; or `energy-gain`, `energy-loss`,
-//! `restitution-ignored`, `no-contact`, `momentum`, `angular-momentum`, `off`).
+//! answered exactly under every physical law (one contact) or model (several contacts), every
+//! law engines converge to (lcp-newton, lcp-poisson, split, sweeps of projected Gauss-Seidel)
+//! and the engine's own step where rodimpact replays it ([`profile_of_claim`], or one given);
+//! equal answers are one. The claimed state is compared with each: its error in energy,
+//! `sqrt(K(claim - exact)/K(before))` (K the kinetic energy of the velocity differences), which
+//! answers it matches within a tolerance, which it is closest to, the split of its error into
+//! the engine's law, its iterations and its rounding, and a diagnosis as `batch` gives (`ok`;
+//! or `energy-gain`, `energy-loss`, `restitution-ignored`, `no-contact`, `momentum`,
+//! `angular-momentum`, `off`).
+//!
+//! | file | what it does |
+//! |---|---|
+//! | `mod.rs` | one line audited: the claim read, its errors, matches, diagnosis and error split |
+//! | `references.rs` | the exact answers a claim is compared with, equal ones grouped |
+//! | `summary.rs` | what the lines said, together |
 
+mod references;
+mod summary;
+
+pub use references::{EngineReference, Kind, profile_of_claim};
+pub use summary::ImpactBatchSummary;
+
+use crate::batch::FloatFormat;
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, QSqrt};
-use crate::impact::{Law, Model, ModelOutcome, orders, solve_exact, solve_several};
+use crate::impact::Profile;
 use crate::mechanics::planar::{
     PlanarBody, Vec2, angular_momentum, kinetic_energy, linear_momentum,
 };
 use crate::model::{Mobility, System, from_value};
 use num_traits::{Signed, Zero};
+use references::{every_replayed_profile, exact_answers, law_name};
 use serde_json::Value;
 use std::cmp::Ordering;
 
-/// One exact answer the claimed state is compared with: a law's or a model's name and every
-/// moving body's (index, velocity, spin).
+/// When a claim matches an exact answer: its error in energy within `rtol`, or every component
+/// within `atol` (m/s, rad/s), or every component within `ulps` floats of the exact value
+/// correctly rounded.
 #[derive(Debug, Clone, PartialEq)]
-pub struct EngineReference {
-    /// `newton`, `poisson`, `energetic`, or a model (`simultaneous-newton`, `pgs:4`, ...).
-    pub name: String,
-    /// The moving bodies after.
-    pub bodies: Vec<(usize, Vec2<QSqrt>, QSqrt)>,
+pub struct ImpactTolerance {
+    /// The relative error in energy, `sqrt(K(claim - exact)/K(before))`, at most this.
+    pub rtol: Q,
+    /// Or every component within this absolute error.
+    pub atol: Option<Q>,
+    /// Or every component within this many floats of the format.
+    pub ulps: Option<(u64, FloatFormat)>,
+}
+
+impl Default for ImpactTolerance {
+    /// `rtol` 1e-9, no `atol`, no `ulps`.
+    fn default() -> Self {
+        ImpactTolerance {
+            rtol: Q::new(1.into(), 1_000_000_000.into()),
+            atol: None,
+            ulps: None,
+        }
+    }
+}
+
+/// Which engine steps a line is compared with.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum EngineChoice {
+    /// The step of the engine the line's `claimed.engine` names ([`profile_of_claim`]).
+    #[default]
+    FromClaim,
+    /// This engine's, for every line.
+    This(Profile),
+    /// Every replayed engine's (pymunk-7, box2d-2.3, bullet-3, their defaults).
+    Every,
+}
+
+/// An engine's error split: the distance of its converged law from the nearest physical law
+/// (its LAW), of its step from that law (its ITERATIONS), and of its claim from its step (its
+/// ROUNDING), each in energy relative to the energy before, squared (as
+/// [`ImpactAudit::errors`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ErrorSplit {
+    /// The engine's profile.
+    pub profile: Profile,
+    /// Its converged law's answer, and the physical law or model nearest it.
+    pub law: String,
+    /// The nearest physical law or model.
+    pub nearest: String,
+    /// The law's distance from it.
+    pub of_law: QSqrt,
+    /// The step's distance from its law.
+    pub of_iterations: QSqrt,
+    /// The claim's distance from the step (`None`: a claimed component not finite).
+    pub of_rounding: Option<QSqrt>,
 }
 
 /// One line audited.
@@ -38,7 +102,7 @@ pub struct ImpactAudit {
     pub id: String,
     /// The scene.
     pub system: System,
-    /// The exact answers, under every law or model.
+    /// The exact answers, equal ones grouped.
     pub references: Vec<EngineReference>,
     /// The claimed state, when the line has one: every moving body's (index, velocity, spin).
     pub claimed: Option<Vec<(usize, Vec2<Q>, Q)>>,
@@ -47,63 +111,15 @@ pub struct ImpactAudit {
     /// For each reference, the square of the claim's error in energy,
     /// `K(claim - exact)/K(before)` (`None`: a claimed component not finite).
     pub errors: Vec<Option<QSqrt>>,
-    /// The references the claim matches within the tolerance.
+    /// The references the claim matches within the tolerance (the first name of each: its
+    /// equal answers match too).
     pub matches: Vec<String>,
+    /// The reference nearest the claim (its first name).
+    pub closest: Option<String>,
+    /// The engine's error split, when its step is compared with.
+    pub split: Option<ErrorSplit>,
     /// What is wrong with the claim (empty: it matches).
     pub findings: Vec<&'static str>,
-}
-
-/// The references a system is answered by: the three laws (one contact), or the simultaneous
-/// models and, unless `simultaneous_only`, sequential impacts in every order (up to 4 contacts)
-/// and 1, 4 and 10 sweeps of projected Gauss-Seidel (several).
-fn answers(system: &System, simultaneous_only: bool) -> Result<Vec<EngineReference>, Error> {
-    let lift = |v: &Vec2<Q>| Vec2::new(QSqrt::rational(v.x.clone()), QSqrt::rational(v.y.clone()));
-    if system.contacts.len() == 1 {
-        return Law::ALL
-            .iter()
-            .map(|&law| {
-                let answer = solve_exact(system, law)
-                    .map_err(|e| Error::new("scene", ErrorKind::Invalid(e.to_string())))?;
-                Ok(EngineReference {
-                    name: law.name().into(),
-                    bodies: answer
-                        .bodies
-                        .into_iter()
-                        .map(|b| (b.index, b.velocity, b.omega))
-                        .collect(),
-                })
-            })
-            .collect();
-    }
-    let n = system.contacts.len();
-    let mut models = vec![Model::SimultaneousNewton, Model::SimultaneousPoisson];
-    if !simultaneous_only {
-        if n <= 4 {
-            models.extend(orders(n).into_iter().map(Model::Sequential));
-        }
-        models.extend([Model::Pgs(1), Model::Pgs(4), Model::Pgs(10)]);
-    }
-    let mut out = Vec::new();
-    for model in models {
-        if let ModelOutcome::Answered(answers) = solve_several::<Q>(system, &model) {
-            for (k, a) in answers.into_iter().enumerate() {
-                let name = if k == 0 {
-                    model.to_string()
-                } else {
-                    format!("{model} (answer {})", k + 1)
-                };
-                out.push(EngineReference {
-                    name,
-                    bodies: a
-                        .bodies
-                        .iter()
-                        .map(|(i, v, w)| (*i, lift(v), QSqrt::rational(w.clone())))
-                        .collect(),
-                });
-            }
-        }
-    }
-    Ok(out)
 }
 
 /// Every moving body's (index, velocity, spin), as claimed.
@@ -174,17 +190,26 @@ fn claimed(value: &Value, system: &System) -> Result<(Option<String>, Option<Bod
     Ok((engine, Some(out)))
 }
 
-/// The claim's error against a reference, measured in energy: the square of
-/// `sqrt(K(claim - exact)/K(before))`, K the kinetic energy of the velocity differences (each
-/// body's mass and inertia weighing its own), so every component counts in proportion to the
-/// motion it carries and an exact zero is no special case. `None` when a claimed component is
-/// not finite, or nothing moves before.
-fn error(
+/// The bodies of a claim, lifted into Q(sqrt d) to meet the exact answers.
+fn lifted(claims: &[(usize, Vec2<Q>, Q)]) -> Vec<(usize, Vec2<QSqrt>, QSqrt)> {
+    let lift = |x: &Q| QSqrt::rational(x.clone());
+    claims
+        .iter()
+        .map(|(i, v, w)| (*i, Vec2::new(lift(&v.x), lift(&v.y)), lift(w)))
+        .collect()
+}
+
+/// The distance between two states of the moving bodies, measured in energy: the square of
+/// `sqrt(K(a - b)/K(before))`, K the kinetic energy of the velocity differences (each body's
+/// mass and inertia weighing its own), so every component counts in proportion to the motion
+/// it carries and an exact zero is no special case. `None` when `a` is empty (a claimed
+/// component not finite), or nothing moves before.
+fn distance(
     system: &System,
-    claimed: &[(usize, Vec2<Q>, Q)],
-    reference: &EngineReference,
+    a: &[(usize, Vec2<QSqrt>, QSqrt)],
+    b: &[(usize, Vec2<QSqrt>, QSqrt)],
 ) -> Option<QSqrt> {
-    if claimed.is_empty() {
+    if a.is_empty() {
         return None;
     }
     let lift = |x: &Q| QSqrt::rational(x.clone());
@@ -199,15 +224,13 @@ fn error(
             })
             .collect::<Vec<_>>()
     };
-    let difference = bodies(&mut claimed.iter().zip(&reference.bodies).map(
-        |((i, v, w), (_, rv, rw))| {
-            (
-                &system.bodies[*i],
-                Vec2::new(lift(&v.x) - &rv.x, lift(&v.y) - &rv.y),
-                lift(w) - rw,
-            )
-        },
-    ));
+    let difference = bodies(&mut a.iter().zip(b).map(|((i, v, w), (_, rv, rw))| {
+        (
+            &system.bodies[*i],
+            Vec2::new(v.x.clone() - &rv.x, v.y.clone() - &rv.y),
+            w.clone() - rw,
+        )
+    }));
     let before = bodies(&mut system.bodies.iter().filter(|b| b.moves()).map(|b| {
         (
             b,
@@ -219,8 +242,42 @@ fn error(
     (k0.sign() == Some(Ordering::Greater)).then(|| kinetic_energy(&difference) / &k0)
 }
 
-/// Audits one line of `impact --batch` (the `number`-th), with claims agreeing within the
-/// relative tolerance `rtol`.
+/// Whether every claimed component lies within `tolerance`'s `atol` or `ulps` of the
+/// reference's (false when neither is given).
+fn within_components(
+    claims: &[(usize, Vec2<Q>, Q)],
+    reference: &EngineReference,
+    tolerance: &ImpactTolerance,
+) -> bool {
+    let pairs = || {
+        claims
+            .iter()
+            .zip(&reference.bodies)
+            .flat_map(|((_, v, w), (_, rv, rw))| [(&v.x, &rv.x), (&v.y, &rv.y), (w, rw)])
+    };
+    let near = |claim: &Q, exact: &QSqrt| -> bool {
+        let by_atol = tolerance.atol.as_ref().is_some_and(|atol| {
+            let d = QSqrt::rational(claim.clone()) - exact;
+            let atol = QSqrt::rational(atol.clone());
+            d.cmp_exact(&atol) != Ordering::Greater && d.cmp_exact(&-atol) != Ordering::Less
+        });
+        let by_ulps = tolerance.ulps.is_some_and(|(n, format)| {
+            let (lo, hi) = if exact.d().is_none() {
+                (exact.x().clone(), exact.x().clone())
+            } else {
+                exact.bounds(40)
+            };
+            crate::batch::ulp_distance(claim, &lo, format)
+                .min(crate::batch::ulp_distance(claim, &hi, format))
+                <= n
+        });
+        by_atol || by_ulps
+    };
+    (tolerance.atol.is_some() || tolerance.ulps.is_some()) && pairs().all(|(c, x)| near(c, x))
+}
+
+/// Audits one line of `impact --batch` (the `number`-th): its claim against every exact answer
+/// (with the engine steps `engines` chooses), matching within `tolerance`.
 ///
 /// # Errors
 /// The line's JSON or scene is bad input, naming the field.
@@ -229,19 +286,27 @@ fn error(
 /// An engine that ignored the restitution of a wall: the claim matches no law, and the
 /// diagnosis says what happened.
 /// ```
-/// use rodimpact::batch::audit_impact;
-/// use rodimpact::field::q;
+/// use rodimpact::batch::{EngineChoice, ImpactTolerance, audit_impact};
 /// let line = r#"{"id": "puck", "body": [{"name": "puck", "mass": "1", "velocity": ["1", "0"]},
 ///   {"name": "wall", "fixed": true}], "contact": [{"bodies": ["puck", "wall"], "point": ["0", "0"],
 ///   "normal": ["-1", "0"], "e": "1/2"}],
 ///   "claimed": {"engine": "test", "bodies": {"puck": {"velocity": ["0", "0"], "omega": "0"}}}}"#;
-/// let audit = audit_impact(line, 1, &q(1, 1_000_000_000))?;
+/// let (tolerance, engines) = (ImpactTolerance::default(), EngineChoice::FromClaim);
+/// let audit = audit_impact(line, 1, &tolerance, &engines)?;
 /// assert_eq!(audit.findings, ["restitution-ignored", "energy-loss"]);
 /// let right = line.replace(r#"["0", "0"], "omega"#, r#"["-0.5", "0"], "omega"#);
-/// assert_eq!(audit_impact(&right, 1, &q(1, 1_000_000_000))?.matches, ["newton", "poisson", "energetic"]);
+/// let audit = audit_impact(&right, 1, &tolerance, &engines)?;
+/// assert_eq!(audit.closest.as_deref(), Some("newton")); // every law agrees without friction
+/// assert_eq!(audit.matches, ["newton"]); // the laws are one answer here: poisson, energetic, ... equal it
+/// assert!(audit.references[0].equal.contains(&"energetic".to_string()));
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn audit_impact(line: &str, number: usize, rtol: &Q) -> Result<ImpactAudit, Error> {
+pub fn audit_impact(
+    line: &str,
+    number: usize,
+    tolerance: &ImpactTolerance,
+    engines: &EngineChoice,
+) -> Result<ImpactAudit, Error> {
     let at = |e: Error| Error::new(format!("line {number}: {}", e.field), e.kind);
     let value: Value = serde_json::from_str(line).map_err(|e| {
         Error::new(
@@ -260,7 +325,16 @@ pub fn audit_impact(line: &str, number: usize, rtol: &Q) -> Result<ImpactAudit, 
         .get("id")
         .and_then(Value::as_str)
         .map_or_else(|| number.to_string(), String::from);
-    let references = answers(&system, false).map_err(at)?;
+    let profiles: Vec<Profile> = match engines {
+        EngineChoice::FromClaim => value
+            .get("claimed")
+            .and_then(profile_of_claim)
+            .into_iter()
+            .collect(),
+        EngineChoice::This(profile) => vec![profile.clone()],
+        EngineChoice::Every => every_replayed_profile(),
+    };
+    let references = exact_answers(&system, &profiles, false).map_err(at)?;
     let (engine, claimed) = claimed(&value, &system).map_err(at)?;
     let Some(claims) = claimed.clone() else {
         return Ok(ImpactAudit {
@@ -271,23 +345,39 @@ pub fn audit_impact(line: &str, number: usize, rtol: &Q) -> Result<ImpactAudit, 
             engine,
             errors: Vec::new(),
             matches: Vec::new(),
+            closest: None,
+            split: None,
             findings: Vec::new(),
         });
     };
+    let claim = lifted(&claims);
     let errors: Vec<Option<QSqrt>> = references
         .iter()
-        .map(|r| error(&system, &claims, r))
+        .map(|r| distance(&system, &claim, &r.bodies))
         .collect();
-    let tolerance = QSqrt::rational(rtol * rtol);
-    let within = |e: &QSqrt| e.cmp_exact(&tolerance) != Ordering::Greater;
+    let squared = QSqrt::rational(tolerance.rtol.clone() * &tolerance.rtol);
+    let matched = |r: &EngineReference, e: &Option<QSqrt>| {
+        e.as_ref()
+            .is_some_and(|e| e.cmp_exact(&squared) != Ordering::Greater)
+            || (!claims.is_empty() && within_components(&claims, r, tolerance))
+    };
     let matches: Vec<String> = references
         .iter()
         .zip(&errors)
-        .filter(|(_, e)| e.as_ref().is_some_and(within))
+        .filter(|(r, e)| matched(r, e))
         .map(|(r, _)| r.name.clone())
         .collect();
+    let closest = references
+        .iter()
+        .zip(&errors)
+        .filter_map(|(r, e)| e.as_ref().map(|e| (r, e)))
+        .min_by(|a, b| a.1.cmp_exact(b.1))
+        .map(|(r, _)| r.name.clone());
+    let split = profiles
+        .first()
+        .and_then(|p| error_split(&system, &references, &claim, p));
     let findings = if matches.is_empty() {
-        diagnose(&system, &claims, &references, rtol)
+        diagnose(&system, &claims, &references, &tolerance.rtol)
     } else {
         Vec::new()
     };
@@ -299,7 +389,36 @@ pub fn audit_impact(line: &str, number: usize, rtol: &Q) -> Result<ImpactAudit, 
         engine,
         errors,
         matches,
+        closest,
+        split,
         findings,
+    })
+}
+
+/// The engine's error split: its law against the nearest physical answer, its step against its
+/// law, the claim against its step. `None` when the step has no answer (its steps do not stop).
+fn error_split(
+    system: &System,
+    references: &[EngineReference],
+    claim: &[(usize, Vec2<QSqrt>, QSqrt)],
+    profile: &Profile,
+) -> Option<ErrorSplit> {
+    let step = references.iter().find(|r| r.is(&profile.to_string()))?;
+    let law_answer_name = law_name(profile.engine.law(), system.contacts.len());
+    let law = references.iter().find(|r| r.is(&law_answer_name))?;
+    let (nearest, of_law) = references
+        .iter()
+        .filter(|r| r.kind == Kind::Physical)
+        .filter_map(|r| distance(system, &law.bodies, &r.bodies).map(|d| (r, d)))
+        .min_by(|a, b| a.1.cmp_exact(&b.1))
+        .map(|(r, d)| (r.name.clone(), d))?;
+    Some(ErrorSplit {
+        profile: profile.clone(),
+        law: law_answer_name,
+        nearest,
+        of_law,
+        of_iterations: distance(system, &step.bodies, &law.bodies)?,
+        of_rounding: distance(system, claim, &step.bodies),
     })
 }
 
@@ -353,9 +472,9 @@ fn diagnose(
             .collect(),
         ..system.clone()
     };
-    if let Ok(plastic) = answers(&sticking, true)
+    if let Ok(plastic) = exact_answers(&sticking, &[], true)
         && plastic.iter().any(|r| {
-            error(system, claims, r)
+            distance(system, &lifted(claims), &r.bodies)
                 .is_some_and(|e| e.cmp_exact(&QSqrt::rational(rtol * rtol)) != Ordering::Greater)
         })
         && system.contacts.iter().any(|c| c.e.is_positive())

@@ -84,13 +84,33 @@ pub(super) fn velocities<F: Field>(u0: &[F], w: &[Vec<F>], lam: &[F]) -> Vec<F> 
 }
 
 /// The answer of `model` from the normal and tangential impulses at each contact: the bodies
-/// after and the ledger.
+/// after and the ledger; one stage (the whole impulses).
 pub(super) fn finish<F: Field>(
     system: &System,
     contacts: &Contacts<F>,
     model: Model,
     (impulses, tangential, split_indeterminate): (Vec<F>, Vec<F>, bool),
     impacts: Vec<(usize, F)>,
+) -> ModelAnswer<F> {
+    let stages = vec![(impulses.clone(), tangential.clone())];
+    finish_staged(
+        system,
+        contacts,
+        model,
+        (impulses, tangential, split_indeterminate),
+        impacts,
+        stages,
+    )
+}
+
+/// [`finish`] with the model's stages.
+pub(super) fn finish_staged<F: Field>(
+    system: &System,
+    contacts: &Contacts<F>,
+    model: Model,
+    (impulses, tangential, split_indeterminate): (Vec<F>, Vec<F>, bool),
+    impacts: Vec<(usize, F)>,
+    stages: Vec<(Vec<F>, Vec<F>)>,
 ) -> ModelAnswer<F> {
     let planar = &contacts.planar;
     let pairs: Vec<[F; 2]> = impulses
@@ -133,5 +153,6 @@ pub(super) fn finish<F: Field>(
         tangential,
         split_indeterminate,
         impacts,
+        stages,
     }
 }

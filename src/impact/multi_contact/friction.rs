@@ -5,7 +5,8 @@
 //! slip at the phase's end. Each phase tries 6^n modes, so a system with friction holds at most
 //! [`MAX_FRICTIONAL_CONTACTS`](crate::model::MAX_FRICTIONAL_CONTACTS) contacts.
 
-use super::common::{Contacts, finish, negative_part, nonnegative};
+use super::common::{Contacts, finish, finish_staged, negative_part, nonnegative};
+use super::frictionless::lcp;
 use super::{Model, ModelAnswer, ModelOutcome};
 use crate::field::Field;
 use crate::impact::coulomb::cone_excess;
@@ -179,6 +180,27 @@ pub(super) fn with_friction<F: Field>(
     let finish_one = |(ln, lt, free): (Vec<F>, Vec<F>, bool)| {
         finish(system, contacts, model.clone(), (ln, lt, free), Vec::new())
     };
+    let finish_staged_one = |(ln, lt, free): (Vec<F>, Vec<F>, bool), stages| {
+        finish_staged(
+            system,
+            contacts,
+            model.clone(),
+            (ln, lt, free),
+            Vec::new(),
+            stages,
+        )
+    };
+    // The velocities `start + W (ln, lt)` along the normals (`bn`, `bt`: blocks 0 and 1) or
+    // the tangents (blocks 2 and 3).
+    let after = |start: &[F], (bn, bt): (&[Vec<F>], &[Vec<F>]), ln: &[F], lt: &[F]| -> Vec<F> {
+        (0..n)
+            .map(|i| {
+                (0..n).fold(start[i].clone(), |acc, j| {
+                    acc + &(bn[i][j].clone() * &ln[j]) + &(bt[i][j].clone() * &lt[j])
+                })
+            })
+            .collect()
+    };
     let answers: Vec<ModelAnswer<F>> = match model {
         Model::SimultaneousNewton => {
             let off: Vec<F> = (0..n)
@@ -192,17 +214,8 @@ pub(super) fn with_friction<F: Field>(
         Model::SimultaneousPoisson => {
             let mut all = Vec::new();
             for (lc, tc, free_c) in friction_phase(&blocks, (u0, &ut0), mu, (&zero, &zero)) {
-                let after = |start: &[F], bn: &[Vec<F>], bt: &[Vec<F>]| -> Vec<F> {
-                    (0..n)
-                        .map(|i| {
-                            (0..n).fold(start[i].clone(), |acc, j| {
-                                acc + &(bn[i][j].clone() * &lc[j]) + &(bt[i][j].clone() * &tc[j])
-                            })
-                        })
-                        .collect()
-                };
-                let un_c = after(u0, &blocks[0], &blocks[1]);
-                let ut_c = after(&ut0, &blocks[2], &blocks[3]);
+                let un_c = after(u0, (&blocks[0], &blocks[1]), &lc, &tc);
+                let ut_c = after(&ut0, (&blocks[2], &blocks[3]), &lc, &tc);
                 let base: Vec<F> = (0..n)
                     .map(|i| Law::poisson_restitution(&contacts.e[i], &lc[i]))
                     .collect();
@@ -210,12 +223,39 @@ pub(super) fn with_friction<F: Field>(
                 {
                     let ln = (0..n).map(|i| lc[i].clone() + &le[i]).collect();
                     let lt = (0..n).map(|i| tc[i].clone() + &te[i]).collect();
-                    all.push(finish_one((ln, lt, free_c || free_e)));
+                    let stages = vec![(lc.clone(), tc.clone()), (le, te)];
+                    all.push(finish_staged_one((ln, lt, free_c || free_e), stages));
                 }
             }
             all
         }
-        Model::Sequential(_) | Model::Pgs(_) => return ModelOutcome::FrictionlessOnly,
+        // Friction without restitution (the first stage: lcp-newton with e = 0, the Poisson
+        // law's compression), then the normals alone to -e u0^-: an LCP in the total normal
+        // impulse, u1 - W lam1 + e u0^- + W lam >= 0 (`lcp`), the tangential impulses kept.
+        Model::Split => {
+            let mut all = Vec::new();
+            for (l1, t1, free) in friction_phase(&blocks, (u0, &ut0), mu, (&zero, &zero)) {
+                let u1 = after(u0, (&blocks[0], &blocks[1]), &l1, &t1);
+                let q: Vec<F> = (0..n)
+                    .map(|i| {
+                        let pushed = (0..n).fold(F::zero(), |acc, j| {
+                            acc + &(blocks[0][i][j].clone() * &l1[j])
+                        });
+                        u1[i].clone()
+                            - &pushed
+                            - &Law::newton_leaving(&contacts.e[i], &negative_part(&u0[i]))
+                    })
+                    .collect();
+                for total in lcp(w, &q) {
+                    let second: Vec<F> = (0..n).map(|i| total[i].clone() - &l1[i]).collect();
+                    let stages = vec![(l1.clone(), t1.clone()), (second, zero.clone())];
+                    all.push(finish_staged_one((total, t1.clone(), free), stages));
+                }
+            }
+            all
+        }
+        Model::Sequential(_) => return ModelOutcome::FrictionlessOnly,
+        Model::Pgs(_) | Model::Engine(_) => unreachable!("the iterative models are solved apart"),
     };
     // Answers that differ only in how an indeterminate friction split is shared are one.
     let mut distinct: Vec<ModelAnswer<F>> = Vec::new();

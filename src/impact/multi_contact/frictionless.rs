@@ -2,9 +2,9 @@
 //! complementarity problems (every active set up to [`MAX_ENUMERATED`] contacts, Lemke's
 //! method beyond), sequential impacts in an order, and projected Gauss-Seidel.
 
-use super::common::{Contacts, finish, negative_part, nonnegative, velocities};
+use super::common::{Contacts, finish_staged, negative_part, nonnegative, velocities};
 use super::lemke::lemke;
-use super::{MAX_ENUMERATED, MAX_SEQUENTIAL_IMPACTS, Model, ModelOutcome};
+use super::{MAX_ENUMERATED, MAX_SEQUENTIAL_IMPACTS, Model, ModelAnswer, ModelOutcome};
 use crate::field::Field;
 use crate::field::linear::solve_linear;
 use crate::impact::law::Law;
@@ -14,7 +14,7 @@ use std::cmp::Ordering;
 /// The solutions of the LCP `lam >= 0, q + W lam >= 0, lam . (q + W lam) = 0` that differ in
 /// their velocities (for a positive semidefinite W, one or none): by active sets up to
 /// [`MAX_ENUMERATED`] contacts, by Lemke's method beyond.
-fn lcp<F: Field>(w: &[Vec<F>], q: &[F]) -> Vec<Vec<F>> {
+pub(super) fn lcp<F: Field>(w: &[Vec<F>], q: &[F]) -> Vec<Vec<F>> {
     if q.len() > MAX_ENUMERATED {
         return lemke(w, q).into_iter().collect();
     }
@@ -76,30 +76,41 @@ pub(super) fn frictionless<F: Field>(
     model: &Model,
 ) -> ModelOutcome<F> {
     let n = contacts.len();
-    let answer = |impulses: Vec<F>, impacts: Vec<(usize, F)>| {
-        let tangential = vec![F::zero(); impulses.len()];
-        finish(
+    let zero = || vec![F::zero(); n];
+    let staged = |stages: Vec<Vec<F>>, impacts: Vec<(usize, F)>| {
+        let total: Vec<F> = (0..n)
+            .map(|i| stages.iter().fold(F::zero(), |acc, stage| acc + &stage[i]))
+            .collect();
+        finish_staged(
             system,
             contacts,
             model.clone(),
-            (impulses, tangential, false),
+            (total, zero(), false),
             impacts,
+            stages.into_iter().map(|stage| (stage, zero())).collect(),
         )
     };
-    match model {
-        Model::SimultaneousNewton => {
-            let q: Vec<F> = (0..n)
-                .map(|i| {
-                    u0[i].clone() - &Law::newton_leaving(&contacts.e[i], &negative_part(&u0[i]))
-                })
-                .collect();
-            let all = lcp(w, &q);
-            if all.is_empty() {
-                ModelOutcome::NoSolution
-            } else {
-                ModelOutcome::Answered(all.into_iter().map(|lam| answer(lam, Vec::new())).collect())
-            }
+    let answered = |answers: Vec<ModelAnswer<F>>| {
+        if answers.is_empty() {
+            ModelOutcome::NoSolution
+        } else {
+            ModelOutcome::Answered(answers)
         }
+    };
+    // The simultaneous Newton law's LCP: u0 + W lam >= -e u0^-, complementary.
+    let newton = || -> Vec<Vec<F>> {
+        let q: Vec<F> = (0..n)
+            .map(|i| u0[i].clone() - &Law::newton_leaving(&contacts.e[i], &negative_part(&u0[i])))
+            .collect();
+        lcp(w, &q)
+    };
+    match model {
+        Model::SimultaneousNewton => answered(
+            newton()
+                .into_iter()
+                .map(|lam| staged(vec![lam], Vec::new()))
+                .collect(),
+        ),
         Model::SimultaneousPoisson => {
             let mut answers = Vec::new();
             for compression in lcp(w, u0) {
@@ -109,17 +120,24 @@ pub(super) fn frictionless<F: Field>(
                     .collect();
                 let q = velocities(&u_c, w, &pushed);
                 for extra in lcp(w, &q) {
-                    let lam: Vec<F> = (0..n)
-                        .map(|i| compression[i].clone() + &pushed[i] + &extra[i])
-                        .collect();
-                    answers.push(answer(lam, Vec::new()));
+                    let expansion: Vec<F> = (0..n).map(|i| pushed[i].clone() + &extra[i]).collect();
+                    answers.push(staged(vec![compression.clone(), expansion], Vec::new()));
                 }
             }
-            if answers.is_empty() {
-                ModelOutcome::NoSolution
-            } else {
-                ModelOutcome::Answered(answers)
+            answered(answers)
+        }
+        // Without friction the first stage is the compression, and the second's LCP in the total
+        // impulse, u1 - W lam1 + e u0^- + W lam = u0 + e u0^- + W lam, the simultaneous Newton
+        // law's: split is that law reached in two stages.
+        Model::Split => {
+            let mut answers = Vec::new();
+            for first in lcp(w, u0) {
+                for total in newton() {
+                    let second: Vec<F> = (0..n).map(|i| total[i].clone() - &first[i]).collect();
+                    answers.push(staged(vec![first.clone(), second], Vec::new()));
+                }
             }
+            answered(answers)
         }
         Model::Sequential(order) => {
             let mut lam = vec![F::zero(); n];
@@ -141,26 +159,11 @@ pub(super) fn frictionless<F: Field>(
                     }
                 }
                 if !fired {
-                    return ModelOutcome::Answered(vec![answer(lam, impacts)]);
+                    return ModelOutcome::Answered(vec![staged(vec![lam], impacts)]);
                 }
             }
         }
-        Model::Pgs(sweeps) => {
-            let mut lam = vec![F::zero(); n];
-            for _ in 0..*sweeps {
-                for i in 0..n {
-                    if w[i][i].is_zero() {
-                        continue;
-                    }
-                    let u = velocities(u0, w, &lam);
-                    let target =
-                        u[i].clone() - &Law::newton_leaving(&contacts.e[i], &negative_part(&u0[i]));
-                    let next = lam[i].clone() - &(target / &w[i][i]);
-                    lam[i] = if nonnegative(&next) { next } else { F::zero() };
-                }
-            }
-            ModelOutcome::Answered(vec![answer(lam, Vec::new())])
-        }
+        Model::Pgs(_) | Model::Engine(_) => unreachable!("the iterative models are solved apart"),
     }
 }
 

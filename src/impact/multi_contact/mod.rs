@@ -33,9 +33,14 @@
 mod common;
 mod friction;
 mod frictionless;
+mod iterative;
+
+pub use iterative::MAX_ENGINE_STEPS;
 mod lemke;
 
 use crate::field::Field;
+use crate::impact::engines::{Engine, Profile};
+use crate::impact::law::Law;
 use crate::impact::ledger::EnergyLedger;
 use crate::mechanics::planar::Vec2;
 use crate::model::System;
@@ -62,13 +67,22 @@ pub enum Model {
     /// Single-contact impacts one at a time, in this order of the contacts (0-based), in passes
     /// until one fires nothing.
     Sequential(Vec<usize>),
-    /// K sweeps of projected Gauss-Seidel from zero impulses.
+    /// K sweeps of projected Gauss-Seidel from zero impulses (a normal row, then a friction
+    /// row, at each contact).
     Pgs(u32),
+    /// Friction without restitution (the simultaneous Newton law with every e = 0), then
+    /// restitution without friction (a normal-only LCP that ends at `-e u0_n` or more).
+    Split,
+    /// An engine's step, replayed exactly ([`crate::impact::Engine::replayed`]), or the law its
+    /// iterations converge to.
+    Engine(Profile),
 }
 
 impl Model {
-    /// One model by name, for `n` contacts: `simultaneous-newton`, `simultaneous-poisson`,
-    /// `sequential:2,1,3` (an order of the contacts, 1-based) or `pgs:K`.
+    /// One model by name, for `n` contacts: `simultaneous-newton` (or `lcp-newton`, the same
+    /// law), `simultaneous-poisson` (or `lcp-poisson`), `split`, `sequential:2,1,3` (an order of
+    /// the contacts, 1-based), `pgs:K`, or an engine's profile (`pymunk-7`, `box2d-2.3:scale=16`,
+    /// ...: [`Profile::parse`]).
     ///
     /// # Errors
     /// What is wrong with the name, in words.
@@ -79,13 +93,21 @@ impl Model {
     /// assert_eq!(Model::parse("sequential:2,1", 2), Ok(Model::Sequential(vec![1, 0])));
     /// assert_eq!(Model::parse("pgs:3", 2), Ok(Model::Pgs(3)));
     /// assert!(Model::parse("sequential:1,1", 2).is_err());
+    /// assert_eq!(Model::parse("lcp-newton", 2), Ok(Model::SimultaneousNewton));
     /// ```
     pub fn parse(text: &str, n: usize) -> Result<Model, String> {
         let text = text.trim();
         match text {
-            "simultaneous-newton" => return Ok(Model::SimultaneousNewton),
-            "simultaneous-poisson" => return Ok(Model::SimultaneousPoisson),
+            "simultaneous-newton" | "lcp-newton" => return Ok(Model::SimultaneousNewton),
+            "simultaneous-poisson" | "lcp-poisson" => return Ok(Model::SimultaneousPoisson),
+            "split" => return Ok(Model::Split),
             _ => {}
+        }
+        if Engine::ALL
+            .iter()
+            .any(|e| text.split(':').next() == Some(e.name()))
+        {
+            return Profile::parse(text).map(Model::Engine);
         }
         if let Some(order) = text.strip_prefix("sequential:") {
             let parsed: Option<Vec<usize>> = order
@@ -123,9 +145,22 @@ impl Model {
                 .ok_or_else(|| format!("pgs:K takes K from 1 to {MAX_SWEEPS}"));
         }
         Err(format!(
-            "expected simultaneous-newton, simultaneous-poisson, sequential:ORDER or pgs:K, got '{}'",
+            "expected simultaneous-newton, simultaneous-poisson, split, sequential:ORDER, pgs:K or an engine ({}), got '{}'",
+            Engine::ALL.map(Engine::name).join(", "),
             crate::echo::echo(text)
         ))
+    }
+
+    /// The model of several contacts that is `law` for one: the simultaneous Newton law is
+    /// lcp-newton, the simultaneous Poisson law lcp-poisson; `None` for the laws that follow
+    /// Routh's path.
+    pub fn of_law(law: Law) -> Option<Model> {
+        match law {
+            Law::LcpNewton => Some(Model::SimultaneousNewton),
+            Law::LcpPoisson => Some(Model::SimultaneousPoisson),
+            Law::Split => Some(Model::Split),
+            Law::Newton | Law::Poisson | Law::Energetic => None,
+        }
     }
 }
 
@@ -139,6 +174,8 @@ impl fmt::Display for Model {
                 write!(f, "sequential:{}", order.join(","))
             }
             Model::Pgs(k) => write!(f, "pgs:{k}"),
+            Model::Split => f.write_str("split"),
+            Model::Engine(profile) => write!(f, "{profile}"),
         }
     }
 }
@@ -150,10 +187,10 @@ pub enum ModelOutcome<F> {
     Answered(Vec<ModelAnswer<F>>),
     /// No impulses satisfy the model.
     NoSolution,
-    /// A sequential model still firing after [`MAX_SEQUENTIAL_IMPACTS`] impacts.
+    /// A sequential model still firing after [`MAX_SEQUENTIAL_IMPACTS`] impacts, or an
+    /// engine's steps after [`MAX_ENGINE_STEPS`].
     DoesNotStop,
-    /// The model is frictionless here (sequential impacts, projected Gauss-Seidel), and the
-    /// scene has friction.
+    /// The model is frictionless here (sequential impacts), and the scene has friction.
     FrictionlessOnly,
 }
 
@@ -203,6 +240,10 @@ pub struct ModelAnswer<F> {
     pub ledger: Ledger<F>,
     /// The single-contact impacts a sequential model fired, in order: (contact, impulse).
     pub impacts: Vec<(usize, F)>,
+    /// The model's stages, each the (normal, tangential) impulses it adds at every contact:
+    /// compression and expansion for the simultaneous Poisson law, friction then restitution
+    /// for split, one stage otherwise.
+    pub stages: Vec<(Vec<F>, Vec<F>)>,
 }
 
 /// Answers the system's contacts under `model`.
@@ -228,6 +269,46 @@ pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F
     let contacts = common::Contacts::<F>::of(system);
     let w = contacts.delassus();
     let u0 = contacts.before(0);
+    let iterated = |(lam_n, lam_t): (Vec<F>, Vec<F>)| {
+        ModelOutcome::Answered(vec![common::finish(
+            system,
+            &contacts,
+            model.clone(),
+            (lam_n, lam_t, false),
+            Vec::new(),
+        )])
+    };
+    let blocks = || iterative::Blocks::of(&contacts, &w);
+    let ut0 = || contacts.before(1);
+    match model {
+        Model::Pgs(sweeps) => {
+            return iterated(iterative::pgs(&contacts, &blocks(), (&u0, &ut0()), *sweeps));
+        }
+        Model::Engine(profile) => {
+            let (w_blocks, ut0) = (blocks(), ut0());
+            let u = (&u0[..], &ut0[..]);
+            return match profile.engine {
+                Engine::Pymunk7 => {
+                    let iterations = profile.engine.iterations();
+                    match iterative::pymunk(system, &contacts, &w_blocks, u, iterations) {
+                        Some(impulses) => iterated(impulses),
+                        None => ModelOutcome::DoesNotStop,
+                    }
+                }
+                Engine::Box2d23 => {
+                    iterated(iterative::box2d(system, &contacts, &w_blocks, u, profile))
+                }
+                Engine::Bullet3 => {
+                    iterated(iterative::bullet(system, &contacts, &w_blocks, u, profile))
+                }
+                Engine::Box2d3 | Engine::Rapier036 => {
+                    let converged = Model::of_law(profile.engine.law()).expect("an engine's law");
+                    relabel(solve_several(system, &converged), model)
+                }
+            };
+        }
+        _ => {}
+    }
     if system
         .contacts
         .iter()
@@ -236,6 +317,22 @@ pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F
         friction::with_friction(system, &contacts, &w, &u0, model)
     } else {
         frictionless::frictionless(system, &contacts, &w, &u0, model)
+    }
+}
+
+/// `outcome`'s answers under the name of `model`.
+fn relabel<F>(outcome: ModelOutcome<F>, model: &Model) -> ModelOutcome<F> {
+    match outcome {
+        ModelOutcome::Answered(answers) => ModelOutcome::Answered(
+            answers
+                .into_iter()
+                .map(|a| ModelAnswer {
+                    model: model.clone(),
+                    ..a
+                })
+                .collect(),
+        ),
+        other => other,
     }
 }
 

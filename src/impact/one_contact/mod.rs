@@ -19,14 +19,16 @@ mod path;
 pub use path::{Jam, Roots};
 
 use super::coulomb::{Mode, cone_excess};
+use super::engines::Profile;
 use super::jacobian::{ContactMatrix, coordinate_changes, velocities_before};
 use super::law::{Ends, Law};
 use super::ledger::{Balance, Balances, EnergyLedger};
+use super::multi_contact::{Model, ModelOutcome, solve_several};
 use super::planar::PlanarSystem;
 use crate::field::{Field, Q, QSqrt};
 use crate::mechanics::planar::{PlanarBody, Vec2, angular_momentum, kinetic_energy};
 use crate::model::{Mobility, System};
-use path::{Segment, compression_end, end, friction_work, normal_work, path, segment_at};
+use path::{Segment, compression_end, end, friction_work, normal_work, path, segment_at, staged};
 use std::cmp::Ordering;
 
 /// A phase of the impact as reported: its mode between two values of the normal impulse.
@@ -56,8 +58,10 @@ pub struct BodyAfter<F> {
 /// One contact's impact answered under one law.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LawAnswer<F> {
-    /// The law.
+    /// The law (an engine's: the law its iterations converge to).
     pub law: Law,
+    /// The engine whose step this is, for an engine's answer.
+    pub engine: Option<Profile>,
     /// Every moving body after the impact, in the system's order.
     pub bodies: Vec<BodyAfter<F>>,
     /// The impulse P on body A, in the world frame.
@@ -97,6 +101,9 @@ pub enum ImpactError {
     /// The impact has no end under a law.
     #[error("{0}")]
     Jam(Jam),
+    /// An engine's law or step gives no answer (no solution, or steps that do not stop).
+    #[error("{0}: {1}")]
+    Unanswered(String, &'static str),
 }
 
 /// The system's one contact in a field: the bodies' coordinates and the contact's rows, W and
@@ -166,12 +173,67 @@ pub fn contact_matrix<F: Field>(system: &System) -> (ContactMatrix<F>, [F; 2]) {
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn solve_contact<F: Roots>(system: &System, law: Law) -> Result<LawAnswer<F>, ImpactError> {
+    solve_one(system, law, None)
+}
+
+/// Answers the system's one contact as `profile`'s engine does: one step of its solver replayed
+/// exactly ([`crate::impact::Engine::replayed`]), or the law its substeps converge to. The
+/// answer's `law` is the engine's converged law, against which its balances are checked (a step
+/// of a few iterations need not reach it).
+///
+/// # Errors
+/// Those of [`solve_contact`], or [`ImpactError::Unanswered`] when the engine's steps do not
+/// stop.
+///
+/// # Examples
+/// pymunk's 10 iterations on the tilted rod: 6e-3 from lcp-newton's exact answer, and gaining
+/// energy as it does.
+/// ```
+/// use rodimpact::{field::Q, model::parse_toml};
+/// use rodimpact::impact::{Engine, Profile, solve_engine};
+/// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/tilted-rod-rough-floor.toml")).unwrap();
+/// let step = solve_engine::<Q>(&parse_toml("tilted", &text)?, &Profile::of(Engine::Pymunk7))?;
+/// assert!(step.energy.gain());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn solve_engine<F: Roots>(
+    system: &System,
+    profile: &Profile,
+) -> Result<LawAnswer<F>, ImpactError> {
+    solve_one(system, profile.engine.law(), Some(profile))
+}
+
+/// The one contact under `law`, or as `engine` computes it.
+fn solve_one<F: Roots>(
+    system: &System,
+    law: Law,
+    engine: Option<&Profile>,
+) -> Result<LawAnswer<F>, ImpactError> {
     let one = OneContact::<F>::of(system)?;
     let c = &system.contacts[0];
     let (e, mu) = (F::from_rational(&c.e), F::from_rational(&c.mu));
-    let segments = path(&one.w, one.u0.clone(), &mu).map_err(ImpactError::Jam)?;
-    let lam_c = compression_end(&segments).map_err(ImpactError::Jam)?;
-    let lam = end(&segments, &lam_c, &one.u0[0], &e, law).map_err(ImpactError::Jam)?;
+    let staged_model = match engine {
+        Some(profile) => Some(Model::Engine(profile.clone())),
+        None => Model::of_law(law),
+    };
+    let (segments, lam_c, lam) = match staged_model {
+        Some(model) => {
+            let stages = stages_of::<F>(system, &model)?;
+            let segments =
+                staged(&one.w, one.u0.clone(), &mu, &stages).map_err(ImpactError::Jam)?;
+            let lam_c = compression_end(&segments).map_err(ImpactError::Jam)?;
+            let lam = stages
+                .iter()
+                .fold(F::zero(), |acc, (d_lam, _, _)| acc + d_lam);
+            (segments, lam_c, lam)
+        }
+        None => {
+            let segments = path(&one.w, one.u0.clone(), &mu).map_err(ImpactError::Jam)?;
+            let lam_c = compression_end(&segments).map_err(ImpactError::Jam)?;
+            let lam = end(&segments, &lam_c, &one.u0[0], &e, law).map_err(ImpactError::Jam)?;
+            (segments, lam_c, lam)
+        }
+    };
     let [_, _, tau] = segment_at(&segments, &lam).at(&lam);
     let planar = &one.planar;
     let (normal, tangent) = (&planar.normals[0], planar.normals[0].perp());
@@ -210,6 +272,7 @@ pub fn solve_contact<F: Roots>(system: &System, law: Law) -> Result<LawAnswer<F>
     );
     Ok(LawAnswer {
         law,
+        engine: engine.cloned(),
         energy,
         phases: phases(&segments, &lam),
         bodies,
@@ -223,6 +286,34 @@ pub fn solve_contact<F: Roots>(system: &System, law: Law) -> Result<LawAnswer<F>
         work,
         balances,
     })
+}
+
+/// The stages of `model` at the system's one contact: the (normal, tangential) impulse each
+/// adds, and whether Coulomb's law acts in it (not in split's restitution stage).
+fn stages_of<F: Field>(system: &System, model: &Model) -> Result<Vec<(F, F, bool)>, ImpactError> {
+    let unanswered = |why| ImpactError::Unanswered(model.to_string(), why);
+    match solve_several::<F>(system, model) {
+        ModelOutcome::Answered(answers) => {
+            let answer = answers.into_iter().next().expect("an answer");
+            let restitution_alone = match model {
+                Model::Split => true,
+                Model::Engine(p) => !p.engine.replayed() && p.engine.law() == Law::Split,
+                _ => false,
+            };
+            Ok(answer
+                .stages
+                .into_iter()
+                .enumerate()
+                .map(|(k, (normal, tangential))| {
+                    let (n, t) = (normal[0].clone(), tangential[0].clone());
+                    (n, t, !(restitution_alone && k == 1))
+                })
+                .collect())
+        }
+        ModelOutcome::NoSolution => Err(unanswered("no impulses satisfy it")),
+        ModelOutcome::DoesNotStop => Err(unanswered("its steps do not stop")),
+        ModelOutcome::FrictionlessOnly => Err(unanswered("it takes no friction")),
+    }
 }
 
 /// Every moving body after the impact, with its pin's impulse (its momentum change less the
@@ -412,6 +503,17 @@ pub fn solve_exact(system: &System, law: Law) -> Result<LawAnswer<QSqrt>, Impact
     }
 }
 
+/// [`solve_engine`] exactly: an engine's step and the laws engines converge to are rational.
+///
+/// # Errors
+/// Those of [`solve_engine`].
+pub fn solve_engine_exact(
+    system: &System,
+    profile: &Profile,
+) -> Result<LawAnswer<QSqrt>, ImpactError> {
+    solve_engine::<Q>(system, profile).map(LawAnswer::lift)
+}
+
 impl LawAnswer<Q> {
     /// The same answer in Q(sqrt d).
     fn lift(self) -> LawAnswer<QSqrt> {
@@ -419,6 +521,7 @@ impl LawAnswer<Q> {
         let v = |p: Vec2<Q>| Vec2::new(QSqrt::rational(p.x), QSqrt::rational(p.y));
         LawAnswer {
             law: self.law,
+            engine: self.engine,
             bodies: self
                 .bodies
                 .into_iter()

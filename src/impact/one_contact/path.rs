@@ -188,6 +188,58 @@ pub(crate) fn path<F: Field>(
     }
 }
 
+/// The path of a law that imposes itself at once (an engine's law): straight stages in the
+/// impulse plane, each adding `(d_lam, d_tau)` (`friction`: whether Coulomb's law acts in it),
+/// the relative velocity linear along each; a stage that adds no normal impulse adds nothing.
+/// A stage's mode is what friction does at its end: none (no friction), stick (no slip) or a
+/// slide with the slip's sign.
+pub(crate) fn staged<F: Field>(
+    w: &ContactMatrix<F>,
+    u0: [F; 2],
+    mu: &F,
+    stages: &[(F, F, bool)],
+) -> Result<Vec<Segment<F>>, Jam> {
+    let mut segments: Vec<Segment<F>> = Vec::new();
+    let mut from = F::zero();
+    let mut start = [u0[0].clone(), u0[1].clone(), F::zero()];
+    for (d_lam, d_tau, friction) in stages {
+        if d_lam.is_zero() {
+            continue;
+        }
+        let tau_slope = d_tau.clone() / d_lam;
+        let slope = [
+            w.nn.clone() + &(w.nt.clone() * &tau_slope),
+            w.nt.clone() + &(w.tt.clone() * &tau_slope),
+            tau_slope,
+        ];
+        let to = from.clone() + d_lam;
+        let end: [F; 3] = std::array::from_fn(|k| start[k].clone() + &(slope[k].clone() * d_lam));
+        let mode = if !friction || mu.is_zero() {
+            Mode::Frictionless
+        } else {
+            match sign(&end[1])? {
+                Ordering::Equal => Mode::Stick,
+                slip => Mode::Slide {
+                    forward: slip == Ordering::Greater,
+                },
+            }
+        };
+        if let Some(last) = segments.last_mut() {
+            last.to = Some(from.clone());
+        }
+        segments.push(Segment {
+            mode,
+            from: from.clone(),
+            to: None,
+            start: start.clone(),
+            slope,
+        });
+        from = to;
+        start = end;
+    }
+    Ok(segments)
+}
+
 /// The segment holding `lam` (the last one past the end).
 pub(crate) fn segment_at<'a, F: Field>(path: &'a [Segment<F>], lam: &F) -> &'a Segment<F> {
     path.iter()
@@ -297,6 +349,9 @@ pub(crate) fn end<F: Roots>(
     law: Law,
 ) -> Result<F, Jam> {
     match law {
+        Law::LcpNewton | Law::LcpPoisson | Law::Split => {
+            unreachable!("the engines' laws end no path: one_contact solves them apart")
+        }
         Law::Poisson => Ok(lam_c.clone() + &Law::poisson_restitution(e, lam_c)),
         Law::Newton => {
             let target = Law::newton_leaving(e, u_n0);

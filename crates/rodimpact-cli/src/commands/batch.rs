@@ -4,16 +4,13 @@ use super::Failure;
 use clap::{Args, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use rodimpact::app::batch::{BatchOptions, Spelling};
-use rodimpact::batch::{
-    Arithmetic, Batch, FloatFormat, KnownFindings, MAX_EXPECTED_BYTES, read_header, run,
-    scene_columns,
-};
+use rodimpact::batch::{Arithmetic, Batch, FloatFormat, read_header, run, scene_columns};
 use rodimpact::echo::{echo, echo_path};
 use rodimpact::io::{AtomicFile, write_atomic};
 use rodimpact::report::{batch_passed, batch_report, batch_summary_json, expected_report};
 use rodimpact::{Error, ErrorKind};
-use std::io::{BufReader, IsTerminal, Read, Write};
-use std::path::{Path, PathBuf};
+use std::io::{BufReader, IsTerminal, Write};
+use std::path::PathBuf;
 
 #[derive(Args, Debug)]
 pub(crate) struct BatchArgs {
@@ -108,7 +105,11 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     };
     let jobs = args.jobs.as_deref().map(parse_jobs).transpose()?;
     let checked = options.checked()?;
-    let expected = args.expect.as_deref().map(read_expected).transpose()?;
+    let expected = args
+        .expect
+        .as_deref()
+        .map(rodimpact::app::impact_batch::read_known_findings)
+        .transpose()?;
     let read_error = |why: std::io::Error| {
         Error::io(
             "FILE",
@@ -194,19 +195,6 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     } else {
         Err(Failure::Check)
     }
-}
-
-/// The baseline of `--expect`.
-fn read_expected(path: &Path) -> Result<KnownFindings, Error> {
-    let name = echo_path(path);
-    let mut text = String::new();
-    std::fs::File::open(path)
-        .and_then(|f| {
-            f.take(MAX_EXPECTED_BYTES as u64 + 1)
-                .read_to_string(&mut text)
-        })
-        .map_err(|why| Error::io("expect", format!("cannot read {name}"), why))?;
-    KnownFindings::parse(&name, &text)
 }
 
 /// The help of the FILE argument: every scene column, the claims, and the rest passed through.

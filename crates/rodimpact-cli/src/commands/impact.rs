@@ -2,14 +2,15 @@
 
 use super::{Failure, parse_digits, print_out};
 use clap::{Args, ValueEnum};
-use rodimpact::app::impact::{answer_impact, read_scene_file};
-use rodimpact::batch::audit_impact;
-use rodimpact::field::Q;
+use rodimpact::app::impact::{answer_impact, parse_engine, read_scene_file};
+use rodimpact::app::impact_batch::{ImpactBatchOptions, read_known_findings, run};
+use rodimpact::batch::FloatFormat;
 use rodimpact::impact::Law;
-use rodimpact::model::MAX_SCENE_BYTES;
-use rodimpact::report::{impact_audit_json, impact_run_json, impact_run_text};
+use rodimpact::io::write_atomic;
+use rodimpact::report::{
+    impact_audit_json, impact_batch_json, impact_batch_text, impact_run_json, impact_run_text,
+};
 use rodimpact::{Error, ErrorKind};
-use std::io::Read;
 use std::path::PathBuf;
 
 #[derive(Args, Debug)]
@@ -27,14 +28,43 @@ pub(crate) struct ImpactArgs {
     /// matches none.
     #[arg(long, value_name = "FILE.jsonl")]
     pub(crate) batch: Option<PathBuf>,
-    /// With --batch: a claim matches an exact answer when every component is within this
-    /// relative error [default: 1e-9].
+    /// With --batch: a claim matches an exact answer when its error in energy,
+    /// sqrt(K(claim - exact)/K(before)), is at most R [default: 1e-9].
     #[arg(long, value_name = "R", requires = "batch")]
     pub(crate) rtol: Option<String>,
-    /// The restitution law: newton (kinematic), poisson (kinetic), energetic (Stronge), or all
-    /// three side by side.
+    /// With --batch: a claim also matches when every component (m/s, rad/s) is within X of the
+    /// exact answer's (for values that vanish exactly, where an engine leaves round-off).
+    #[arg(long, value_name = "X", requires = "batch")]
+    pub(crate) atol: Option<String>,
+    /// With --batch: a claim also matches when every component is within N floats of the exact
+    /// value correctly rounded (to f64, or to --float).
+    #[arg(long, value_name = "N", requires = "batch")]
+    pub(crate) ulps: Option<String>,
+    /// With --batch: the float format of --ulps [default: f64].
+    #[arg(long, value_enum, value_name = "f32|f64", requires = "ulps")]
+    pub(crate) float: Option<FloatChoice>,
+    /// With --batch: known findings (CSV `id,finding`, `*` for a class of scenes): the audit
+    /// fails only on findings the file does not allow.
+    #[arg(long, value_name = "FILE", requires = "batch")]
+    pub(crate) expect: Option<PathBuf>,
+    /// With --batch: also write the summary as JSON here (all or nothing), for a CI job.
+    #[arg(long, value_name = "FILE", requires = "batch")]
+    pub(crate) summary_json: Option<PathBuf>,
+    /// The restitution law: newton (kinematic), poisson (kinetic), energetic (Stronge; also
+    /// `stronge`), or all three side by side; or a law engines converge to: lcp-newton
+    /// (Newton's restitution and Coulomb's law on the final velocities, one phase), lcp-poisson
+    /// (its compression-then-expansion form), split (friction without restitution, then
+    /// restitution without friction). For a scene with one contact.
     #[arg(long, value_enum, default_value = "all")]
     pub(crate) law: LawChoice,
+    /// Also answer as an engine's solver does: pymunk-7, box2d-2.3, bullet-3 (one step replayed
+    /// exactly), box2d-3, rapier-0.36 (the law their soft substeps converge to); settings after
+    /// a colon, e.g. box2d-2.3:scale=16 (a world scaled by 16: the restitution threshold in the
+    /// scene's units), :threshold=T, bullet-3:plane=xy (docs/engines.md). With --batch: compare
+    /// every claim with this engine's step (`all`: every replayed engine's) instead of the step
+    /// of the engine the line's "claimed" names.
+    #[arg(long, value_name = "NAME")]
+    pub(crate) engine: Option<String>,
     /// How several contacts act together: simultaneous-newton, simultaneous-poisson,
     /// sequential (every order), sequential:2,1,3 (one order), pgs:K (K sweeps of projected
     /// Gauss-Seidel), or all (the simultaneous models, sequential in every order, pgs:1 and
@@ -53,8 +83,18 @@ pub(crate) struct ImpactArgs {
 pub(crate) enum LawChoice {
     Newton,
     Poisson,
+    #[value(alias = "stronge")]
     Energetic,
+    LcpNewton,
+    LcpPoisson,
+    Split,
     All,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum FloatChoice {
+    F32,
+    F64,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -74,9 +114,13 @@ pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
         LawChoice::Newton => Some(Law::Newton),
         LawChoice::Poisson => Some(Law::Poisson),
         LawChoice::Energetic => Some(Law::Energetic),
+        LawChoice::LcpNewton => Some(Law::LcpNewton),
+        LawChoice::LcpPoisson => Some(Law::LcpPoisson),
+        LawChoice::Split => Some(Law::Split),
         LawChoice::All => None,
     };
-    let run = answer_impact(&value, &label, law, args.model.as_deref())?;
+    let engine = args.engine.as_deref().map(parse_engine).transpose()?;
+    let run = answer_impact(&value, &label, law, args.model.as_deref(), engine.as_ref())?;
     match args.format {
         ImpactFormat::Json => {
             let digits = parse_digits(args.digits.as_deref(), 30)?;
@@ -100,100 +144,52 @@ pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
 
 /// `impact --batch FILE.jsonl`: every line audited, one JSON line out each, a summary on stderr.
 fn run_batch(args: &ImpactArgs, path: &std::path::Path) -> Result<(), Failure> {
-    use std::io::{BufRead, Write};
+    use std::io::Write;
     let label = rodimpact::echo::echo_path(path);
-    let rtol = match &args.rtol {
-        None => Q::new(1.into(), 1_000_000_000.into()),
-        Some(text) => {
-            let r = rodimpact::number::parse(text).map_err(|kind| Error::new("rtol", kind))?;
-            if r < Q::from_integer(0.into()) {
-                return Err(
-                    Error::out_of_range("rtol", format!("must be >= 0, got {text}")).into(),
-                );
-            }
-            r
-        }
-    };
+    let float = args.float.map(|f| match f {
+        FloatChoice::F32 => FloatFormat::F32,
+        FloatChoice::F64 => FloatFormat::F64,
+    });
+    let expected = args
+        .expect
+        .as_deref()
+        .map(read_known_findings)
+        .transpose()?;
+    let options = ImpactBatchOptions::parse(
+        args.rtol.as_deref(),
+        args.atol.as_deref(),
+        args.ulps.as_deref(),
+        float,
+        args.engine.as_deref(),
+        expected,
+    )?;
     let file = std::fs::File::open(path).map_err(|e| Error::io(label.clone(), "cannot read", e))?;
-    let mut reader = std::io::BufReader::new(file);
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
-    let (mut scenes, mut claimed) = (0usize, 0usize);
-    let mut findings: std::collections::BTreeMap<String, Vec<String>> = Default::default();
-    let mut matched: std::collections::BTreeMap<String, usize> = Default::default();
-    let mut line = String::new();
-    let mut number = 0;
-    loop {
-        line.clear();
-        let read = (&mut reader)
-            .take(MAX_SCENE_BYTES as u64 + 1)
-            .read_line(&mut line)
-            .map_err(|e| Error::io(label.clone(), "cannot read", e))?;
-        if read == 0 {
-            break;
-        }
-        number += 1;
-        if line.len() > MAX_SCENE_BYTES {
-            return Err(Error::out_of_range(
-                format!("{label}: line {number}"),
-                format!("longer than {MAX_SCENE_BYTES} bytes (limit)"),
-            )
-            .into());
-        }
-        if line.trim().is_empty() {
-            continue;
-        }
-        let audit = audit_impact(line.trim_end(), number, &rtol)
-            .map_err(|e| Error::new(format!("{label}: {}", e.field), e.kind))?;
-        scenes += 1;
-        if audit.claimed.is_some() {
-            claimed += 1;
-            for m in &audit.matches {
-                *matched.entry(m.clone()).or_default() += 1;
-            }
-            for f in &audit.findings {
-                findings
-                    .entry((*f).into())
-                    .or_default()
-                    .push(audit.id.clone());
-            }
-        }
-        let json = serde_json::to_string(&impact_audit_json(&audit)).expect("JSON of strings");
-        if writeln!(out, "{json}").is_err() {
-            return Err(Error::new(
+    let summary = run(std::io::BufReader::new(file), &label, &options, |audit| {
+        let json = serde_json::to_string(&impact_audit_json(audit)).expect("JSON of strings");
+        writeln!(out, "{json}").map_err(|_| {
+            Error::new(
                 "stdout",
                 ErrorKind::Invalid("cannot write standard output".into()),
             )
-            .into());
-        }
-    }
-    let mut summary = format!(
-        "{scenes} scene{}, {claimed} with a claimed state\n",
-        if scenes == 1 { "" } else { "s" }
+        })
+    })?;
+    let expect_file = args.expect.as_deref().map(rodimpact::echo::echo_path);
+    let text = impact_batch_text(
+        &summary,
+        options.expected.as_ref().zip(expect_file.as_deref()),
     );
-    if !matched.is_empty() {
-        let list: Vec<String> = matched.iter().map(|(k, v)| format!("{k} {v}")).collect();
-        summary.push_str(&format!(
-            "claims matching each exact answer: {}\n",
-            list.join(", ")
-        ));
+    if let Some(file) = &args.summary_json {
+        let json = impact_batch_json(&summary, options.expected.is_some());
+        write_atomic(
+            "summary-json",
+            file,
+            &format!("{}\n", serde_json::to_string_pretty(&json).expect("JSON")),
+        )?;
     }
-    if findings.is_empty() {
-        summary.push_str("every claim matches an exact answer\n");
-    } else {
-        summary.push_str("findings:\n");
-        for (finding, ids) in &findings {
-            let shown: Vec<&str> = ids.iter().take(5).map(String::as_str).collect();
-            summary.push_str(&format!(
-                "  {finding}: {} ({}{})\n",
-                ids.len(),
-                shown.join(", "),
-                if ids.len() > 5 { ", ..." } else { "" }
-            ));
-        }
-    }
-    eprint!("{summary}");
-    if findings.is_empty() {
+    eprint!("{text}");
+    if summary.passed(options.expected.is_some()) {
         Ok(())
     } else {
         Err(Failure::Check)
