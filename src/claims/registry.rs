@@ -111,6 +111,7 @@ registry! {
     "beyond/x36.rs" => x36,
     "beyond/x37.rs" => x37,
     "beyond/x38.rs" => x38,
+    "beyond/x39.rs" => x39,
 }
 
 /// Every claim, in the order of `docs/claims.md`: the paper's, then the results beyond it.
