@@ -1,6 +1,6 @@
 //! Writing output files: one file atomically ([`AtomicFile`], [`write_atomic`]), a directory
 //! of files all-or-nothing ([`write_directory`]), and the removal of temporary files when the
-//! process is interrupted ([`remove_temporaries_on_signals`]). What the files hold is rendered
+//! process is interrupted (`remove_temporaries_on_signals`, with the feature `signals`). What the files hold is rendered
 //! by [`crate::report`]; this module only gets the bytes to disk without a reader ever seeing
 //! half of them.
 

@@ -2,8 +2,8 @@
 //! along both axes, angular momentum about a point, kinetic energy, the velocity of a
 //! material point, and a solid disc's inertia. Stated once, for any number of bodies.
 //!
-//! The paper's laws ([`super::linear_momentum`], [`super::angular_momentum`],
-//! [`super::kinetic_energy`]), the oblique impact's ([`crate::solve::fast::oblique`]) and the general
+//! The paper's laws ([`crate::scene::linear_momentum`], [`crate::scene::angular_momentum`],
+//! [`crate::scene::kinetic_energy`]), the oblique impact's ([`crate::solve::fast::oblique`]) and the general
 //! planar impacts are all these functions applied to their bodies.
 //!
 //! Conventions: standard axes (x, y), angular velocity and angular momentum counterclockwise

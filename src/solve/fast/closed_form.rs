@@ -1,4 +1,4 @@
-//! The closed-form route ([`Route::ClosedForm`](super::Route::ClosedForm)): the paper's
+//! The closed-form route ([`Route::ClosedForm`](crate::solve::Route::ClosedForm)): the paper's
 //! formulas, generalised to restitution e and to a pivot, over any [`Field`]. A second path,
 //! independent of the linear solve; the naive float formula is this route in f64.
 //!

@@ -1,4 +1,4 @@
-//! The fraction-free route ([`Route::FractionFree`](super::Route::FractionFree)): the same v,
+//! The fraction-free route ([`Route::FractionFree`](crate::solve::Route::FractionFree)): the same v,
 //! V, omega as the linear solve ([`super::linear::solve`]) over [`Q`], bit for bit, without a
 //! GCD after every operation.
 //!

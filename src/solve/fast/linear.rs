@@ -1,4 +1,4 @@
-//! The linear route ([`Route::Linear`](super::Route::Linear)): the impulse equations of
+//! The linear route ([`Route::Linear`](crate::solve::Route::Linear)): the impulse equations of
 //! docs/conventions.md as a linear system, solved by elimination over any [`Field`]:
 //!
 //! - free rod, unknowns (v, V, omega):
