@@ -163,7 +163,7 @@ def test_audit_impacts_options_and_errors(tmp_path):
     assert rows.attrs["summary"].ok
     rows = rodimpact.audit_impacts(path, rtol="1e-2", engine="bullet-3")
     assert set(rows["error_split"].dropna().map(lambda s: s["profile"])) == {"bullet-3"}
-    with pytest.raises(ValueError, match=r"^rtol: must be >= 0, got -1$"):
+    with pytest.raises(ValueError, match=r"^rtol: must be a number from 0 to 1, got -1$"):
         rodimpact.audit_impacts(path, rtol="-1")
     with pytest.raises(ValueError, match=r"^engine: "):
         rodimpact.audit_impacts(path, engine="havok")

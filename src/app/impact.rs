@@ -73,16 +73,33 @@ pub fn answer_impact(
     let system = from_value(value).map_err(at_file)?;
     let claims = read_impact_claims(value, &system).map_err(at_file)?;
     if system.contacts.len() > 1 {
-        if law.is_some() {
-            return Err(Error::new(
-                "law",
-                ErrorKind::Conflict(
-                    "several contacts: their models (--model) say how the contacts act together"
-                        .into(),
-                ),
-            ));
-        }
-        let mut models = parse_models(model.unwrap_or("all"), system.contacts.len())?;
+        // An engine's law is a law of any number of contacts; the physical laws of one
+        // contact are not, the models say how the contacts act together.
+        let mut models = match (law, model) {
+            (None, model) => parse_models(model.unwrap_or("all"), system.contacts.len())?,
+            (Some(law), None) if Model::of_law(law).is_some() => {
+                vec![Model::of_law(law).expect("an engine's law")]
+            }
+            (Some(_), Some(_)) => {
+                return Err(Error::new(
+                    "law",
+                    ErrorKind::Conflict(
+                        "several contacts: give the law or the model (--model), not both".into(),
+                    ),
+                ));
+            }
+            (Some(_), None) => {
+                return Err(Error::new(
+                    "law",
+                    ErrorKind::Conflict(
+                        "several contacts: their models (--model) say how the contacts act \
+                         together (of the laws, only the engines' lcp-newton, lcp-poisson and \
+                         split apply)"
+                            .into(),
+                    ),
+                ));
+            }
+        };
         models.extend(engine.cloned().map(Model::Engine));
         let outcomes = models
             .into_iter()

@@ -8,7 +8,6 @@ use crate::batch::{
     KnownFindings, MAX_EXPECTED_BYTES, audit_impact,
 };
 use crate::error::Error;
-use crate::field::Q;
 use crate::model::MAX_SCENE_BYTES;
 use std::io::{BufRead, Read};
 use std::path::Path;
@@ -26,12 +25,12 @@ pub struct ImpactBatchOptions {
 
 impl ImpactBatchOptions {
     /// The options as given, each number still text (the command line's flags, Python's
-    /// keywords): `rtol` and `atol` non-negative numbers read exactly, `ulps` a whole number
+    /// keywords): `rtol` and `atol` numbers from 0 to 1 read exactly, `ulps` a whole number
     /// of floats in `float` (f64 by default), `engine` a profile's name or `all` (`None`: the
     /// engine each line's claim names), `expected` the known findings.
     ///
     /// # Errors
-    /// The option that is wrong, by name: `rtol: must be >= 0, got -1`.
+    /// The option that is wrong, by name: `rtol: must be a number from 0 to 1, got -1`.
     ///
     /// # Examples
     /// ```
@@ -42,7 +41,7 @@ impl ImpactBatchOptions {
     /// assert_eq!(options.tolerance.rtol, q(1, 100));
     /// assert!(matches!(options.engines, EngineChoice::Every));
     /// let bad = ImpactBatchOptions::parse(Some("-1"), None, None, None, None, None);
-    /// assert_eq!(bad.unwrap_err().to_string(), "rtol: must be >= 0, got -1");
+    /// assert_eq!(bad.unwrap_err().to_string(), "rtol: must be a number from 0 to 1, got -1");
     /// # Ok::<(), rodimpact::Error>(())
     /// ```
     pub fn parse(
@@ -53,22 +52,12 @@ impl ImpactBatchOptions {
         engine: Option<&str>,
         expected: Option<KnownFindings>,
     ) -> Result<ImpactBatchOptions, Error> {
-        let non_negative = |name: &str, text: &str| -> Result<Q, Error> {
-            let x = crate::number::parse(text).map_err(|kind| Error::new(name, kind))?;
-            if x < Q::from_integer(0.into()) {
-                return Err(Error::out_of_range(
-                    name,
-                    format!("must be >= 0, got {}", crate::echo::echo(text)),
-                ));
-            }
-            Ok(x)
-        };
         let mut tolerance = ImpactTolerance::default();
         if let Some(text) = rtol {
-            tolerance.rtol = non_negative("rtol", text)?;
+            tolerance.rtol = crate::batch::unit_fraction("rtol", text)?;
         }
         if let Some(text) = atol {
-            tolerance.atol = Some(non_negative("atol", text)?);
+            tolerance.atol = Some(crate::batch::unit_fraction("atol", text)?);
         }
         if let Some(text) = ulps {
             let format = float.unwrap_or(FloatFormat::F64);

@@ -61,7 +61,7 @@ fn exact_text(r: &Q) -> String {
 }
 
 /// A tolerance flag's value (`--rtol`, `--atol`): an exact number from 0 to 1.
-pub(super) fn unit_fraction(field: &str, text: &str) -> Result<Q, Error> {
+pub(crate) fn unit_fraction(field: &str, text: &str) -> Result<Q, Error> {
     let bad = || {
         Error::out_of_range(
             field,

@@ -48,6 +48,7 @@ mod ulps;
 
 pub use audit::{Audit, Finding, LAW_TOLERANCE, STATE_TOLERANCE, audit};
 pub use classes::{ClassRule, RowClass};
+pub(crate) use compare::unit_fraction;
 pub use compare::{Agreement, FLOAT_TOLERANCE, MAX_ULPS};
 pub use expected::{ExpectedEntry, KnownFindings, MAX_EXPECTED_BYTES};
 pub use header::{Batch, read_header, scene_columns};

@@ -571,7 +571,8 @@ pub fn models_text(
             .join(", ")
     ));
     for (model, outcome) in outcomes {
-        out.push_str(&format!("\n{} ({})\n", model, model_meaning(model)));
+        let rough = system.contacts.iter().any(|c| !c.mu.is_zero());
+        out.push_str(&format!("\n{} ({})\n", model, model_meaning(model, rough)));
         let answers = match outcome {
             ModelOutcome::Answered(answers) => answers,
             ModelOutcome::NoSolution => {
@@ -674,7 +675,8 @@ pub fn models_text(
     out
 }
 
-fn model_meaning(model: &Model) -> &'static str {
+/// What `model` is, in words; `rough`: some contact has friction.
+fn model_meaning(model: &Model, rough: bool) -> &'static str {
     match model {
         Model::SimultaneousNewton => {
             "every contact at once, Newton's law: a complementarity problem"
@@ -685,9 +687,11 @@ fn model_meaning(model: &Model) -> &'static str {
         Model::Sequential(_) => {
             "one contact at a time, in this order, in passes until none approaches"
         }
-        Model::Pgs(_) => {
-            "sweeps of projected Gauss-Seidel from zero impulses, as engines run them (a friction row after each rough contact's normal)"
+        Model::Pgs(_) if rough => {
+            "sweeps of projected Gauss-Seidel from zero impulses, as engines run them: a \
+             friction row after each rough contact's normal row"
         }
+        Model::Pgs(_) => "sweeps of projected Gauss-Seidel from zero impulses, as engines run them",
         Model::Split => {
             "friction without restitution, then restitution without friction, as Rapier and Box2D v3 converge to"
         }

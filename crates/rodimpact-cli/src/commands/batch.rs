@@ -27,11 +27,16 @@ pub(crate) struct BatchArgs {
     #[arg(long, value_name = "FILE")]
     pub(crate) out: Option<PathBuf>,
     /// A claim agrees when its relative error is at most R (0 <= R <= 1).
-    #[arg(long, value_name = "R", conflicts_with = "ulps")]
+    #[arg(
+        long,
+        value_name = "R",
+        conflicts_with = "ulps",
+        allow_hyphen_values = true
+    )]
     pub(crate) rtol: Option<String>,
     /// A claim agrees when it is at most N floats from the correctly rounded exact value
     /// (exact backend).
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub(crate) ulps: Option<String>,
     /// The float format of --ulps and of the ulps tolerances [default: f64].
     #[arg(long, value_enum, value_name = "f32|f64")]
@@ -45,7 +50,7 @@ pub(crate) struct BatchArgs {
     /// A claim also agrees when it lies within X of the exact value in the scene's own units
     /// (X v0 for v and V, X v0/l for omega, X m v0 for J, X m v0^2/2 for the energies; 0 <= X
     /// <= 1): for quantities that vanish exactly, where an engine returns round-off.
-    #[arg(long, value_name = "X")]
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
     pub(crate) atol: Option<String>,
     /// Known findings (CSV `id,finding`, `*` in an id for a class of scenes): the batch fails
     /// only on findings the file does not allow (needs an id column).

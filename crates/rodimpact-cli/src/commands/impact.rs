@@ -26,19 +26,19 @@ pub(crate) struct ImpactArgs {
     /// engine's "claimed" bodies; one JSON line out per scene: the exact answers, the claim's
     /// relative errors, which law or model it matches, and a diagnosis. Exit 1 when a claim
     /// matches none.
-    #[arg(long, value_name = "FILE.jsonl")]
+    #[arg(long, value_name = "FILE.jsonl", conflicts_with_all = ["law", "model", "format", "digits"])]
     pub(crate) batch: Option<PathBuf>,
     /// With --batch: a claim matches an exact answer when its error in energy,
     /// sqrt(K(claim - exact)/K(before)), is at most R [default: 1e-9].
-    #[arg(long, value_name = "R", requires = "batch")]
+    #[arg(long, value_name = "R", requires = "batch", allow_hyphen_values = true)]
     pub(crate) rtol: Option<String>,
     /// With --batch: a claim also matches when every component (m/s, rad/s) is within X of the
     /// exact answer's (for values that vanish exactly, where an engine leaves round-off).
-    #[arg(long, value_name = "X", requires = "batch")]
+    #[arg(long, value_name = "X", requires = "batch", allow_hyphen_values = true)]
     pub(crate) atol: Option<String>,
     /// With --batch: a claim also matches when every component is within N floats of the exact
     /// value correctly rounded (to f64, or to --float).
-    #[arg(long, value_name = "N", requires = "batch")]
+    #[arg(long, value_name = "N", requires = "batch", allow_hyphen_values = true)]
     pub(crate) ulps: Option<String>,
     /// With --batch: the float format of --ulps [default: f64].
     #[arg(long, value_enum, value_name = "f32|f64", requires = "ulps")]
@@ -106,6 +106,25 @@ pub(crate) enum ImpactFormat {
 pub(crate) fn run_impact(args: &ImpactArgs) -> Result<(), Failure> {
     if let Some(batch) = &args.batch {
         return run_batch(args, batch);
+    }
+    // The audit's options do nothing for one scene: refused, not ignored.
+    for (flag, given) in [
+        ("rtol", args.rtol.is_some()),
+        ("atol", args.atol.is_some()),
+        ("ulps", args.ulps.is_some()),
+        ("float", args.float.is_some()),
+        ("expect", args.expect.is_some()),
+        ("summary-json", args.summary_json.is_some()),
+    ] {
+        if given {
+            return Err(Error::new(
+                flag,
+                ErrorKind::Conflict(
+                    "only with --batch (it says when an engine's claim matches)".into(),
+                ),
+            )
+            .into());
+        }
     }
     let file = args.file.as_ref().expect("clap requires FILE or --batch");
     let label = rodimpact::echo::echo_path(file);

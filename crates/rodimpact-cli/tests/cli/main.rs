@@ -16,6 +16,7 @@ mod batch_f64;
 mod check;
 mod claims;
 mod console;
+mod engine_laws;
 mod engines;
 mod explain;
 mod explore;
