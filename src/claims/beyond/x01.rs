@@ -25,7 +25,10 @@ const EXPORT: Export = Export::Stated(
             ),
         ],
     )
-    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "a", tag: "2" }]),
+    .at(&[
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "a", tag: "2" },
+    ]),
 );
 
 fn formalise(_paper: &Paper) -> Formalised {

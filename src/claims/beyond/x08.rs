@@ -32,7 +32,10 @@ const EXPORT: Export = Export::Stated(
             .given(&["M = m", "q > 0", "q^2 = 3"]),
         ],
     )
-    .at(&[StrikePoint { at: "s", tag: "s" }, StrikePoint { at: "l", tag: "l" }])
+    .at(&[
+        StrikePoint { at: "s", tag: "s" },
+        StrikePoint { at: "l", tag: "l" },
+    ])
     .given(&["s > 0", "s^2 = (M + m)*l^2/(3*m)"])
     .partly("the unbounded gain for a general r_G (a statement about a limit over rods)"),
 );

@@ -28,7 +28,10 @@ const EXPORT: Export = Export::Stated(
             ),
         ],
     )
-    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
+    .at(&[
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "s", tag: "s" },
+    ])
     .given(&["z = l^2*(M - m)/(3*m)", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
 );
 

@@ -1,7 +1,7 @@
 use crate::claims::dsl::*;
 use crate::field::RatFn;
-use crate::scene::Motion;
 use crate::field::linear::solve_linear;
+use crate::scene::Motion;
 
 pub(super) const ENTRY: Entry = Entry {
     id: "X22",

@@ -1,7 +1,7 @@
 use crate::claims::dsl::*;
 use crate::field::{Field, Q, RatFn};
-use crate::model::parse_toml;
 use crate::impact::{Model, ModelOutcome, solve_several};
+use crate::model::parse_toml;
 
 pub(super) const ENTRY: Entry = Entry {
     id: "X38",

@@ -19,7 +19,10 @@ const EXPORT: Export = Export::Stated(
         )
         .given(&["m = 1", "M = 1", "l = 1", "v0 = 1", "a1^2 = 2/3", "a2 = 1"])],
     )
-    .at(&[StrikePoint { at: "a1", tag: "1" }, StrikePoint { at: "a2", tag: "2" }])
+    .at(&[
+        StrikePoint { at: "a1", tag: "1" },
+        StrikePoint { at: "a2", tag: "2" },
+    ])
     .given(&["a1 >= 0"]),
 );
 

@@ -18,7 +18,10 @@ const EXPORT: Export = Export::Stated(
             "s < l and omega_s > omega_l",
         )],
     )
-    .at(&[StrikePoint { at: "s", tag: "s" }, StrikePoint { at: "l", tag: "l" }])
+    .at(&[
+        StrikePoint { at: "s", tag: "s" },
+        StrikePoint { at: "l", tag: "l" },
+    ])
     .given(&["M < 2*m", "s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
 );
 

@@ -20,7 +20,10 @@ const EXPORT: Export = Export::Stated(
             ),
         ],
     )
-    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
+    .at(&[
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "s", tag: "s" },
+    ])
     .given(&["s > 0", "s^2 = (M + m)*I/(m*M)"]),
 );
 

@@ -17,7 +17,10 @@ const EXPORT: Export = Export::Stated(
             "0 <= a1 and a1 < a2 and a2 <= l => omega_1 < omega_2",
         )],
     )
-    .at(&[StrikePoint { at: "a1", tag: "1" }, StrikePoint { at: "a2", tag: "2" }])
+    .at(&[
+        StrikePoint { at: "a1", tag: "1" },
+        StrikePoint { at: "a2", tag: "2" },
+    ])
     .given(&["M > 2*m"]),
 );
 

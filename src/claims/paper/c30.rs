@@ -17,7 +17,10 @@ const EXPORT: Export = Export::Stated(
             "a >= 0 and a != s => omega < omega_s",
         )],
     )
-    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "s", tag: "s" }])
+    .at(&[
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "s", tag: "s" },
+    ])
     .given(&["s > 0", "s^2 = (M + m)*l^2/(3*m)"]),
 );
 

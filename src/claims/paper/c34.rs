@@ -18,7 +18,10 @@ const EXPORT: Export = Export::Stated(
         )
         .given(&["m = 1", "M = 1", "l = 1", "v0 = 1", "a1 = 0", "a2 = 1"])],
     )
-    .at(&[StrikePoint { at: "a1", tag: "1" }, StrikePoint { at: "a2", tag: "2" }]),
+    .at(&[
+        StrikePoint { at: "a1", tag: "1" },
+        StrikePoint { at: "a2", tag: "2" },
+    ]),
 );
 
 fn formalise(_paper: &Paper) -> Formalised {

@@ -17,7 +17,10 @@ const EXPORT: Export = Export::Stated(
             "0 <= a1 and a1 < a2 => M*V_2 < M*V_1",
         )],
     )
-    .at(&[StrikePoint { at: "a1", tag: "1" }, StrikePoint { at: "a2", tag: "2" }]),
+    .at(&[
+        StrikePoint { at: "a1", tag: "1" },
+        StrikePoint { at: "a2", tag: "2" },
+    ]),
 );
 
 fn formalise(paper: &Paper) -> Formalised {

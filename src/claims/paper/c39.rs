@@ -17,7 +17,10 @@ const EXPORT: Export = Export::Stated(
             "0 <= a and a < l => omega < omega_l",
         )],
     )
-    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "l", tag: "l" }])
+    .at(&[
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "l", tag: "l" },
+    ])
     .given(&["M >= 2*m"]),
 );
 

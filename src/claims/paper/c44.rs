@@ -17,7 +17,10 @@ const EXPORT: Export = Export::Stated(
             "s > l and (0 <= a and a < l => omega < omega_l)",
         )],
     )
-    .at(&[StrikePoint { at: "a", tag: "" }, StrikePoint { at: "l", tag: "l" }])
+    .at(&[
+        StrikePoint { at: "a", tag: "" },
+        StrikePoint { at: "l", tag: "l" },
+    ])
     .given(&["s > 0", "s^2 = (M + m)*l^2/m"]),
 );
 
