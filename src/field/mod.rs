@@ -21,6 +21,7 @@ use std::fmt::{Debug, Display};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 pub mod big;
+pub mod count;
 pub mod decimal;
 mod float;
 pub mod int;
@@ -90,6 +91,20 @@ pub trait Field:
     /// The nearest `f64` (for printed estimates); NaN where no number is meant (a non-constant
     /// rational function).
     fn nearest_f64(&self) -> f64;
+
+    /// The size of the number in bits, for the work budgets of iterated exact work
+    /// ([`crate::impact::Work`]): numerator and denominator together for a rational; a
+    /// machine word's 64 where numbers do not grow (floats, the default).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::field::{Field, q};
+    /// assert_eq!(q(3, 4).size_bits(), 2 + 3);
+    /// assert_eq!(0.75f64.size_bits(), 64);
+    /// ```
+    fn size_bits(&self) -> u64 {
+        64
+    }
 
     /// An integer, through [`Field::from_rational`].
     ///

@@ -574,6 +574,10 @@ impl Field for QSqrt {
     const NAME: &'static str = "Q(sqrt d)";
     const EXACT: bool = true;
 
+    fn size_bits(&self) -> u64 {
+        self.x.size_bits() + self.y.size_bits() + self.d.as_deref().map_or(0, Field::size_bits)
+    }
+
     fn from_rational(q: &Q) -> Self {
         QSqrt::rational(q.clone())
     }

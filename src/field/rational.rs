@@ -9,6 +9,10 @@ impl Field for Q {
     const NAME: &'static str = "Q";
     const EXACT: bool = true;
 
+    fn size_bits(&self) -> u64 {
+        self.numer().bits() + self.denom().bits()
+    }
+
     fn from_rational(q: &Q) -> Self {
         q.clone()
     }

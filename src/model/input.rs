@@ -137,8 +137,17 @@ pub fn from_value(value: &Value) -> Result<System, Error> {
             "title", "body", "contact", "pin", "claimed", "claim", "source",
         ],
     )?;
+    super::budget::check_scene_digits(top)?;
     let title = match top.get("title") {
         None => None,
+        // The title is printed at the head of every report: no control character may reach
+        // the terminal from it (a newline, ESC, CR or NUL).
+        Some(Value::String(t)) if t.chars().any(char::is_control) => {
+            return Err(invalid(
+                "title",
+                "no control characters (newlines, escapes), as in names".into(),
+            ));
+        }
         Some(Value::String(t)) => Some(t.clone()),
         Some(_) => return Err(invalid("title", "must be a string".into())),
     };

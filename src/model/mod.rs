@@ -11,10 +11,12 @@
 //! | `system.rs` | [`Body`], [`Contact`], [`System`] and their validation |
 //! | `input.rs` | a system as written: a TOML scene file or one JSON line of a batch |
 
+mod budget;
 mod input;
 mod shape;
 mod system;
 
+pub use budget::MAX_SCENE_DIGITS;
 pub use input::{MAX_SCENE_BYTES, MAX_VERTICES, from_value, parse_toml, toml_value};
 pub use shape::Shape;
 pub use system::{
