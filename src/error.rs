@@ -59,6 +59,9 @@ pub enum ErrorKind {
     /// Two inputs contradict each other (for example `--a` together with `--from-end`).
     #[error("{0}")]
     Conflict(String),
+    /// The host asked the work to stop ([`crate::interrupt`]): Python's Ctrl-C.
+    #[error("interrupted")]
+    Interrupted,
 }
 
 /// `context: source`, or only the source when there is no context.

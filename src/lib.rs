@@ -32,7 +32,7 @@
 //!
 //! | layer | modules | what it holds |
 //! |---|---|---|
-//! | 0 numbers | [`field`] (its [`field::decimal`] exact printing, [`field::int`] word-sized integers, [`field::linear`] elimination), [`echo`], [`error`] | the [`field::Field`] trait and its number types; how numbers print; the error type |
+//! | 0 numbers | [`field`] (its [`field::decimal`] exact printing, [`field::int`] word-sized integers, [`field::linear`] elimination), [`echo`], [`error`], [`interrupt`] | the [`field::Field`] trait and its number types; how numbers print; the error type; the host's interrupt hook |
 //! | 1 input | [`number`], [`units`] | exact parsing of `0.25`, `3/7`, `1.5e-3`; SI units |
 //! | 2 model | [`mechanics`], [`model`] | momentum, angular momentum and energy of rigid bodies; bodies, shapes, contacts and pins as data ([`model::System`]) |
 //! | 3 core | [`impact`] | the general solver: contacts as Jacobian rows, `W = J M^-1 J^T`; one contact under the three laws with Coulomb friction; several contacts under each model |
@@ -62,6 +62,7 @@
 pub mod echo;
 pub mod error;
 pub mod field;
+pub mod interrupt;
 // Layer 1: input.
 pub mod number;
 pub mod units;

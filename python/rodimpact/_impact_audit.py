@@ -32,7 +32,8 @@ class ImpactAuditSummary:
 
     @property
     def findings(self) -> Dict[str, List[str]]:
-        """Each finding's scenes, by the finding's name."""
+        """Each finding's scenes by the finding's name: the first 100 ids of each (the
+        count of all is ``data["findings"][name]["count"]``)."""
         return {name: list(f["scenes"]) for name, f in self.data["findings"].items()}
 
     def __str__(self) -> str:

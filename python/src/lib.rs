@@ -7,16 +7,26 @@
 //! Errors become `ValueError` with the CLI's one-line message (`M: must be > 0, got -1`).
 //! The Python package (`rodimpact/__init__.py`) turns the JSON into Fractions and surds.
 
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use rodimpact::scene::SceneInput;
 use rodimpact::{Error, ErrorKind};
 
 mod audit;
 
-/// The library's error as Python's `ValueError`, with the CLI's message.
+/// The library's error as Python's `ValueError`, with the CLI's message; an interrupted
+/// computation (Ctrl-C, seen by [`python_interrupted`]) as `KeyboardInterrupt`.
 fn value_error(e: Error) -> PyErr {
+    if e.kind == ErrorKind::Interrupted {
+        return PyKeyboardInterrupt::new_err("rodimpact: interrupted");
+    }
     PyValueError::new_err(e.to_string())
+}
+
+/// The library's interrupt hook ([`rodimpact::interrupt`]): runs Python's signal handlers
+/// (which only the main thread can) and says whether one raised, as Ctrl-C's does.
+fn python_interrupted() -> bool {
+    Python::attach(|py| py.check_signals().is_err())
 }
 
 /// The scene the `(key, text)` pairs give. An unknown key is refused, naming the keys there are.
@@ -264,6 +274,7 @@ fn internal(why: impl std::fmt::Display) -> PyErr {
 
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    rodimpact::interrupt::set_hook(python_interrupted);
     m.add_function(wrap_pyfunction!(solve_json, m)?)?;
     m.add_function(wrap_pyfunction!(formula_json, m)?)?;
     m.add_function(wrap_pyfunction!(scene_keys, m)?)?;

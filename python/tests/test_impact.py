@@ -175,3 +175,65 @@ def test_audit_impacts_options_and_errors(tmp_path):
         rodimpact.audit_impacts(_scene(["-1", "0"]))
     with pytest.raises(ValueError, match=r"cannot read"):
         rodimpact.audit_impacts(tmp_path / "missing.jsonl")
+
+
+# A child that calls impact() on a box landing flat on 32 points (every model: seconds of exact
+# work) while a thread sends it SIGINT every 50 ms. A signal that arrives inside the call stops
+# the exact work at once as KeyboardInterrupt("rodimpact: interrupted"); one that arrives between
+# calls is Python's own KeyboardInterrupt, and the child calls again. Without the library's
+# interrupt hook the call would run to its end every time and never say so.
+INTERRUPTED_CHILD = r"""
+import os, signal, threading, time
+import rodimpact
+
+contacts = [
+    {"bodies": ["box", "floor"], "point": [f"{2 * k - 31}/31", "0"], "normal": ["0", "1"], "e": "1/2"}
+    for k in range(32)
+]
+scene = {
+    "body": [
+        {"name": "box", "mass": "1", "shape": "box", "width": "2", "height": "1",
+         "position": ["0", "1/2"], "velocity": ["0", "-1"]},
+        {"name": "floor", "fixed": True},
+    ],
+    "contact": contacts,
+}
+
+# Ctrl-C counts only while a call is under way: between calls (and once the answer is in) the
+# handler ignores it, so no signal can escape the loop.
+armed = False
+
+def on_interrupt(signum, frame):
+    if armed:
+        raise KeyboardInterrupt
+
+signal.signal(signal.SIGINT, on_interrupt)
+
+def keep_interrupting():
+    while True:
+        time.sleep(0.05)
+        os.kill(os.getpid(), signal.SIGINT)
+
+threading.Thread(target=keep_interrupting, daemon=True).start()
+result = "never inside"
+for attempt in range(20):
+    try:
+        armed = True
+        rodimpact.impact(scene)
+        armed = False
+    except KeyboardInterrupt as e:
+        armed = False
+        if str(e) == "rodimpact: interrupted":
+            result = "inside"
+            break
+print(result)
+"""
+
+
+def test_ctrl_c_stops_the_exact_work():
+    import subprocess
+
+    out = subprocess.run(
+        [sys.executable, "-c", INTERRUPTED_CHILD], capture_output=True, text=True, timeout=600
+    )
+    assert (out.stdout, out.returncode) == ("inside\n", 0), out.stderr

@@ -7,8 +7,8 @@
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::impact::{
-    Law, MAX_ORDERED, Model, Profile, contact_matrix, orders, solve_engine_exact, solve_exact,
-    solve_several,
+    Law, MAX_ORDERED, Model, ModelOutcome, Profile, Stopped, contact_matrix, orders,
+    solve_engine_exact, solve_exact, solve_several_sharing,
 };
 use crate::model::{MAX_SCENE_BYTES, from_value, toml_value};
 use crate::textbook::SceneCheck;
@@ -101,13 +101,14 @@ pub fn answer_impact(
             }
         };
         models.extend(engine.cloned().map(Model::Engine));
-        let outcomes = models
-            .into_iter()
+        let outcomes: Vec<(Model, ModelOutcome<Q>)> = models
+            .iter()
             .map(|m| {
-                let outcome = solve_several::<Q>(&system, &m);
-                (m, outcome)
+                let outcome = solve_several_sharing::<Q>(&system, m, m.share_among(&models));
+                (m.clone(), outcome)
             })
             .collect();
+        refuse_when_nothing_answered(&outcomes)?;
         let checked = SceneCheck {
             symbolic: None,
             answers: check_model_claims(&claims, &system).map_err(at_file)?,
@@ -198,6 +199,31 @@ pub fn parse_law(text: &str) -> Result<Option<Law>, Error> {
 /// ```
 pub fn parse_engine(text: &str) -> Result<Profile, Error> {
     Profile::parse(text).map_err(|why| Error::new("engine", ErrorKind::Invalid(why)))
+}
+
+/// Refuses a run where the host interrupted the work, or where every model asked stopped at
+/// its work limit (one line naming the first and the limit); a run where some models answer
+/// reports the others as not answered.
+fn refuse_when_nothing_answered(outcomes: &[(Model, ModelOutcome<Q>)]) -> Result<(), Error> {
+    let stopped = |o: &ModelOutcome<Q>| match o {
+        ModelOutcome::Stopped(s) => Some(*s),
+        _ => None,
+    };
+    if outcomes
+        .iter()
+        .any(|(_, o)| stopped(o) == Some(Stopped::Interrupted))
+    {
+        return Err(Error::new("impact", ErrorKind::Interrupted));
+    }
+    match outcomes.first() {
+        Some((model, first)) if outcomes.iter().all(|(_, o)| stopped(o).is_some()) => {
+            Err(Error::out_of_range(
+                "model",
+                format!("{model}: {}", stopped(first).expect("every model stopped")),
+            ))
+        }
+        _ => Ok(()),
+    }
 }
 
 /// The models `text` names, for `n` contacts: `all` (the simultaneous models, sequential in

@@ -155,6 +155,9 @@ pub fn run(
         if line.trim().is_empty() {
             continue;
         }
+        if crate::interrupt::requested() {
+            return Err(Error::new(label, crate::error::ErrorKind::Interrupted));
+        }
         let audit = audit_impact(
             line.trim_end(),
             number,

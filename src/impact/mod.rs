@@ -20,6 +20,7 @@
 //! | `planar.rs` | the plane's bodies and contacts as coordinates and rows, and back |
 //! | `one_contact/` | one contact: Routh's path in the normal impulse and each law's end |
 //! | `multi_contact/` | several contacts under each model: LCPs, sequential, PGS, friction |
+//! | `work.rs` | the work budget of iterated exact work ([`Work`], [`Stopped`]) |
 
 mod coulomb;
 mod engines;
@@ -29,6 +30,7 @@ mod ledger;
 mod multi_contact;
 mod one_contact;
 mod planar;
+mod work;
 
 pub use coulomb::{Mode, cone_excess, within_cone};
 pub use engines::{Combine, Engine, Profile};
@@ -37,9 +39,10 @@ pub use law::Law;
 pub use ledger::{Balance, Balances, EnergyLedger};
 pub use multi_contact::{
     Ledger, MAX_ENGINE_STEPS, MAX_ENUMERATED, MAX_ORDERED, MAX_SEQUENTIAL_IMPACTS, MAX_SWEEPS,
-    Model, ModelAnswer, ModelOutcome, orders, solve_several,
+    Model, ModelAnswer, ModelOutcome, orders, solve_several, solve_several_sharing,
 };
 pub use one_contact::{
     BodyAfter, ImpactError, Jam, LawAnswer, PathPoint, Phase, Roots, contact_matrix, contact_path,
     solve_contact, solve_engine, solve_engine_exact, solve_exact,
 };
+pub use work::{Stopped, WORK_LIMIT, Work};

@@ -2,17 +2,17 @@
 //! (`--summary-json FILE`): the scenes, the answers the claims match and are closest to, the
 //! findings with their scenes, and the known findings' verdict.
 
-use crate::batch::{ImpactBatchSummary, KnownFindings};
+use crate::batch::{ImpactBatchSummary, KnownFindings, Scenes};
 use serde_json::{Value, json};
 
 /// The scenes a finding was found in, the first five named.
-fn shown(ids: &[String]) -> String {
-    let first: Vec<&str> = ids.iter().take(5).map(String::as_str).collect();
+fn shown(scenes: &Scenes) -> String {
+    let first: Vec<&str> = scenes.named.iter().take(5).map(String::as_str).collect();
     format!(
         "{} ({}{})",
-        ids.len(),
+        scenes.count,
         first.join(", "),
-        if ids.len() > 5 { ", ..." } else { "" }
+        if scenes.count > 5 { ", ..." } else { "" }
     )
 }
 
@@ -24,7 +24,7 @@ fn shown(ids: &[String]) -> String {
 /// use rodimpact::batch::ImpactBatchSummary;
 /// use rodimpact::report::impact_batch_text;
 /// let mut s = ImpactBatchSummary { scenes: 2, claimed: 2, ..Default::default() };
-/// s.findings.insert("energy-gain".into(), vec!["tilted".into()]);
+/// s.findings.entry("energy-gain".into()).or_default().push("tilted");
 /// assert!(impact_batch_text(&s, None).contains("  energy-gain: 1 (tilted)\n"));
 /// ```
 pub fn impact_batch_text(
@@ -82,7 +82,7 @@ pub fn impact_batch_text(
 }
 
 /// The summary as JSON, for a CI job: `scenes`, `claimed`, `matched` and `closest` (counts per
-/// answer), `findings` (per finding, its count and scenes), with known findings `unexpected`
+/// answer), `findings` (per finding, its count and the first 100 scenes' ids, escaped), with known findings `unexpected`
 /// and `entries_used`, and `passed` (the exit status 0).
 ///
 /// # Examples
@@ -93,9 +93,9 @@ pub fn impact_batch_text(
 /// assert_eq!(impact_batch_json(&s, false)["passed"], true);
 /// ```
 pub fn impact_batch_json(summary: &ImpactBatchSummary, with_expected: bool) -> Value {
-    let by = |m: &std::collections::BTreeMap<String, Vec<String>>| -> Value {
+    let by = |m: &std::collections::BTreeMap<String, Scenes>| -> Value {
         m.iter()
-            .map(|(k, ids)| (k.clone(), json!({"count": ids.len(), "scenes": ids})))
+            .map(|(k, s)| (k.clone(), json!({"count": s.count, "scenes": s.named})))
             .collect::<serde_json::Map<String, Value>>()
             .into()
     };

@@ -100,6 +100,7 @@ fn library(system: &System, name: &str) -> (&'static str, Vec<State>) {
         ModelOutcome::NoSolution => ("no-solution", Vec::new()),
         ModelOutcome::DoesNotStop => ("does-not-stop", Vec::new()),
         ModelOutcome::FrictionlessOnly => ("frictionless-only", Vec::new()),
+        ModelOutcome::Stopped(why) => panic!("{name}: stopped: {why}"),
     }
 }
 

@@ -24,7 +24,7 @@ mod references;
 mod summary;
 
 pub use references::{EngineReference, Kind, profile_of_claim};
-pub use summary::ImpactBatchSummary;
+pub use summary::{ImpactBatchSummary, MAX_NAMED_SCENES, Scenes};
 
 use crate::batch::FloatFormat;
 use crate::error::{Error, ErrorKind};

@@ -5,8 +5,8 @@
 use crate::error::{Error, ErrorKind};
 use crate::field::{Q, QSqrt};
 use crate::impact::{
-    Engine, Law, Model, ModelOutcome, Profile, orders, solve_engine_exact, solve_exact,
-    solve_several,
+    Engine, Law, Model, ModelOutcome, Profile, Stopped, orders, solve_engine_exact, solve_exact,
+    solve_several_sharing,
 };
 use crate::mechanics::planar::Vec2;
 use crate::model::System;
@@ -109,9 +109,14 @@ pub(super) fn exact_answers(
     let lift = |v: &Vec2<Q>| Vec2::new(QSqrt::rational(v.x.clone()), QSqrt::rational(v.y.clone()));
     let invalid =
         |e: crate::impact::ImpactError| Error::new("scene", ErrorKind::Invalid(e.to_string()));
-    let push_models = |all: &mut Vec<_>, models: Vec<(Model, Kind)>| {
+    let push_models = |all: &mut Vec<_>, models: Vec<(Model, Kind)>| -> Result<(), Error> {
+        let named: Vec<Model> = models.iter().map(|(m, _)| m.clone()).collect();
         for (model, kind) in models {
-            if let ModelOutcome::Answered(answers) = solve_several::<Q>(system, &model) {
+            let outcome = solve_several_sharing::<Q>(system, &model, model.share_among(&named));
+            if outcome == ModelOutcome::Stopped(Stopped::Interrupted) {
+                return Err(Error::new("impact", ErrorKind::Interrupted));
+            }
+            if let ModelOutcome::Answered(answers) = outcome {
                 for (k, a) in answers.into_iter().enumerate() {
                     let name = if k == 0 {
                         model.to_string()
@@ -127,6 +132,7 @@ pub(super) fn exact_answers(
                 }
             }
         }
+        Ok(())
     };
     let n = system.contacts.len();
     if n == 1 {
@@ -156,7 +162,7 @@ pub(super) fn exact_answers(
                     (Model::Pgs(1), Kind::EngineLaw),
                     (Model::Pgs(10), Kind::EngineLaw),
                 ],
-            );
+            )?;
             for profile in profiles {
                 // A step that does not stop has no answer to compare with.
                 if let Ok(answer) = solve_engine_exact(system, profile) {
@@ -190,7 +196,7 @@ pub(super) fn exact_answers(
                     .map(|p| (Model::Engine(p.clone()), Kind::Profile)),
             );
         }
-        push_models(&mut all, models);
+        push_models(&mut all, models)?;
     }
     let mut grouped: Vec<EngineReference> = Vec::new();
     for (name, kind, bodies) in all {

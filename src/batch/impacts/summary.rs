@@ -5,6 +5,38 @@ use super::ImpactAudit;
 use crate::batch::KnownFindings;
 use std::collections::BTreeMap;
 
+/// How many scenes of each finding the summary names; the others are counted.
+pub const MAX_NAMED_SCENES: usize = 100;
+
+/// The scenes a finding was found in: how many, and the first [`MAX_NAMED_SCENES`] by their
+/// ids as a message quotes them ([`crate::echo::echo`]: escaped, at most 40 characters), so
+/// that the summary's memory stays bounded however long the file and its ids.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Scenes {
+    /// How many scenes.
+    pub count: usize,
+    /// The first ones' ids.
+    pub named: Vec<String>,
+}
+
+impl Scenes {
+    /// Counts one more scene, naming it while there is room.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::batch::Scenes;
+    /// let mut s = Scenes::default();
+    /// s.push("a\u{1b}[2J");
+    /// assert_eq!((s.count, s.named[0].as_str()), (1, "a\\u{1b}[2J"));
+    /// ```
+    pub fn push(&mut self, id: &str) {
+        self.count += 1;
+        if self.named.len() < MAX_NAMED_SCENES {
+            self.named.push(crate::echo::echo(id));
+        }
+    }
+}
+
 /// What the lines said, together.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct ImpactBatchSummary {
@@ -16,10 +48,10 @@ pub struct ImpactBatchSummary {
     pub matched: BTreeMap<String, usize>,
     /// For each answer's name, the claims it is closest to.
     pub closest: BTreeMap<String, usize>,
-    /// For each finding, the ids of the scenes it was found in, in order.
-    pub findings: BTreeMap<String, Vec<String>>,
-    /// With known findings: the findings no entry allows, with their scenes' ids.
-    pub unexpected: BTreeMap<String, Vec<String>>,
+    /// For each finding, the scenes it was found in, in order.
+    pub findings: BTreeMap<String, Scenes>,
+    /// With known findings: the findings no entry allows, with their scenes.
+    pub unexpected: BTreeMap<String, Scenes>,
     /// With known findings: the entries (0-based) some scene used.
     pub used: Vec<usize>,
 }
@@ -42,7 +74,7 @@ impl ImpactBatchSummary {
             self.findings
                 .entry((*f).into())
                 .or_default()
-                .push(audit.id.clone());
+                .push(&audit.id);
         }
         if let Some(expected) = expected {
             let (used, unexpected) = expected.check(&audit.id, &audit.findings, false);
@@ -50,10 +82,7 @@ impl ImpactBatchSummary {
             self.used.sort_unstable();
             self.used.dedup();
             for f in unexpected {
-                self.unexpected
-                    .entry(f.into())
-                    .or_default()
-                    .push(audit.id.clone());
+                self.unexpected.entry(f.into()).or_default().push(&audit.id);
             }
         }
     }

@@ -11,6 +11,7 @@ use super::{Model, ModelAnswer, ModelOutcome};
 use crate::field::Field;
 use crate::impact::coulomb::cone_excess;
 use crate::impact::law::Law;
+use crate::impact::work::{Meter, Stopped, Work};
 use crate::model::System;
 
 /// What friction does at a contact during a phase.
@@ -26,6 +27,10 @@ enum Grip {
 /// The couplings of normal and tangential impulses: (nn, nt, tn, tt).
 type Blocks<F> = [Vec<Vec<F>>; 4];
 
+/// One solution of a phase: the normal impulses, the tangential ones, and whether only their
+/// combined effect is determined (the split among the contacts is open).
+type PhaseSolution<F> = (Vec<F>, Vec<F>, bool);
+
 /// One phase with Coulomb friction (the oracle's formulation, `tests/oracles/several-contacts.md`
 /// section 6): from the velocities `(un, ut)`, the normal impulses `ln >= base` with
 /// `un' + off >= 0` complementary to `ln - base`, and `|lt| <= mu ln` with
@@ -36,12 +41,15 @@ fn friction_phase<F: Field>(
     (un, ut): (&[F], &[F]),
     mu: &[F],
     (base, off): (&[F], &[F]),
-) -> Vec<(Vec<F>, Vec<F>, bool)> {
+) -> Result<Vec<PhaseSolution<F>>, Stopped> {
     let n = un.len();
     let [nn, nt, tn, tt] = blocks;
     let grips = [Grip::Stick, Grip::Forward, Grip::Backward];
-    let mut found: Vec<(Vec<F>, Vec<F>, bool)> = Vec::new();
+    let mut found: Vec<PhaseSolution<F>> = Vec::new();
+    let mut meter = Meter::new(Work::Modes);
     for code in 0..6usize.pow(n as u32) {
+        // Elimination on 2n rows of 2n unknowns, then the velocities at the phase's end.
+        meter.charge(8 * n * n * n + 4 * n * n, un.iter().chain(ut).chain(base))?;
         let modes: Vec<(bool, Grip)> = (0..n)
             .map(|i| {
                 let digit = code / 6usize.pow(i as u32) % 6;
@@ -116,7 +124,7 @@ fn friction_phase<F: Field>(
             found.push((ln, lt, free));
         }
     }
-    found
+    Ok(found)
 }
 
 /// A solution of `a x = b` when the system is consistent: the unique one, or one with the free
@@ -166,7 +174,7 @@ pub(super) fn with_friction<F: Field>(
     w: &[Vec<F>],
     u0: &[F],
     model: &Model,
-) -> ModelOutcome<F> {
+) -> Result<ModelOutcome<F>, Stopped> {
     let n = contacts.len();
     let blocks: Blocks<F> = [
         w.to_vec(),
@@ -206,20 +214,20 @@ pub(super) fn with_friction<F: Field>(
             let off: Vec<F> = (0..n)
                 .map(|i| -Law::newton_leaving(&contacts.e[i], &negative_part(&u0[i])))
                 .collect();
-            friction_phase(&blocks, (u0, &ut0), mu, (&zero, &off))
+            friction_phase(&blocks, (u0, &ut0), mu, (&zero, &off))?
                 .into_iter()
                 .map(finish_one)
                 .collect()
         }
         Model::SimultaneousPoisson => {
             let mut all = Vec::new();
-            for (lc, tc, free_c) in friction_phase(&blocks, (u0, &ut0), mu, (&zero, &zero)) {
+            for (lc, tc, free_c) in friction_phase(&blocks, (u0, &ut0), mu, (&zero, &zero))? {
                 let un_c = after(u0, (&blocks[0], &blocks[1]), &lc, &tc);
                 let ut_c = after(&ut0, (&blocks[2], &blocks[3]), &lc, &tc);
                 let base: Vec<F> = (0..n)
                     .map(|i| Law::poisson_restitution(&contacts.e[i], &lc[i]))
                     .collect();
-                for (le, te, free_e) in friction_phase(&blocks, (&un_c, &ut_c), mu, (&base, &zero))
+                for (le, te, free_e) in friction_phase(&blocks, (&un_c, &ut_c), mu, (&base, &zero))?
                 {
                     let ln = (0..n).map(|i| lc[i].clone() + &le[i]).collect();
                     let lt = (0..n).map(|i| tc[i].clone() + &te[i]).collect();
@@ -234,7 +242,7 @@ pub(super) fn with_friction<F: Field>(
         // impulse, u1 - W lam1 + e u0^- + W lam >= 0 (`lcp`), the tangential impulses kept.
         Model::Split => {
             let mut all = Vec::new();
-            for (l1, t1, free) in friction_phase(&blocks, (u0, &ut0), mu, (&zero, &zero)) {
+            for (l1, t1, free) in friction_phase(&blocks, (u0, &ut0), mu, (&zero, &zero))? {
                 let u1 = after(u0, (&blocks[0], &blocks[1]), &l1, &t1);
                 let q: Vec<F> = (0..n)
                     .map(|i| {
@@ -246,15 +254,16 @@ pub(super) fn with_friction<F: Field>(
                             - &Law::newton_leaving(&contacts.e[i], &negative_part(&u0[i]))
                     })
                     .collect();
-                for total in lcp(w, &q) {
-                    let second: Vec<F> = (0..n).map(|i| total[i].clone() - &l1[i]).collect();
+                for total in lcp(w, &q)? {
+                    let second: Vec<F> = (0..n).map(|i| total.lam[i].clone() - &l1[i]).collect();
                     let stages = vec![(l1.clone(), t1.clone()), (second, zero.clone())];
-                    all.push(finish_staged_one((total, t1.clone(), free), stages));
+                    let free = free || !total.determined;
+                    all.push(finish_staged_one((total.lam, t1.clone(), free), stages));
                 }
             }
             all
         }
-        Model::Sequential(_) => return ModelOutcome::FrictionlessOnly,
+        Model::Sequential(_) => return Ok(ModelOutcome::FrictionlessOnly),
         Model::Pgs(_) | Model::Engine(_) => unreachable!("the iterative models are solved apart"),
     };
     // Answers that differ only in how an indeterminate friction split is shared are one.
@@ -277,9 +286,9 @@ pub(super) fn with_friction<F: Field>(
             None => distinct.push(a),
         }
     }
-    if distinct.is_empty() {
+    Ok(if distinct.is_empty() {
         ModelOutcome::NoSolution
     } else {
         ModelOutcome::Answered(distinct)
-    }
+    })
 }

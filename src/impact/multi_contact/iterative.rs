@@ -14,10 +14,14 @@ use super::common::{Contacts, negative_part};
 use crate::field::{Field, Q};
 use crate::impact::engines::Profile;
 use crate::impact::law::Law;
+use crate::impact::work::{Meter, Stopped, Work};
 use crate::model::{Shape, System};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use std::cmp::Ordering;
+
+/// The normal and the tangential impulses of every contact.
+type NormalAndTangential<F> = (Vec<F>, Vec<F>);
 
 /// W's blocks between the contacts' normal (n) and tangent (t) rows.
 pub(super) struct Blocks<F> {
@@ -56,6 +60,19 @@ impl<F: Field> State<F> {
             u_n: u0.0.to_vec(),
             u_t: u0.1.to_vec(),
         }
+    }
+
+    /// Charges one sweep: each of the 2n rows updates the velocities at every contact.
+    fn charge(&self, meter: &mut Meter) -> Result<(), Stopped> {
+        let n = self.lam_n.len();
+        meter.charge(
+            2 * n * n,
+            self.lam_n
+                .iter()
+                .chain(&self.lam_t)
+                .chain(&self.u_n)
+                .chain(&self.u_t),
+        )
     }
 
     /// Sets contact `i`'s normal impulse to `value`, the velocities following.
@@ -115,10 +132,13 @@ pub(super) fn pgs<F: Field>(
     w: &Blocks<F>,
     u0: (&[F], &[F]),
     sweeps: u32,
-) -> (Vec<F>, Vec<F>) {
+    share: u64,
+) -> Result<(Vec<F>, Vec<F>), Stopped> {
     let n = u0.0.len();
     let mut s = State::start(u0);
+    let mut meter = Meter::shared(Work::Sweeps, share);
     for _ in 0..sweeps {
+        s.charge(&mut meter)?;
         for i in 0..n {
             if !w.nn[i][i].is_zero() {
                 let target = s.u_n[i].clone()
@@ -136,7 +156,7 @@ pub(super) fn pgs<F: Field>(
             }
         }
     }
-    (s.lam_n, s.lam_t)
+    Ok((s.lam_n, s.lam_t))
 }
 
 /// How pymunk (Chipmunk) sees a body: its harness's shape (a rod or an unshaped fixed body is
@@ -164,14 +184,15 @@ pub(super) fn pymunk<F: Field>(
     w: &Blocks<F>,
     u0: (&[F], &[F]),
     iterations: u32,
-) -> Option<(Vec<F>, Vec<F>)> {
+) -> Result<Option<NormalAndTangential<F>>, Stopped> {
     let n = u0.0.len();
     let mut s = State::start(u0);
+    let mut meter = Meter::new(Work::EngineSteps);
     let mut total_n = vec![F::zero(); n];
     let mut total_t = vec![F::zero(); n];
     for _ in 0..MAX_ENGINE_STEPS {
         if !s.u_n.iter().any(|u| u.sign() == Some(Ordering::Less)) {
-            return Some((total_n, total_t));
+            return Ok(Some((total_n, total_t)));
         }
         let start = s.u_n.clone();
         let active: Vec<usize> = (0..n)
@@ -192,6 +213,7 @@ pub(super) fn pymunk<F: Field>(
         s.lam_n = vec![F::zero(); n];
         s.lam_t = vec![F::zero(); n];
         for _ in 0..iterations {
+            s.charge(&mut meter)?;
             for &i in &active {
                 let (vn, vt) = (s.u_n[i].clone(), s.u_t[i].clone());
                 let bounce = contacts.e[i].clone() * &start[i];
@@ -211,7 +233,7 @@ pub(super) fn pymunk<F: Field>(
             total_t[i] = total_t[i].clone() + &s.lam_t[i];
         }
     }
-    None
+    Ok(None)
 }
 
 /// Whether the approach `u_n` (along a normal of squared length `n2`) is faster than
@@ -262,7 +284,7 @@ pub(super) fn box2d<F: Field>(
     w: &Blocks<F>,
     u0: (&[F], &[F]),
     profile: &Profile,
-) -> (Vec<F>, Vec<F>) {
+) -> Result<(Vec<F>, Vec<F>), Stopped> {
     let n = u0.0.len();
     let threshold = F::from_rational(&profile.threshold);
     let n2: Vec<F> = system
@@ -297,7 +319,9 @@ pub(super) fn box2d<F: Field>(
         })
         .collect();
     let mut s = State::start(u0);
+    let mut meter = Meter::new(Work::EngineSteps);
     for _ in 0..profile.engine.iterations() {
+        s.charge(&mut meter)?;
         for g in &solved {
             for &i in g {
                 if rough(contacts, w, i) {
@@ -326,7 +350,7 @@ pub(super) fn box2d<F: Field>(
             }
         }
     }
-    (s.lam_n, s.lam_t)
+    Ok((s.lam_n, s.lam_t))
 }
 
 /// Box2D's 2-point block solver: the normal impulses of points `i` and `j` that solve their
@@ -373,7 +397,7 @@ pub(super) fn bullet<F: Field>(
     w: &Blocks<F>,
     u0: (&[F], &[F]),
     profile: &Profile,
-) -> (Vec<F>, Vec<F>) {
+) -> Result<(Vec<F>, Vec<F>), Stopped> {
     let n = u0.0.len();
     let threshold = F::from_rational(&profile.threshold);
     let epsilon = F::from_rational(&Q::new(BigInt::from(1), BigInt::from(2).pow(52u32)));
@@ -403,7 +427,9 @@ pub(super) fn bullet<F: Field>(
         })
         .collect();
     let mut s = State::start(u0);
+    let mut meter = Meter::new(Work::EngineSteps);
     for _ in 0..profile.engine.iterations() {
+        s.charge(&mut meter)?;
         let mut worst = F::zero();
         let mut note = |d: &F, k: &F, n2: &F| {
             let r = d.clone() * d * k * k / n2;
@@ -432,5 +458,5 @@ pub(super) fn bullet<F: Field>(
             break;
         }
     }
-    (s.lam_n, s.lam_t)
+    Ok((s.lam_n, s.lam_t))
 }

@@ -11,6 +11,7 @@
 //! answer; where W is singular the impulses themselves may be split otherwise.
 
 use crate::field::Field;
+use crate::impact::work::{Meter, Stopped, Work};
 use std::cmp::Ordering;
 
 /// The tableau `B^-1 [I | -W | -1 | q]` of the basis B, one row per basic variable.
@@ -88,12 +89,16 @@ impl<F: Field> Tableau<F> {
 ///
 /// For Newton's cradle of three unit balls (W = [2, -1; -1, 2], q = (1 + e) u0 = (-2, 0) at
 /// e = 1) it gives z = (4/3, 2/3) (the tests below).
-pub(super) fn lemke<F: Field>(w: &[Vec<F>], q: &[F]) -> Option<Vec<F>> {
+///
+/// # Errors
+/// [`Stopped`] when its pivots pass their work limit or the host interrupts.
+pub(super) fn lemke<F: Field>(w: &[Vec<F>], q: &[F]) -> Result<Option<Vec<F>>, Stopped> {
     let n = q.len();
     let negative = |x: &F| x.sign() == Some(Ordering::Less);
     if !q.iter().any(negative) {
-        return Some(vec![F::zero(); n]);
+        return Ok(Some(vec![F::zero(); n]));
     }
+    let mut meter = Meter::new(Work::Pivots);
     let mut t = Tableau::new(w, q);
     let one = F::one();
     // z0 enters where it lifts the most negative q to zero (lexicographically least row).
@@ -102,12 +107,17 @@ pub(super) fn lemke<F: Field>(w: &[Vec<F>], q: &[F]) -> Option<Vec<F>> {
         .expect("n >= 1: some q is negative");
     let mut entering = complement(t.pivot(first, 2 * n), n);
     loop {
+        // A pivot updates every entry of the tableau: n rows of 2n + 1 numbers.
+        meter.charge(n * (2 * n + 1), t.values.iter())?;
         let candidates: Vec<usize> = (0..n)
             .filter(|&i| t.rows[i][entering].sign() == Some(Ordering::Greater))
             .collect();
-        let r = candidates
+        let Some(r) = candidates
             .into_iter()
-            .min_by(|&i, &k| t.lex_cmp((i, &t.rows[i][entering]), (k, &t.rows[k][entering])))?;
+            .min_by(|&i, &k| t.lex_cmp((i, &t.rows[i][entering]), (k, &t.rows[k][entering])))
+        else {
+            return Ok(None);
+        };
         let leaving = t.pivot(r, entering);
         if leaving == 2 * n {
             let mut z = vec![F::zero(); n];
@@ -116,7 +126,7 @@ pub(super) fn lemke<F: Field>(w: &[Vec<F>], q: &[F]) -> Option<Vec<F>> {
                     z[var - n] = t.values[row].clone();
                 }
             }
-            return Some(z);
+            return Ok(Some(z));
         }
         entering = complement(leaving, n);
     }
@@ -142,7 +152,7 @@ mod tests {
     fn the_cradle_pushes_both_contacts() {
         let w = matrix(&[&[2, -1], &[-1, 2]]);
         assert_eq!(
-            lemke(&w, &[q(-2, 1), q(0, 1)]),
+            lemke(&w, &[q(-2, 1), q(0, 1)]).unwrap(),
             Some(vec![q(4, 3), q(2, 3)])
         );
     }
@@ -150,10 +160,13 @@ mod tests {
     #[test]
     fn a_contact_already_leaving_takes_nothing() {
         let w = matrix(&[&[2, -1], &[-1, 2]]);
-        assert_eq!(lemke(&w, &[q(1, 1), q(3, 1)]), Some(vec![q(0, 1), q(0, 1)]));
+        assert_eq!(
+            lemke(&w, &[q(1, 1), q(3, 1)]).unwrap(),
+            Some(vec![q(0, 1), q(0, 1)])
+        );
         // The second contact leaves once the first pushes: z = (1/2, 0), w = (0, 5/2).
         assert_eq!(
-            lemke(&w, &[q(-1, 1), q(3, 1)]),
+            lemke(&w, &[q(-1, 1), q(3, 1)]).unwrap(),
             Some(vec![q(1, 2), q(0, 1)])
         );
     }
@@ -162,7 +175,7 @@ mod tests {
     fn no_solution_ends_on_a_ray() {
         // W = 0 and q < 0: nothing can lift the velocity.
         let w = matrix(&[&[0, 0], &[0, 0]]);
-        assert_eq!(lemke(&w, &[q(-1, 1), q(0, 1)]), None);
+        assert_eq!(lemke(&w, &[q(-1, 1), q(0, 1)]).unwrap(), None);
     }
 
     #[test]
@@ -171,7 +184,7 @@ mod tests {
         // approaching velocities: the lexicographic rule ends, and w = q + W z is complementary.
         let w = matrix(&[&[2, 1, 0], &[1, 1, 1], &[0, 1, 2]]);
         let before = [q(-1, 1), q(-1, 1), q(0, 1)];
-        let z = lemke(&w, &before).expect("feasible");
+        let z = lemke(&w, &before).unwrap().expect("feasible");
         let after: Vec<Q> = (0..3)
             .map(|i| (0..3).fold(before[i].clone(), |acc, j| acc + &w[i][j] * &z[j]))
             .collect();

@@ -42,6 +42,7 @@ use crate::field::Field;
 use crate::impact::engines::{Engine, Profile};
 use crate::impact::law::Law;
 use crate::impact::ledger::EnergyLedger;
+use crate::impact::work::Stopped;
 use crate::mechanics::planar::Vec2;
 use crate::model::System;
 use std::cmp::Ordering;
@@ -164,6 +165,31 @@ impl Model {
     }
 }
 
+impl Model {
+    /// How many of `models`, answered together, share this one's work limit
+    /// ([`solve_several_sharing`]): the sequential orders share one limit among them; every
+    /// other model has a limit of its own.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::impact::{Model, orders};
+    /// let mut models: Vec<Model> = orders(3).into_iter().map(Model::Sequential).collect();
+    /// models.push(Model::Pgs(10));
+    /// assert_eq!(models[0].share_among(&models), 6);
+    /// assert_eq!(Model::Pgs(10).share_among(&models), 1);
+    /// ```
+    pub fn share_among(&self, models: &[Model]) -> u64 {
+        match self {
+            Model::Sequential(_) => models
+                .iter()
+                .filter(|m| matches!(m, Model::Sequential(_)))
+                .count()
+                .max(1) as u64,
+            _ => 1,
+        }
+    }
+}
+
 impl fmt::Display for Model {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -192,6 +218,8 @@ pub enum ModelOutcome<F> {
     DoesNotStop,
     /// The model is frictionless here (sequential impacts), and the scene has friction.
     FrictionlessOnly,
+    /// The exact work passed its limit, or the host interrupted it ([`Stopped`]).
+    Stopped(Stopped),
 }
 
 /// Total momentum, angular momentum about the origin and kinetic energy of the moving bodies,
@@ -231,8 +259,9 @@ pub struct ModelAnswer<F> {
     pub impulses: Vec<F>,
     /// The tangential impulse coefficient at each contact (zero without friction).
     pub tangential: Vec<F>,
-    /// Friction at contacts that stick along one line leaves only the sum of their tangential
-    /// impulses determined: these are one split of it (the velocities are the same for all).
+    /// The impulses are one split of several that give the same velocities (W singular:
+    /// friction at contacts sticking along one line, or normal impulses shared among contacts
+    /// on one rigid body); false only where no other impulses give these velocities.
     pub split_indeterminate: bool,
     /// Every moving body after: (index, velocity, spin).
     pub bodies: Vec<(usize, Vec2<F>, F)>,
@@ -266,6 +295,37 @@ pub struct ModelAnswer<F> {
 /// # Ok::<(), rodimpact::Error>(())
 /// ```
 pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F> {
+    solve_several_sharing(system, model, 1)
+}
+
+/// [`solve_several`] for one of `share` models answered together (every sequential order of
+/// a scene): its work stops at a `share`-th of its limit ([`crate::impact::Work`]), so that
+/// together they stay within one.
+///
+/// # Examples
+/// ```
+/// use rodimpact::{field::Q, model::parse_toml};
+/// use rodimpact::impact::{Model, ModelOutcome, solve_several_sharing};
+/// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/cradle-3.toml"))?;
+/// let system = parse_toml("cradle", &text)?;
+/// let outcome = solve_several_sharing::<Q>(&system, &Model::Sequential(vec![0, 1]), 2);
+/// assert!(matches!(outcome, ModelOutcome::Answered(_)));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn solve_several_sharing<F: Field>(
+    system: &System,
+    model: &Model,
+    share: u64,
+) -> ModelOutcome<F> {
+    solve_model(system, model, share).unwrap_or_else(ModelOutcome::Stopped)
+}
+
+/// [`solve_several_sharing`], the work's stop as an error.
+fn solve_model<F: Field>(
+    system: &System,
+    model: &Model,
+    share: u64,
+) -> Result<ModelOutcome<F>, Stopped> {
     let contacts = common::Contacts::<F>::of(system);
     let w = contacts.delassus();
     let u0 = contacts.before(0);
@@ -282,30 +342,36 @@ pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F
     let ut0 = || contacts.before(1);
     match model {
         Model::Pgs(sweeps) => {
-            return iterated(iterative::pgs(&contacts, &blocks(), (&u0, &ut0()), *sweeps));
+            return Ok(iterated(iterative::pgs(
+                &contacts,
+                &blocks(),
+                (&u0, &ut0()),
+                *sweeps,
+                share,
+            )?));
         }
         Model::Engine(profile) => {
             let (w_blocks, ut0) = (blocks(), ut0());
             let u = (&u0[..], &ut0[..]);
-            return match profile.engine {
+            return Ok(match profile.engine {
                 Engine::Pymunk7 => {
                     let iterations = profile.engine.iterations();
-                    match iterative::pymunk(system, &contacts, &w_blocks, u, iterations) {
+                    match iterative::pymunk(system, &contacts, &w_blocks, u, iterations)? {
                         Some(impulses) => iterated(impulses),
                         None => ModelOutcome::DoesNotStop,
                     }
                 }
                 Engine::Box2d23 => {
-                    iterated(iterative::box2d(system, &contacts, &w_blocks, u, profile))
+                    iterated(iterative::box2d(system, &contacts, &w_blocks, u, profile)?)
                 }
                 Engine::Bullet3 => {
-                    iterated(iterative::bullet(system, &contacts, &w_blocks, u, profile))
+                    iterated(iterative::bullet(system, &contacts, &w_blocks, u, profile)?)
                 }
                 Engine::Box2d3 | Engine::Rapier036 => {
                     let converged = Model::of_law(profile.engine.law()).expect("an engine's law");
-                    relabel(solve_several(system, &converged), model)
+                    relabel(solve_model(system, &converged, share)?, model)
                 }
-            };
+            });
         }
         _ => {}
     }
@@ -316,7 +382,7 @@ pub fn solve_several<F: Field>(system: &System, model: &Model) -> ModelOutcome<F
     {
         friction::with_friction(system, &contacts, &w, &u0, model)
     } else {
-        frictionless::frictionless(system, &contacts, &w, &u0, model)
+        frictionless::frictionless(system, &contacts, &w, &u0, model, share)
     }
 }
 

@@ -25,6 +25,7 @@ use super::law::{Ends, Law};
 use super::ledger::{Balance, Balances, EnergyLedger};
 use super::multi_contact::{Model, ModelOutcome, solve_several};
 use super::planar::PlanarSystem;
+use super::work::Stopped;
 use crate::field::{Field, Q, QSqrt};
 use crate::mechanics::planar::{PlanarBody, Vec2, angular_momentum, kinetic_energy};
 use crate::model::{Mobility, System};
@@ -104,6 +105,9 @@ pub enum ImpactError {
     /// An engine's law or step gives no answer (no solution, or steps that do not stop).
     #[error("{0}: {1}")]
     Unanswered(String, &'static str),
+    /// The exact work passed its limit, or the host interrupted it.
+    #[error("{0}: {1}")]
+    Stopped(String, Stopped),
 }
 
 /// The system's one contact in a field: the bodies' coordinates and the contact's rows, W and
@@ -313,6 +317,7 @@ fn stages_of<F: Field>(system: &System, model: &Model) -> Result<Vec<(F, F, bool
         ModelOutcome::NoSolution => Err(unanswered("no impulses satisfy it")),
         ModelOutcome::DoesNotStop => Err(unanswered("its steps do not stop")),
         ModelOutcome::FrictionlessOnly => Err(unanswered("it takes no friction")),
+        ModelOutcome::Stopped(stopped) => Err(ImpactError::Stopped(model.to_string(), stopped)),
     }
 }
 

@@ -187,12 +187,8 @@ fn run_batch(args: &ImpactArgs, path: &std::path::Path) -> Result<(), Failure> {
     let mut out = stdout.lock();
     let summary = run(std::io::BufReader::new(file), &label, &options, |audit| {
         let json = serde_json::to_string(&impact_audit_json(audit)).expect("JSON of strings");
-        writeln!(out, "{json}").map_err(|_| {
-            Error::new(
-                "stdout",
-                ErrorKind::Invalid("cannot write standard output".into()),
-            )
-        })
+        // A reader gone (`| head -1`) ends the run quietly; another failure with its reason.
+        writeln!(out, "{json}").map_err(|why| super::stdout_failed(&why))
     })?;
     let expect_file = args.expect.as_deref().map(rodimpact::echo::echo_path);
     let text = impact_batch_text(

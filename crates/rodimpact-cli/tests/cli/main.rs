@@ -23,6 +23,7 @@ mod explore;
 mod formula;
 mod handout;
 mod impact;
+mod impact_limits;
 mod no_half_written;
 mod oblique;
 mod output_dir;
