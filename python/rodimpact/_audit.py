@@ -95,8 +95,9 @@ def audit(
     Tolerances may be strings, ints, Fractions or floats (a float is read as its shortest
     repr: ``1e-9`` is 1/10^9).
 
-    Returns the CLI's output rows as a pandas ``DataFrame`` (a pyarrow ``Table`` when pandas is
-    not installed, a list of dicts of text without pyarrow either): the input's columns (a DataFrame's own columns and index as they were; a
+    Returns the CLI's output rows as a pandas ``DataFrame`` whenever pandas is installed (a
+    pyarrow ``Table`` without pandas, a list of dicts of text without either; a table as the
+    source needs pyarrow): the input's columns (a DataFrame's own columns and index as they were; a
     file's as text), then the appended ones: exact values as text (``"3/5"``; ``Fraction(x)``
     reads one), ``laws_held`` and ``*_ok`` as booleans, ``*_rel_error`` and ``energy_change``
     as floats (missing where the CLI writes ``-`` or nothing), ``diagnosis`` as text.
@@ -285,7 +286,7 @@ def _collect(stream: Any, feed: Any, original: Any) -> Any:
         raise
     summary = AuditSummary(text, ok, rows, stream.passed_through, stream.agreement)
     if pa is None:
-        return _rows_without_pyarrow(names, raw, summary)
+        return _without_pyarrow(names, raw, summary)
     columns = {}
     for k, name in enumerate(names):
         chunked = pa.chunked_array(blocks[k], type=pa.large_string())
@@ -324,13 +325,34 @@ def _with_summary_table(table: Any, summary: AuditSummary) -> Any:
     return table.replace_schema_metadata(meta)
 
 
-def _rows_without_pyarrow(names: List[str], raw: List[Any], summary: AuditSummary) -> Any:
-    rows: List[Dict[str, str]] = []
-    for count, columns in raw:
-        cells = []
-        for data, offsets in columns:
+def _without_pyarrow(names: List[str], raw: List[Any], summary: AuditSummary) -> Any:
+    """The rows of a file's audit without pyarrow: a pandas DataFrame typed as with pyarrow
+    (text, nullable booleans, floats) when pandas is installed, else a list of dicts of text."""
+    columns: List[List[str]] = [[] for _ in names]
+    for count, blocks in raw:
+        for k, (data, offsets) in enumerate(blocks):
             ends = [int.from_bytes(offsets[8 * i : 8 * i + 8], "little") for i in range(count + 1)]
-            cells.append([data[ends[i] : ends[i + 1]].decode() for i in range(count)])
-        for i in range(count):
-            rows.append({name: cells[k][i] for k, name in enumerate(names)})
-    return rows
+            columns[k].extend(data[ends[i] : ends[i + 1]].decode() for i in range(count))
+    try:
+        import pandas as pd
+    except ImportError:
+        rows = len(columns[0]) if columns else 0
+        return [{name: columns[k][i] for k, name in enumerate(names)} for i in range(rows)]
+    typed = {name: _typed_by_pandas(pd, name, column) for name, column in zip(names, columns)}
+    out = pd.DataFrame(typed, columns=names)
+    out.attrs["summary"] = summary
+    return out
+
+
+def _typed_by_pandas(pd: Any, name: str, cells: List[str]) -> Any:
+    """An output column as pandas holds it, with the types :func:`_typed` gives through
+    pyarrow: booleans (``laws_held``, ``*_ok``) as nullable ``boolean``, the rounded relative
+    errors and energy changes as floats (missing where the CLI writes ``-`` or nothing), the
+    rest as text."""
+    if name == "laws_held" or name.endswith("_ok"):
+        return pd.array([_TRUE_FALSE.get(c) for c in cells], dtype="boolean")
+    if name.endswith("_rel_error") or name == "energy_change" or name.endswith("_f64"):
+        return pd.array(
+            [None if c in ("-", "") else float(c.lstrip("+")) for c in cells], dtype="float64"
+        )
+    return pd.array(cells, dtype=object)

@@ -161,10 +161,31 @@ def test_summary_is_the_clis_stderr_with_atol(cli):
     assert (code == 0) == out.attrs["summary"].ok
 
 
-def test_without_pyarrow_rows_are_dicts(monkeypatch):
+def test_without_pyarrow_a_dataframe_all_the_same(monkeypatch):
+    import sys
+
+    with_pyarrow = rodimpact.audit(DATA / "bench-textbook.csv")
+    monkeypatch.setitem(sys.modules, "pyarrow", None)
+    frame = rodimpact.audit(DATA / "bench-textbook.csv")
+    assert isinstance(frame, pd.DataFrame) and len(frame) == 10_000
+    assert list(frame.columns) == list(with_pyarrow.columns)
+    assert str(frame.attrs["summary"]) == str(with_pyarrow.attrs["summary"])
+    for name in frame.columns:
+        mine, theirs = frame[name], with_pyarrow[name]
+        if name.endswith("_ok") or name == "laws_held":
+            assert str(mine.dtype) == "boolean", name
+        if mine.dtype.kind == "f":
+            assert mine.equals(theirs), name
+        else:
+            assert [str(x) for x in mine] == [str(x) for x in theirs], name
+    assert frame["omega_ok"][0] == True and frame["diagnosis"][0] == "ok"  # noqa: E712
+
+
+def test_without_pyarrow_or_pandas_rows_are_dicts(monkeypatch):
     import sys
 
     monkeypatch.setitem(sys.modules, "pyarrow", None)
+    monkeypatch.setitem(sys.modules, "pandas", None)
     rows = rodimpact.audit(DATA / "bench-textbook.csv")
     assert len(rows) == 10_000
     assert rows[0]["omega_ok"] == "true" and rows[0]["diagnosis"] == "ok"
