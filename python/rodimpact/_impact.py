@@ -39,7 +39,17 @@ class Impact(Report):
         for answer in self._data.get("laws", []):
             if answer.get("law") == name and answer.get("engine") is None:
                 return Record(answer)
+        why = self.not_answered.get(name)
+        if why is not None:
+            raise KeyError(f"{name}: not answered: {why}")
         raise KeyError(f"no law {name!r} in this answer")
+
+    @property
+    def not_answered(self) -> Dict[str, str]:
+        """One contact: the laws (or the engine) that give no answer while others do, each with
+        why (``{"newton": "under newton's law the impact never ends: ..."}``); empty when every
+        law asked for answers."""
+        return {n["law"]: n["why"] for n in self._data.get("not_answered", [])}
 
     @property
     def engine_step(self) -> Optional[Record]:

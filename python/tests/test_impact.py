@@ -237,3 +237,26 @@ def test_ctrl_c_stops_the_exact_work():
         [sys.executable, "-c", INTERRUPTED_CHILD], capture_output=True, text=True, timeout=600
     )
     assert (out.stdout, out.returncode) == ("inside\n", 0), out.stderr
+
+
+def test_a_law_without_an_answer_beside_the_others():
+    # A pinned body on a rough wall: Newton's and Stronge's laws never end the impact.
+    scene = {
+        "body": [
+            {"name": "A", "mass": "1", "inertia": "4/3", "position": ["1", "2"],
+             "velocity": ["28/15", "-7/6"], "omega": "-7/3"},
+            {"name": "B", "fixed": True},
+        ],
+        "pin": [{"body": "A", "point": ["1/2", "6/5"]}],
+        "contact": [{"bodies": ["A", "B"], "point": ["2", "2"], "normal": ["-1/2", "0"],
+                     "e": "1", "mu": "2/3"}],
+    }
+    r = rodimpact.impact(scene)
+    assert [x.law for x in r.laws] == ["poisson"]
+    assert sorted(r.not_answered) == ["energetic", "newton"]
+    assert r.not_answered["newton"].startswith("under newton's law the impact never ends")
+    with pytest.raises(KeyError, match="newton: not answered: under newton's law"):
+        r.law("newton")
+    with pytest.raises(ValueError, match="under newton's law the impact never ends"):
+        rodimpact.impact(scene, law="newton")
+    assert rodimpact.impact(PAPER).not_answered == {}

@@ -7,13 +7,14 @@
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::impact::{
-    Law, MAX_ORDERED, Model, ModelOutcome, Profile, Stopped, contact_matrix, orders,
+    ImpactError, Law, MAX_ORDERED, Model, ModelOutcome, Profile, Stopped, contact_matrix, orders,
     solve_engine_exact, solve_exact, solve_several_sharing,
 };
 use crate::model::{MAX_SCENE_BYTES, from_value, toml_value};
 use crate::textbook::SceneCheck;
 use crate::textbook::impact::{
-    ImpactAnswers, ImpactRun, check_impact_claims, check_model_claims, read_impact_claims,
+    ImpactAnswers, ImpactRun, NotAnswered, check_impact_claims, check_model_claims,
+    read_impact_claims,
 };
 use serde_json::Value;
 
@@ -57,7 +58,7 @@ pub fn read_scene_file(label: &str, path: &std::path::Path) -> Result<Value, Err
 /// use rodimpact::impact::Law;
 /// let value = read_scene_file("paper.toml", "examples/impacts/paper-as-bodies.toml".as_ref())?;
 /// let run = answer_impact(&value, "paper.toml", Some(Law::Newton), None, None)?;
-/// assert!(matches!(&run.answers, ImpactAnswers::Laws(a) if a.len() == 1));
+/// assert!(matches!(&run.answers, ImpactAnswers::Laws(a, _) if a.len() == 1));
 /// let err = answer_impact(&value, "paper.toml", None, Some("pgs:3"), None).unwrap_err();
 /// assert!(err.to_string().starts_with("model: one contact"));
 /// # Ok::<(), rodimpact::Error>(())
@@ -135,15 +136,32 @@ pub fn answer_impact(
         Some(law) if !Law::ALL.contains(&law) => Law::ALL.into_iter().chain([law]).collect(),
         _ => Law::ALL.to_vec(),
     };
-    let unanswered =
-        |e: crate::impact::ImpactError| Error::new(label, ErrorKind::Invalid(e.to_string()));
-    let mut answers = laws
+    // A law or the engine without an answer (the impact never ends under it, its steps do not
+    // stop, its work passed the limit) is said beside the others; the first one's error when
+    // nothing answered.
+    let mut answers = Vec::new();
+    let mut failed = Vec::new();
+    let solved = laws
         .iter()
-        .map(|&law| solve_exact(&system, law).map_err(unanswered))
-        .collect::<Result<Vec<_>, _>>()?;
-    if let Some(profile) = engine {
-        answers.push(solve_engine_exact(&system, profile).map_err(unanswered)?);
+        .map(|&law| (law.to_string(), solve_exact(&system, law)))
+        .chain(engine.map(|p| (p.to_string(), solve_engine_exact(&system, p))));
+    for (name, solved) in solved {
+        match solved {
+            Ok(answer) => answers.push(answer),
+            Err(error) => failed.push((name, error)),
+        }
     }
+    if answers.is_empty() {
+        let (_, error) = failed.swap_remove(0);
+        return Err(Error::new(label, ErrorKind::Invalid(error.to_string())));
+    }
+    let unanswered = failed
+        .into_iter()
+        .map(|(name, error)| NotAnswered {
+            why: not_answered_why(&name, &error),
+            name,
+        })
+        .collect();
     let checked = SceneCheck {
         symbolic: None,
         answers: check_impact_claims(&claims, &system, &answers).map_err(at_file)?,
@@ -151,9 +169,17 @@ pub fn answer_impact(
     Ok(ImpactRun {
         contact: contact_matrix::<Q>(&system),
         system,
-        answers: ImpactAnswers::Laws(answers),
+        answers: ImpactAnswers::Laws(answers, unanswered),
         checked,
     })
+}
+
+/// Why `name` gave no answer, from its error: without the name the error starts with.
+fn not_answered_why(name: &str, error: &ImpactError) -> String {
+    let text = error.to_string();
+    text.strip_prefix(name)
+        .and_then(|rest| rest.strip_prefix(": "))
+        .map_or(text.clone(), str::to_owned)
 }
 
 /// The law `text` names (`newton`, `poisson`, `energetic` or `stronge`, `lcp-newton`,

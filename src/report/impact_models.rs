@@ -4,11 +4,9 @@
 
 use super::impact::{scene_json, show};
 use super::value_json;
+use crate::field::decimal;
 use crate::field::{Q, QSqrt};
-use crate::field::{count, decimal};
-use crate::impact::{
-    ContactMatrix, MAX_ENGINE_STEPS, MAX_SEQUENTIAL_IMPACTS, Model, ModelOutcome, Stopped,
-};
+use crate::impact::{ContactMatrix, Model, ModelOutcome, Stopped};
 use crate::mechanics::planar::Vec2;
 use crate::model::System;
 use num_traits::Zero;
@@ -169,7 +167,7 @@ pub fn models_text(
                 continue;
             }
             ModelOutcome::DoesNotStop => {
-                out.push_str(&format!("  {}\n", does_not_stop(system, model)));
+                out.push_str(&format!("  {}\n", model.why_it_does_not_stop(system)));
                 continue;
             }
             ModelOutcome::FrictionlessOnly => {
@@ -282,29 +280,6 @@ fn same_outcome(a: &ModelOutcome<Q>, b: &ModelOutcome<Q>) -> bool {
         }
         (ModelOutcome::Answered(_), _) | (_, ModelOutcome::Answered(_)) => false,
         _ => a == b,
-    }
-}
-
-/// Why a model that does not stop is reported so: a cap on its impacts or steps, stated as
-/// the cap it is (not a proof that they never stop).
-fn does_not_stop(system: &System, model: &Model) -> String {
-    match model {
-        Model::Engine(profile) => format!(
-            "a contact still approaches after {MAX_ENGINE_STEPS} of {profile}'s steps (the cap, \
-             not a proof that the steps never stop)"
-        ),
-        _ => {
-            let plastic = system.contacts.iter().all(|c| c.e.is_zero());
-            format!(
-                "the impacts do not stop within {} (the cap, not a proof that they never stop{})",
-                count::grouped(MAX_SEQUENTIAL_IMPACTS as u64),
-                if plastic {
-                    ": plastic contacts pass the impulse back and forth, converging"
-                } else {
-                    ""
-                }
-            )
-        }
     }
 }
 

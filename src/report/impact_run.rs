@@ -7,8 +7,9 @@ use super::{
 use crate::textbook::impact::{ImpactAnswers, ImpactRun};
 use serde_json::Value;
 
-/// The JSON of `impact --format json`: [`impact_json`] for one contact, [`models_json`] for
-/// several, with `claims` ([`check_json`]) when the file has published answers.
+/// The JSON of `impact --format json`: [`impact_json`] for one contact (with `not_answered`, the
+/// laws or the engine that give no answer and why, when some do), [`models_json`] for several,
+/// with `claims` ([`check_json`]) when the file has published answers.
 ///
 /// # Examples
 /// ```
@@ -21,7 +22,16 @@ use serde_json::Value;
 /// ```
 pub fn impact_run_json(run: &ImpactRun, digits: usize) -> Value {
     let mut json = match &run.answers {
-        ImpactAnswers::Laws(answers) => impact_json(&run.system, &run.contact.0, answers, digits),
+        ImpactAnswers::Laws(answers, unanswered) => {
+            let mut json = impact_json(&run.system, &run.contact.0, answers, digits);
+            if !unanswered.is_empty() {
+                json["not_answered"] = unanswered
+                    .iter()
+                    .map(|n| serde_json::json!({"law": n.name, "why": n.why}))
+                    .collect();
+            }
+            json
+        }
         ImpactAnswers::Models(outcomes) => {
             models_json(&run.system, &run.contact.0, outcomes, digits)
         }
@@ -46,10 +56,13 @@ pub fn impact_run_json(run: &ImpactRun, digits: usize) -> Value {
 /// ```
 pub fn impact_run_text(run: &ImpactRun, digits: usize) -> String {
     let (mut text, under) = match &run.answers {
-        ImpactAnswers::Laws(answers) => (
-            impact_text(&run.system, &run.contact, answers, digits),
-            "law",
-        ),
+        ImpactAnswers::Laws(answers, unanswered) => {
+            let mut text = impact_text(&run.system, &run.contact, answers, digits);
+            for n in unanswered {
+                text.push_str(&format!("\n{}: not answered: {}\n", n.name, n.why));
+            }
+            (text, "law")
+        }
         ImpactAnswers::Models(outcomes) => (models_text(&run.system, outcomes, digits), "model"),
     };
     if run.has_claims() {

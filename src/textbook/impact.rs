@@ -351,10 +351,21 @@ fn invalid(field: &str, why: &str) -> Error {
 /// The answers of one scene: per law for one contact, per model for several.
 #[derive(Debug, Clone)]
 pub enum ImpactAnswers {
-    /// One contact: its answer under each law asked for.
-    Laws(Vec<LawAnswer<QSqrt>>),
+    /// One contact: its answer under each law asked for that gives one, then the laws (or
+    /// the engine) that give none, each with why.
+    Laws(Vec<LawAnswer<QSqrt>>, Vec<NotAnswered>),
     /// Several contacts: the outcome of each model asked for.
     Models(Vec<(Model, ModelOutcome<Q>)>),
+}
+
+/// A law (or an engine) that gives a one-contact scene no answer, beside the laws that do: the
+/// impact never ends under it, its steps do not stop, or its exact work passed its limit.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NotAnswered {
+    /// The law's or the engine's name (`newton`, `pymunk-7`).
+    pub name: String,
+    /// Why, as a sentence (`a contact still approaches after 60 of pymunk-7's steps ...`).
+    pub why: String,
 }
 
 /// A scene answered: the system, its answers, and the file's claims checked (none when the

@@ -188,6 +188,43 @@ impl Model {
             _ => 1,
         }
     }
+
+    /// Why this model gives no answer on `system` when it is [`ModelOutcome::DoesNotStop`]:
+    /// the cap it reached, which is not a proof that it never stops.
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::impact::{Model, Profile};
+    /// use rodimpact::model::parse_toml;
+    /// let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/impacts/cradle-3.toml")).unwrap();
+    /// let system = parse_toml("cradle-3", &text)?;
+    /// let pymunk = Model::Engine(Profile::parse("pymunk-7").unwrap());
+    /// assert!(pymunk.why_it_does_not_stop(&system).starts_with("a contact still approaches after 60 of pymunk-7's steps"));
+    /// # Ok::<(), rodimpact::Error>(())
+    /// ```
+    pub fn why_it_does_not_stop(&self, system: &System) -> String {
+        match self {
+            Model::Engine(profile) => format!(
+                "a contact still approaches after {MAX_ENGINE_STEPS} of {profile}'s steps (the cap, \
+                 not a proof that the steps never stop)"
+            ),
+            _ => {
+                let plastic = system
+                    .contacts
+                    .iter()
+                    .all(|c| num_traits::Zero::is_zero(&c.e));
+                format!(
+                    "the impacts do not stop within {} (the cap, not a proof that they never stop{})",
+                    crate::field::count::grouped(MAX_SEQUENTIAL_IMPACTS as u64),
+                    if plastic {
+                        ": plastic contacts pass the impulse back and forth, converging"
+                    } else {
+                        ""
+                    }
+                )
+            }
+        }
+    }
 }
 
 impl fmt::Display for Model {

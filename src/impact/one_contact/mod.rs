@@ -104,7 +104,7 @@ pub enum ImpactError {
     Jam(Jam),
     /// An engine's law or step gives no answer (no solution, or steps that do not stop).
     #[error("{0}: {1}")]
-    Unanswered(String, &'static str),
+    Unanswered(String, String),
     /// The exact work passed its limit, or the host interrupted it.
     #[error("{0}: {1}")]
     Stopped(String, Stopped),
@@ -295,7 +295,7 @@ fn solve_one<F: Roots>(
 /// The stages of `model` at the system's one contact: the (normal, tangential) impulse each
 /// adds, and whether Coulomb's law acts in it (not in split's restitution stage).
 fn stages_of<F: Field>(system: &System, model: &Model) -> Result<Vec<(F, F, bool)>, ImpactError> {
-    let unanswered = |why| ImpactError::Unanswered(model.to_string(), why);
+    let unanswered = |why: &str| ImpactError::Unanswered(model.to_string(), why.to_owned());
     match solve_several::<F>(system, model) {
         ModelOutcome::Answered(answers) => {
             let answer = answers.into_iter().next().expect("an answer");
@@ -315,7 +315,7 @@ fn stages_of<F: Field>(system: &System, model: &Model) -> Result<Vec<(F, F, bool
                 .collect())
         }
         ModelOutcome::NoSolution => Err(unanswered("no impulses satisfy it")),
-        ModelOutcome::DoesNotStop => Err(unanswered("its steps do not stop")),
+        ModelOutcome::DoesNotStop => Err(unanswered(&model.why_it_does_not_stop(system))),
         ModelOutcome::FrictionlessOnly => Err(unanswered("it takes no friction")),
         ModelOutcome::Stopped(stopped) => Err(ImpactError::Stopped(model.to_string(), stopped)),
     }
