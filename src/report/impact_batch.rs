@@ -56,7 +56,11 @@ pub fn impact_batch_text(
             list(&summary.closest)
         ));
     }
-    if summary.findings.is_empty() {
+    if summary.claimed == 0 {
+        out.push_str(
+            "nothing audited: no line has a \"claimed\" state (an engine's bodies after)\n",
+        );
+    } else if summary.findings.is_empty() {
         out.push_str("every claim matches an exact answer\n");
     } else {
         out.push_str("findings:\n");

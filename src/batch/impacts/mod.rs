@@ -314,6 +314,14 @@ pub fn audit_impact(
             ErrorKind::Invalid(format!("not JSON: {e}")),
         )
     })?;
+    if value.get("claim").is_some() {
+        return Err(at(Error::new(
+            "claim",
+            ErrorKind::Invalid(
+                "published answers ([[claim]]) belong in a scene file (rodimpact impact FILE.toml); an engine's bodies after go in \"claimed\"".into(),
+            ),
+        )));
+    }
     let mut scene = value.clone();
     if let Value::Object(map) = &mut scene {
         for key in ["id", "class", "claimed"] {
@@ -321,16 +329,21 @@ pub fn audit_impact(
         }
     }
     let system = from_value(&scene).map_err(at)?;
-    let id = value
-        .get("id")
-        .and_then(Value::as_str)
-        .map_or_else(|| number.to_string(), String::from);
+    let id = match value.get("id") {
+        None => number.to_string(),
+        Some(Value::String(id)) => id.clone(),
+        Some(_) => {
+            return Err(at(Error::new(
+                "id",
+                ErrorKind::Invalid("expected a string".into()),
+            )));
+        }
+    };
     let profiles: Vec<Profile> = match engines {
-        EngineChoice::FromClaim => value
-            .get("claimed")
-            .and_then(profile_of_claim)
-            .into_iter()
-            .collect(),
+        EngineChoice::FromClaim => match value.get("claimed") {
+            Some(claimed) => profile_of_claim(claimed).map_err(at)?.into_iter().collect(),
+            None => Vec::new(),
+        },
         EngineChoice::This(profile) => vec![profile.clone()],
         EngineChoice::Every => every_replayed_profile(),
     };

@@ -2,6 +2,7 @@
 //! contact) or models (several), the laws engines converge to, and the engine's own step,
 //! replayed exactly; answers that are equal are one, named by the first and listing the others.
 
+use crate::echo::echo;
 use crate::error::{Error, ErrorKind};
 use crate::field::{Q, QSqrt};
 use crate::impact::{
@@ -45,51 +46,94 @@ impl EngineReference {
     }
 }
 
-/// The engine profile of a line whose `claimed.engine` names one (`pymunk 7.3.1`, `box2d
-/// 2.3.10` with `settings.scale`, `pybullet 3.2.7`, `rapier2d-f64 0.36.1`); `None` for another
-/// engine (MuJoCo's compliant contact has no such step) or none.
+/// The engine profile of a line whose `claimed.engine` names an engine rodimpact replays, by
+/// its name and the major version rodimpact follows (`pymunk 7.3.1`, `box2d 2.3.10` with
+/// `settings.scale`, `box2d v3.1`, `pybullet 3.2.7` with `settings.plane`, `rapier2d-f64
+/// 0.36.1`); `None` for another engine or version (MuJoCo's compliant contact has no such step;
+/// `pymunk 99` is not pymunk 7), or none named. Nothing is guessed from a prefix.
+///
+/// # Errors
+/// `claimed.engine: expected a string`; a setting that the named engine's step takes but that
+/// does not parse (`claimed.settings.scale: ...`, `claimed.settings.plane: expected xz or xy`).
 ///
 /// # Examples
 /// ```
 /// use rodimpact::batch::profile_of_claim;
-/// let line: serde_json::Value = serde_json::from_str(
-///     r#"{"engine": "box2d 2.3.10", "settings": {"scale": "16.0"}}"#).unwrap();
-/// assert_eq!(profile_of_claim(&line).unwrap().to_string(), "box2d-2.3:scale=16");
+/// let claim = |text: &str| serde_json::from_str::<serde_json::Value>(text).unwrap();
+/// let box2d = claim(r#"{"engine": "box2d 2.3.10", "settings": {"scale": "16.0"}}"#);
+/// assert_eq!(profile_of_claim(&box2d)?.unwrap().to_string(), "box2d-2.3:scale=16");
+/// assert_eq!(profile_of_claim(&claim(r#"{"engine": "Box2D v3.1"}"#))?.unwrap().to_string(), "box2d-3");
+/// assert!(profile_of_claim(&claim(r#"{"engine": "pymunk 99"}"#))?.is_none());
+/// assert!(profile_of_claim(&claim(r#"{"engine": "bulletproof-sim 1.0"}"#))?.is_none());
+/// let bad = claim(r#"{"engine": "box2d 2.3.10", "settings": {"scale": "-16"}}"#);
+/// assert!(profile_of_claim(&bad).unwrap_err().to_string().starts_with("claimed.settings.scale"));
+/// # Ok::<(), rodimpact::Error>(())
 /// ```
-pub fn profile_of_claim(claimed: &Value) -> Option<Profile> {
-    let engine = claimed.get("engine")?.as_str()?.to_lowercase();
-    let settings = claimed.get("settings");
-    let setting = |key: &str| {
-        settings
+pub fn profile_of_claim(claimed: &Value) -> Result<Option<Profile>, Error> {
+    let Some(engine) = claimed.get("engine") else {
+        return Ok(None);
+    };
+    let engine = engine
+        .as_str()
+        .ok_or_else(|| {
+            Error::new(
+                "claimed.engine",
+                ErrorKind::Invalid("expected a string".into()),
+            )
+        })?
+        .to_lowercase();
+    let mut words = engine.split_whitespace();
+    let name = words.next().unwrap_or("");
+    let version = words
+        .next()
+        .map(|v| v.trim_start_matches('v'))
+        .unwrap_or("");
+    let major_minor: Vec<&str> = version.split('.').take(2).collect();
+    let setting = |key: &str| -> Option<String> {
+        claimed
+            .get("settings")
             .and_then(|s| s.get(key))
             .map(|v| match v {
                 Value::String(s) => s.clone(),
                 other => other.to_string(),
             })
-            .filter(|s| !s.is_empty())
     };
-    let text = if engine.starts_with("pymunk") || engine.starts_with("chipmunk") {
-        "pymunk-7".to_string()
-    } else if engine.starts_with("box2d 3") || engine.starts_with("box2d-3") {
-        "box2d-3".to_string()
-    } else if engine.starts_with("box2d") {
-        match setting("scale").and_then(|s| crate::number::parse(&s).ok()) {
-            Some(scale) if scale != Q::from_integer(1.into()) => {
+    let refused = |key: &str, why: String| {
+        Error::new(format!("claimed.settings.{key}"), ErrorKind::Invalid(why))
+    };
+    let text = match (name, major_minor.as_slice()) {
+        ("pymunk" | "chipmunk", ["7", ..]) => "pymunk-7".to_string(),
+        ("box2d" | "pybox2d", ["3", ..]) => "box2d-3".to_string(),
+        ("box2d" | "pybox2d", ["2", "3"]) => match setting("scale") {
+            None => "box2d-2.3".to_string(),
+            Some(text) => {
+                let scale = crate::number::parse(&text)
+                    .map_err(|kind| Error::new("claimed.settings.scale", kind))?;
+                if !num_traits::Signed::is_positive(&scale) {
+                    return Err(refused(
+                        "scale",
+                        format!("must be > 0, got {}", echo(&text)),
+                    ));
+                }
                 format!("box2d-2.3:scale={scale}")
             }
-            _ => "box2d-2.3".to_string(),
-        }
-    } else if engine.starts_with("pybullet") || engine.starts_with("bullet") {
-        match setting("plane").as_deref() {
+        },
+        ("pybullet" | "bullet", ["3", ..]) => match setting("plane").as_deref() {
+            None | Some("xz") => "bullet-3".to_string(),
             Some("xy") => "bullet-3:plane=xy".to_string(),
-            _ => "bullet-3".to_string(),
-        }
-    } else if engine.starts_with("rapier") {
-        "rapier-0.36".to_string()
-    } else {
-        return None;
+            Some(other) => {
+                return Err(refused(
+                    "plane",
+                    format!("expected xz or xy, got '{}'", echo(other)),
+                ));
+            }
+        },
+        ("rapier" | "rapier2d" | "rapier2d-f64", ["0", "36"]) => "rapier-0.36".to_string(),
+        _ => return Ok(None),
     };
-    Profile::parse(&text).ok()
+    Profile::parse(&text)
+        .map(Some)
+        .map_err(|why| Error::new("claimed.settings", ErrorKind::Invalid(why)))
 }
 
 /// Every moving body after an impact: its index, velocity and angular velocity.

@@ -87,16 +87,19 @@ impl ImpactBatchSummary {
         }
     }
 
-    /// Whether the batch passes (the exit status 0): no finding, or with known findings none
-    /// that they do not allow.
+    /// Whether the batch passes (the exit status 0): some claim audited, and no finding, or
+    /// with known findings none that they do not allow. A batch without a claimed state (an
+    /// empty file, `"claim"` for `"claimed"`) audited nothing and does not pass.
     ///
     /// # Examples
     /// ```
     /// use rodimpact::batch::ImpactBatchSummary;
-    /// assert!(ImpactBatchSummary::default().passed(false));
+    /// assert!(!ImpactBatchSummary::default().passed(false));
     /// ```
     pub fn passed(&self, with_expected: bool) -> bool {
-        if with_expected {
+        if self.claimed == 0 {
+            false
+        } else if with_expected {
             self.unexpected.is_empty()
         } else {
             self.findings.is_empty()

@@ -262,3 +262,154 @@ fn the_audit_ends_quietly_when_its_reader_stops() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A pinned body on a rough wall (RELIABILITY F2): Newton's and Stronge's laws never end the
+/// impact (the contact sticks with no room to separate), Poisson's does. `--law all` answers
+/// Poisson and says why the others cannot; asking for Newton's alone is refused.
+const JAM: &str = r#"
+[[body]]
+name = "A"
+mass = "1"
+inertia = "4/3"
+position = ["1", "2"]
+velocity = ["28/15", "-7/6"]
+omega = "-7/3"
+[[body]]
+name = "B"
+fixed = true
+[[pin]]
+body = "A"
+point = ["1/2", "6/5"]
+[[contact]]
+bodies = ["A", "B"]
+point = ["2", "2"]
+normal = ["-1/2", "0"]
+e = "1"
+mu = "2/3"
+"#;
+
+/// A law or an engine without an answer is said beside the laws that answer (exit 0), not a
+/// refusal of the whole scene: the jammed pin above, and pymunk's replayed steps on the
+/// published plastic crate, which keep a contact approaching past their cap (hostile-46 F4).
+#[test]
+fn a_law_without_an_answer_is_said_beside_the_others() {
+    let dir = scratch("impact-limits-jam");
+    let path = dir.join("jam.toml");
+    std::fs::write(&path, JAM).unwrap();
+    let path = path.to_str().unwrap();
+    let never_ends = |law: &str| {
+        format!(
+            "under {law}'s law the impact never ends: after compression the normal relative velocity stops rising (the contact sticks with no room to separate)"
+        )
+    };
+    let (code, text, stderr) = rodimpact(&["impact", path]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(text.contains("Poisson (kinetic"), "{text}");
+    assert!(
+        text.contains(&format!(
+            "\nnewton: not answered: {}\n",
+            never_ends("newton")
+        )),
+        "{text}"
+    );
+    let json = json_of(&["impact", path, "--format", "json"]);
+    let laws: Vec<&str> = json["laws"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l["law"].as_str().unwrap())
+        .collect();
+    assert_eq!(laws, ["poisson"]);
+    assert_eq!(
+        json["not_answered"],
+        serde_json::json!([
+            {"law": "newton", "why": never_ends("newton")},
+            {"law": "energetic", "why": never_ends("energetic")},
+        ])
+    );
+    let (code, stdout, stderr) = rodimpact(&["impact", path, "--law", "newton"]);
+    assert_eq!((code, stdout.as_str()), (2, ""));
+    assert_eq!(stderr, format!("error: {path}: {}\n", never_ends("newton")));
+    std::fs::remove_dir_all(&dir).unwrap();
+
+    let (code, text, stderr) = rodimpact(&[
+        "impact",
+        "examples/impacts/published/bj-crate-corner.toml",
+        "--engine",
+        "pymunk-7",
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(text.contains("Stronge (energetic"), "{text}");
+    assert!(
+        text.contains("\npymunk-7: not answered: a contact still approaches after 60 of pymunk-7's steps (the cap, not a proof that the steps never stop)\n"),
+        "{text}"
+    );
+}
+
+/// The audit takes an engine by its name and the version rodimpact replays, never by a prefix
+/// (hostile-46 F7), refuses a setting of that engine's step that does not parse, a line's
+/// `claim` (published answers, or `claimed` misspelt) and a non-string id (F6, F10), and does
+/// not pass when no line has a claimed state.
+#[test]
+fn the_audit_takes_engines_by_name_and_refuses_what_it_would_drop() {
+    let dir = scratch("impact-limits-claims");
+    let first = std::fs::read_to_string(format!(
+        "{}/tests/data/engines/impacts/box2d-2.3.10.jsonl",
+        crate::ROOT
+    ))
+    .unwrap()
+    .lines()
+    .next()
+    .unwrap()
+    .to_owned();
+    let run = |line: &str| {
+        let path = dir.join("line.jsonl");
+        std::fs::write(&path, format!("{line}\n")).unwrap();
+        let (code, out, err) = rodimpact(&["impact", "--batch", path.to_str().unwrap()]);
+        let path = path.to_str().unwrap().to_owned();
+        (code, out, err.replace(&path, "FILE"))
+    };
+    let engine_of = |line: &str| -> Value {
+        let (_, out, err) = run(line);
+        let audit: Value = serde_json::from_str(out.lines().next().unwrap()).expect(&err);
+        audit["error_split"]["profile"].clone()
+    };
+    assert_eq!(engine_of(&first), "box2d-2.3:scale=16");
+    let renamed = |name: &str| first.replace("\"box2d 2.3.10\"", &format!("\"{name}\""));
+    assert_eq!(engine_of(&renamed("Box2D v3.1")), "box2d-3");
+    for unknown in ["pymunk 99", "bulletproof-sim 1.0", "box2d 30.0"] {
+        assert_eq!(engine_of(&renamed(unknown)), Value::Null, "{unknown}");
+    }
+    for (from, to, message) in [
+        (
+            r#""scale": "16.0""#,
+            r#""scale": "-16""#,
+            "error: FILE: line 1: claimed.settings.scale: must be > 0, got -16\n",
+        ),
+        (
+            r#""claimed""#,
+            r#""claim""#,
+            "error: FILE: line 1: claim: published answers ([[claim]]) belong in a scene file (rodimpact impact FILE.toml); an engine's bodies after go in \"claimed\"\n",
+        ),
+    ] {
+        assert!(first.contains(from), "{from}");
+        let (code, out, err) = run(&first.replacen(from, to, 1));
+        assert_eq!((code, out.as_str(), err.as_str()), (2, "", message));
+    }
+    let mut numbered: Value = serde_json::from_str(&first).unwrap();
+    numbered["id"] = 7.into();
+    let (code, out, err) = run(&numbered.to_string());
+    assert_eq!(
+        (code, out.as_str(), err.as_str()),
+        (2, "", "error: FILE: line 1: id: expected a string\n")
+    );
+    let (code, _, err) = rodimpact(&["impact", "--batch", "/dev/null"]);
+    assert_eq!(
+        (code, err.as_str()),
+        (
+            1,
+            "0 scenes, 0 with a claimed state\nnothing audited: no line has a \"claimed\" state (an engine's bodies after)\n"
+        )
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
