@@ -265,8 +265,24 @@ impl Profile {
             })?;
         let mut profile = Profile::of(engine);
         profile.settings = settings.split_whitespace().collect();
+        let mut seen: Vec<&str> = Vec::new();
         for setting in settings.split(',').filter(|s| !s.trim().is_empty()) {
             let (key, value) = setting.split_once('=').unwrap_or((setting, ""));
+            let key = key.trim();
+            if seen.contains(&key) {
+                return Err(format!("{key} is given twice"));
+            }
+            if matches!(key, "threshold" | "scale") {
+                if engine.threshold().is_zero() {
+                    return Err(format!(
+                        "{name} has no restitution threshold (threshold= and scale= apply to box2d-2.3 and box2d-3)"
+                    ));
+                }
+                if seen.iter().any(|k| matches!(*k, "threshold" | "scale")) {
+                    return Err("threshold= and scale= both set the threshold: give one".into());
+                }
+            }
+            seen.push(key);
             let number = || {
                 crate::number::parse(value)
                     .ok()
@@ -278,7 +294,7 @@ impl Profile {
                         )
                     })
             };
-            match key.trim() {
+            match key {
                 "threshold" => profile.threshold = number()?,
                 "scale" => {
                     let scale = number()?;
@@ -300,13 +316,13 @@ impl Profile {
                     };
                 }
                 other => {
+                    let takes = match engine {
+                        Engine::Bullet3 => "plane=xy|xz",
+                        Engine::Box2d23 | Engine::Box2d3 => "threshold=T or scale=S",
+                        Engine::Pymunk7 | Engine::Rapier036 => "no settings",
+                    };
                     return Err(format!(
-                        "{name} takes threshold=T or scale=S{}, got '{}'",
-                        if engine == Engine::Bullet3 {
-                            " or plane=xy|xz"
-                        } else {
-                            ""
-                        },
+                        "{name} takes {takes}, got '{}'",
                         crate::echo::echo(other)
                     ));
                 }

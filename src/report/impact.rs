@@ -428,8 +428,15 @@ fn engine_heading(profile: &crate::impact::Profile) -> String {
     };
     let (e, mu) = engine.combine();
     format!(
-        "{profile} (engine: {what}; restitution threshold {} in the scene's units; combines e by {}, mu by {})",
-        decimal::compact(&profile.threshold),
+        "{profile} (engine: {what}; {}; combines e by {}, mu by {})",
+        if profile.threshold.is_zero() {
+            "no restitution threshold".to_string()
+        } else {
+            format!(
+                "restitution threshold {} in the scene's units",
+                decimal::compact(&profile.threshold)
+            )
+        },
         e.name(),
         mu.name()
     )

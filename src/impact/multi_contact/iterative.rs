@@ -238,6 +238,30 @@ pub(super) fn pymunk<F: Field>(
 
 /// Whether the approach `u_n` (along a normal of squared length `n2`) is faster than
 /// `threshold`: `u_n/|n| < -threshold`, decided without a root.
+/// Whether each contact approaches slower than `profile`'s restitution threshold (per unit
+/// normal), where Box2D v3 gives it no restitution (`b2ApplyRestitution` skips a point whose
+/// `relativeVelocity > -threshold`: one approaching at exactly the threshold bounces, unlike
+/// Box2D 2.3's `vRel < -threshold`). All false without a threshold.
+pub(super) fn below_threshold<F: Field>(
+    system: &System,
+    u_n: &[F],
+    profile: &Profile,
+) -> Vec<bool> {
+    let threshold = F::from_rational(&profile.threshold);
+    system
+        .contacts
+        .iter()
+        .zip(u_n)
+        .map(|(c, u)| {
+            let n2 = F::from_rational(&c.normal.dot(&c.normal));
+            !threshold.is_zero()
+                && (u.sign() != Some(Ordering::Less)
+                    || (u.clone() * u - &(threshold.clone() * &threshold * &n2)).sign()
+                        == Some(Ordering::Less))
+        })
+        .collect()
+}
+
 fn faster_than<F: Field>(u_n: &F, n2: &F, threshold: &F) -> bool {
     if u_n.sign() != Some(Ordering::Less) {
         return false;

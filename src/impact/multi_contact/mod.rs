@@ -405,8 +405,22 @@ fn solve_model<F: Field>(
                     iterated(iterative::bullet(system, &contacts, &w_blocks, u, profile)?)
                 }
                 Engine::Box2d3 | Engine::Rapier036 => {
+                    // The law the soft substeps converge to, without restitution where a
+                    // contact approaches below the threshold (Box2D v3's b2ApplyRestitution).
                     let converged = Model::of_law(profile.engine.law()).expect("an engine's law");
-                    relabel(solve_model(system, &converged, share)?, model)
+                    let slow = iterative::below_threshold(system, &u0, profile);
+                    let outcome = if slow.contains(&true) {
+                        let mut quiet = system.clone();
+                        for (contact, slow) in quiet.contacts.iter_mut().zip(slow) {
+                            if slow {
+                                contact.e = num_traits::Zero::zero();
+                            }
+                        }
+                        solve_model(&quiet, &converged, share)?
+                    } else {
+                        solve_model(system, &converged, share)?
+                    };
+                    relabel(outcome, model)
                 }
             });
         }

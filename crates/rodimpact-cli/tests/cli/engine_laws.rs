@@ -286,3 +286,78 @@ fn the_audits_ci_flags() {
     assert_eq!(code, 2, "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Box2D's restitution threshold applies in both its profiles (hostile-46 F1): a disc landing at
+/// 1/2 m/s with e = 1 does not bounce under box2d-2.3 or box2d-3 (threshold 1 m/s), bounces to
+/// 1/2 under box2d-3:threshold=1/4 and under the engines without a threshold; a threshold for an
+/// engine that has none, a setting given twice, or scale with threshold is refused (F2, F3).
+#[test]
+fn the_restitution_threshold_is_applied_where_an_engine_has_one() {
+    let dir = scratch("engine-threshold");
+    let path = dir.join("slow-disc.toml");
+    std::fs::write(
+        &path,
+        r#"
+[[body]]
+name = "disc"
+mass = "1"
+shape = "disc"
+radius = "1"
+position = ["0", "1"]
+velocity = ["0", "-1/2"]
+[[body]]
+name = "floor"
+fixed = true
+[[contact]]
+bodies = ["disc", "floor"]
+point = ["0", "0"]
+normal = ["0", "1"]
+e = "1"
+"#,
+    )
+    .unwrap();
+    let path = path.to_str().unwrap();
+    for (engine, vy) in [
+        ("box2d-2.3", "0"),
+        ("box2d-3", "0"),
+        ("box2d-3:threshold=1/4", "1/2"),
+        ("box2d-3:scale=4", "1/2"),
+        ("rapier-0.36", "1/2"),
+        ("pymunk-7", "1/2"),
+    ] {
+        let (code, out, err) = rodimpact(&["impact", path, "--engine", engine, "--format", "json"]);
+        assert_eq!(code, 0, "{engine}: {err}");
+        let json: Value = serde_json::from_str(&out).unwrap();
+        let step = json["laws"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|l| l["engine"] == engine)
+            .unwrap_or_else(|| panic!("{engine}: {out}"));
+        assert_eq!(
+            step["bodies"]["disc"]["velocity"][1]["exact"], vy,
+            "{engine}"
+        );
+    }
+    for (engine, why) in [
+        (
+            "pymunk-7:threshold=5",
+            "pymunk-7 has no restitution threshold (threshold= and scale= apply to box2d-2.3 and box2d-3)",
+        ),
+        (
+            "box2d-2.3:scale=2,threshold=5",
+            "threshold= and scale= both set the threshold: give one",
+        ),
+        ("box2d-2.3:scale=2,scale=3", "scale is given twice"),
+        (
+            "rapier-0.36:plane=xy",
+            "rapier-0.36 takes no settings, got 'plane'",
+        ),
+    ] {
+        assert_refused(
+            &["impact", path, "--engine", engine],
+            &format!("error: engine: {why}\n"),
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
