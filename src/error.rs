@@ -171,9 +171,19 @@ impl Error {
         // An operating-system error is told as the system tells it: a wrapper's own context
         // (tempfile names its random temporary, "at path .../.x.csv.UWHvpdus.tmp") is dropped,
         // since `context` already names the file the user gave.
-        let source = match source.raw_os_error() {
-            Some(code) => std::io::Error::from_raw_os_error(code),
-            None => source,
+        let wrapped = source.get_ref().map(|inner| inner.to_string());
+        let source = match (source.raw_os_error(), wrapped) {
+            (Some(code), _) => std::io::Error::from_raw_os_error(code),
+            // tempfile's own wrapper of the system's error, "... at path \"<temporary>\"".
+            (None, Some(text)) if text.contains(" at path \"") => {
+                let told = text
+                    .split(" at path \"")
+                    .next()
+                    .unwrap_or_default()
+                    .to_owned();
+                std::io::Error::new(source.kind(), told)
+            }
+            (None, _) => source,
         };
         Error::new(
             field,

@@ -6,7 +6,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rodimpact::app::batch::{BatchOptions, Spelling};
 use rodimpact::batch::{Arithmetic, Batch, FloatFormat, read_header, run, scene_columns};
 use rodimpact::echo::{echo, echo_path};
-use rodimpact::io::{AtomicFile, write_atomic};
+use rodimpact::io::AtomicFile;
 use rodimpact::report::{batch_passed, batch_report, batch_summary_json, expected_report};
 use rodimpact::{Error, ErrorKind};
 use std::io::{BufReader, IsTerminal, Write};
@@ -152,6 +152,7 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
         .build()
         .map_err(|why| Error::new("jobs", ErrorKind::Invalid(why.to_string())))?;
 
+    let summary_file = super::SummaryFile::open(args.summary_json.as_deref())?;
     let summary = match &args.out {
         Some(path) => {
             let mut out = AtomicFile::create("out", path)?;
@@ -189,12 +190,8 @@ pub(crate) fn run_batch(args: &BatchArgs) -> Result<(), Failure> {
     if let (Some(path), Some(expected)) = (&args.expect, &expected) {
         text.push_str(&expected_report(&summary, expected, path));
     }
-    if let Some(path) = &args.summary_json {
-        let json = batch_summary_json(&summary, expected.as_ref());
-        let json = serde_json::to_string_pretty(&json).expect("JSON of numbers and strings");
-        write_atomic("summary-json", path, &format!("{json}\n"))?;
-    }
     super::print_err(&text);
+    summary_file.write(&batch_summary_json(&summary, expected.as_ref()))?;
     if batch_passed(&summary) {
         Ok(())
     } else {

@@ -6,7 +6,6 @@ use rodimpact::app::impact::{answer_impact, parse_engine, read_scene_file};
 use rodimpact::app::impact_batch::{ImpactBatchOptions, read_known_findings, run};
 use rodimpact::batch::FloatFormat;
 use rodimpact::impact::Law;
-use rodimpact::io::write_atomic;
 use rodimpact::report::{
     impact_audit_json, impact_batch_json, impact_batch_text, impact_run_json, impact_run_text,
 };
@@ -183,6 +182,7 @@ fn run_batch(args: &ImpactArgs, path: &std::path::Path) -> Result<(), Failure> {
         expected,
     )?;
     let file = std::fs::File::open(path).map_err(|e| Error::io(label.clone(), "cannot read", e))?;
+    let summary_file = super::SummaryFile::open(args.summary_json.as_deref())?;
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     let summary = run(std::io::BufReader::new(file), &label, &options, |audit| {
@@ -195,15 +195,8 @@ fn run_batch(args: &ImpactArgs, path: &std::path::Path) -> Result<(), Failure> {
         &summary,
         options.expected.as_ref().zip(expect_file.as_deref()),
     );
-    if let Some(file) = &args.summary_json {
-        let json = impact_batch_json(&summary, options.expected.is_some());
-        write_atomic(
-            "summary-json",
-            file,
-            &format!("{}\n", serde_json::to_string_pretty(&json).expect("JSON")),
-        )?;
-    }
     eprint!("{text}");
+    summary_file.write(&impact_batch_json(&summary, options.expected.is_some()))?;
     if summary.passed(options.expected.is_some()) {
         Ok(())
     } else {

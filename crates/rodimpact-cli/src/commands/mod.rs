@@ -210,6 +210,34 @@ pub(crate) fn print_out(text: &str) {
     }
 }
 
+/// The `--summary-json` file of an audit, opened before the audit runs so that a path that
+/// cannot be written is refused at once, not after every line was audited.
+pub(crate) struct SummaryFile(Option<(rodimpact::io::AtomicFile, String)>);
+
+impl SummaryFile {
+    /// Opens `path` (nothing without one).
+    pub(crate) fn open(path: Option<&std::path::Path>) -> Result<SummaryFile, Error> {
+        path.map(|p| {
+            rodimpact::io::AtomicFile::create("summary-json", p)
+                .map(|file| (file, rodimpact::echo::echo_path(p)))
+        })
+        .transpose()
+        .map(SummaryFile)
+    }
+
+    /// Writes `json`, pretty-printed, all or nothing.
+    pub(crate) fn write(self, json: &serde_json::Value) -> Result<(), Error> {
+        use std::io::Write;
+        let Some((mut file, label)) = self.0 else {
+            return Ok(());
+        };
+        let text = serde_json::to_string_pretty(json).expect("JSON of numbers and strings");
+        writeln!(file, "{text}")
+            .map_err(|why| Error::io("summary-json", format!("cannot write {label}"), why))?;
+        file.commit()
+    }
+}
+
 /// Ends the program after a write to standard output failed: quietly for a broken pipe (the
 /// reader has all it wanted), otherwise with `error: out: cannot write standard output: <reason>`
 /// and exit 2.

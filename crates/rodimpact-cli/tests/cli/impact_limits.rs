@@ -3,7 +3,7 @@
 //! to work on is refused before any work, simultaneous Poisson reports every end of an open set
 //! of answers, and the audit's output survives a reader that stops early.
 
-use crate::common::{rodimpact, scratch};
+use crate::common::{assert_refused, rodimpact, scratch};
 use serde_json::Value;
 use std::io::{BufRead, BufReader};
 use std::process::{Command, Stdio};
@@ -412,4 +412,25 @@ fn the_audit_takes_engines_by_name_and_refuses_what_it_would_drop() {
         )
     );
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A `--summary-json` path that cannot be written is refused before the audit (nothing on
+/// standard output), its message naming the user's path, not a temporary's (hostile-46 F14).
+#[test]
+fn a_summary_path_that_cannot_be_written_is_refused_first() {
+    for command in [
+        &[
+            "impact",
+            "--batch",
+            "tests/data/engines/impacts/pymunk-7.3.1.jsonl",
+        ][..],
+        &["batch", "tests/data/engines/pymunk-7.3.1-f64.csv"][..],
+    ] {
+        let mut args = command.to_vec();
+        args.extend(["--summary-json", "/nonexistent/dir/s.json"]);
+        assert_refused(
+            &args,
+            "error: summary-json: cannot write /nonexistent/dir/s.json: No such file or directory (os error 2)\n",
+        );
+    }
 }
