@@ -54,7 +54,7 @@ pub use expected::{ExpectedEntry, KnownFindings, MAX_EXPECTED_BYTES};
 pub use header::{Batch, read_header, scene_columns};
 pub use impacts::{
     EngineChoice, EngineReference, ErrorSplit, ImpactAudit, ImpactBatchSummary, ImpactTolerance,
-    Kind, MAX_NAMED_SCENES, Scenes, audit_impact, profile_of_claim,
+    Kind, MAX_NAMED_SCENES, Scenes, audit_impact, parse_line, profile_of_claim,
 };
 pub use plan::{Arithmetic, Diagnosis, OutputCheck, RowExpectation, SolvedRow};
 pub use stream::{CHUNK, MAX_LINE, MAX_ROWS, run};

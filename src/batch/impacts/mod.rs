@@ -20,13 +20,16 @@
 //! | `references.rs` | the exact answers a claim is compared with, equal ones grouped |
 //! | `summary.rs` | what the lines said, together |
 
+mod line;
 mod references;
 mod summary;
 
+pub use line::parse_line;
 pub use references::{EngineReference, Kind, profile_of_claim};
 pub use summary::{ImpactBatchSummary, MAX_NAMED_SCENES, Scenes};
 
 use crate::batch::FloatFormat;
+use crate::echo::echo;
 use crate::error::{Error, ErrorKind};
 use crate::field::{Field, Q, QSqrt};
 use crate::impact::Profile;
@@ -130,11 +133,45 @@ fn claimed(value: &Value, system: &System) -> Result<(Option<String>, Option<Bod
     let Some(c) = value.get("claimed") else {
         return Ok((None, None));
     };
+    let unknown = |field: String, expected: &str| {
+        Error::new(
+            field,
+            ErrorKind::Invalid(format!("unknown key (expected {expected})")),
+        )
+    };
+    let c = c
+        .as_object()
+        .ok_or_else(|| Error::new("claimed", ErrorKind::Invalid("expected an object".into())))?;
+    if let Some(key) = c
+        .keys()
+        .find(|k| !["engine", "settings", "bodies"].contains(&k.as_str()))
+    {
+        return Err(unknown(
+            format!("claimed.{}", echo(key)),
+            "engine, settings, bodies",
+        ));
+    }
     let engine = c.get("engine").and_then(Value::as_str).map(String::from);
     let bodies = c
         .get("bodies")
         .and_then(Value::as_object)
         .ok_or_else(|| Error::new("claimed.bodies", ErrorKind::Missing))?;
+    // Every claimed body is a moving body of the scene, with its velocity and spin only.
+    for (name, body) in bodies {
+        let field = format!("claimed.bodies.{}", echo(name));
+        if !system.bodies.iter().any(|b| b.moves() && &b.name == name) {
+            return Err(Error::new(
+                field,
+                ErrorKind::Invalid("no moving body of the scene has this name".into()),
+            ));
+        }
+        if let Some(key) = body.as_object().and_then(|b| {
+            b.keys()
+                .find(|k| !["velocity", "omega"].contains(&k.as_str()))
+        }) {
+            return Err(unknown(format!("{field}.{}", echo(key)), "velocity, omega"));
+        }
+    }
     let number = |v: &Value, field: &str| -> Result<Option<Q>, Error> {
         let text = match v {
             Value::String(s) => s.clone(),
@@ -308,11 +345,9 @@ pub fn audit_impact(
     engines: &EngineChoice,
 ) -> Result<ImpactAudit, Error> {
     let at = |e: Error| Error::new(format!("line {number}: {}", e.field), e.kind);
-    let value: Value = serde_json::from_str(line).map_err(|e| {
-        Error::new(
-            format!("line {number}"),
-            ErrorKind::Invalid(format!("not JSON: {e}")),
-        )
+    let value = parse_line(line).map_err(|e| match e.field.as_str() {
+        "line" => Error::new(format!("line {number}"), e.kind),
+        _ => at(e),
     })?;
     if value.get("claim").is_some() {
         return Err(at(Error::new(

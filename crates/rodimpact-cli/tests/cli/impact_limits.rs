@@ -348,8 +348,9 @@ fn a_law_without_an_answer_is_said_beside_the_others() {
 
 /// The audit takes an engine by its name and the version rodimpact replays, never by a prefix
 /// (hostile-46 F7), refuses a setting of that engine's step that does not parse, a line's
-/// `claim` (published answers, or `claimed` misspelt) and a non-string id (F6, F10), and does
-/// not pass when no line has a claimed state.
+/// `claim` (published answers, or `claimed` misspelt), a non-string id, a key given twice and a
+/// claimed body or key the scene does not have (F6, F9, F10), and does not pass when no line has
+/// a claimed state.
 #[test]
 fn the_audit_takes_engines_by_name_and_refuses_what_it_would_drop() {
     let dir = scratch("impact-limits-claims");
@@ -396,13 +397,53 @@ fn the_audit_takes_engines_by_name_and_refuses_what_it_would_drop() {
         let (code, out, err) = run(&first.replacen(from, to, 1));
         assert_eq!((code, out.as_str(), err.as_str()), (2, "", message));
     }
-    let mut numbered: Value = serde_json::from_str(&first).unwrap();
-    numbered["id"] = 7.into();
-    let (code, out, err) = run(&numbered.to_string());
-    assert_eq!(
-        (code, out.as_str(), err.as_str()),
-        (2, "", "error: FILE: line 1: id: expected a string\n")
-    );
+    // A key given twice (hostile-46 F9), a claimed body or key the scene does not have (H9).
+    let body = r#""omega": "#;
+    assert!(first.contains(body));
+    let twice = first.replacen(body, r#""omega": "9", "omega": "#, 1);
+    let line: Value = serde_json::from_str(&first).unwrap();
+    let name = line["claimed"]["bodies"]
+        .as_object()
+        .unwrap()
+        .keys()
+        .next()
+        .unwrap()
+        .clone();
+    let edited = |edit: &dyn Fn(&mut Value)| {
+        let mut line = line.clone();
+        edit(&mut line);
+        line.to_string()
+    };
+    for (line, message) in [
+        (
+            edited(&|l| l["id"] = 7.into()),
+            "id: expected a string".to_string(),
+        ),
+        (
+            twice,
+            format!(
+                "claimed.bodies.{name}.omega: given twice (a key may appear once in an object)"
+            ),
+        ),
+        (
+            edited(&|l| l["claimed"]["bodies"]["ghost"] = l["claimed"]["bodies"][&name].clone()),
+            "claimed.bodies.ghost: no moving body of the scene has this name".to_string(),
+        ),
+        (
+            edited(&|l| l["claimed"]["bodyz"] = 1.into()),
+            "claimed.bodyz: unknown key (expected engine, settings, bodies)".to_string(),
+        ),
+        (
+            edited(&|l| l["claimed"]["bodies"][&name]["spin"] = 1.into()),
+            format!("claimed.bodies.{name}.spin: unknown key (expected velocity, omega)"),
+        ),
+    ] {
+        let (code, out, err) = run(&line);
+        assert_eq!(
+            (code, out.as_str(), err),
+            (2, "", format!("error: FILE: line 1: {message}\n"))
+        );
+    }
     let (code, _, err) = rodimpact(&["impact", "--batch", "/dev/null"]);
     assert_eq!(
         (code, err.as_str()),
