@@ -140,6 +140,11 @@ def _pyarrow() -> Any:
 def _as_table(source: Any) -> Any:
     """The pyarrow Table of a DataFrame or Table, and the DataFrame itself (to hand back its
     columns unchanged)."""
+    kind = type(source)
+    if not any(c.__module__.split(".")[0] in ("pandas", "pyarrow") for c in kind.__mro__):
+        raise TypeError(
+            f"audit: expected a path, a pandas DataFrame or a pyarrow Table, got {kind.__name__}"
+        )
     pa = _pyarrow()
     if isinstance(source, pa.Table):
         return source, None

@@ -261,6 +261,26 @@ def _short(decimal_text: str) -> str:
     return decimal_text if len(decimal_text) <= 20 else decimal_text[:18] + "…"
 
 
+#: The library's limit on the digits of one number (``number::MAX_DIGITS``).
+MAX_DIGITS = 10_000
+
+
+def _int_text(name: str, n: int) -> str:
+    """``n`` in decimal, past CPython's 4,300-digit guard on ``str(int)`` up to the library's
+    own limit; a longer one is refused with the library's message, before it is converted."""
+    if n.bit_length() > 33_300:  # more than 10,000 digits for certain (10^10000 < 2^33220)
+        raise ValueError(f"{name}: more than {MAX_DIGITS} digits (limit on digits per number)")
+    get = getattr(sys, "get_int_max_str_digits", None)
+    if get is None or n.bit_length() < 14_000:
+        return str(n)
+    before = get()
+    sys.set_int_max_str_digits(0)
+    try:
+        return str(n)
+    finally:
+        sys.set_int_max_str_digits(before)
+
+
 def as_text(name: str, value: Any, symbols: bool = False) -> str:
     """The text the library parses for one input ``name``: a ``str`` as it is (``"3/7"``,
     ``"0.25"``, ``"1.5e-3"``, ``"100 g"``); an ``int`` or any rational (``Fraction``,
@@ -269,23 +289,28 @@ def as_text(name: str, value: Any, symbols: bool = False) -> str:
     as a string or a ``Fraction``. With ``symbols``, a SymPy expression is passed as its text
     (``**`` written ``^``)."""
     if isinstance(value, str):
+        try:
+            value.encode("utf-8")
+        except UnicodeEncodeError:
+            raise ValueError(f"{name}: not text the library can read (a lone surrogate)") from None
         return value
     if isinstance(value, bool):
         raise ValueError(f"{name}: expected a number, got the bool {value}")
     if isinstance(value, numbers.Integral):
-        return str(int(value))
+        return _int_text(name, int(value))
     if isinstance(value, numbers.Real) and not isinstance(value, numbers.Rational):
         raise ValueError(
             f"{name}: the float {value!r} is not exact (a binary approximation); "
             f"pass the number as a string ('{value!r}') or a fractions.Fraction"
         )
     if isinstance(value, numbers.Rational):
-        return f"{value.numerator}/{value.denominator}"
+        return f"{_int_text(name, int(value.numerator))}/{_int_text(name, int(value.denominator))}"
     if isinstance(value, decimal.Decimal):
         if not value.is_finite():
             raise ValueError(f"{name}: expected a finite number, got {value}")
-        f = Fraction(value)
-        return f"{f.numerator}/{f.denominator}"
+        # Its own text ("1E+999999999"), which the library reads exactly within its limits:
+        # Fraction(value) would first build every digit of a huge exponent.
+        return str(value)
     if symbols and type(value).__module__.startswith("sympy"):
         return str(value).replace("**", "^")
     raise ValueError(

@@ -73,3 +73,30 @@ def test_hostile_strings_do_not_crash():
             rodimpact.solve(m=text, M=1)
         except ValueError as e:
             assert str(e).startswith("m: "), (text, str(e))
+
+
+def test_numbers_up_to_the_librarys_limit_not_pythons():
+    # CPython refuses str() of ints past 4,300 digits; the library takes 10,000 (RELIABILITY H12).
+    big = 10**5000
+    assert rodimpact.solve(m=big, M=1).to_dict() == rodimpact.solve(m="1e5000", M=1).to_dict()
+    small = rodimpact.solve(m=F(1, big), M=1).to_dict()
+    assert small == rodimpact.solve(m="1e-5000", M=1).to_dict()
+    for value in (10**20000, F(1, 10**20000)):
+        with pytest.raises(ValueError, match=r"^m: more than 10000 digits \(limit"):
+            rodimpact.solve(m=value, M=1)
+    # A Decimal as its own text: a huge exponent is refused at once, not expanded.
+    with pytest.raises(ValueError, match=r"^m: exponent beyond \+-10000"):
+        rodimpact.solve(m=decimal.Decimal("1e999999999"), M=1)
+    assert rodimpact.solve(m=decimal.Decimal("1E+5"), M=1).to_dict() == rodimpact.solve(
+        m=100000, M=1
+    ).to_dict()
+
+
+def test_errors_of_the_right_kind_naming_the_argument():
+    # RELIABILITY H13: a lone surrogate named by its field; audit of a non-table a TypeError.
+    with pytest.raises(ValueError, match=r"^m: not text the library can read"):
+        rodimpact.solve(m="1\ud800", M=1)
+    with pytest.raises(TypeError, match=r"^audit: expected a path, a pandas DataFrame"):
+        rodimpact.audit(5)
+    with pytest.raises(TypeError, match=r"^audit: expected a path"):
+        rodimpact.audit([{"m": 1}])

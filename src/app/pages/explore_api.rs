@@ -253,10 +253,12 @@ fn page_limits(text: &str) -> Result<(), crate::error::ErrorKind> {
                 "more than {PAGE_DIGITS} digits"
             )));
         }
-        if exponent
-            .parse::<i64>()
-            .is_ok_and(|x| x.abs() > PAGE_EXPONENT)
-            || exponent.trim_start_matches(['+', '-']).len() > 3
+        // Only an exponent of digits is judged here; any other text is not a number, which
+        // the library's reading says.
+        let magnitude = exponent.trim().trim_start_matches(['+', '-']);
+        let digits_only = !magnitude.is_empty() && magnitude.bytes().all(|b| b.is_ascii_digit());
+        if digits_only
+            && (magnitude.len() > 3 || magnitude.parse::<i64>().is_ok_and(|x| x > PAGE_EXPONENT))
         {
             return Err(ErrorKind::Invalid(format!(
                 "exponent beyond ±{PAGE_EXPONENT}"

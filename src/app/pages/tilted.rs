@@ -268,7 +268,13 @@ pub fn tilted_map(request: &Value) -> Value {
             .unwrap_or_default()
     };
     let (angles, slips) = (texts("tan_halves"), texts("slips"));
-    if angles.len() * slips.len() > MAX_MAP_CELLS {
+    // Checked multiplication: usize is 32 bits in the pages' WebAssembly module, where
+    // 65,536 x 65,536 wrapped to 0 and passed.
+    if angles
+        .len()
+        .checked_mul(slips.len())
+        .is_none_or(|cells| cells > MAX_MAP_CELLS)
+    {
         return field_error(
             "tan_halves",
             format!(

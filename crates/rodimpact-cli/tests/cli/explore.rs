@@ -364,6 +364,25 @@ fn the_tilted_rod_page_and_its_flags() {
             vec!["--slip", "1"],
             "error: slip: a setting of the tilted-rod page (--scene tilted-rod)\n",
         ),
+        // Not a number, said as such (RELIABILITY H15: it was "exponent beyond ±60", the 'e'
+        // of "alert" read as an exponent); a real exponent past the page's limit still refused.
+        (
+            vec![
+                "--scene",
+                "tilted-rod",
+                "--tilt",
+                "</script><script>alert(1)</script>",
+            ],
+            "error: tilt: not a number: more than one '/' in \"</script><script>alert(1)</script>\"\n",
+        ),
+        (
+            vec!["--scene", "tilted-rod", "--tilt", "abc"],
+            "error: tilt: not a number: unexpected character 'a' at position 1 in \"abc\"\n",
+        ),
+        (
+            vec!["--scene", "tilted-rod", "--tilt", "1e-61"],
+            "error: tilt: exponent beyond ±60\n",
+        ),
     ] {
         crate::common::assert_refused(&[&["explore"][..], &args[..]].concat(), message);
     }
