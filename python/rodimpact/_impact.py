@@ -73,6 +73,23 @@ class Impact(Report):
         return f"<pre>{html.escape(self._text)}</pre>"
 
 
+#: The plural a dict may use for each of the file's array-of-tables keys.
+_PLURALS = {"bodies": "body", "contacts": "contact", "pins": "pin", "claims": "claim"}
+
+
+def _singular_keys(scene: Mapping[str, Any]) -> Dict[str, Any]:
+    """The scene with ``bodies``, ``contacts``, ``pins`` and ``claims`` (the natural plurals
+    in a dict) under the file's keys ``body``, ``contact``, ``pin``, ``claim``; both spellings
+    of one key are refused."""
+    out: Dict[str, Any] = {}
+    for key, value in scene.items():
+        singular = _PLURALS.get(str(key), str(key))
+        if singular in out:
+            raise ValueError(f"scene: both '{singular}' and '{key}' given; give one")
+        out[singular] = value
+    return out
+
+
 def _plain(value: Any, where: str) -> Any:
     """The dict's values as the scene file has them: exact numbers as text."""
     if isinstance(value, Mapping):
@@ -109,7 +126,7 @@ def impact(
     file's structure: ``{"body": [{"name": "rod", "mass": "1", "inertia": "1/3", ...},
     {"name": "floor", "fixed": True}], "contact": [{"bodies": ["rod", "floor"], "point": [...],
     "normal": [...], "e": "1"}]}`` (numbers as strings, ints or Fractions; a float is
-    refused). ``law``: ``"newton"``, ``"poisson"``, ``"energetic"`` (``"stronge"``), the
+    refused; ``bodies``, ``contacts``, ``pins`` are taken for ``body``, ``contact``, ``pin``). ``law``: ``"newton"``, ``"poisson"``, ``"energetic"`` (``"stronge"``), the
     laws engines converge to, ``"lcp-newton"``, ``"lcp-poisson"``, ``"split"``, or ``"all"``
     (one contact; default the three physical laws); ``model`` for several contacts:
     ``"simultaneous-newton"``, ``"simultaneous-poisson"``, ``"split"``, ``"sequential"``,
@@ -123,7 +140,8 @@ def impact(
     text_digits = None if digits is None else str(digits)
     if isinstance(scene, Mapping):
         data, agree, text = _native.impact_json(
-            None, json.dumps(_plain(scene, "")), "scene", law, model, text_digits, engine
+            None, json.dumps(_plain(_singular_keys(scene), "")), "scene", law, model,
+            text_digits, engine
         )
     elif isinstance(scene, (str, os.PathLike)):
         data, agree, text = _native.impact_json(

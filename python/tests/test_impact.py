@@ -260,3 +260,19 @@ def test_a_law_without_an_answer_beside_the_others():
     with pytest.raises(ValueError, match="under newton's law the impact never ends"):
         rodimpact.impact(scene, law="newton")
     assert rodimpact.impact(PAPER).not_answered == {}
+
+
+def test_a_dict_may_say_bodies_and_contacts():
+    # NEWCOMER m25: the natural plurals in a dict are the file's keys.
+    plural = {
+        "bodies": [
+            {"name": "puck", "mass": "1", "position": ["0", "0"], "velocity": ["1", "0"]},
+            {"name": "wall", "fixed": True},
+        ],
+        "contacts": [{"bodies": ["puck", "wall"], "point": ["0", "0"], "normal": ["-1", "0"], "e": "1/2"}],
+    }
+    singular = {"body": plural["bodies"], "contact": plural["contacts"]}
+    assert rodimpact.impact(plural).to_dict() == rodimpact.impact(singular).to_dict()
+    assert rodimpact.impact(plural).law("newton").bodies.puck.velocity == [F(-1, 2), 0]
+    with pytest.raises(ValueError, match="^scene: both 'body' and 'bodies' given"):
+        rodimpact.impact({**singular, "bodies": plural["bodies"]})

@@ -182,7 +182,13 @@ impl System {
             let c = &system.contacts[0];
             let u_n = system.relative_velocity(c).dot(&c.normal);
             let (field, what) = if system.contacts.len() == 1 {
-                ("contact[1]".to_string(), format!("is {u_n}, not < 0"))
+                let sign = if u_n.is_positive() {
+                    "; if the bodies do approach, the normal points the wrong way: it must point from \
+                     the second body into the first"
+                } else {
+                    ""
+                };
+                ("contact[1]".to_string(), format!("is {u_n}, not < 0{sign}"))
             } else {
                 (
                     "contact".to_string(),

@@ -36,8 +36,9 @@ enum Command {
     /// Figures as SVG (and their data as CSV): omega against a, a* against M/m, Figure 1,
     /// velocities before/after, quantities and energy along the rod.
     Plot(Box<commands::plot::PlotArgs>),
-    /// Any planar impact with one contact (bodies, shapes and contacts in a TOML file) under
-    /// Newton's, Poisson's and Stronge's restitution laws side by side, exactly.
+    /// Any planar impact, with one or several contacts (bodies, shapes and contacts in a TOML
+    /// file): one contact under Newton's, Poisson's and Stronge's laws side by side, several
+    /// under the simultaneous, sequential and PGS models, exactly.
     Impact(Box<commands::impact::ImpactArgs>),
     /// Check published answers (printed numbers, fractions, formulas) against the exact ones.
     Check(Box<commands::check::CheckArgs>),

@@ -1,4 +1,5 @@
-//! `rodimpact impact`: any planar impact with one contact, under the three restitution laws.
+//! `rodimpact impact`: any planar impact, with one contact under the restitution laws or with
+//! several under the models of several contacts.
 
 use super::{Failure, parse_digits, print_out};
 use clap::{Args, ValueEnum};

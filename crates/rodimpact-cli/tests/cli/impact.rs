@@ -267,6 +267,29 @@ fn bad_inputs_are_refused_naming_the_field() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// A normal given the wrong way round (the engineer's likeliest sign slip, NEWCOMER m3) is
+/// named as a possibility beside "no approach".
+#[test]
+fn a_normal_the_wrong_way_round_is_named() {
+    let dir = scratch("impact-wrong-way");
+    let path = dir.join("scene.toml");
+    assert!(BASE.contains(r#"normal = ["0", "1"]"#));
+    std::fs::write(
+        &path,
+        BASE.replacen(r#"normal = ["0", "1"]"#, r#"normal = ["0", "-1"]"#, 1),
+    )
+    .unwrap();
+    let path = path.to_str().unwrap();
+    let (code, out, err) = rodimpact(&["impact", path]);
+    assert_eq!((code, out.as_str()), (2, ""));
+    assert!(
+        err.starts_with(&format!("error: {path}: contact[1]: no approach: "))
+            && err.ends_with(", not < 0; if the bodies do approach, the normal points the wrong way: it must point from the second body into the first\n"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// `impact --batch`: each line a scene and an engine's claimed bodies, audited exactly: which
 /// law or model the claim matches, the closest, and a diagnosis; exit 1 when one matches none.
 #[test]
