@@ -146,3 +146,9 @@ def test_to_dict_is_the_clis_json(cli_json):
         for key, value in case.items():
             flags += [f"--{key.replace('_', '-')}", str(value)]
         assert rodimpact.solve(**case).to_dict() == cli_json("solve", *flags, "--json"), case
+
+
+def test_the_impulse_is_in_the_answer():
+    # NEWCOMER m18: J = m (v0 - v), as the text report, check and formula name it.
+    s = rodimpact.solve(m=1, M=1, a="1/2")
+    assert s.impulse == F(8, 11) == 1 * (1 - s.v)

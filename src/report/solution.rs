@@ -14,8 +14,8 @@ use crate::solve::optimum::{Argmax, Arm, Placement};
 use num_traits::{One, Zero};
 use serde_json::{Map, Value, json};
 
-/// The JSON object of `solve --json` for `answer`: `scene`, `v`, `V`, `omega`, `energy`,
-/// `pivot_impulse` (pivot only), `residuals` (only the laws that apply), `a_star` (with
+/// The JSON object of `solve --json` for `answer`: `scene`, `v`, `V`, `omega`, `impulse` (J on
+/// the rod), `energy`, `pivot_impulse` (pivot only), `residuals` (only the laws that apply), `a_star` (with
 /// `placement` and `threshold_M`, the rod mass at which a* reaches the end), `omega_max`,
 /// `argmax`, `omega_end`, `end_over_max` (omega at the end over omega_max), `gain` (what aiming
 /// at a* gains over the end) and `paper_form` (K, b^2, c of the paper's f(x) argument,
@@ -27,6 +27,7 @@ use serde_json::{Map, Value, json};
 /// use rodimpact::{report::solution_json, scene::Scene, solve::Answer, field::q};
 /// let json = solution_json(&Answer::of(&Scene::builder(q(1, 1), q(1, 1)).build()?), 30);
 /// assert_eq!(json["v"]["exact"], "3/5");
+/// assert_eq!(json["impulse"]["exact"], "2/5"); // J = m (v0 - v)
 /// assert_eq!(json["a_star"]["within_rod"], true);
 /// assert!(json.get("pivot_impulse").is_none());
 /// # Ok::<(), rodimpact::Error>(())
@@ -96,12 +97,14 @@ pub fn solution_json(answer: &Answer, digits: usize) -> Value {
     );
     Value::Object(out)
 }
-/// The paper scene's `v`, `V`, `omega`, `energy`, `pivot_impulse` and `residuals`.
+/// The paper scene's `v`, `V`, `omega`, `impulse` (J, the projectile's on the rod), `energy`,
+/// `pivot_impulse` and `residuals`.
 fn paper_json(answer: &Answer, out: &mut Map<String, Value>, value: &impl Fn(&Q) -> Value) {
     let after = &answer.impact.outcome.after;
     out.insert("v".into(), value(&after.v));
     out.insert("V".into(), value(&after.rod_v));
     out.insert("omega".into(), value(&after.omega));
+    out.insert("impulse".into(), value(&answer.impulse));
     let energy = &answer.impact.outcome.energy;
     out.insert(
         "energy".into(),

@@ -188,16 +188,11 @@ fn a_moving_rod_is_the_rest_scene_in_its_frame() {
 #[test]
 fn oblique_keys_appear_only_when_needed() {
     let plain = solve_json(&["--m", "1", "--M", "1"]);
-    for key in [
-        "vt",
-        "Vt",
-        "spin",
-        "tangential_impulse",
-        "contact",
-        "impulse",
-    ] {
+    for key in ["vt", "Vt", "spin", "tangential_impulse", "contact"] {
         assert!(plain.get(key).is_none(), "plain scene has {key}");
     }
+    // The normal impulse J = m (v0 - v) is every scene's (NEWCOMER m18): 2/5 at the end.
+    assert_eq!(plain["impulse"]["exact"], "2/5");
     let explicit_zeros = solve_json(&["--m", "1", "--M", "1", "--v0t", "0", "--mu", "0"]);
     assert_eq!(
         plain, explicit_zeros,
