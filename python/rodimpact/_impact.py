@@ -90,12 +90,20 @@ def _singular_keys(scene: Mapping[str, Any]) -> Dict[str, Any]:
     return out
 
 
-def _plain(value: Any, where: str) -> Any:
-    """The dict's values as the scene file has them: exact numbers as text."""
+def _plain(value: Any, where: str, inside: frozenset = frozenset()) -> Any:
+    """The dict's values as the scene file has them: exact numbers as text. A dict or list
+    that contains itself is refused, naming where (``inside``: the containers above)."""
+    if isinstance(value, (Mapping, list, tuple)):
+        if id(value) in inside:
+            raise ValueError(f"{where or 'scene'}: contains itself")
+        inside = inside | {id(value)}
     if isinstance(value, Mapping):
-        return {str(k): _plain(v, f"{where}.{k}" if where else str(k)) for k, v in value.items()}
+        return {
+            str(k): _plain(v, f"{where}.{k}" if where else str(k), inside)
+            for k, v in value.items()
+        }
     if isinstance(value, (list, tuple)):
-        return [_plain(v, f"{where}[{i}]") for i, v in enumerate(value)]
+        return [_plain(v, f"{where}[{i}]", inside) for i, v in enumerate(value)]
     if isinstance(value, (str, bool)) or value is None:
         return value
     if isinstance(value, numbers.Integral):

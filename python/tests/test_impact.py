@@ -276,3 +276,11 @@ def test_a_dict_may_say_bodies_and_contacts():
     assert rodimpact.impact(plural).law("newton").bodies.puck.velocity == [F(-1, 2), 0]
     with pytest.raises(ValueError, match="^scene: both 'body' and 'bodies' given"):
         rodimpact.impact({**singular, "bodies": plural["bodies"]})
+
+
+def test_a_dict_that_contains_itself_is_named():
+    # RELIABILITY H13: it was Python's RecursionError.
+    scene = {"body": [{"name": "puck", "mass": "1"}]}
+    scene["body"][0]["shape"] = scene
+    with pytest.raises(ValueError, match=r"^body\[0\]\.shape.*: contains itself$"):
+        rodimpact.impact(scene)

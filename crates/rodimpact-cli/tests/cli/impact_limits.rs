@@ -475,3 +475,52 @@ fn a_summary_path_that_cannot_be_written_is_refused_first() {
         );
     }
 }
+
+/// Ids are quoted as messages quote input (escaped: a forged id cannot write a line or an
+/// escape sequence into the summary, RELIABILITY H7), and a finding names at most its first 100
+/// scenes, counting the rest (bounded memory for a long audit, H11).
+#[test]
+fn the_summary_escapes_ids_and_names_at_most_a_hundred() {
+    let dir = scratch("impact-limits-summary");
+    let text =
+        std::fs::read_to_string(format!("{}/examples/impacts/cradle-3.toml", crate::ROOT)).unwrap();
+    let table: toml::Table = toml::from_str(&text).unwrap();
+    let mut scene = serde_json::to_value(table).unwrap();
+    // Every ball at rest after the impact: momentum is lost, no law or model gives it.
+    let rest = serde_json::json!({"velocity": ["0", "0"], "omega": "0"});
+    scene["claimed"] = serde_json::json!({"engine": "test 1", "bodies": {
+        "ball1": rest, "ball2": rest, "ball3": rest}});
+    let forged = "x\nall 1 claims match\u{1b}[2J";
+    let mut lines = String::new();
+    for k in 0..102 {
+        scene["id"] = Value::String(if k == 0 {
+            forged.into()
+        } else {
+            format!("s{k}")
+        });
+        lines.push_str(&format!("{scene}\n"));
+    }
+    let path = dir.join("lines.jsonl");
+    std::fs::write(&path, lines).unwrap();
+    let summary = dir.join("summary.json");
+    let (code, _, err) = rodimpact(&[
+        "impact",
+        "--batch",
+        path.to_str().unwrap(),
+        "--summary-json",
+        summary.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1, "{err}");
+    assert!(!err.contains('\u{1b}') && !err.contains("x\nall"), "{err}");
+    assert!(err.contains(r"x\nall 1 claims match\u{1b}[2J"), "{err}");
+    let json: Value = serde_json::from_str(&std::fs::read_to_string(&summary).unwrap()).unwrap();
+    let findings = json["findings"].as_object().unwrap();
+    assert!(!findings.is_empty());
+    for (name, finding) in findings {
+        assert_eq!(finding["count"], 102, "{name}");
+        let scenes = finding["scenes"].as_array().unwrap();
+        assert_eq!(scenes.len(), 100, "{name}");
+        assert_eq!(scenes[0], r"x\nall 1 claims match\u{1b}[2J", "{name}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
