@@ -104,6 +104,64 @@ fn push_escaped(out: &mut String, c: char, quotes: bool) {
     }
 }
 
+/// The candidate `text` most likely misspells, for a message's "did you mean": the nearest by
+/// edit distance (insertions, deletions, substitutions and swaps of neighbours), when it is
+/// within a third of the candidate's length (at least 1) and no other is as near; `None`
+/// otherwise, and for `text` itself.
+///
+/// # Examples
+/// ```
+/// use rodimpact::echo::did_you_mean;
+/// assert_eq!(did_you_mean("velocty", &["name", "velocity", "omega"]), Some("velocity"));
+/// assert_eq!(did_you_mean("flor", &["box", "floor"]), Some("floor"));
+/// assert_eq!(did_you_mean("mass", &["name", "velocity"]), None);
+/// ```
+pub fn did_you_mean<'a>(text: &str, candidates: &[&'a str]) -> Option<&'a str> {
+    let typed: Vec<char> = text.chars().take(64).collect();
+    let mut best: Option<(usize, &'a str)> = None;
+    let mut tied = false;
+    for &candidate in candidates {
+        let wanted: Vec<char> = candidate.chars().collect();
+        let distance = edit_distance(&typed, &wanted);
+        if distance == 0 || distance > (wanted.len() / 3).max(1) {
+            continue;
+        }
+        match best {
+            Some((d, _)) if d < distance => {}
+            Some((d, _)) if d == distance => tied = true,
+            _ => {
+                best = Some((distance, candidate));
+                tied = false;
+            }
+        }
+    }
+    best.filter(|_| !tied).map(|(_, candidate)| candidate)
+}
+
+/// The optimal-string-alignment distance between `a` and `b`.
+fn edit_distance(a: &[char], b: &[char]) -> usize {
+    let mut rows = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for (i, row) in rows.iter_mut().enumerate() {
+        row[0] = i;
+    }
+    for (j, cell) in rows[0].iter_mut().enumerate() {
+        *cell = j;
+    }
+    for i in 1..=a.len() {
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            let mut d = (rows[i - 1][j] + 1)
+                .min(rows[i][j - 1] + 1)
+                .min(rows[i - 1][j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                d = d.min(rows[i - 2][j - 2] + 1);
+            }
+            rows[i][j] = d;
+        }
+    }
+    rows[a.len()][b.len()]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

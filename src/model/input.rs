@@ -170,9 +170,13 @@ pub fn from_value(value: &Value) -> Result<System, Error> {
             return Err(invalid(field, "a body's name (a string)".into()));
         };
         names.iter().position(|n| n == name).ok_or_else(|| {
+            let all: Vec<&str> = names.iter().map(String::as_str).collect();
+            let hint = crate::echo::did_you_mean(name, &all)
+                .map(|n| format!("; did you mean '{}'?", crate::echo::echo(n)))
+                .unwrap_or_default();
             invalid(
                 field,
-                format!("no body is named '{}'", crate::echo::echo(name)),
+                format!("no body is named '{}'{hint}", crate::echo::echo(name)),
             )
         })
     };
@@ -502,7 +506,13 @@ fn only_keys(map: &Map<String, Value>, field: &str, known: &[&str]) -> Result<()
     match map.keys().find(|k| !known.contains(&k.as_str())) {
         Some(k) => Err(invalid(
             &format!("{field}.{}", crate::echo::echo(k)),
-            format!("unknown key (expected one of {})", known.join(", ")),
+            match crate::echo::did_you_mean(k, known) {
+                Some(near) => format!(
+                    "unknown key: did you mean '{near}'? (expected one of {})",
+                    known.join(", ")
+                ),
+                None => format!("unknown key (expected one of {})", known.join(", ")),
+            },
         )),
         None => Ok(()),
     }

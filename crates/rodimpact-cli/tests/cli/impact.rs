@@ -362,3 +362,29 @@ fn batch_audits_engine_claims() {
     assert!(err.contains("line 1: body"), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A misspelt key or body name gets a "did you mean" (NEWCOMER m7).
+#[test]
+fn a_misspelt_key_or_body_gets_a_suggestion() {
+    let dir = scratch("impact-did-you-mean");
+    for (from, to, expected) in [
+        (
+            r#"velocity = ["1", "-1"]"#,
+            r#"velocty = ["1", "-1"]"#,
+            "body[1].velocty: unknown key: did you mean 'velocity'? (expected one of ",
+        ),
+        (
+            r#"bodies = ["rod", "floor"]"#,
+            r#"bodies = ["rod", "flor"]"#,
+            "contact[1].bodies: no body is named 'flor'; did you mean 'floor'?\n",
+        ),
+    ] {
+        assert!(BASE.contains(from), "{from}");
+        let path = dir.join("scene.toml");
+        std::fs::write(&path, BASE.replacen(from, to, 1)).unwrap();
+        let (code, out, err) = rodimpact(&["impact", path.to_str().unwrap()]);
+        assert_eq!((code, out.as_str()), (2, ""));
+        assert!(err.contains(expected), "{err}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
