@@ -6,6 +6,7 @@ import decimal
 import json
 import numbers
 import os
+import re
 from typing import Any, Dict, Mapping, Optional, Union
 
 from . import _native
@@ -147,16 +148,22 @@ def impact(
         raise ValueError(f"digits: must be a whole number from 1 to 10000, got {digits!r}")
     text_digits = None if digits is None else str(digits)
     if isinstance(scene, Mapping):
-        data, agree, text = _native.impact_json(
-            None, json.dumps(_plain(_singular_keys(scene), "")), "scene", law, model,
-            text_digits, engine
-        )
+        path, text_scene = None, json.dumps(_plain(_singular_keys(scene), ""))
     elif isinstance(scene, (str, os.PathLike)):
-        data, agree, text = _native.impact_json(
-            os.fspath(scene), None, "scene", law, model, text_digits, engine
-        )
+        path, text_scene = os.fspath(scene), None
     else:
         raise ValueError(
             f"scene: expected a path or a dict, got {type(scene).__name__}"
         )
+    try:
+        data, agree, text = _native.impact_json(
+            path, text_scene, "scene", law, model, text_digits, engine
+        )
+    except ValueError as error:
+        # The library names the command line's flags; here they are keyword arguments.
+        raise ValueError(_FLAGS.sub(r"\1=", str(error))) from None
     return Impact(json.loads(data), agree, text)
+
+
+#: The command line's flags that are this function's keyword arguments, as messages name them.
+_FLAGS = re.compile(r"--(law|model|engine|digits)\b")

@@ -284,3 +284,9 @@ def test_a_dict_that_contains_itself_is_named():
     scene["body"][0]["shape"] = scene
     with pytest.raises(ValueError, match=r"^body\[0\]\.shape.*: contains itself$"):
         rodimpact.impact(scene)
+
+
+def test_messages_name_keyword_arguments_not_flags():
+    # NEWCOMER m25: "(the laws do: --law)" in a Python error named a flag Python does not have.
+    with pytest.raises(ValueError, match=r"^model: one contact: .*\(the laws do: law=\)$"):
+        rodimpact.impact(PAPER, model="pgs:3")
