@@ -7,7 +7,7 @@
 use crate::error::{Error, ErrorKind};
 use crate::field::Q;
 use crate::impact::{
-    ImpactError, Law, MAX_ORDERED, Model, ModelOutcome, Profile, Stopped, contact_matrix, orders,
+    Law, MAX_ORDERED, Model, ModelOutcome, Profile, Stopped, contact_matrix, orders,
     solve_engine_exact, solve_exact, solve_several_sharing,
 };
 use crate::model::{MAX_SCENE_BYTES, from_value, toml_value};
@@ -158,7 +158,7 @@ pub fn answer_impact(
     let unanswered = failed
         .into_iter()
         .map(|(name, error)| NotAnswered {
-            why: not_answered_why(&name, &error),
+            why: error.why(),
             name,
         })
         .collect();
@@ -172,14 +172,6 @@ pub fn answer_impact(
         answers: ImpactAnswers::Laws(answers, unanswered),
         checked,
     })
-}
-
-/// Why `name` gave no answer, from its error: without the name the error starts with.
-fn not_answered_why(name: &str, error: &ImpactError) -> String {
-    let text = error.to_string();
-    text.strip_prefix(name)
-        .and_then(|rest| rest.strip_prefix(": "))
-        .map_or(text.clone(), str::to_owned)
 }
 
 /// The law `text` names (`newton`, `poisson`, `energetic` or `stronge`, `lcp-newton`,

@@ -78,25 +78,27 @@ impl<F: Field> State<F> {
     /// Sets contact `i`'s normal impulse to `value`, the velocities following.
     fn set_normal(&mut self, w: &Blocks<F>, i: usize, value: F) {
         let d = value.clone() - &self.lam_n[i];
-        if !d.is_zero() {
-            for k in 0..self.u_n.len() {
-                self.u_n[k] = self.u_n[k].clone() + &(w.nn[k][i].clone() * &d);
-                self.u_t[k] = self.u_t[k].clone() + &(w.tn[k][i].clone() * &d);
-            }
-        }
+        self.follow((&w.nn, &w.tn), i, &d);
         self.lam_n[i] = value;
     }
 
     /// Sets contact `i`'s tangential impulse to `value`, the velocities following.
     fn set_tangent(&mut self, w: &Blocks<F>, i: usize, value: F) {
         let d = value.clone() - &self.lam_t[i];
-        if !d.is_zero() {
-            for k in 0..self.u_n.len() {
-                self.u_n[k] = self.u_n[k].clone() + &(w.nt[k][i].clone() * &d);
-                self.u_t[k] = self.u_t[k].clone() + &(w.tt[k][i].clone() * &d);
-            }
-        }
+        self.follow((&w.nt, &w.tt), i, &d);
         self.lam_t[i] = value;
+    }
+
+    /// Adds `d` times column `i` of `(into_n, into_t)` to the normal and tangential velocities:
+    /// what a change `d` of one impulse does to every contact.
+    fn follow(&mut self, (into_n, into_t): (&[Vec<F>], &[Vec<F>]), i: usize, d: &F) {
+        if d.is_zero() {
+            return;
+        }
+        for k in 0..self.u_n.len() {
+            self.u_n[k] = self.u_n[k].clone() + &(into_n[k][i].clone() * d);
+            self.u_t[k] = self.u_t[k].clone() + &(into_t[k][i].clone() * d);
+        }
     }
 }
 

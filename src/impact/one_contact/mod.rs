@@ -110,6 +110,25 @@ pub enum ImpactError {
     Stopped(String, Stopped),
 }
 
+impl ImpactError {
+    /// Why there is no answer, without the law's or engine's name the message starts with
+    /// (a report that names it already).
+    ///
+    /// # Examples
+    /// ```
+    /// use rodimpact::impact::ImpactError;
+    /// let e = ImpactError::Unanswered("pymunk-7".into(), "its steps do not stop".into());
+    /// assert_eq!((e.to_string().as_str(), e.why().as_str()), ("pymunk-7: its steps do not stop", "its steps do not stop"));
+    /// ```
+    pub fn why(&self) -> String {
+        match self {
+            ImpactError::Unanswered(_, why) => why.clone(),
+            ImpactError::Stopped(_, stopped) => stopped.to_string(),
+            ImpactError::SeveralContacts(_) | ImpactError::Jam(_) => self.to_string(),
+        }
+    }
+}
+
 /// The system's one contact in a field: the bodies' coordinates and the contact's rows, W and
 /// the relative velocity (u_n, u_t) before.
 struct OneContact<F> {
